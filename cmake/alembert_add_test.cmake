@@ -1,0 +1,21 @@
+include_guard(GLOBAL)
+include(GoogleTest)
+include(${CMAKE_CURRENT_LIST_DIR}/alembert_warnings.cmake)
+
+# alembert_add_test(<name> SOURCES <files...> [LIBS <targets...>] [LABELS <labels...>])
+# Builds test_<name> against GTest::gtest_main, LIBS and alembert_test_support,
+# and registers its test cases with CTest. LABELS defaults to the name of the
+# current source directory (sym, vec, mech, ...).
+function(alembert_add_test name)
+  cmake_parse_arguments(PARSE_ARGV 1 ARG "" "" "SOURCES;LIBS;LABELS")
+  if(NOT ARG_LABELS)
+    get_filename_component(ARG_LABELS ${CMAKE_CURRENT_SOURCE_DIR} NAME)
+  endif()
+  set(target test_${name})
+  add_executable(${target} ${ARG_SOURCES})
+  target_link_libraries(${target} PRIVATE GTest::gtest_main ${ARG_LIBS} alembert_test_support)
+  alembert_set_warnings(${target})
+  gtest_discover_tests(${target}
+    DISCOVERY_TIMEOUT 60
+    PROPERTIES LABELS "${ARG_LABELS}")
+endfunction()
