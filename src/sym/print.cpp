@@ -1,0 +1,188 @@
+// SPDX-License-Identifier: MIT
+// The deterministic expression printer.
+#include "alembert/sym/print.hpp"
+
+#include <algorithm>
+#include <charconv>
+#include <sstream>
+#include <vector>
+
+namespace alembert {
+
+using namespace GiNaC;
+
+namespace {
+
+enum Prec { kSum = 1, kProduct = 2, kPower = 3, kAtom = 4 };
+
+struct Printed {
+    std::string text;
+    int prec;
+    bool negative = false;  // text starts with '-'
+};
+
+std::string print_double(double v) {
+    char buf[64];
+    auto [end, ec] = std::to_chars(buf, buf + sizeof buf, v);
+    if (ec != std::errc()) return std::to_string(v);
+    std::string s(buf, end);
+    return s;
+}
+
+std::string print_numeric(const numeric& n) {
+    if (n.is_integer()) return n.to_cl_N() == 0 ? "0" : [&] {
+            std::ostringstream os;
+            os << n;
+            return os.str();
+        }();
+    if (n.is_rational()) {
+        std::ostringstream os;
+        os << n.numer() << "/" << n.denom();
+        return os.str();
+    }
+    if (n.is_real()) return print_double(n.to_double());
+    std::ostringstream os;
+    os << n;
+    return os.str();
+}
+
+Printed p(const ex& e);
+
+std::string paren(const Printed& x, int min_prec) {
+    return x.prec < min_prec ? "(" + x.text + ")" : x.text;
+}
+
+// sort key of a factor: symbols and their powers, then functions, then the rest
+int factor_rank(const ex& f) {
+    const ex& b = is_a<power>(f) ? f.op(0) : f;
+    if (is_a<symbol>(b)) return 0;
+    if (is_a<function>(b)) return 1;
+    return 2;
+}
+
+std::string lower(std::string s) {
+    for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return s;
+}
+
+std::string print_factors(std::vector<ex> fs) {
+    std::vector<std::pair<std::tuple<int, std::string, std::string>, std::string>> items;
+    for (const ex& f : fs) {
+        std::string t = paren(p(f), kProduct + 1);
+        if (is_a<add>(f)) t = "(" + p(f).text + ")";
+        items.push_back({{factor_rank(f), lower(t), t}, t});
+    }
+    std::sort(items.begin(), items.end());
+    std::string out;
+    for (std::size_t i = 0; i < items.size(); ++i) out += (i ? "*" : "") + items[i].second;
+    return out;
+}
+
+Printed print_mul(const ex& e) {
+    numeric c = 1;
+    std::vector<ex> num, den;
+    for (std::size_t i = 0; i < e.nops(); ++i) {
+        const ex& f = e.op(i);
+        if (is_a<numeric>(f)) {
+            c *= ex_to<numeric>(f);
+        } else if (is_a<power>(f) && is_a<numeric>(f.op(1)) && ex_to<numeric>(f.op(1)) < 0) {
+            den.push_back(pow(f.op(0), -f.op(1)));
+        } else {
+            num.push_back(f);
+        }
+    }
+    bool neg = c.is_real() && c < 0;
+    if (neg) c = -c;
+    numeric cn = c.is_rational() ? c.numer() : c, cd = c.is_rational() ? c.denom() : numeric(1);
+    std::string s;
+    if (!(cn == 1) || num.empty()) s = print_numeric(cn);
+    if (!num.empty()) s += (s.empty() ? "" : "*") + print_factors(num);
+    if (!(cd == 1)) den.push_back(cd);
+    if (!den.empty()) {
+        bool single = den.size() == 1 && !is_a<mul>(den[0]) && !is_a<add>(den[0]);
+        std::string d = den.size() == 1 && is_a<numeric>(den[0])
+                            ? print_numeric(ex_to<numeric>(den[0]))
+                            : print_factors(den);
+        s += "/" + (single ? paren(p(den[0]), kPower) : "(" + d + ")");
+    }
+    return {neg ? "-" + s : s, neg ? kSum : kProduct, neg};
+}
+
+// sort key of a term: the names of its symbols, then higher degree first
+std::tuple<std::string, int, std::string> term_key(const ex& t, const std::string& text) {
+    std::vector<std::string> names;
+    for (auto it = t.preorder_begin(); it != t.preorder_end(); ++it)
+        if (is_a<symbol>(*it)) names.push_back(ex_to<symbol>(*it).get_name());
+    std::sort(names.begin(), names.end());
+    std::string k;
+    for (const auto& n : names) k += n + ",";
+    int degree = static_cast<int>(names.size());
+    std::string body = text[0] == '-' ? text.substr(1) : text;
+    return {k, -degree, body};
+}
+
+Printed print_add(const ex& e) {
+    std::vector<std::pair<std::tuple<std::string, int, std::string>, Printed>> terms;
+    for (std::size_t i = 0; i < e.nops(); ++i) {
+        Printed t = p(e.op(i));
+        terms.push_back({term_key(e.op(i), t.text), t});
+    }
+    // numbers go last
+    std::stable_sort(terms.begin(), terms.end(), [](const auto& a, const auto& b) {
+        bool an = std::get<0>(a.first).empty(), bn = std::get<0>(b.first).empty();
+        if (an != bn) return bn;
+        return a.first < b.first;
+    });
+    std::string s;
+    for (std::size_t i = 0; i < terms.size(); ++i) {
+        const Printed& t = terms[i].second;
+        if (i == 0) s = t.text;
+        else if (t.negative) s += " - " + t.text.substr(1);
+        else s += " + " + t.text;
+    }
+    return {s, kSum, !s.empty() && s[0] == '-'};
+}
+
+Printed print_power(const ex& e) {
+    const ex &b = e.op(0), &x = e.op(1);
+    if (x.is_equal(numeric(1, 2))) return {"sqrt(" + p(b).text + ")", kAtom};
+    if (is_a<numeric>(x) && ex_to<numeric>(x) < 0) {
+        Printed d = p(pow(b, -x));
+        return {"1/" + paren(d, kPower), kProduct};
+    }
+    Printed pb = p(b), px = p(x);
+    return {paren(pb, kAtom) + "^" + paren(px, kAtom), kPower};
+}
+
+Printed p(const ex& e) {
+    if (is_a<symbol>(e)) return {ex_to<symbol>(e).get_name(), kAtom};
+    if (is_a<numeric>(e)) {
+        const numeric& n = ex_to<numeric>(e);
+        std::string s = print_numeric(n);
+        bool neg = n.is_real() && n < 0;
+        return {s, neg || (n.is_rational() && !n.is_integer()) ? kSum : kAtom, neg};
+    }
+    if (is_a<add>(e)) return print_add(e);
+    if (is_a<mul>(e)) return print_mul(e);
+    if (is_a<power>(e)) return print_power(e);
+    if (is_a<function>(e)) {
+        std::string s = ex_to<function>(e).get_name() + "(";
+        for (std::size_t i = 0; i < e.nops(); ++i) s += (i ? ", " : "") + p(e.op(i)).text;
+        return {s + ")", kAtom};
+    }
+    if (is_a<relational>(e)) {
+        const char* op = " = ";
+        return {p(e.op(0)).text + op + p(e.op(1)).text, 0};
+    }
+    std::ostringstream os;
+    os << e;
+    return {os.str(), kAtom};
+}
+
+}  // namespace
+
+std::string to_string(const ex& e) { return p(e).text; }
+
+void print(std::ostream& os, const ex& e) { os << to_string(e); }
+
+}  // namespace alembert

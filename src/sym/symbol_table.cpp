@@ -1,0 +1,347 @@
+// SPDX-License-Identifier: MIT
+// The symbol table: declarations, look-up, the chain rule and numeric evaluation.
+#include "alembert/sym/symbol_table.hpp"
+
+#include <cctype>
+#include <sstream>
+
+#include "alembert/error.hpp"
+
+namespace alembert {
+
+namespace {
+
+bool is_identifier(const std::string& s) {
+    if (s.empty() || !(std::isalpha(static_cast<unsigned char>(s[0])) || s[0] == '_')) return false;
+    for (char c : s)
+        if (!(std::isalnum(static_cast<unsigned char>(c)) || c == '_')) return false;
+    return true;
+}
+
+std::string primes(int k) { return std::string(static_cast<std::size_t>(k), '\''); }
+
+}  // namespace
+
+const char* to_string(SymbolKind kind) {
+    switch (kind) {
+        case SymbolKind::time: return "time";
+        case SymbolKind::constant: return "constant";
+        case SymbolKind::variable: return "variable";
+        case SymbolKind::specified: return "specified";
+        case SymbolKind::unknown: return "unknown";
+        case SymbolKind::intermediate: return "intermediate";
+    }
+    return "?";
+}
+
+const ex& TimeVariable::d(int k) const {
+    if (k < 0 || k > order())
+        throw ModelError("TimeVariable::d(): '" + name_ + primes(k) + "' is not declared; '" +
+                         name_ + "' is declared up to order " + std::to_string(order()) +
+                         "; declare it with a higher order");
+    return d_[static_cast<std::size_t>(k)];
+}
+
+SymbolTable::SymbolTable() {
+    Info i{.kind = SymbolKind::time, .name = "t"};
+    t_ = make_symbol("t", i);
+}
+
+void SymbolTable::check_new_name(const std::string& name) const {
+    if (!is_identifier(name))
+        throw ArgumentError("SymbolTable: '" + name +
+                            "' is not a valid name; use letters, digits and '_', "
+                            "starting with a letter");
+    auto it = by_name_.find(name);
+    if (it != by_name_.end())
+        throw ModelError("SymbolTable: '" + name + "' is already declared as a " +
+                         to_string(info_.at(it->second).kind) + "; choose another name");
+}
+
+ex SymbolTable::make_symbol(const std::string& name, Info i) {
+    ex s = GiNaC::realsymbol(name);
+    i.name = name;
+    if (!GiNaC::is_a<GiNaC::symbol>(i.base)) i.base = s;
+    i.index = order_.size();
+    info_.emplace(s, std::move(i));
+    by_name_.emplace(name, s);
+    order_.push_back(s);
+    return s;
+}
+
+ex SymbolTable::add_constant(const std::string& name, std::optional<double> value) {
+    check_new_name(name);
+    return make_symbol(name, Info{.kind = SymbolKind::constant, .value = value});
+}
+
+ex SymbolTable::add_unknown(const std::string& name) {
+    check_new_name(name);
+    return make_symbol(name, Info{.kind = SymbolKind::unknown});
+}
+
+TimeVariable SymbolTable::add_variable(const std::string& name, int order) {
+    return add_time_varying(name, order, SymbolKind::variable);
+}
+
+TimeVariable SymbolTable::add_specified(const std::string& name, int order) {
+    return add_time_varying(name, order, SymbolKind::specified);
+}
+
+TimeVariable SymbolTable::add_time_varying(const std::string& name, int order, SymbolKind kind) {
+    check_new_name(name);
+    if (order < 0 || order > 8)
+        throw ArgumentError("SymbolTable: derivative order " + std::to_string(order) + " of '" +
+                            name + "' is out of range; use 0 to 8");
+    std::vector<ex> d;
+    for (int k = 0; k <= order; ++k) {
+        Info i{.kind = kind, .base = d.empty() ? ex(0) : d.front(), .order = k};
+        d.push_back(make_symbol(name + primes(k), i));
+    }
+    for (int k = 0; k < order; ++k) info_.at(d[static_cast<std::size_t>(k)]).next = d[k + 1u];
+    return TimeVariable(name, std::move(d));
+}
+
+ex SymbolTable::add_intermediate(const ex& definition, const std::string& name) {
+    std::string n = name;
+    if (n.empty()) {
+        do n = "z" + std::to_string(next_z_++);
+        while (by_name_.count(n));
+    } else {
+        check_new_name(n);
+    }
+    return make_intermediate(definition, n);
+}
+
+ex SymbolTable::make_intermediate(const ex& definition, const std::string& n) {
+    if (by_name_.count(n))
+        throw ModelError("SymbolTable: '" + n + "' is already declared; choose another name");
+    Info i{.kind = SymbolKind::intermediate, .definition = definition};
+    for (const ex& s : symbols_of(definition)) {
+        auto it = info_.find(s);
+        if (it == info_.end())
+            throw ArgumentError("SymbolTable::add_intermediate(): the definition of '" + n +
+                                "' uses the symbol '" + GiNaC::ex_to<GiNaC::symbol>(s).get_name() +
+                                "', which was not declared in this table");
+        if (it->second.kind == SymbolKind::intermediate)
+            i.leaves.insert(it->second.leaves.begin(), it->second.leaves.end());
+        else
+            i.leaves.insert(s);
+    }
+    ex z = make_symbol(n, std::move(i));
+    intermediates_.push_back(z);
+    return z;
+}
+
+void SymbolTable::set_value(const ex& constant, double value) {
+    auto it = info_.find(constant);
+    if (it == info_.end() || it->second.kind != SymbolKind::constant) {
+        std::ostringstream os;
+        os << "SymbolTable::set_value(): '" << constant
+           << "' is not a constant of this table; declare it with add_constant()";
+        throw ArgumentError(os.str());
+    }
+    it->second.value = value;
+}
+
+const ex& SymbolTable::symbol(const std::string& name) const {
+    auto it = by_name_.find(name);
+    if (it == by_name_.end()) {
+        std::ostringstream os;
+        os << "SymbolTable: no symbol named '" << name << "'; declare it first";
+        throw ModelError(os.str());
+    }
+    return it->second;
+}
+
+TimeVariable SymbolTable::variable(const std::string& name) const {
+    const ex& q = symbol(name);
+    const Info& i = info(q, "SymbolTable::variable()");
+    if (i.kind != SymbolKind::variable && i.kind != SymbolKind::specified)
+        throw ModelError("SymbolTable::variable(): '" + name + "' is a " + to_string(i.kind) +
+                         ", not a variable");
+    std::vector<ex> d{i.base};
+    for (ex s = info_.at(i.base).next; GiNaC::is_a<GiNaC::symbol>(s); s = info_.at(s).next)
+        d.push_back(s);
+    return TimeVariable(info_.at(i.base).name, std::move(d));
+}
+
+const SymbolTable::Info& SymbolTable::info(const ex& s, const char* caller) const {
+    auto it = info_.find(s);
+    if (it == info_.end()) {
+        std::ostringstream os;
+        os << caller << ": '" << s << "' is not a symbol of this table; declare it first";
+        throw ArgumentError(os.str());
+    }
+    return it->second;
+}
+
+SymbolKind SymbolTable::kind(const ex& s) const { return info(s, "SymbolTable::kind()").kind; }
+const std::string& SymbolTable::name(const ex& s) const {
+    return info(s, "SymbolTable::name()").name;
+}
+int SymbolTable::derivative_order(const ex& s) const {
+    return info(s, "SymbolTable::derivative_order()").order;
+}
+const ex& SymbolTable::base(const ex& s) const { return info(s, "SymbolTable::base()").base; }
+std::optional<double> SymbolTable::value(const ex& s) const {
+    return info(s, "SymbolTable::value()").value;
+}
+const ex& SymbolTable::definition(const ex& z) const {
+    const Info& i = info(z, "SymbolTable::definition()");
+    if (i.kind != SymbolKind::intermediate)
+        throw ArgumentError("SymbolTable::definition(): '" + i.name + "' is not an intermediate");
+    return i.definition;
+}
+
+std::vector<ex> SymbolTable::symbols(SymbolKind k) const {
+    std::vector<ex> out;
+    for (const ex& s : order_)
+        if (info_.at(s).kind == k) out.push_back(s);
+    return out;
+}
+
+ex SymbolTable::dt(const ex& e) {
+    ex result = 0;
+    for (const ex& s : symbols_of(e)) {
+        const Info& i = info(s, "SymbolTable::dt()");
+        ex ds;
+        switch (i.kind) {
+            case SymbolKind::constant: continue;
+            case SymbolKind::time: ds = 1; break;
+            case SymbolKind::unknown:
+                throw ModelError("SymbolTable::dt(): '" + i.name +
+                                 "' is an unknown and has no time derivative; declare it as a "
+                                 "variable or specified if it changes in time");
+            case SymbolKind::variable:
+            case SymbolKind::specified:
+                if (!GiNaC::is_a<GiNaC::symbol>(i.next))
+                    throw ModelError("SymbolTable::dt(): the derivative of '" + i.name +
+                                     "' is not declared; declare '" + info_.at(i.base).name +
+                                     "' with order " + std::to_string(i.order + 1) +
+                                     " or higher");
+                ds = i.next;
+                break;
+            case SymbolKind::intermediate: {
+                auto it = z_dt_.find(s);
+                if (it == z_dt_.end()) {
+                    ex d = dt(i.definition);
+                    ex named = d.is_zero() || GiNaC::is_a<GiNaC::symbol>(d) ||
+                                       GiNaC::is_a<GiNaC::numeric>(d)
+                                   ? d
+                                   : make_intermediate(d, i.name + "'");
+                    it = z_dt_.emplace(s, named).first;
+                }
+                ds = it->second;
+                break;
+            }
+        }
+        if (ds.is_zero()) continue;
+        result += e.diff(GiNaC::ex_to<GiNaC::symbol>(s)) * ds;
+    }
+    return result;
+}
+
+ex SymbolTable::diff(const ex& e, const ex& s) const {
+    const Info& is = info(s, "SymbolTable::diff()");
+    ex result = e.diff(GiNaC::ex_to<GiNaC::symbol>(s));
+    for (const ex& z : symbols_of(e)) {
+        const Info& iz = info(z, "SymbolTable::diff()");
+        if (iz.kind != SymbolKind::intermediate || z.is_equal(s)) continue;
+        if (!iz.leaves.count(s) &&
+            !(is.kind == SymbolKind::intermediate && depends_on(iz.definition, s)))
+            continue;
+        ex dz = diff(iz.definition, s);
+        if (!dz.is_zero()) result += e.diff(GiNaC::ex_to<GiNaC::symbol>(z)) * dz;
+    }
+    return result;
+}
+
+bool SymbolTable::depends_on(const ex& e, const ex& s) const {
+    if (e.has(s)) return true;
+    for (const ex& z : symbols_of(e)) {
+        auto it = info_.find(z);
+        if (it != info_.end() && it->second.kind == SymbolKind::intermediate &&
+            (it->second.leaves.count(s) || depends_on(it->second.definition, s)))
+            return true;
+    }
+    return false;
+}
+
+const ex& SymbolTable::expanded_definition(const ex& z) const {
+    auto it = z_expanded_.find(z);
+    if (it != z_expanded_.end()) return it->second;
+    ex full = expand_intermediates(info_.at(z).definition);
+    return z_expanded_.emplace(z, full).first->second;
+}
+
+ex SymbolTable::expand_intermediates(const ex& e) const {
+    exmap m;
+    for (const ex& s : symbols_of(e)) {
+        auto it = info_.find(s);
+        if (it != info_.end() && it->second.kind == SymbolKind::intermediate)
+            m[s] = expanded_definition(s);
+    }
+    return m.empty() ? e : e.subs(m);
+}
+
+exmap SymbolTable::constant_values() const {
+    exmap m;
+    for (const auto& [s, i] : info_)
+        if (i.kind == SymbolKind::constant && i.value) m[s] = GiNaC::numeric(*i.value);
+    return m;
+}
+
+double SymbolTable::evaluate(const ex& e, const exmap& values) const {
+    exmap m = constant_values();
+    for (const auto& [k, v] : values) m[k] = v;
+    // intermediates in dependency order, only those reachable from e
+    GiNaC::exset needed;
+    std::vector<ex> stack{e};
+    while (!stack.empty()) {
+        ex cur = stack.back();
+        stack.pop_back();
+        for (const ex& s : symbols_of(cur)) {
+            auto it = info_.find(s);
+            if (it != info_.end() && it->second.kind == SymbolKind::intermediate &&
+                !m.count(s) && needed.insert(s).second)
+                stack.push_back(it->second.definition);
+        }
+    }
+    for (const ex& z : intermediates_) {
+        if (!needed.count(z)) continue;
+        m[z] = GiNaC::evalf(info_.at(z).definition.subs(m));
+    }
+    ex v = GiNaC::evalf(e.subs(m));
+    if (!GiNaC::is_a<GiNaC::numeric>(v) || !GiNaC::ex_to<GiNaC::numeric>(v).is_real()) {
+        for (const ex& s : symbols_of(v)) {
+            auto it = info_.find(s);
+            std::string n = it != info_.end() ? it->second.name
+                                              : GiNaC::ex_to<GiNaC::symbol>(s).get_name();
+            throw ArgumentError("SymbolTable::evaluate(): '" + n +
+                                "' has no value; give it one (constants: set_value)");
+        }
+        std::ostringstream os;
+        os << "SymbolTable::evaluate(): the expression does not evaluate to a real number ("
+           << v << ")";
+        throw ArgumentError(os.str());
+    }
+    return GiNaC::ex_to<GiNaC::numeric>(v).to_double();
+}
+
+GiNaC::exset symbols_of(const ex& e) {
+    GiNaC::exset out;
+    for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it)
+        if (GiNaC::is_a<GiNaC::symbol>(*it)) out.insert(*it);
+    return out;
+}
+
+namespace detail {
+void throw_internal(const char* condition, std::source_location where) {
+    std::ostringstream os;
+    os << "internal error: " << condition << " failed at " << where.file_name() << ":"
+       << where.line() << " (" << where.function_name() << "); please report this";
+    throw InternalError(os.str());
+}
+}  // namespace detail
+
+}  // namespace alembert
