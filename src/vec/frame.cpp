@@ -1,0 +1,224 @@
+// SPDX-License-Identifier: MIT
+// Frame orientation tree, rotation matrices along tree paths, angular velocity and acceleration.
+#include "alembert/vec/frame.hpp"
+
+#include <algorithm>
+#include <atomic>
+
+#include "alembert/error.hpp"
+#include "alembert/sym/simplify.hpp"
+
+namespace alembert {
+
+namespace {
+std::atomic<std::uint64_t> g_next_frame_id{1};
+
+std::string path_text(const std::vector<const Frame*>& path) {
+    std::string s;
+    for (const Frame* f : path) s += (s.empty() ? "'" : " -> '") + f->name() + "'";
+    return s;
+}
+}  // namespace
+
+Frame::Frame(SymbolTable& table, std::string name)
+    : table_(&table), name_(std::move(name)), id_(g_next_frame_id++) {
+    if (name_.empty()) throw ArgumentError("Frame: a frame needs a non-empty name");
+}
+
+Vector Frame::unit(Axis a) const {
+    Col3 c;
+    c[index_of(a)] = 1;
+    return Vector(*this, c);
+}
+
+void Frame::set_edge(const Frame& parent, Kind kind, const Mat3& R, const char* caller) {
+    if (&parent == this)
+        throw ModelError(std::string(caller) + ": frame '" + name_ +
+                         "' cannot be oriented relative to itself; orient it relative to "
+                         "another frame");
+    if (parent.table_ != table_)
+        throw ModelError(std::string(caller) + ": frames '" + name_ + "' and '" + parent.name_ +
+                         "' belong to different symbol tables (different models)");
+    std::vector<const Frame*> up;
+    for (const Frame* p = &parent; p; p = p->parent_) {
+        up.push_back(p);
+        if (p == this)
+            throw ModelError(std::string(caller) + ": orienting '" + name_ + "' relative to '" +
+                             parent.name_ + "' would close a rotation cycle, because '" +
+                             parent.name_ + "' is already oriented relative to '" + name_ +
+                             "' (" + path_text(up) +
+                             "); a frame tree has no cycles: orient '" + name_ +
+                             "' relative to a frame outside that chain");
+    }
+    parent_ = &parent;
+    kind_ = kind;
+    R_parent_ = R;
+    w_set_.reset();
+    alpha_set_.reset();
+    w_edge_cache_.reset();
+}
+
+void Frame::orient_axis(const Frame& parent, Axis axis, const ex& angle, Sense sense) {
+    ex a = sense == Sense::positive ? angle : -angle;
+    set_edge(parent, Kind::simple, simple_rotation(axis, a), "Frame::orient_axis()");
+    axes_ = {axis};
+    angles_ = {a};
+}
+
+void Frame::orient_body_fixed(const Frame& parent, RotationSequence seq, const ex& q1,
+                              const ex& q2, const ex& q3) {
+    auto ax = axes_of(seq);
+    Mat3 R = simple_rotation(ax[0], q1) * simple_rotation(ax[1], q2) * simple_rotation(ax[2], q3);
+    set_edge(parent, Kind::body, R, "Frame::orient_body_fixed()");
+    axes_.assign(ax.begin(), ax.end());
+    angles_ = {q1, q2, q3};
+}
+
+void Frame::orient_space_fixed(const Frame& parent, RotationSequence seq, const ex& q1,
+                               const ex& q2, const ex& q3) {
+    auto ax = axes_of(seq);
+    Mat3 R = simple_rotation(ax[2], q3) * simple_rotation(ax[1], q2) * simple_rotation(ax[0], q1);
+    set_edge(parent, Kind::space, R, "Frame::orient_space_fixed()");
+    axes_.assign(ax.begin(), ax.end());
+    angles_ = {q1, q2, q3};
+}
+
+void Frame::orient_dcm(const Frame& parent, const Mat3& R_PB) {
+    set_edge(parent, Kind::dcm, R_PB, "Frame::orient_dcm()");
+    axes_.clear();
+    angles_.clear();
+}
+
+const Mat3& Frame::rotation_from_parent() const {
+    if (!parent_)
+        throw ModelError("Frame::rotation_from_parent(): frame '" + name_ +
+                         "' is not oriented; orient it relative to another frame first");
+    return R_parent_;
+}
+
+void Frame::set_ang_vel(const Frame& reference, const Vector& w) {
+    if (parent_ != &reference)
+        throw ArgumentError(
+            "Frame::set_ang_vel(): the angular velocity of '" + name_ + "' can be set in '" +
+            (parent_ ? parent_->name_ : std::string("(no frame)")) +
+            "', the frame it is oriented relative to, not in '" + reference.name_ + "'" +
+            (parent_ ? "" : "; orient '" + name_ + "' first"));
+    w_set_ = w;
+    w_edge_cache_.reset();
+}
+
+void Frame::set_ang_acc(const Frame& reference, const Vector& alpha) {
+    if (parent_ != &reference)
+        throw ArgumentError("Frame::set_ang_acc(): the angular acceleration of '" + name_ +
+                            "' can be set only in the frame it is oriented relative to" +
+                            (parent_ ? " ('" + parent_->name_ + "')" : std::string()) +
+                            ", not in '" + reference.name_ + "'");
+    alpha_set_ = alpha;
+}
+
+Vector Frame::edge_ang_vel() const {
+    if (w_set_) return *w_set_;
+    if (w_edge_cache_) return *w_edge_cache_;
+    SymbolTable& st = *table_;
+    Vector w;
+    switch (kind_) {
+        case Kind::none:
+            throw ModelError("Frame::ang_vel_in(): frame '" + name_ + "' is not oriented");
+        case Kind::simple: w = st.dt(angles_[0]) * unit(axes_[0]); break;
+        case Kind::body: {
+            // w = q1' a1 + q2' a2 + q3' a3 with each axis carried into B by the later rotations
+            Mat3 R3 = simple_rotation(axes_[2], angles_[2]);
+            Mat3 R23 = simple_rotation(axes_[1], angles_[1]) * R3;
+            Col3 e1, e2, e3;
+            e1[index_of(axes_[0])] = 1, e2[index_of(axes_[1])] = 1, e3[index_of(axes_[2])] = 1;
+            Col3 c = st.dt(angles_[2]) * e3 + st.dt(angles_[1]) * (R3.transpose() * e2) +
+                     st.dt(angles_[0]) * (R23.transpose() * e1);
+            w = Vector(*this, c);
+            break;
+        }
+        case Kind::space: {
+            // w = q3' n3 + q2' R3 n2 + q1' R3 R2 n1, in the parent
+            Mat3 R3 = simple_rotation(axes_[2], angles_[2]);
+            Mat3 R32 = R3 * simple_rotation(axes_[1], angles_[1]);
+            Col3 e1, e2, e3;
+            e1[index_of(axes_[0])] = 1, e2[index_of(axes_[1])] = 1, e3[index_of(axes_[2])] = 1;
+            Col3 c = st.dt(angles_[2]) * e3 + st.dt(angles_[1]) * (R3 * e2) +
+                     st.dt(angles_[0]) * (R32 * e1);
+            w = Vector(*parent_, c);
+            break;
+        }
+        case Kind::dcm: {
+            // skew(w)_B = R^T dR/dt (Kane 1985, eq. 2.1.1)
+            Mat3 Rdot = R_parent_.map([&](const ex& e) { return st.dt(e); });
+            Mat3 W = R_parent_.transpose() * Rdot;
+            Col3 c{{simplify(W(2, 1)), simplify(W(0, 2)), simplify(W(1, 0))}};
+            w = Vector(*this, c);
+            break;
+        }
+    }
+    w_edge_cache_ = w;
+    return w;
+}
+
+std::vector<const Frame*> Frame::path_to_root() const {
+    std::vector<const Frame*> p;
+    for (const Frame* f = this; f; f = f->parent_) p.push_back(f);
+    return p;
+}
+
+namespace {
+// index in `path` of the first frame also on `other`, or npos
+std::size_t common_index(const std::vector<const Frame*>& path,
+                         const std::vector<const Frame*>& other) {
+    for (std::size_t i = 0; i < path.size(); ++i)
+        if (std::find(other.begin(), other.end(), path[i]) != other.end()) return i;
+    return path.size();
+}
+}  // namespace
+
+Vector Frame::ang_vel_in(const Frame& F) const {
+    if (&F == this) return {};
+    auto pb = path_to_root(), pf = F.path_to_root();
+    std::size_t ib = common_index(pb, pf);
+    if (ib == pb.size())
+        throw ModelError("Frame::ang_vel_in(): frames '" + name_ + "' and '" + F.name_ +
+                         "' are not connected by orientations (" + path_text(pb) + " and " +
+                         path_text(pf) + "); orient one relative to the other or to a "
+                         "common frame");
+    std::size_t jf = std::find(pf.begin(), pf.end(), pb[ib]) - pf.begin();
+    Vector w;
+    for (std::size_t i = 0; i < ib; ++i) w += pb[i]->edge_ang_vel();
+    for (std::size_t j = 0; j < jf; ++j) w -= pf[j]->edge_ang_vel();
+    return w;
+}
+
+Vector Frame::ang_acc_in(const Frame& F) const {
+    if (&F == this) return {};
+    if (parent_ == &F && alpha_set_) return *alpha_set_;
+    return ang_vel_in(F).dt_in(*this);
+}
+
+Mat3 Frame::rotation_in(const Frame& F) const {
+    if (&F == this) return Mat3::identity();
+    auto pb = path_to_root(), pf = F.path_to_root();
+    std::size_t ib = common_index(pb, pf);
+    if (ib == pb.size())
+        throw ModelError("rotation_matrix(): no orientation path between frames '" + F.name_ +
+                         "' and '" + name_ + "'; orient one relative to the other or to a "
+                         "common frame");
+    std::size_t jf = std::find(pf.begin(), pf.end(), pb[ib]) - pf.begin();
+    // R_CB = R_C,b_k ... R_b1,B down the path from the common ancestor C
+    auto down = [](const std::vector<const Frame*>& p, std::size_t n) {
+        if (n == 0) return Mat3::identity();
+        Mat3 R = p[n - 1]->R_parent_;
+        for (std::size_t i = n - 1; i-- > 0;) R = R * p[i]->R_parent_;
+        return R;
+    };
+    Mat3 R_CB = down(pb, ib);
+    if (jf == 0) return R_CB;
+    Mat3 R_CF = down(pf, jf);
+    if (ib == 0) return R_CF.transpose();
+    return R_CF.transpose() * R_CB;
+}
+
+}  // namespace alembert
