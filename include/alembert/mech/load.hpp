@@ -1,0 +1,32 @@
+// SPDX-License-Identifier: MIT
+// Loads: forces at points and torques on bodies, with the body they act on and come from.
+#pragma once
+
+#include <string>
+
+#include "alembert/vec/vector.hpp"
+
+namespace alembert {
+
+class Body;
+class Point;
+
+/// Whether a load is a force (bound to a point of application) or a torque (a couple).
+enum class LoadKind { force, torque };
+
+/// One load: a force applied at a point, or a torque, acting on one body and exerted by
+/// another (or by the surroundings).
+///
+/// Action/reaction pairs are stored as two loads whose `on` and `from` are swapped, so a
+/// system that holds both bodies of a pair sees neither: loads between members of a system
+/// are internal and are left out of its resultants.
+struct Load {
+    LoadKind kind = LoadKind::force;
+    std::string label;           ///< the user's name for the load ("T_A", "spring k1")
+    const Point* point = nullptr;  ///< point of application (forces only)
+    Vector vector;               ///< the force or torque vector
+    const Body* on = nullptr;    ///< the body it acts on
+    const Body* from = nullptr;  ///< the body exerting it; nullptr for the surroundings
+};
+
+}  // namespace alembert

@@ -1,0 +1,45 @@
+// SPDX-License-Identifier: MIT
+// Sample models shared by tests, benchmarks and examples.
+#pragma once
+
+#include <vector>
+
+#include "alembert/mech/system.hpp"
+
+namespace alembert {
+
+/// A built model with handles to what users of the sample usually need.
+struct SampleModel {
+    System system;
+    std::vector<TimeVariable> q;    ///< generalized coordinates, in joint order
+    std::vector<ex> unknowns;       ///< joint torque (or force) measures, in joint order
+    std::vector<RigidBody*> links;  ///< bodies, base first (empty for particle models)
+};
+
+/// The seed's sit-to-stand model, an inverted triple pendulum (Mitiguy, ch. 21): Newtonian
+/// frame N (the foot, fixed), shank A turning about Nz by qA at the ankle A_o (at N_o), thigh
+/// B by qB relative to A at the knee B_o (L_A along Ay), head-arms-trunk C by qC relative to
+/// B at the hip C_o (L_B along By); mass centres at d_A, d_B, d_C along each body's y axis;
+/// central inertias I_A, I_B, I_C about z; gravity -g Ny; motor torques T_A on A from N,
+/// T_B on B from A, T_C on C from B, about Nz (unknowns). Constants carry the values of a
+/// 70 kg, 1.70 m person from Winter's anthropometric table (Winter 2009, Table 4.1).
+SampleModel make_triple_pendulum();
+
+/// Joint type of a sample chain.
+enum class ChainKind {
+    planar,   ///< one revolute joint about z per link (relative angles q1..qn)
+    spatial,  ///< two-axis joints: about z by qz_i, then about the new x by qx_i
+};
+
+/// An n-link pendulum of uniform rods hanging from N_o: link B_i (length L_i, mass m_i,
+/// values 1 m and 1 kg) lies along its own -y axis, mass centre at L_i/2, central inertia
+/// m_i L_i^2/12 about x and z; gravity -g Ny (g = 9.81); joint torques T_i (planar) or
+/// Tz_i, Tx_i (spatial) on B_i from B_{i-1}.
+/// @throws alembert::ArgumentError if n < 1.
+SampleModel make_n_link_pendulum(int n, ChainKind kind = ChainKind::planar);
+
+/// A particle Q of mass m sliding along Nx, connected to N_o by a spring (stiffness k,
+/// natural length 0) and a damper (coefficient c); x is its coordinate.
+SampleModel make_mass_spring_damper();
+
+}  // namespace alembert

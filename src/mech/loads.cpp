@@ -1,0 +1,118 @@
+// SPDX-License-Identifier: MIT
+// Declaring loads: forces, torques, action/reaction pairs and the textbook force models.
+#include "alembert/error.hpp"
+#include "alembert/mech/system.hpp"
+#include "alembert/sym/simplify.hpp"
+
+namespace alembert {
+
+const Body* System::require_owner(const Point& P, const char* caller) const {
+    if (!P.owner())
+        throw ModelError(std::string(caller) + ": point '" + P.name() +
+                         "' is not fixed on a body or particle, so a force there acts on "
+                         "nothing; create it with add_point(\"" + P.name() +
+                         "\", &body) or apply the force at a point of the body");
+    return P.owner();
+}
+
+const Load& System::add_force(const Point& P, const Vector& F, const std::string& label) {
+    const Body* on = require_owner(P, "System::add_force()");
+    loads_.push_back(Load{.kind = LoadKind::force, .label = label, .point = &P, .vector = F,
+                          .on = on, .from = nullptr});
+    return loads_.back();
+}
+
+void System::add_pair(const Point& P, const Point& Q, const Vector& F_on_P,
+                      const std::string& label) {
+    if (!P.owner() && !Q.owner())
+        throw ModelError("System: neither '" + P.name() + "' nor '" + Q.name() +
+                         "' is fixed on a body or particle, so the load '" + label +
+                         "' acts on nothing; attach one of the points to a body");
+    if (P.owner())
+        loads_.push_back(Load{.kind = LoadKind::force, .label = label, .point = &P,
+                              .vector = F_on_P, .on = P.owner(), .from = Q.owner()});
+    if (Q.owner())
+        loads_.push_back(Load{.kind = LoadKind::force, .label = label, .point = &Q,
+                              .vector = -F_on_P, .on = Q.owner(), .from = P.owner()});
+}
+
+void System::add_force_pair(const Point& P, const Point& Q, const Vector& F,
+                            const std::string& label) {
+    add_pair(P, Q, F, label);
+}
+
+const Load& System::add_torque(const Body& B, const Vector& T, const std::string& label) {
+    loads_.push_back(Load{.kind = LoadKind::torque, .label = label, .point = nullptr,
+                          .vector = T, .on = &B, .from = nullptr});
+    return loads_.back();
+}
+
+void System::add_torque_pair(const Body& B, const Frame& A, const Vector& T,
+                             const std::string& label) {
+    const Body* from = body_of(A);
+    if (from == &B)
+        throw ModelError("System::add_torque_pair(): the torque '" + label + "' acts on '" +
+                         B.name() + "' from its own frame; name the other body's frame");
+    loads_.push_back(Load{.kind = LoadKind::torque, .label = label, .point = nullptr,
+                          .vector = T, .on = &B, .from = from});
+    if (from)
+        loads_.push_back(Load{.kind = LoadKind::torque, .label = label, .point = nullptr,
+                              .vector = -T, .on = from, .from = &B});
+}
+
+void System::set_gravity(const Vector& g) { gravity_ = g; }
+
+namespace {
+// r = r^{P/Q}, its length and unit vector
+struct Line {
+    Vector r;
+    ex length;
+};
+Line line_between(const Point& P, const Point& Q, const char* caller) {
+    Vector r = P.pos_from(Q);
+    if (r.simplify().is_zero())
+        throw ModelError(std::string(caller) + ": points '" + P.name() + "' and '" + Q.name() +
+                         "' coincide, so the line of action is not defined; separate them");
+    return {r, GiNaC::sqrt(simplify(dot(r, r)))};
+}
+}  // namespace
+
+void System::add_spring(const Point& P, const Point& Q, const ex& k, const ex& L0,
+                        const std::string& label) {
+    Line l = line_between(P, Q, "System::add_spring()");
+    ex stretch = l.length - L0;
+    add_pair(P, Q, (-k * stretch / l.length) * l.r, label);
+    potentials_.push_back({k * stretch * stretch / 2});
+}
+
+void System::add_damper(const Point& P, const Point& Q, const ex& c, const std::string& label) {
+    Line l = line_between(P, Q, "System::add_damper()");
+    Vector u = l.r / l.length;
+    Vector v = P.vel_in(newtonian()) - Q.vel_in(newtonian());
+    add_pair(P, Q, (-c * dot(v, u)) * u, label);
+}
+
+void System::add_drag(const Point& P, const ex& c, DragLaw law, const std::string& label) {
+    require_owner(P, "System::add_drag()");
+    Vector v = P.vel_in(newtonian());
+    ex s = law == DragLaw::linear ? -c : -c * GiNaC::sqrt(simplify(dot(v, v)));
+    add_force(P, s * v, label);
+}
+
+void System::add_coulomb_friction(const Point& P, const Point& Q, const ex& mu, const ex& Fn,
+                                  const Vector& u, const std::string& label) {
+    Vector v = P.vel_in(newtonian()) - Q.vel_in(newtonian());
+    add_pair(P, Q, (-mu * GiNaC::abs(Fn) * GiNaC::csgn(dot(v, u))) * u, label);
+}
+
+void System::add_inverse_square_gravity(const Point& P, const Point& Q, const ex& G,
+                                        const std::string& label) {
+    const Body* bp = require_owner(P, "System::add_inverse_square_gravity()");
+    const Body* bq = require_owner(Q, "System::add_inverse_square_gravity()");
+    Line l = line_between(P, Q, "System::add_inverse_square_gravity()");
+    ex mm = G * bp->mass() * bq->mass();
+    add_pair(P, Q, (-mm / GiNaC::pow(l.length, 3)) * l.r, label);
+    potentials_.push_back({-mm / l.length});
+}
+
+}  // namespace alembert
