@@ -15,6 +15,12 @@ namespace alembert {
 
 using GiNaC::ex;
 using GiNaC::exmap;
+// GiNaC's arithmetic, visible to argument-dependent look-up on Alembert types such as
+// TimeVariable, so that qA + qB and 2*qA read as in the textbook
+using GiNaC::operator+;
+using GiNaC::operator-;
+using GiNaC::operator*;
+using GiNaC::operator/;
 
 /// What a symbol of the table stands for.
 enum class SymbolKind {

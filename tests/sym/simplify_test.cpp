@@ -1,0 +1,107 @@
+// SPDX-License-Identifier: MIT
+// Simplification for mechanics and equality by meaning.
+#include "alembert/sym/simplify.hpp"
+
+#include "alembert/sym/symbol_table.hpp"
+#include "support/expect.hpp"
+
+using namespace alembert;
+using GiNaC::cos;
+using GiNaC::pow;
+using GiNaC::sin;
+
+namespace {
+struct Symbols {
+    SymbolTable s;
+    ex a = s.add_variable("a"), b = s.add_variable("b"), c = s.add_variable("c");
+    ex k = s.add_constant("k"), m = s.add_constant("m");
+};
+}  // namespace
+
+TEST(Simplify, PythagoreanIdentityCollapses) {
+    Symbols x;
+    EXPECT_TRUE((simplify(x.k * pow(sin(x.a), 2) + x.k * pow(cos(x.a), 2)) - x.k).is_zero());
+    // m (1 - cos^2 a) -> m sin^2 a is shorter
+    ex r = simplify(x.m - x.m * pow(cos(x.a), 2));
+    EXPECT_TRUE((r - x.m * pow(sin(x.a), 2)).is_zero());
+}
+
+namespace {
+// r equals `expected` in meaning and is as short (up to a sign flip of the argument)
+::testing::AssertionResult folds_to(const ex& r, const ex& expected) {
+    if (!alembert::equal(r, expected)) return ::testing::AssertionFailure() << "not equal";
+    if (count_ops(r) > count_ops(expected) + 1)
+        return ::testing::AssertionFailure() << to_string(r) << " is longer than "
+                                             << to_string(expected);
+    return ::testing::AssertionSuccess();
+}
+}  // namespace
+
+TEST(Simplify, AngleSumsFoldIntoOneTerm) {
+    Symbols x;
+    const ex &a = x.a, &b = x.b, &c = x.c, &k = x.k;
+    EXPECT_TRUE(folds_to(simplify(k * sin(a) * cos(b) + k * cos(a) * sin(b)), k * sin(a + b)));
+    EXPECT_TRUE(folds_to(simplify(sin(a) * cos(b) - cos(a) * sin(b)), sin(a - b)));
+    EXPECT_TRUE(folds_to(simplify(cos(a) * cos(b) - sin(a) * sin(b)), cos(a + b)));
+    EXPECT_TRUE(folds_to(simplify(cos(a) * cos(b) + sin(a) * sin(b)), cos(a - b)));
+    // sin(a + b + c) written out in four products folds back to one
+    ex expanded = GiNaC::expand(
+        (sin(a) * cos(b) + cos(a) * sin(b)) * cos(c) + (cos(a) * cos(b) - sin(a) * sin(b)) * sin(c));
+    EXPECT_TRUE(folds_to(simplify(-k * expanded), -k * sin(a + b + c)));
+}
+
+TEST(Simplify, FoldsInsideProductsAndKeepsUnrelatedTerms) {
+    Symbols x;
+    const ex &a = x.a, &b = x.b, &k = x.k, &m = x.m;
+    ex e = m * (cos(a) * cos(b) - sin(a) * sin(b)) * (k + a) + k * sin(a);
+    ex r = simplify(e);
+    EXPECT_TRUE(alembert::equal(r, e));
+    EXPECT_LT(count_ops(r), count_ops(e));
+    EXPECT_TRUE(r.has(cos(a + b)));
+}
+
+TEST(Simplify, NeverLengthens) {
+    Symbols x;
+    ex e = (x.k + x.m) * (x.a + x.b) * (x.a - x.c);
+    EXPECT_LE(count_ops(simplify(e)), count_ops(e));
+    EXPECT_LE(count_ops(trig_simplify(e)), count_ops(e));
+}
+
+TEST(Simplify, RationalExpressionsAreNormalised) {
+    Symbols x;
+    ex e = x.k / (x.m + x.a) + x.a * x.k / (x.m + x.a);
+    ex r = simplify(e);
+    EXPECT_TRUE(alembert::equal(r, e));
+    EXPECT_LT(count_ops(r), count_ops(e));
+}
+
+TEST(Equal, RecognisesIdentitiesByMeaning) {
+    Symbols x;
+    const ex &a = x.a, &b = x.b;
+    EXPECT_TRUE(alembert::equal(sin(2 * a), 2 * sin(a) * cos(a)));  // numeric fallback
+    EXPECT_TRUE(alembert::equal(pow(sin(a + b), 2) + pow(cos(a + b), 2), 1));
+    EXPECT_TRUE(alembert::equal((a + b) * (a - b), a * a - b * b));
+    EXPECT_FALSE(alembert::equal(sin(2 * a), 2 * sin(a)));
+    EXPECT_FALSE(alembert::equal(a, a + 1e-6));
+    EXPECT_GT(max_numeric_difference(cos(a), sin(a)), 0.01);
+}
+
+TEST(CollectIn, GroupsByTheListedSymbols) {
+    SymbolTable s;
+    TimeVariable q = s.add_variable("q");
+    ex m = s.add_constant("m"), L = s.add_constant("L");
+    ex e = m * L * q.d(2) + L * L * m * q.d(2) + m * L * pow(q.d(1), 2) + 3;
+    ex c = collect_in(e, {q.d(2), q.d(1)});
+    EXPECT_TRUE(alembert::equal(c, e));
+    EXPECT_TRUE(alembert::equal(c.coeff(q.d(2), 1), m * L + L * L * m));
+    EXPECT_TRUE(alembert::equal(c.coeff(q.d(1), 2), m * L));
+}
+
+TEST(CountOps, CountsArithmeticOfATree) {
+    Symbols x;
+    EXPECT_EQ(count_ops(x.a), 0u);
+    EXPECT_EQ(count_ops(x.a + x.b + x.c), 2u);           // two additions
+    EXPECT_EQ(count_ops(x.a * x.b), 1u);                 // one product
+    EXPECT_EQ(count_ops(sin(x.a) * x.k + x.m), 3u);      // sin, *, +
+    EXPECT_EQ(count_ops(pow(x.a, 2)), 1u);
+}
