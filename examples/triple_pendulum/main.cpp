@@ -54,11 +54,11 @@ int main() {
     for (const RigidBody* b : {&A, &B, &C})
         std::cout << "v_" << b->cm().name() << "_N> = " << b->cm().vel_in(N).simplify() << "\n";
     BodySet S = sys.bodies({"A", "B", "C"});
-    std::cout << "H_S_Ao> = " << sys.calc_angular_momentum(S, A_o).express_in(N).simplify()
-              << "\n";
-    LoadResultant R = sys.calc_resultant(S, A_o);
-    std::cout << "M_S_Ao> = " << R.moment.express_in(N).simplify() << "\n";
-    std::cout << "KE = " << to_string(simplify(sys.calc_kinetic_energy(S))) << "\n";
+    ex H_z = dot(sys.calc_angular_momentum(S, A_o), N.z());
+    std::cout << "H_S_Ao> = (" << to_string(collect_in(H_z, {qA.d(1), qB.d(1), qC.d(1)}))
+              << ")*Nz>\n";
+    ex M_z = dot(sys.calc_resultant(S, A_o).moment, N.z());
+    std::cout << "M_S_Ao> = (" << to_string(simplify(M_z)) << ")*Nz>\n";
     std::cout << "PE = " << to_string(simplify(sys.calc_potential_energy())) << "\n";
     return 0;
 }
