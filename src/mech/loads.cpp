@@ -23,17 +23,19 @@ const Load& System::add_force(const Point& P, const Vector& F, const std::string
 }
 
 void System::add_pair(const Point& P, const Point& Q, const Vector& F_on_P,
-                      const std::string& label) {
+                      const std::string& label, bool conservative) {
     if (!P.owner() && !Q.owner())
         throw ModelError("System: neither '" + P.name() + "' nor '" + Q.name() +
                          "' is fixed on a body or particle, so the load '" + label +
                          "' acts on nothing; attach one of the points to a body");
     if (P.owner())
         loads_.push_back(Load{.kind = LoadKind::force, .label = label, .point = &P,
-                              .vector = F_on_P, .on = P.owner(), .from = Q.owner()});
+                              .vector = F_on_P, .on = P.owner(), .from = Q.owner(),
+                              .conservative = conservative});
     if (Q.owner())
         loads_.push_back(Load{.kind = LoadKind::force, .label = label, .point = &Q,
-                              .vector = -F_on_P, .on = Q.owner(), .from = P.owner()});
+                              .vector = -F_on_P, .on = Q.owner(), .from = P.owner(),
+                              .conservative = conservative});
 }
 
 void System::add_force_pair(const Point& P, const Point& Q, const Vector& F,
@@ -81,7 +83,7 @@ void System::add_spring(const Point& P, const Point& Q, const ex& k, const ex& L
                         const std::string& label) {
     Line l = line_between(P, Q, "System::add_spring()");
     ex stretch = l.length - L0;
-    add_pair(P, Q, (-k * stretch / l.length) * l.r, label);
+    add_pair(P, Q, (-k * stretch / l.length) * l.r, label, /*conservative=*/true);
     potentials_.push_back({k * stretch * stretch / 2});
 }
 
@@ -111,7 +113,7 @@ void System::add_inverse_square_gravity(const Point& P, const Point& Q, const ex
     const Body* bq = require_owner(Q, "System::add_inverse_square_gravity()");
     Line l = line_between(P, Q, "System::add_inverse_square_gravity()");
     ex mm = G * bp->mass() * bq->mass();
-    add_pair(P, Q, (-mm / GiNaC::pow(l.length, 3)) * l.r, label);
+    add_pair(P, Q, (-mm / GiNaC::pow(l.length, 3)) * l.r, label, /*conservative=*/true);
     potentials_.push_back({-mm / l.length});
 }
 

@@ -120,6 +120,12 @@ BodySet System::bodies() const {
     return s;
 }
 
+std::vector<const Point*> System::points() const {
+    std::vector<const Point*> out;
+    for (const auto& p : points_) out.push_back(p.get());
+    return out;
+}
+
 BodySet System::bodies(std::initializer_list<std::string> names) {
     BodySet s;
     for (const auto& n : names) s.push_back(&body(n));

@@ -27,6 +27,10 @@ struct Load {
     Vector vector;               ///< the force or torque vector
     const Body* on = nullptr;    ///< the body it acts on
     const Body* from = nullptr;  ///< the body exerting it; nullptr for the surroundings
+    /// True if the load derives from a potential the System accounts for in
+    /// calc_potential_energy() (springs, inverse-square gravity); Lagrange's method takes
+    /// such loads through the potential energy instead of generalized forces.
+    bool conservative = false;
 };
 
 }  // namespace alembert

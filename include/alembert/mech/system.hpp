@@ -70,6 +70,8 @@ public:
     const Body* body_of(const Frame& F) const;
     /// Every body and particle, in declaration order.
     BodySet bodies() const;
+    /// Every point, in declaration order (N_o first).
+    std::vector<const Point*> points() const;
     /// The named bodies and particles.
     BodySet bodies(std::initializer_list<std::string> names);
 
@@ -132,7 +134,8 @@ private:
         ex energy;
     };
     const Body* require_owner(const Point& P, const char* caller) const;
-    void add_pair(const Point& P, const Point& Q, const Vector& F_on_P, const std::string& label);
+    void add_pair(const Point& P, const Point& Q, const Vector& F_on_P, const std::string& label,
+                  bool conservative = false);
 
     std::unique_ptr<SymbolTable> table_;
     std::vector<std::unique_ptr<Frame>> frames_;
