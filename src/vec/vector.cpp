@@ -82,11 +82,13 @@ Vector Vector::simplify() const {
 ex Vector::magnitude() const { return GiNaC::sqrt(alembert::simplify(dot(*this, *this))); }
 
 Vector Vector::unit() const {
-    Vector s = simplify();
-    if (s.is_zero())
-        throw ArgumentError(
+    auto zero = [] {
+        return ArgumentError(
             "Vector::unit(): the vector is zero, so it has no direction; check that the points "
             "or vectors that define it are distinct, or give the direction explicitly");
+    };
+    Vector s = simplify();
+    if (s.is_zero()) throw zero();
     if (s.parts_.size() == 1) {
         const Col3& c = s.parts_[0].second;
         int nz = 0, k = 0;
@@ -98,7 +100,10 @@ Vector Vector::unit() const {
             return Vector(*s.parts_[0].first, u);
         }
     }
-    return s / s.magnitude();
+    // parts in several frames can cancel, so a zero vector may show only in its magnitude
+    ex m = s.magnitude();
+    if (m.is_zero()) throw zero();
+    return s / m;
 }
 
 ex dot(const Vector& a, const Vector& b) {
@@ -117,10 +122,13 @@ Vector cross(const Vector& a, const Vector& b) {
 }
 
 ex angle_between(const Vector& a, const Vector& b) {
-    if (a.simplify().is_zero() || b.simplify().is_zero())
+    // a magnitude, not only the parts, shows a vector whose parts in several frames cancel
+    ex ma = a.simplify().is_zero() ? ex(0) : a.magnitude();
+    ex mb = b.simplify().is_zero() ? ex(0) : b.magnitude();
+    if (ma.is_zero() || mb.is_zero())
         throw ArgumentError("angle_between(): one of the vectors is zero, so the angle is not "
                             "defined");
-    return GiNaC::acos(simplify(dot(a, b)) / (a.magnitude() * b.magnitude()));
+    return GiNaC::acos(simplify(dot(a, b)) / (ma * mb));
 }
 
 std::string Vector::to_string() const {
