@@ -1,0 +1,28 @@
+// SPDX-License-Identifier: MIT
+// Forming a model by several methods and comparing their solved accelerations.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "alembert/mech/system.hpp"
+
+namespace alembert {
+
+/// The outcome of forming one model by several methods.
+struct MethodComparison {
+    std::vector<std::string> methods;  ///< "road-map", "Kane", "Lagrange"
+    int states = 0;                    ///< random states compared
+    double max_difference = 0;         ///< largest |q''_method - q''_road-map|, scaled by max(1, |q''|)
+};
+
+/// Forms the equations of motion of `sys` in the coordinates `q` by the planned road-map, by
+/// Kane's method and by Lagrange's method, solves each for the accelerations q'' at `states`
+/// pseudo-random states (q, q' and unknown load measures drawn from [-1, 1], constants
+/// without a value from [0.5, 1.5]; deterministic for a given seed), and reports the largest
+/// relative difference.
+/// @throws alembert::SolveError if a method's mass matrix is singular at a drawn state.
+MethodComparison compare_methods(const System& sys, const std::vector<TimeVariable>& q,
+                                 int states = 3, unsigned seed = 1);
+
+}  // namespace alembert

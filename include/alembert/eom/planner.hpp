@@ -1,0 +1,33 @@
+// SPDX-License-Identifier: MIT
+// The automatic road-map planner: picks S, the direction and the about point for each unknown.
+#pragma once
+
+#include <vector>
+
+#include "alembert/eom/roadmap.hpp"
+
+namespace alembert {
+
+/// Plans and forms an MG road-map: one row per unknown.
+///
+/// For each coordinate q_i it freezes the others and finds what moves: S is the set of bodies
+/// whose velocity or angular velocity has a non-zero partial with respect to q_i'. If S turns,
+/// the row rotates about u = the partial angular velocity direction (the joint axis), about a
+/// point O of S whose partial velocity is zero (the joint, where the unknown forces between S
+/// and the rest act, so they drop out); if S only slides, the row translates along the
+/// partial velocity direction. The planner then checks that S moves as one rigid body about
+/// O (partial velocities of every mass centre equal u x r^{cm/O}); where that fails (closed
+/// loops, rolling), it says so in the row's note.
+///
+/// `unknowns` are what the rows solve for: accelerations q_i'' (forward dynamics), torque or
+/// force measures (inverse dynamics, statics), or coordinates q_i (statics). A coordinate's own
+/// derivative is assigned to its row; a load measure to the row whose equation holds it with
+/// the fewest other unknowns.
+/// @throws alembert::ModelError naming the unknown if no row holds it, or if there are more
+///         unknowns than coordinates.
+std::vector<RoadmapRow> plan_roadmap(const System& sys,
+                                     const std::vector<TimeVariable>& coordinates,
+                                     const std::vector<ex>& unknowns,
+                                     Analysis analysis = Analysis::dynamics);
+
+}  // namespace alembert

@@ -1,0 +1,59 @@
+// SPDX-License-Identifier: MIT
+// MG road-map rows: one equation per unknown from a chosen system, direction and point.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "alembert/mech/system.hpp"
+
+namespace alembert {
+
+/// Whether a row balances forces along a direction or moments about a line.
+enum class Motion { translate, rotate };
+
+/// Dynamics (inertia terms kept) or statics (all inertia terms zero).
+enum class Analysis { dynamics, statics };
+
+/// One row of an MG road-map (Mitiguy, Advanced Dynamics & Motion Simulation, ch. 21).
+///
+/// Sign convention, used everywhere in Alembert: an equation is a residual
+/// E = applied - inertial, set to zero:
+///  - translate: E = u . (F^S - sum m ^N a^{cm})          (statics: u . F^S)
+///  - rotate:    E = u . (M^{S/O} - ^N d/dt ^N H^{S/O} - ^N v^O x ^N L^S)   (statics: u . M^{S/O})
+/// where F^S and M^{S/O} hold only the loads external to S.
+struct RoadmapRow {
+    ex variable{};                  ///< the unknown the row is for (q'', q, or a torque)
+    Motion motion = Motion::rotate;
+    Vector direction{};             ///< u, the unit vector the balance is projected on
+    BodySet system{};               ///< S
+    const Point* about = nullptr;   ///< O, for rotate rows
+    Analysis analysis = Analysis::dynamics;
+
+    // ---- filled by form_roadmap_row() ----------------------------------------------------
+    ex equation{};                        ///< the residual E (= 0)
+    std::vector<std::string> fbd{};       ///< the free-body diagram of S: loads from outside
+    std::vector<ex> additional_unknowns{};  ///< unknowns in E other than `variable`
+    std::string note{};                   ///< the planner's remarks (empty when all is well)
+};
+
+/// The residual E of a row (see RoadmapRow for the formula and sign).
+/// @throws alembert::ArgumentError if a rotate row has no about point or S is empty.
+ex form_roadmap_equation(const System& sys, const RoadmapRow& row);
+
+/// Forms the row's equation, its free-body diagram and its additional unknowns (those of
+/// `unknowns` that appear in the equation besides the row's variable).
+void form_roadmap_row(const System& sys, RoadmapRow& row, const std::vector<ex>& unknowns);
+
+/// The free-body diagram of S as text lines: each load external to S with where it acts and
+/// what exerts it, gravity, and the joints where S connects to the rest (unknown forces).
+std::vector<std::string> describe_free_body_diagram(const System& sys, const BodySet& S);
+
+/// The road-map as an aligned text table (variable | translate/rotate | direction | system S |
+/// FBD of S | about point | equation | additional unknowns), followed by the equations.
+std::string format_roadmap_table(const System& sys, const std::vector<RoadmapRow>& rows);
+
+/// The road-map as JSON: an array of row objects with the same fields as the table.
+std::string format_roadmap_json(const System& sys, const std::vector<RoadmapRow>& rows);
+
+}  // namespace alembert

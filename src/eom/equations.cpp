@@ -1,0 +1,84 @@
+// SPDX-License-Identifier: MIT
+// Linear systems from residuals, and their symbolic and numeric solution.
+#include "alembert/eom/equations.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include "alembert/error.hpp"
+#include "alembert/sym/print.hpp"
+#include "alembert/sym/simplify.hpp"
+
+namespace alembert {
+
+LinearSystem form_linear_system(const std::vector<ex>& residuals, const std::vector<ex>& unknowns) {
+    if (residuals.size() != unknowns.size())
+        throw ArgumentError("form_linear_system(): " + std::to_string(residuals.size()) +
+                            " equations for " + std::to_string(unknowns.size()) +
+                            " unknowns; give one equation per unknown");
+    const std::size_t n = unknowns.size();
+    LinearSystem s{GiNaC::matrix(n, n), GiNaC::matrix(n, 1), unknowns};
+    exmap zero;
+    for (const ex& x : unknowns) {
+        if (!GiNaC::is_a<GiNaC::symbol>(x))
+            throw ArgumentError("form_linear_system(): unknown '" + to_string(x) +
+                                "' is not a symbol");
+        zero[x] = 0;
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+        for (std::size_t j = 0; j < n; ++j) {
+            const GiNaC::symbol& xj = GiNaC::ex_to<GiNaC::symbol>(unknowns[j]);
+            ex a = residuals[i].diff(xj);
+            for (const ex& x : unknowns)
+                if (a.has(x))
+                    throw SolveError("form_linear_system(): equation " + std::to_string(i + 1) +
+                                     " is not linear in '" + to_string(unknowns[j]) +
+                                     "' (its coefficient holds '" + to_string(x) +
+                                     "'); use a nonlinear solve");
+            s.A(i, j) = -a;
+        }
+        s.b(i, 0) = residuals[i].subs(zero);
+    }
+    return s;
+}
+
+std::vector<ex> solve_symbolic(const LinearSystem& sys) {
+    const unsigned n = sys.A.rows();
+    GiNaC::matrix vars(n, 1);
+    for (unsigned i = 0; i < n; ++i) vars(i, 0) = GiNaC::symbol("x" + std::to_string(i));
+    GiNaC::matrix x;
+    try {
+        x = sys.A.solve(vars, sys.b, GiNaC::solve_algo::gauss);
+    } catch (const std::runtime_error& e) {
+        throw SolveError(std::string("solve_symbolic(): the coefficient matrix is singular (") +
+                         e.what() + "); check that every unknown appears in the equations");
+    }
+    std::vector<ex> out;
+    for (unsigned i = 0; i < n; ++i) out.push_back(simplify(GiNaC::normal(x(i, 0))));
+    return out;
+}
+
+Eigen::VectorXd solve_numeric(const SymbolTable& table, const LinearSystem& sys,
+                              const exmap& values) {
+    const int n = static_cast<int>(sys.A.rows());
+    Eigen::MatrixXd A(n, n);
+    Eigen::VectorXd b(n);
+    for (int i = 0; i < n; ++i) {
+        for (int j = 0; j < n; ++j) A(i, j) = table.evaluate(sys.A(i, j), values);
+        b(i) = table.evaluate(sys.b(i, 0), values);
+    }
+    Eigen::FullPivLU<Eigen::MatrixXd> lu(A);
+    double rcond = lu.rcond();
+    if (!lu.isInvertible() || !(rcond > 1e-14)) {
+        std::ostringstream os;
+        os << "solve_numeric(): the coefficient matrix is singular or ill-conditioned at this "
+              "state (reciprocal condition estimate "
+           << rcond << ") for unknowns";
+        for (const ex& x : sys.unknowns) os << " " << to_string(x);
+        os << "; the configuration may be singular (a locked or degenerate pose)";
+        throw SolveError(os.str());
+    }
+    return lu.solve(b);
+}
+
+}  // namespace alembert

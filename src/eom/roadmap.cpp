@@ -1,0 +1,216 @@
+// SPDX-License-Identifier: MIT
+// Forming road-map rows, describing free-body diagrams, printing the road-map table.
+#include "alembert/eom/roadmap.hpp"
+
+#include <algorithm>
+#include <sstream>
+
+#include "alembert/eom/inertia_forces.hpp"
+#include "alembert/error.hpp"
+#include "alembert/sym/print.hpp"
+#include "alembert/sym/simplify.hpp"
+
+namespace alembert {
+
+namespace {
+
+bool member(const BodySet& S, const Body* b) {
+    return b && std::find(S.begin(), S.end(), b) != S.end();
+}
+
+std::string body_or_ground(const System& sys, const Body* b) {
+    return b ? b->name() : sys.newtonian().name();
+}
+
+std::string set_text(const BodySet& S) {
+    std::string s = "{";
+    for (std::size_t i = 0; i < S.size(); ++i) s += (i ? ", " : "") + S[i]->name();
+    return s + "}";
+}
+
+}  // namespace
+
+ex form_roadmap_equation(const System& sys, const RoadmapRow& row) {
+    if (row.system.empty())
+        throw ArgumentError("form_roadmap_equation(): the row for '" + to_string(row.variable) +
+                            "' has an empty system S; list the bodies it moves");
+    const Frame& N = sys.newtonian();
+    if (row.motion == Motion::translate) {
+        // u . (F^S - sum m a)
+        Vector F = sys.calc_resultant(row.system, sys.origin()).force;
+        if (row.analysis == Analysis::dynamics) F -= calc_inertial_force(row.system, N);
+        return dot(row.direction, F);
+    }
+    if (!row.about)
+        throw ArgumentError("form_roadmap_equation(): the rotate row for '" +
+                            to_string(row.variable) + "' has no about point; give one");
+    // u . (M^{S/O} - d/dt H^{S/O} - v^O x L^S), the inertial part as sum I.alpha + w x I.w + r x m a
+    Vector M = sys.calc_resultant(row.system, *row.about).moment;
+    if (row.analysis == Analysis::dynamics) M -= calc_inertial_moment(row.system, *row.about, N);
+    return dot(row.direction, M);
+}
+
+std::vector<std::string> describe_free_body_diagram(const System& sys, const BodySet& S) {
+    std::vector<std::string> out;
+    for (const Load& l : sys.loads()) {
+        if (!member(S, l.on) || member(S, l.from)) continue;
+        std::string what = l.label.empty() ? (l.kind == LoadKind::force ? "force" : "torque")
+                                           : l.label;
+        if (l.kind == LoadKind::force)
+            out.push_back(what + " at " + l.point->name() + " from " + body_or_ground(sys, l.from));
+        else
+            out.push_back(what + " on " + l.on->name() + " from " + body_or_ground(sys, l.from));
+    }
+    if (!sys.gravity().is_zero()) {
+        std::string g = "gravity at";
+        for (std::size_t i = 0; i < S.size(); ++i) g += (i ? ", " : " ") + S[i]->cm().name();
+        out.push_back(g);
+    }
+    // joints: points of S located from a point that is not on S carry unknown contact loads
+    for (const Point* p : sys.points()) {
+        if (!member(S, p->owner()) || !p->located_from()) continue;
+        const Point* from = p->located_from();
+        if (member(S, from->owner())) continue;
+        out.push_back("joint force at " + p->name() + " from " +
+                      body_or_ground(sys, from->owner()) + " (unknown)");
+    }
+    return out;
+}
+
+void form_roadmap_row(const System& sys, RoadmapRow& row, const std::vector<ex>& unknowns) {
+    row.equation = form_roadmap_equation(sys, row);
+    row.fbd = describe_free_body_diagram(sys, row.system);
+    row.additional_unknowns.clear();
+    for (const ex& x : unknowns)
+        if (!x.is_equal(row.variable) && row.equation.has(x)) row.additional_unknowns.push_back(x);
+}
+
+namespace {
+
+std::string direction_text(const System& sys, const Vector& u) {
+    // prefer the Newtonian frame when the direction is constant there
+    Col3 c = u.components_in(sys.newtonian());
+    bool constant = true;
+    for (int i = 0; i < 3; ++i) {
+        c[i] = simplify(c[i]);
+        if (!GiNaC::is_a<GiNaC::numeric>(c[i])) constant = false;
+    }
+    return constant ? Vector(sys.newtonian(), c).to_string() : u.to_string();
+}
+
+struct Cells {
+    std::vector<std::string> c;
+};
+
+Cells row_cells(const System& sys, const RoadmapRow& r) {
+    std::string eq = r.motion == Motion::translate
+                         ? (r.analysis == Analysis::statics ? "u.F^S = 0" : "u.(F^S - m a^Scm) = 0")
+                         : (r.analysis == Analysis::statics
+                                ? "u.M^{S/O} = 0"
+                                : "u.(M^{S/O} - dH^{S/O}/dt - v^O x L^S) = 0");
+    std::string fbd;
+    for (std::size_t i = 0; i < r.fbd.size(); ++i) fbd += (i ? "; " : "") + r.fbd[i];
+    std::string extra;
+    for (std::size_t i = 0; i < r.additional_unknowns.size(); ++i)
+        extra += (i ? ", " : "") + to_string(r.additional_unknowns[i]);
+    if (extra.empty()) extra = "none";
+    if (!r.note.empty()) extra += " (" + r.note + ")";
+    return {{to_string(r.variable), r.motion == Motion::rotate ? "rotate" : "translate",
+             direction_text(sys, r.direction), set_text(r.system), fbd,
+             r.about ? r.about->name() : "-", eq, extra}};
+}
+
+std::string json_escape(const std::string& s) {
+    std::string o;
+    for (char ch : s) {
+        switch (ch) {
+            case '"': o += "\\\""; break;
+            case '\\': o += "\\\\"; break;
+            case '\n': o += "\\n"; break;
+            case '\t': o += "\\t"; break;
+            default:
+                if (static_cast<unsigned char>(ch) < 0x20) {
+                    char buf[8];
+                    std::snprintf(buf, sizeof buf, "\\u%04x", ch);
+                    o += buf;
+                } else {
+                    o += ch;
+                }
+        }
+    }
+    return o;
+}
+
+}  // namespace
+
+std::string format_roadmap_table(const System& sys, const std::vector<RoadmapRow>& rows) {
+    const std::vector<std::string> head{"variable", "translate/rotate", "direction",
+                                        "system S", "FBD of S", "about point", "equation",
+                                        "additional unknowns"};
+    std::vector<Cells> body;
+    for (const RoadmapRow& r : rows) body.push_back(row_cells(sys, r));
+    // the FBD column wraps: one load per line
+    std::vector<std::size_t> width(head.size());
+    for (std::size_t j = 0; j < head.size(); ++j) width[j] = head[j].size();
+    for (std::size_t i = 0; i < rows.size(); ++i)
+        for (std::size_t j = 0; j < head.size(); ++j) {
+            if (j == 4) {
+                for (const auto& line : rows[i].fbd) width[j] = std::max(width[j], line.size());
+            } else {
+                width[j] = std::max(width[j], body[i].c[j].size());
+            }
+        }
+    auto line = [&](const std::vector<std::string>& cells) {
+        std::string s = "|";
+        for (std::size_t j = 0; j < cells.size(); ++j)
+            s += " " + cells[j] + std::string(width[j] - cells[j].size(), ' ') + " |";
+        return s + "\n";
+    };
+    std::string rule = "|";
+    for (std::size_t w : width) rule += std::string(w + 2, '-') + "|";
+    std::string out = line(head) + rule + "\n";
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+        std::size_t n = std::max<std::size_t>(1, rows[i].fbd.size());
+        for (std::size_t k = 0; k < n; ++k) {
+            std::vector<std::string> cells(head.size());
+            for (std::size_t j = 0; j < head.size(); ++j) {
+                if (j == 4) cells[j] = k < rows[i].fbd.size() ? rows[i].fbd[k] : "";
+                else cells[j] = k == 0 ? body[i].c[j] : "";
+            }
+            out += line(cells);
+        }
+    }
+    out += "\n";
+    for (const RoadmapRow& r : rows)
+        out += "E_" + to_string(r.variable) + ": 0 = " + to_string(r.equation) + "\n";
+    return out;
+}
+
+std::string format_roadmap_json(const System& sys, const std::vector<RoadmapRow>& rows) {
+    std::ostringstream os;
+    os << "[";
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+        const RoadmapRow& r = rows[i];
+        Cells c = row_cells(sys, r);
+        os << (i ? ",\n " : "\n ") << "{\"variable\": \"" << json_escape(c.c[0])
+           << "\", \"motion\": \"" << c.c[1] << "\", \"direction\": \"" << json_escape(c.c[2])
+           << "\", \"system\": [";
+        for (std::size_t k = 0; k < r.system.size(); ++k)
+            os << (k ? ", " : "") << "\"" << json_escape(r.system[k]->name()) << "\"";
+        os << "], \"fbd\": [";
+        for (std::size_t k = 0; k < r.fbd.size(); ++k)
+            os << (k ? ", " : "") << "\"" << json_escape(r.fbd[k]) << "\"";
+        os << "], \"about\": " << (r.about ? "\"" + json_escape(r.about->name()) + "\"" : "null")
+           << ", \"analysis\": \"" << (r.analysis == Analysis::statics ? "statics" : "dynamics")
+           << "\", \"equation\": \"" << json_escape(to_string(r.equation))
+           << "\", \"additional_unknowns\": [";
+        for (std::size_t k = 0; k < r.additional_unknowns.size(); ++k)
+            os << (k ? ", " : "") << "\"" << json_escape(to_string(r.additional_unknowns[k]))
+               << "\"";
+        os << "], \"note\": \"" << json_escape(r.note) << "\"}";
+    }
+    os << "\n]\n";
+    return os.str();
+}
+
+}  // namespace alembert
