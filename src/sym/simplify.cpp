@@ -7,6 +7,7 @@
 #include <map>
 #include <random>
 
+#include "alembert/sym/print.hpp"
 #include "alembert/sym/symbol_table.hpp"
 
 namespace alembert {
@@ -22,6 +23,9 @@ std::size_t count_ops(const ex& e) {
     std::size_t n = 0;
     for (std::size_t i = 0; i < e.nops(); ++i) n += count_ops(e.op(i));
     if (is_a<add>(e) || is_a<mul>(e)) {
+        // -x is one negation, not a product by -1 plus a negative number
+        const ex& last = e.op(e.nops() - 1);
+        if (is_a<mul>(e) && is_a<numeric>(last) && last.is_equal(-1)) return n + e.nops() - 2;
         return n + e.nops() - 1;
     }
     return n + 1;  // power, function, other
@@ -100,13 +104,19 @@ bool fold_angle_sums(std::vector<Term>& terms) {
                 auto it = index.find(partner);
                 if (it == index.end() || used[it->second] || it->second == i) continue;
                 const numeric& cj = terms[it->second].c;
+                // a difference of angles is written the shorter (then alphabetically first) way
+                ex diff = a - b;
+                numeric flip = 1;
+                if (count_ops(b - a) < count_ops(diff) ||
+                    (count_ops(b - a) == count_ops(diff) && to_string(b - a) < to_string(diff)))
+                    diff = b - a, flip = -1;
                 ex folded;
                 if (sin_cos) {
                     if (cj == ti.c) folded = sin(a + b);
-                    else if (cj == -ti.c) folded = sin(a - b);
+                    else if (cj == -ti.c) folded = flip * sin(diff);
                 } else {
                     if (cj == -ti.c) folded = cos(a + b);
-                    else if (cj == ti.c) folded = cos(a - b);
+                    else if (cj == ti.c) folded = cos(diff);
                 }
                 if (folded.is_zero() && !is_a<function>(folded)) continue;
                 used[i] = used[it->second] = true;
@@ -232,8 +242,9 @@ ex collect_in(const ex& e, const std::vector<ex>& syms) {
 }
 
 double max_numeric_difference(const ex& a, const ex& b, int points) {
-    ex d = a - b;
-    exset syms = symbols_of(d);
+    // every symbol of a and of b gets a value, including those that cancel in a - b
+    exset syms = symbols_of(a), sb = symbols_of(b);
+    syms.insert(sb.begin(), sb.end());
     std::mt19937_64 rng(0x5eed5eedULL);
     std::uniform_real_distribution<double> mag(0.3, 1.7);
     std::bernoulli_distribution sign(0.5);
