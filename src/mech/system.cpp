@@ -52,6 +52,18 @@ RigidBody& System::add_rigid_body(const std::string& name) {
         if (b->name() == name)
             throw ModelError("System::add_rigid_body(): a body named '" + name +
                              "' exists already; choose another name");
+    // check every name the body needs before declaring any, so a clash leaves nothing behind
+    auto clash = [&](const char* what, const std::string& taken, const char* use) {
+        throw ModelError("System::add_rigid_body(): a " + std::string(what) + " named '" + taken +
+                         "' exists already, and rigid body '" + name + "' needs that name for " +
+                         use + "; choose another name");
+    };
+    for (const auto& f : frames_)
+        if (f->name() == name) clash("frame", name, "its frame");
+    for (const auto& p : points_) {
+        if (p->name() == name + "_o") clash("point", name + "_o", "its origin");
+        if (p->name() == name + "cm") clash("point", name + "cm", "its mass centre");
+    }
     Frame& B = add_frame(name);
     Point& Bo = add_point(name + "_o");
     Point& Bcm = add_point(name + "cm");

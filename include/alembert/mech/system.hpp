@@ -50,15 +50,19 @@ public:
 
     // ---- declaration ---------------------------------------------------------------------
     /// A new reference frame.
-    /// @throws alembert::ModelError if a frame of that name exists.
+    /// @throws alembert::ArgumentError if the name is empty,
+    ///         alembert::ModelError if a frame of that name exists.
     Frame& add_frame(const std::string& name);
     /// A new point, fixed on `owner` (a force applied at it acts on owner), or on the
     /// surroundings when owner is nullptr.
     Point& add_point(const std::string& name, const Body* owner = nullptr);
     /// A new rigid body `name` with its frame `name`, a body-fixed origin point `name_o` and
     /// its mass centre `namecm` (locate the mass centre from the origin with set_pos).
+    /// @throws alembert::ArgumentError if the name is empty, alembert::ModelError if any of
+    ///         these names is taken (then nothing is declared).
     RigidBody& add_rigid_body(const std::string& name);
     /// A new particle `name` at a new point of the same name.
+    /// @throws alembert::ArgumentError if the name is empty, alembert::ModelError if it is taken.
     Particle& add_particle(const std::string& name);
 
     // ---- look-up by name (each throws alembert::ModelError listing the declared names) ----
