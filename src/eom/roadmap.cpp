@@ -120,6 +120,19 @@ Cells row_cells(const System& sys, const RoadmapRow& r) {
              r.about ? r.about->name() : "-", eq, extra}};
 }
 
+// an equation as people read it: simplified and collected in the accelerations, when it is
+// small enough for that to be quick
+ex readable(const System& sys, const ex& e) {
+    constexpr std::size_t kMaxOps = 4000;
+    if (count_ops(e) > kMaxOps) return e;
+    std::vector<ex> acc;
+    const SymbolTable& st = sys.symbols();
+    for (const ex& s : symbols_of(e))
+        if (st.owns(s) && st.kind(s) == SymbolKind::variable && st.derivative_order(s) == 2)
+            acc.push_back(s);
+    return acc.empty() ? simplify(e) : collect_in(simplify(e), acc);
+}
+
 std::string json_escape(const std::string& s) {
     std::string o;
     for (char ch : s) {
@@ -182,7 +195,7 @@ std::string format_roadmap_table(const System& sys, const std::vector<RoadmapRow
     }
     out += "\n";
     for (const RoadmapRow& r : rows)
-        out += "E_" + to_string(r.variable) + ": 0 = " + to_string(r.equation) + "\n";
+        out += "E_" + to_string(r.variable) + ": 0 = " + to_string(readable(sys, r.equation)) + "\n";
     return out;
 }
 
@@ -202,7 +215,7 @@ std::string format_roadmap_json(const System& sys, const std::vector<RoadmapRow>
             os << (k ? ", " : "") << "\"" << json_escape(r.fbd[k]) << "\"";
         os << "], \"about\": " << (r.about ? "\"" + json_escape(r.about->name()) + "\"" : "null")
            << ", \"analysis\": \"" << (r.analysis == Analysis::statics ? "statics" : "dynamics")
-           << "\", \"equation\": \"" << json_escape(to_string(r.equation))
+           << "\", \"equation\": \"" << json_escape(to_string(readable(sys, r.equation)))
            << "\", \"additional_unknowns\": [";
         for (std::size_t k = 0; k < r.additional_unknowns.size(); ++k)
             os << (k ? ", " : "") << "\"" << json_escape(to_string(r.additional_unknowns[k]))

@@ -15,7 +15,7 @@ const Body* System::require_owner(const Point& P, const char* caller) const {
     return P.owner();
 }
 
-const Load& System::add_force(const Point& P, const Vector& F, const std::string& label) {
+Load System::add_force(const Point& P, const Vector& F, const std::string& label) {
     const Body* on = require_owner(P, "System::add_force()");
     loads_.push_back(Load{.kind = LoadKind::force, .label = label, .point = &P, .vector = F,
                           .on = on, .from = nullptr});
@@ -43,7 +43,7 @@ void System::add_force_pair(const Point& P, const Point& Q, const Vector& F,
     add_pair(P, Q, F, label);
 }
 
-const Load& System::add_torque(const Body& B, const Vector& T, const std::string& label) {
+Load System::add_torque(const Body& B, const Vector& T, const std::string& label) {
     loads_.push_back(Load{.kind = LoadKind::torque, .label = label, .point = nullptr,
                           .vector = T, .on = &B, .from = nullptr});
     return loads_.back();

@@ -274,7 +274,7 @@ TEST_F(SystemOfTwoBodies, ForcePairBetweenMembersIsLeftOutEvenWhenItIsNotAlongTh
 
 TEST_F(SystemOfTwoBodies, ForceFromTheSurroundingsActsOnTheOwnerOfItsPoint) {
     ex Fx = s.add_constant("Fx"), Fy = s.add_constant("Fy");
-    const Load& l = sys.add_force(Q, Fx * N.x() + Fy * N.y(), "push");
+    Load l = sys.add_force(Q, Fx * N.x() + Fy * N.y(), "push");
     EXPECT_EQ(l.on, &B);
     EXPECT_EQ(l.from, nullptr);
     EXPECT_EQ(l.label, "push");

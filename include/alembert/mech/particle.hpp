@@ -12,6 +12,7 @@ public:
     Particle(std::string name, Point& P) : Body(std::move(name), P) {}
     /// The particle's point (its mass centre).
     const Point& point() const { return cm(); }
+    Point& point() { return cm(); }
 };
 
 }  // namespace alembert

@@ -80,14 +80,15 @@ public:
     BodySet bodies(std::initializer_list<std::string> names);
 
     // ---- loads ---------------------------------------------------------------------------
-    /// A force F at point P acting on P's owner, exerted by the surroundings.
+    /// A force F at point P acting on P's owner, exerted by the surroundings; returns a copy
+    /// of the load recorded.
     /// @throws alembert::ModelError if P has no owner (the force would act on nothing).
-    const Load& add_force(const Point& P, const Vector& F, const std::string& label = "");
+    Load add_force(const Point& P, const Vector& F, const std::string& label = "");
     /// An action/reaction pair: F on P's owner at P, and -F on Q's owner at Q.
     void add_force_pair(const Point& P, const Point& Q, const Vector& F,
                         const std::string& label = "");
-    /// A torque T on body B, exerted by the surroundings.
-    const Load& add_torque(const Body& B, const Vector& T, const std::string& label = "");
+    /// A torque T on body B, exerted by the surroundings; returns a copy of the load recorded.
+    Load add_torque(const Body& B, const Vector& T, const std::string& label = "");
     /// An action/reaction pair: T on body B from frame A's body, and -T on A's body (nothing
     /// when A is the Newtonian frame or a frame of no body).
     void add_torque_pair(const Body& B, const Frame& A, const Vector& T,
