@@ -47,11 +47,15 @@ Point& System::add_point(const std::string& name, const Body* owner) {
     return *points_.back();
 }
 
-RigidBody& System::add_rigid_body(const std::string& name) {
+void System::require_new_body_name(const std::string& name, const char* caller) const {
     for (const auto& b : bodies_)
         if (b->name() == name)
-            throw ModelError("System::add_rigid_body(): a body named '" + name +
+            throw ModelError(std::string(caller) + ": a body named '" + name +
                              "' exists already; choose another name");
+}
+
+RigidBody& System::add_rigid_body(const std::string& name) {
+    require_new_body_name(name, "System::add_rigid_body()");
     // check every name the body needs before declaring any, so a clash leaves nothing behind
     auto clash = [&](const char* what, const std::string& taken, const char* use) {
         throw ModelError("System::add_rigid_body(): a " + std::string(what) + " named '" + taken +
@@ -77,10 +81,7 @@ RigidBody& System::add_rigid_body(const std::string& name) {
 }
 
 Particle& System::add_particle(const std::string& name) {
-    for (const auto& b : bodies_)
-        if (b->name() == name)
-            throw ModelError("System::add_particle(): a body named '" + name +
-                             "' exists already; choose another name");
+    require_new_body_name(name, "System::add_particle()");
     Point& P = add_point(name);
     auto body = std::make_unique<Particle>(name, P);
     Particle& ref = *body;

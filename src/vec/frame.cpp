@@ -167,28 +167,34 @@ std::vector<const Frame*> Frame::path_to_root() const {
 }
 
 namespace {
-// index in `path` of the first frame also on `other`, or npos
-std::size_t common_index(const std::vector<const Frame*>& path,
-                         const std::vector<const Frame*>& other) {
-    for (std::size_t i = 0; i < path.size(); ++i)
-        if (std::find(other.begin(), other.end(), path[i]) != other.end()) return i;
-    return path.size();
+// the tree path between two frames: each one's chain up to the root, and how many edges of
+// each lie below their common ancestor (nullopt when they share no root)
+struct TreePath {
+    std::vector<const Frame*> up_b, up_f;
+    std::size_t below_b = 0, below_f = 0;
+};
+std::optional<TreePath> tree_path(std::vector<const Frame*> up_b, std::vector<const Frame*> up_f) {
+    for (std::size_t i = 0; i < up_b.size(); ++i) {
+        auto it = std::find(up_f.begin(), up_f.end(), up_b[i]);
+        if (it == up_f.end()) continue;
+        std::size_t j = static_cast<std::size_t>(it - up_f.begin());
+        return TreePath{std::move(up_b), std::move(up_f), i, j};
+    }
+    return std::nullopt;
 }
 }  // namespace
 
 Vector Frame::ang_vel_in(const Frame& F) const {
     if (&F == this) return {};
-    auto pb = path_to_root(), pf = F.path_to_root();
-    std::size_t ib = common_index(pb, pf);
-    if (ib == pb.size())
+    auto p = tree_path(path_to_root(), F.path_to_root());
+    if (!p)
         throw ModelError("Frame::ang_vel_in(): frames '" + name_ + "' and '" + F.name_ +
-                         "' are not connected by orientations (" + path_text(pb) + " and " +
-                         path_text(pf) + "); orient one relative to the other or to a "
-                         "common frame");
-    std::size_t jf = std::find(pf.begin(), pf.end(), pb[ib]) - pf.begin();
+                         "' are not connected by orientations (" + path_text(path_to_root()) +
+                         " and " + path_text(F.path_to_root()) +
+                         "); orient one relative to the other or to a common frame");
     Vector w;
-    for (std::size_t i = 0; i < ib; ++i) w += pb[i]->edge_ang_vel();
-    for (std::size_t j = 0; j < jf; ++j) w -= pf[j]->edge_ang_vel();
+    for (std::size_t i = 0; i < p->below_b; ++i) w += p->up_b[i]->edge_ang_vel();
+    for (std::size_t j = 0; j < p->below_f; ++j) w -= p->up_f[j]->edge_ang_vel();
     return w;
 }
 
@@ -200,24 +206,22 @@ Vector Frame::ang_acc_in(const Frame& F) const {
 
 Mat3 Frame::rotation_in(const Frame& F) const {
     if (&F == this) return Mat3::identity();
-    auto pb = path_to_root(), pf = F.path_to_root();
-    std::size_t ib = common_index(pb, pf);
-    if (ib == pb.size())
+    auto p = tree_path(path_to_root(), F.path_to_root());
+    if (!p)
         throw ModelError("rotation_matrix(): no orientation path between frames '" + F.name_ +
                          "' and '" + name_ + "'; orient one relative to the other or to a "
                          "common frame");
-    std::size_t jf = std::find(pf.begin(), pf.end(), pb[ib]) - pf.begin();
     // R_CB = R_C,b_k ... R_b1,B down the path from the common ancestor C
-    auto down = [](const std::vector<const Frame*>& p, std::size_t n) {
+    auto down = [](const std::vector<const Frame*>& up, std::size_t n) {
         if (n == 0) return Mat3::identity();
-        Mat3 R = p[n - 1]->R_parent_;
-        for (std::size_t i = n - 1; i-- > 0;) R = R * p[i]->R_parent_;
+        Mat3 R = up[n - 1]->R_parent_;
+        for (std::size_t i = n - 1; i-- > 0;) R = R * up[i]->R_parent_;
         return R;
     };
-    Mat3 R_CB = down(pb, ib);
-    if (jf == 0) return R_CB;
-    Mat3 R_CF = down(pf, jf);
-    if (ib == 0) return R_CF.transpose();
+    Mat3 R_CB = down(p->up_b, p->below_b);
+    if (p->below_f == 0) return R_CB;
+    Mat3 R_CF = down(p->up_f, p->below_f);
+    if (p->below_b == 0) return R_CF.transpose();
     return R_CF.transpose() * R_CB;
 }
 

@@ -139,6 +139,7 @@ private:
         ex energy;
     };
     const Body* require_owner(const Point& P, const char* caller) const;
+    void require_new_body_name(const std::string& name, const char* caller) const;
     void add_pair(const Point& P, const Point& Q, const Vector& F_on_P, const std::string& label,
                   bool conservative = false);
 
