@@ -211,18 +211,55 @@ Mat3 Frame::rotation_in(const Frame& F) const {
         throw ModelError("rotation_matrix(): no orientation path between frames '" + F.name_ +
                          "' and '" + name_ + "'; orient one relative to the other or to a "
                          "common frame");
-    // R_CB = R_C,b_k ... R_b1,B down the path from the common ancestor C
-    auto down = [](const std::vector<const Frame*>& up, std::size_t n) {
-        if (n == 0) return Mat3::identity();
-        Mat3 R = up[n - 1]->R_parent_;
-        for (std::size_t i = n - 1; i-- > 0;) R = R * up[i]->R_parent_;
-        return R;
+    // R_FB = R_CF^T R_CB as a product of factors along the path F -> C -> B: the edges up
+    // from F inverted, then the edges down to B. Simple rotations about the same axis in a
+    // row fold into one (R_z(a) R_z(b) = R_z(a + b)), so a planar chain of n relative angles
+    // gives cos(q1 + ... + qn) instead of a product expanded into 2^n terms.
+    std::vector<Factor> factors;
+    for (std::size_t j = 0; j < p->below_f; ++j) p->up_f[j]->append_edge_factors(factors, true);
+    for (std::size_t i = p->below_b; i-- > 0;) p->up_b[i]->append_edge_factors(factors, false);
+    Mat3 R = Mat3::identity();
+    bool first = true;
+    for (const Factor& f : factors) {
+        Mat3 Rf = f.simple ? simple_rotation(f.axis, f.angle) : f.R;
+        R = first ? Rf : R * Rf;
+        first = false;
+    }
+    return R;
+}
+
+void Frame::append_edge_factors(std::vector<Factor>& out, bool inverse) const {
+    auto push_simple = [&](Axis axis, const ex& angle) {
+        ex a = inverse ? -angle : angle;
+        if (a.is_zero()) return;
+        if (!out.empty() && out.back().simple && out.back().axis == axis) {
+            out.back().angle += a;
+            if (out.back().angle.is_zero()) out.pop_back();
+            return;
+        }
+        out.push_back(Factor{true, axis, a, {}});
     };
-    Mat3 R_CB = down(p->up_b, p->below_b);
-    if (p->below_f == 0) return R_CB;
-    Mat3 R_CF = down(p->up_f, p->below_f);
-    if (p->below_b == 0) return R_CF.transpose();
-    return R_CF.transpose() * R_CB;
+    // the edge's matrix R_PB as simple factors in product order
+    std::vector<std::pair<Axis, ex>> simple;
+    switch (kind_) {
+        case Kind::simple: simple = {{axes_[0], angles_[0]}}; break;
+        case Kind::body:
+            for (std::size_t k = 0; k < 3; ++k) simple.emplace_back(axes_[k], angles_[k]);
+            break;
+        case Kind::space:
+            for (std::size_t k = 3; k-- > 0;) simple.emplace_back(axes_[k], angles_[k]);
+            break;
+        case Kind::none:
+        case Kind::dcm: {
+            out.push_back(Factor{false, Axis::x, 0, inverse ? R_parent_.transpose() : R_parent_});
+            return;
+        }
+    }
+    // the inverse reverses the order and negates each angle
+    if (inverse)
+        for (std::size_t k = simple.size(); k-- > 0;) push_simple(simple[k].first, simple[k].second);
+    else
+        for (const auto& [axis, angle] : simple) push_simple(axis, angle);
 }
 
 }  // namespace alembert

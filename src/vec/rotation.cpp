@@ -33,8 +33,33 @@ std::array<Axis, 3> axes_of(RotationSequence seq) {
     return out;
 }
 
+namespace {
+// true if a numeric coefficient leads `e` with a minus sign (-q, -2 q, -q r)
+bool negative_term(const ex& e) {
+    if (GiNaC::is_a<GiNaC::numeric>(e)) return GiNaC::ex_to<GiNaC::numeric>(e).is_negative();
+    if (GiNaC::is_a<GiNaC::mul>(e)) {
+        const ex& c = e.op(e.nops() - 1);  // GiNaC keeps a mul's numeric coefficient last
+        return GiNaC::is_a<GiNaC::numeric>(c) && GiNaC::ex_to<GiNaC::numeric>(c).is_negative();
+    }
+    return false;
+}
+
+// true if -a reads better than a: more of a's terms are negative (ties: a deterministic
+// choice between the two), so cos(-qB) and cos(qB) meet as one function
+bool prefer_negated(const ex& a) {
+    if (!GiNaC::is_a<GiNaC::add>(a)) return negative_term(a);
+    std::size_t neg = 0, n = a.nops();
+    for (std::size_t i = 0; i < n; ++i) neg += negative_term(a.op(i)) ? 1 : 0;
+    if (2 * neg != n) return 2 * neg > n;
+    return GiNaC::ex_is_less()(-a, a);
+}
+}  // namespace
+
 Mat3 simple_rotation(Axis axis, const ex& angle) {
-    ex c = GiNaC::cos(angle), s = GiNaC::sin(angle);
+    // cos is even and sin odd: write both with the better-reading sign of the angle
+    bool flip = prefer_negated(angle);
+    ex a = flip ? ex(-angle) : angle;
+    ex c = GiNaC::cos(a), s = flip ? ex(-GiNaC::sin(a)) : ex(GiNaC::sin(a));
     Mat3 r;
     switch (axis) {
         case Axis::x:

@@ -128,6 +128,43 @@ TEST(Frame, RotationBetweenSiblingBranchesIsProductThroughCommonParent) {
     EXPECT_TRUE(same_mat(rotation_matrix(B, A), transposed(expected)));
 }
 
+TEST(Frame, SameAxisRotationsAlongAChainFoldIntoOneAngle) {
+    // a planar chain of relative angles: R_NC = Rz(qa) Rz(qb) Rz(qc) = Rz(qa + qb + qc), and
+    // between branches R_BC' = Rz(-qb) Rz(qc') with entries cos(qc' - qb)
+    SymbolTable s;
+    ex qa = s.add_variable("qa", 2), qb = s.add_variable("qb", 2), qc = s.add_variable("qc", 2);
+    ex qd = s.add_variable("qd", 2);
+    Frame N(s, "N"), A(s, "A"), B(s, "B"), C(s, "C"), D(s, "D");
+    A.orient_axis(N, Axis::z, qa);
+    B.orient_axis(A, Axis::z, qb);
+    C.orient_axis(B, Axis::z, qc);
+    D.orient_axis(A, Axis::z, qd);
+    Mat3 R = rotation_matrix(N, C);
+    EXPECT_TRUE(same_mat(R, rot(Axis::z, qa + qb + qc)));
+    // folded, not multiplied out: each entry is a single cos or sin of the angle sum
+    EXPECT_TRUE(R(0, 0).is_equal(cos(qa + qb + qc)));
+    EXPECT_TRUE(same_mat(rotation_matrix(B, D), rot(Axis::z, qd - qb)));
+    EXPECT_TRUE(rotation_matrix(B, D)(0, 0).is_equal(rotation_matrix(D, B)(0, 0)));
+    // a rotation and its inverse cancel to the identity exactly
+    Frame E(s, "E");
+    E.orient_axis(A, Axis::z, qb);
+    Mat3 I = rotation_matrix(B, E), J = Mat3::identity();
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) EXPECT_TRUE(I(i, j).is_equal(J(i, j)));
+}
+
+TEST(Frame, CosineOfANegatedAngleIsWrittenOnce) {
+    // cos(-q) and cos(q) are one function: the child-to-parent and parent-to-child matrices
+    // must not carry both, or sums of them would not combine
+    SymbolTable s;
+    ex q = s.add_variable("q", 2);
+    Frame N(s, "N"), A(s, "A");
+    A.orient_axis(N, Axis::z, q, Sense::negative);
+    EXPECT_TRUE(rotation_matrix(N, A)(0, 0).is_equal(cos(q)));
+    EXPECT_TRUE(rotation_matrix(N, A)(1, 0).is_equal(-sin(q)));
+    EXPECT_TRUE(same_mat(rotation_matrix(N, A), rot(Axis::z, -q)));
+}
+
 TEST(Frame, RotationMatricesInOppositeDirectionsAreInverses) {
     SymbolTable s;
     auto [q1, q2, q3, u1, u2, u3] = three_angles(s);

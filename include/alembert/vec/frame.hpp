@@ -86,6 +86,15 @@ private:
     std::vector<const Frame*> path_to_root() const;
     Vector edge_ang_vel() const;
     void set_edge(const Frame& parent, Kind kind, const Mat3& R, const char* caller);
+    // one factor of a rotation product: a simple rotation (foldable with its neighbours
+    // about the same axis) or a general matrix
+    struct Factor {
+        bool simple = false;
+        Axis axis = Axis::x;
+        ex angle{};
+        Mat3 R{};
+    };
+    void append_edge_factors(std::vector<Factor>& out, bool inverse) const;
 
     SymbolTable* table_;
     std::string name_;
