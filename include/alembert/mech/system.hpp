@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "alembert/mech/constraint.hpp"
 #include "alembert/mech/load.hpp"
 #include "alembert/mech/particle.hpp"
 #include "alembert/mech/rigid_body.hpp"
@@ -117,6 +118,29 @@ public:
     /// The gravity vector (zero if none).
     const Vector& gravity() const { return gravity_; }
 
+    // ---- constraints ---------------------------------------------------------------------
+    /// Declares a configuration constraint f(q, t) = 0 (a closed loop, a point kept on a
+    /// surface); returns it. Equations that need it at the velocity or acceleration level
+    /// take its time derivatives.
+    /// @throws alembert::ArgumentError if the name is empty or taken, or the residual holds
+    ///         a speed or an acceleration (then it is a motion constraint), or is zero.
+    const Constraint& add_configuration_constraint(const std::string& name, const ex& residual);
+    /// Declares a vector configuration constraint v = 0 as one scalar constraint per non-zero
+    /// measure of v in frame F, named name_x, name_y, name_z (a loop closing at a point:
+    /// v = r^{P/Q} for points P and Q that must coincide).
+    std::vector<Constraint> add_configuration_constraint(const std::string& name,
+                                                         const Vector& v, const Frame& F);
+    /// Declares a motion constraint, linear in the speeds q' (rolling without slip: the
+    /// velocity of the contact point is zero); returns it.
+    /// @throws alembert::ArgumentError if the name is empty or taken, the residual holds an
+    ///         acceleration, holds no speed, or is not linear in the speeds.
+    const Constraint& add_motion_constraint(const std::string& name, const ex& residual);
+    /// Declares a vector motion constraint v = 0, one per non-zero measure of v in F.
+    std::vector<Constraint> add_motion_constraint(const std::string& name, const Vector& v,
+                                                  const Frame& F);
+    /// Every declared constraint, in the order declared.
+    const std::vector<Constraint>& constraints() const { return constraints_; }
+
     // ---- derived quantities of a system S (calc: may be expensive, mutate nothing) -------
     /// Total mass of S.
     ex calc_mass(const BodySet& S) const;
@@ -139,6 +163,8 @@ private:
         ex energy;
     };
     const Body* require_owner(const Point& P, const char* caller) const;
+    const Constraint& add_constraint(const std::string& name, ConstraintKind kind,
+                                     const ex& residual, const char* caller);
     void require_new_body_name(const std::string& name, const char* caller) const;
     void add_pair(const Point& P, const Point& Q, const Vector& F_on_P, const std::string& label,
                   bool conservative = false);
@@ -148,6 +174,7 @@ private:
     std::vector<std::unique_ptr<Point>> points_;
     std::vector<std::unique_ptr<Body>> bodies_;
     std::vector<Load> loads_;
+    std::vector<Constraint> constraints_;
     std::vector<Potential> potentials_;
     Vector gravity_;
 };
