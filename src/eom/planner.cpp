@@ -90,19 +90,87 @@ Plan plan_coordinate(const System& sys, const TimeVariable& q) {
 
 }  // namespace
 
+namespace {
+
+// Minimum-cost assignment of each of n agents to a distinct one of m >= n tasks (Hungarian
+// algorithm, Kuhn-Munkres with potentials); cost[i][j] = kInfeasible forbids a pair. Returns
+// the task of each agent, or an empty vector when no complete assignment exists.
+constexpr double kInfeasible = 1e9;
+std::vector<int> assign_min_cost(const std::vector<std::vector<double>>& cost) {
+    const std::size_t n = cost.size(), m = n ? cost[0].size() : 0;
+    const double inf = std::numeric_limits<double>::infinity();
+    std::vector<double> u(n + 1, 0), v(m + 1, 0);
+    std::vector<std::size_t> p(m + 1, 0), way(m + 1, 0);
+    for (std::size_t i = 1; i <= n; ++i) {
+        p[0] = i;
+        std::size_t j0 = 0;
+        std::vector<double> minv(m + 1, inf);
+        std::vector<bool> used(m + 1, false);
+        do {
+            used[j0] = true;
+            std::size_t i0 = p[j0], j1 = 0;
+            double delta = inf;
+            for (std::size_t j = 1; j <= m; ++j) {
+                if (used[j]) continue;
+                double cur = cost[i0 - 1][j - 1] - u[i0] - v[j];
+                if (cur < minv[j]) minv[j] = cur, way[j] = j0;
+                if (minv[j] < delta) delta = minv[j], j1 = j;
+            }
+            for (std::size_t j = 0; j <= m; ++j) {
+                if (used[j]) u[p[j]] += delta, v[j] -= delta;
+                else minv[j] -= delta;
+            }
+            j0 = j1;
+        } while (p[j0] != 0);
+        do {
+            std::size_t j1 = way[j0];
+            p[j0] = p[j1];
+            j0 = j1;
+        } while (j0);
+    }
+    std::vector<int> task(n, -1);
+    for (std::size_t j = 1; j <= m; ++j)
+        if (p[j]) {
+            if (cost[p[j] - 1][j - 1] >= kInfeasible) return {};
+            task[p[j] - 1] = static_cast<int>(j - 1);
+        }
+    return task;
+}
+
+std::string list_text(const std::vector<ex>& xs) {
+    std::string s;
+    for (const ex& x : xs) s += (s.empty() ? "" : ", ") + to_string(x);
+    return s;
+}
+
+}  // namespace
+
 std::vector<RoadmapRow> plan_roadmap(const System& sys,
                                      const std::vector<TimeVariable>& coordinates,
                                      const std::vector<ex>& unknowns, Analysis analysis) {
-    if (unknowns.size() > coordinates.size())
+    // the constraint rows the model declares (motion constraints restrict speeds only, so
+    // statics has none of them)
+    std::vector<RoadmapRow> constraint_rows;
+    for (const Constraint& c : sys.constraints()) {
+        if (analysis == Analysis::statics && c.kind == ConstraintKind::motion) continue;
+        RoadmapRow r;
+        r.analysis = analysis;
+        r.constraint = c.name;
+        form_constraint_row(sys, r, unknowns);
+        constraint_rows.push_back(std::move(r));
+    }
+    const std::size_t n_rows = coordinates.size() + constraint_rows.size();
+    if (unknowns.size() > n_rows)
         throw ModelError("plan_roadmap(): " + std::to_string(unknowns.size()) +
                          " unknowns but only " + std::to_string(coordinates.size()) +
-                         " coordinates; each row eliminates one unknown, so declare fewer "
-                         "unknowns or add constraint rows");
+                         " coordinates and " + std::to_string(constraint_rows.size()) +
+                         " constraint rows; each row determines one unknown, so declare fewer "
+                         "unknowns or declare the model's constraints");
     std::vector<Plan> plans;
     for (const TimeVariable& q : coordinates) plans.push_back(plan_coordinate(sys, q));
 
     // a statics-style equation per coordinate, to see which load measures it holds
-    std::vector<ex> probe(coordinates.size());
+    std::vector<ex> probe(n_rows);
     for (std::size_t i = 0; i < coordinates.size(); ++i) {
         if (plans[i].S.empty() || (plans[i].motion == Motion::rotate && !plans[i].O)) continue;
         RoadmapRow r{.variable = coordinates[i].symbol(), .motion = plans[i].motion,
@@ -110,41 +178,60 @@ std::vector<RoadmapRow> plan_roadmap(const System& sys,
                      .analysis = Analysis::statics};
         probe[i] = form_roadmap_equation(sys, r);
     }
+    for (std::size_t c = 0; c < constraint_rows.size(); ++c)
+        probe[coordinates.size() + c] = constraint_rows[c].equation;
 
-    // assign each unknown to a row: its own coordinate, else the row holding it with the
-    // fewest other unknowns
-    std::vector<int> row_of(unknowns.size(), -1);
-    std::vector<bool> taken(coordinates.size(), false);
-    for (std::size_t k = 0; k < unknowns.size(); ++k)
-        for (std::size_t i = 0; i < coordinates.size(); ++i)
-            for (int d = 0; d <= coordinates[i].order(); ++d)
-                if (unknowns[k].is_equal(coordinates[i].d(d)) && !taken[i]) {
-                    row_of[k] = static_cast<int>(i);
-                    taken[i] = true;
-                }
-    for (std::size_t k = 0; k < unknowns.size(); ++k) {
-        if (row_of[k] >= 0) continue;
-        int best = -1;
-        std::size_t best_others = std::numeric_limits<std::size_t>::max();
-        for (std::size_t i = 0; i < coordinates.size(); ++i) {
-            if (taken[i] || probe[i].is_zero() || !probe[i].has(unknowns[k])) continue;
-            std::size_t others = 0;
+    // each unknown to its own row: a coordinate (or its derivative) to its coordinate's row,
+    // else a row whose equation holds it, preferring rows with the fewest other unknowns,
+    // and keeping earlier coordinates in their own rows when a constraint row must take one
+    // (the constraint rows then read as the equations of the dependent coordinates)
+    const std::size_t n = unknowns.size();
+    std::vector<std::vector<double>> cost(n, std::vector<double>(n_rows, kInfeasible));
+    for (std::size_t k = 0; k < n; ++k) {
+        for (std::size_t i = 0; i < n_rows; ++i) {
+            bool own = false;
+            if (i < coordinates.size())
+                for (int d = 0; d <= coordinates[i].order(); ++d)
+                    if (unknowns[k].is_equal(coordinates[i].d(d))) own = true;
+            if (own) {
+                cost[k][i] = 0;
+                continue;
+            }
+            if (probe[i].is_zero() || !probe[i].has(unknowns[k])) continue;
+            double others = 0;
             for (const ex& x : unknowns)
-                if (!x.is_equal(unknowns[k]) && probe[i].has(x)) ++others;
-            if (others < best_others) best = static_cast<int>(i), best_others = others;
+                if (!x.is_equal(unknowns[k]) && probe[i].has(x)) others += 1;
+            cost[k][i] = 1 + others + (i >= coordinates.size()
+                                           ? 0.5 * static_cast<double>(n - k) / static_cast<double>(n + 1)
+                                           : 0);
         }
-        if (best < 0)
-            throw ModelError("plan_roadmap(): no road-map row holds the unknown '" +
-                             to_string(unknowns[k]) +
-                             "'; check that it acts on a body that moves, or that it is not "
-                             "internal to every system the planner found");
-        row_of[k] = best;
-        taken[static_cast<std::size_t>(best)] = true;
+    }
+    std::vector<int> row_of = assign_min_cost(cost);
+    if (row_of.empty()) {
+        // name an unknown no row can hold, or say that they compete
+        for (std::size_t k = 0; k < n; ++k)
+            if (std::all_of(cost[k].begin(), cost[k].end(), [](double c) { return c >= kInfeasible; }))
+                throw ModelError("plan_roadmap(): no road-map row holds the unknown '" +
+                                 to_string(unknowns[k]) +
+                                 "'; check that it acts on a body that moves, or that it is not "
+                                 "internal to every system the planner found");
+        throw ModelError("plan_roadmap(): the unknowns " + list_text(unknowns) +
+                         " cannot each be given a row of their own (too many of them appear "
+                         "only in the same rows); declare the model's constraints or fewer "
+                         "unknowns");
     }
 
     std::vector<RoadmapRow> rows;
-    for (std::size_t k = 0; k < unknowns.size(); ++k) {
-        const Plan& p = plans[static_cast<std::size_t>(row_of[k])];
+    for (std::size_t k = 0; k < n; ++k) {
+        const std::size_t i = static_cast<std::size_t>(row_of[k]);
+        if (i >= coordinates.size()) {
+            RoadmapRow r = constraint_rows[i - coordinates.size()];
+            r.variable = unknowns[k];
+            form_constraint_row(sys, r, unknowns);
+            rows.push_back(std::move(r));
+            continue;
+        }
+        const Plan& p = plans[i];
         if (p.motion == Motion::rotate && !p.O)
             throw ModelError("plan_roadmap(): " + p.note + " (unknown '" +
                              to_string(unknowns[k]) + "')");
@@ -153,6 +240,22 @@ std::vector<RoadmapRow> plan_roadmap(const System& sys,
         r.note = p.note;
         form_roadmap_row(sys, r, unknowns);
         rows.push_back(std::move(r));
+    }
+    // say where constraint forces stay in a row, and what closes the system
+    std::string closing;
+    for (const RoadmapRow& r : rows)
+        if (r.motion == Motion::constraint) closing += (closing.empty() ? "" : ", ") + r.constraint;
+    const SymbolTable& st = sys.symbols();
+    for (RoadmapRow& r : rows) {
+        if (r.motion == Motion::constraint || !r.note.empty()) continue;
+        // the load measures left (other accelerations in a row are expected: they couple)
+        std::vector<ex> loads;
+        for (const ex& x : r.additional_unknowns)
+            if (st.owns(x) && st.kind(x) == SymbolKind::unknown) loads.push_back(x);
+        if (loads.empty()) continue;
+        r.note = "no choice of S and O eliminates " + list_text(loads) +
+                 (closing.empty() ? "; solve the rows together"
+                                  : "; the constraint rows (" + closing + ") close the system");
     }
     return rows;
 }

@@ -31,6 +31,10 @@ std::string set_text(const BodySet& S) {
 }  // namespace
 
 ex form_roadmap_equation(const System& sys, const RoadmapRow& row) {
+    if (row.motion == Motion::constraint)
+        throw ArgumentError("form_roadmap_equation(): the row for '" + to_string(row.variable) +
+                            "' is a constraint row ('" + row.constraint +
+                            "'); form it with form_constraint_row()");
     if (row.system.empty())
         throw ArgumentError("form_roadmap_equation(): the row for '" + to_string(row.variable) +
                             "' has an empty system S; list the bodies it moves");
@@ -56,10 +60,20 @@ std::vector<std::string> describe_free_body_diagram(const System& sys, const Bod
         if (!member(S, l.on) || member(S, l.from)) continue;
         std::string what = l.label.empty() ? (l.kind == LoadKind::force ? "force" : "torque")
                                            : l.label;
+        // a load whose measures are unknowns is marked, like the joints' forces
+        bool unknown = false;
+        for (const auto& part : l.vector.components())
+            for (int i = 0; i < 3; ++i)
+                for (const ex& s : symbols_of(part.second[i]))
+                    if (sys.symbols().owns(s) && sys.symbols().kind(s) == SymbolKind::unknown)
+                        unknown = true;
+        const char* mark = unknown ? " (unknown)" : "";
         if (l.kind == LoadKind::force)
-            out.push_back(what + " at " + l.point->name() + " from " + body_or_ground(sys, l.from));
+            out.push_back(what + " at " + l.point->name() + " from " +
+                          body_or_ground(sys, l.from) + mark);
         else
-            out.push_back(what + " on " + l.on->name() + " from " + body_or_ground(sys, l.from));
+            out.push_back(what + " on " + l.on->name() + " from " + body_or_ground(sys, l.from) +
+                          mark);
     }
     if (!sys.gravity().is_zero()) {
         std::string g = "gravity at";
@@ -77,12 +91,52 @@ std::vector<std::string> describe_free_body_diagram(const System& sys, const Bod
     return out;
 }
 
-void form_roadmap_row(const System& sys, RoadmapRow& row, const std::vector<ex>& unknowns) {
-    row.equation = form_roadmap_equation(sys, row);
-    row.fbd = describe_free_body_diagram(sys, row.system);
+namespace {
+void list_additional_unknowns(RoadmapRow& row, const std::vector<ex>& unknowns) {
     row.additional_unknowns.clear();
     for (const ex& x : unknowns)
         if (!x.is_equal(row.variable) && row.equation.has(x)) row.additional_unknowns.push_back(x);
+}
+}  // namespace
+
+void form_roadmap_row(const System& sys, RoadmapRow& row, const std::vector<ex>& unknowns) {
+    if (row.motion == Motion::constraint) {
+        form_constraint_row(sys, row, unknowns);
+        return;
+    }
+    row.equation = form_roadmap_equation(sys, row);
+    row.fbd = describe_free_body_diagram(sys, row.system);
+    list_additional_unknowns(row, unknowns);
+}
+
+void form_constraint_row(const System& sys, RoadmapRow& row, const std::vector<ex>& unknowns) {
+    const auto& cs = sys.constraints();
+    auto it = std::find_if(cs.begin(), cs.end(),
+                           [&](const Constraint& c) { return c.name == row.constraint; });
+    if (it == cs.end()) {
+        std::string declared;
+        for (const Constraint& c : cs) declared += (declared.empty() ? "" : ", ") + c.name;
+        throw ArgumentError("form_constraint_row(): no constraint named '" + row.constraint +
+                            "' is declared (declared: " +
+                            (declared.empty() ? std::string("none") : declared) + ")");
+    }
+    if (it->kind == ConstraintKind::motion && row.analysis == Analysis::statics)
+        throw ArgumentError("form_constraint_row(): '" + it->name +
+                            "' is a motion constraint; it restricts speeds only, so it has no "
+                            "statics row");
+    // the frames' table names z' intermediates as it differentiates; it is the model's own
+    SymbolTable& st = sys.newtonian().symbols();
+    ex e = it->residual;
+    if (row.analysis == Analysis::dynamics) {
+        e = st.dt(e);
+        if (it->kind == ConstraintKind::configuration) e = st.dt(e);
+    }
+    row.motion = Motion::constraint;
+    row.system.clear();
+    row.about = nullptr;
+    row.fbd.clear();
+    row.equation = e;
+    list_additional_unknowns(row, unknowns);
 }
 
 namespace {
@@ -102,7 +156,30 @@ struct Cells {
     std::vector<std::string> c;
 };
 
+std::string motion_text(Motion m) {
+    switch (m) {
+        case Motion::translate: return "translate";
+        case Motion::rotate: return "rotate";
+        case Motion::constraint: return "constraint";
+    }
+    return "?";
+}
+
 Cells row_cells(const System& sys, const RoadmapRow& r) {
+    if (r.motion == Motion::constraint) {
+        std::string extra;
+        for (std::size_t i = 0; i < r.additional_unknowns.size(); ++i)
+            extra += (i ? ", " : "") + to_string(r.additional_unknowns[i]);
+        if (extra.empty()) extra = "none";
+        if (!r.note.empty()) extra += " (" + r.note + ")";
+        bool motion = false;
+        for (const Constraint& c : sys.constraints())
+            if (c.name == r.constraint) motion = c.kind == ConstraintKind::motion;
+        std::string eq = r.analysis == Analysis::statics ? r.constraint + " = 0"
+                         : motion                        ? "d/dt " + r.constraint + " = 0"
+                                                         : "d2/dt2 " + r.constraint + " = 0";
+        return {{to_string(r.variable), "constraint", "-", "-", "", "-", eq, extra}};
+    }
     std::string eq = r.motion == Motion::translate
                          ? (r.analysis == Analysis::statics ? "u.F^S = 0" : "u.(F^S - m a^Scm) = 0")
                          : (r.analysis == Analysis::statics
@@ -115,7 +192,7 @@ Cells row_cells(const System& sys, const RoadmapRow& r) {
         extra += (i ? ", " : "") + to_string(r.additional_unknowns[i]);
     if (extra.empty()) extra = "none";
     if (!r.note.empty()) extra += " (" + r.note + ")";
-    return {{to_string(r.variable), r.motion == Motion::rotate ? "rotate" : "translate",
+    return {{to_string(r.variable), motion_text(r.motion),
              direction_text(sys, r.direction), set_text(r.system), fbd,
              r.about ? r.about->name() : "-", eq, extra}};
 }

@@ -45,7 +45,7 @@ TEST(Roadmap, HandWrittenRowForTheHipMatchesTheHandDerivation) {
     EXPECT_TRUE(same(row.equation, expected));
     EXPECT_TRUE(row.additional_unknowns.empty());
     ASSERT_EQ(row.fbd.size(), 3u);
-    EXPECT_EQ(row.fbd[0], "T_C on C from B");
+    EXPECT_EQ(row.fbd[0], "T_C on C from B (unknown)");  // T_C is an unknown measure
     EXPECT_EQ(row.fbd[1], "gravity at Ccm");
     EXPECT_EQ(row.fbd[2], "joint force at C_o from B (unknown)");
 }

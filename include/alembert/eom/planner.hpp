@@ -23,8 +23,15 @@ namespace alembert {
 /// force measures (inverse dynamics, statics), or coordinates q_i (statics). A coordinate's own
 /// derivative is assigned to its row; a load measure to the row whose equation holds it with
 /// the fewest other unknowns.
+/// The constraints the model declares (System::add_configuration_constraint,
+/// add_motion_constraint) add rows of Motion::constraint: the configuration constraints
+/// themselves for statics, their time derivatives at the acceleration level for dynamics.
+/// Unknowns are matched to rows by a minimum-cost assignment: each coordinate to its own row
+/// when it can, load measures to the rows that hold them with the fewest other unknowns, and
+/// the later (dependent) coordinates to the constraint rows. Where a row keeps load measures
+/// no choice of S and O eliminated (a closed loop's pin force), its note says so.
 /// @throws alembert::ModelError naming the unknown if no row holds it, or if there are more
-///         unknowns than coordinates.
+///         unknowns than coordinates and constraint rows.
 std::vector<RoadmapRow> plan_roadmap(const System& sys,
                                      const std::vector<TimeVariable>& coordinates,
                                      const std::vector<ex>& unknowns,

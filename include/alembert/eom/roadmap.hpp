@@ -9,8 +9,9 @@
 
 namespace alembert {
 
-/// Whether a row balances forces along a direction or moments about a line.
-enum class Motion { translate, rotate };
+/// Whether a row balances forces along a direction or moments about a line, or is a
+/// constraint the model declares (closed loops, rolling) at the level the analysis needs.
+enum class Motion { translate, rotate, constraint };
 
 /// Dynamics (inertia terms kept) or statics (all inertia terms zero).
 enum class Analysis { dynamics, statics };
@@ -29,6 +30,7 @@ struct RoadmapRow {
     BodySet system{};               ///< S
     const Point* about = nullptr;   ///< O, for rotate rows
     Analysis analysis = Analysis::dynamics;
+    std::string constraint{};       ///< for constraint rows: the declared constraint's name
 
     // ---- filled by form_roadmap_row() ----------------------------------------------------
     ex equation{};                        ///< the residual E (= 0)
@@ -44,6 +46,15 @@ ex form_roadmap_equation(const System& sys, const RoadmapRow& row);
 /// Forms the row's equation, its free-body diagram and its additional unknowns (those of
 /// `unknowns` that appear in the equation besides the row's variable).
 void form_roadmap_row(const System& sys, RoadmapRow& row, const std::vector<ex>& unknowns);
+
+/// Forms a constraint row: `row.constraint` names a constraint declared in `sys`; statics
+/// uses a configuration constraint as declared, dynamics its time derivative at the level of
+/// the accelerations (second derivative of a configuration constraint, first of a motion
+/// constraint). Sets the motion to Motion::constraint, the equation and the additional
+/// unknowns.
+/// @throws alembert::ArgumentError if no constraint of that name is declared, or a motion
+///         constraint is used in statics (it restricts speeds only).
+void form_constraint_row(const System& sys, RoadmapRow& row, const std::vector<ex>& unknowns);
 
 /// The free-body diagram of S as text lines: each load external to S with where it acts and
 /// what exerts it, gravity, and the joints where S connects to the rest (unknown forces).

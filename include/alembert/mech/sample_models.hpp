@@ -42,4 +42,16 @@ SampleModel make_n_link_pendulum(int n, ChainKind kind = ChainKind::planar);
 /// natural length 0) and a damper (coefficient c); x is its coordinate.
 SampleModel make_mass_spring_damper();
 
+/// A four-bar linkage in the vertical plane, a closed loop: ground pivots N_o and N_c
+/// (L_N along Nx); crank A (length L_A) turning about Nz at N_o by qA from Nx; coupler B
+/// (L_B) pinned at the crank's tip A_tip, turning by qB relative to A; rocker C (L_C) pinned
+/// at N_c, turning by qC from Nx. Each link lies along its own x axis; uniform rods (mass
+/// centre at mid-length, central inertia m L^2/12 about z); gravity -g Ny. The loop closes
+/// where the coupler's tip B_tip meets the rocker's tip C_tip: the configuration constraints
+/// loop_x, loop_y (r^{B_tip/C_tip} . Nx, . Ny = 0), and the pin force there, F_x Nx + F_y Ny
+/// on B from C (unknowns F_x, F_y). The crank torque T Nz acts on A from N (unknown T).
+/// Values: L_N = 1, L_A = 0.4, L_B = 1.2, L_C = 0.8 m (a crank-rocker), m_A = 1,
+/// m_B = 2, m_C = 1.5 kg, g = 9.81. q = {qA, qB, qC}; unknowns = {T, F_x, F_y}.
+SampleModel make_four_bar();
+
 }  // namespace alembert
