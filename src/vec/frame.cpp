@@ -12,6 +12,8 @@ namespace alembert {
 
 namespace {
 std::atomic<std::uint64_t> g_next_frame_id{1};
+// moves on whenever any frame is (re)oriented, invalidating every cached rotation matrix
+std::atomic<std::uint64_t> g_orientation_epoch{1};
 
 std::string path_text(const std::vector<const Frame*>& path) {
     std::string s;
@@ -24,6 +26,9 @@ Frame::Frame(SymbolTable& table, std::string name)
     : table_(&table), name_(std::move(name)), id_(g_next_frame_id++) {
     if (name_.empty()) throw ArgumentError("Frame: a frame needs a non-empty name");
 }
+
+// a frame's address may be reused: cached rotations keyed by it must not outlive it
+Frame::~Frame() { ++g_orientation_epoch; }
 
 Vector Frame::unit(Axis a) const {
     Col3 c;
@@ -51,6 +56,7 @@ void Frame::set_edge(const Frame& parent, Kind kind, const Mat3& R, const char* 
                              "' relative to a frame outside that chain");
     }
     parent_ = &parent;
+    ++g_orientation_epoch;
     kind_ = kind;
     R_parent_ = R;
     w_set_.reset();
@@ -206,6 +212,18 @@ Vector Frame::ang_acc_in(const Frame& F) const {
 
 Mat3 Frame::rotation_in(const Frame& F) const {
     if (&F == this) return Mat3::identity();
+    const std::uint64_t epoch = g_orientation_epoch.load();
+    if (R_cache_epoch_ != epoch) {
+        R_cache_.clear();
+        R_cache_epoch_ = epoch;
+    }
+    if (auto it = R_cache_.find(&F); it != R_cache_.end()) return it->second;
+    Mat3 R = compose_rotation_in(F);
+    R_cache_.emplace(&F, R);
+    return R;
+}
+
+Mat3 Frame::compose_rotation_in(const Frame& F) const {
     auto p = tree_path(path_to_root(), F.path_to_root());
     if (!p)
         throw ModelError("rotation_matrix(): no orientation path between frames '" + F.name_ +

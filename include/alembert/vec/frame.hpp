@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cstdint>
+#include <unordered_map>
 #include <optional>
 #include <string>
 #include <vector>
@@ -25,6 +26,7 @@ class Frame {
 public:
     /// A frame named `name` whose derivatives use `table`.
     Frame(SymbolTable& table, std::string name);
+    ~Frame();
     Frame(const Frame&) = delete;
     Frame& operator=(const Frame&) = delete;
 
@@ -95,6 +97,7 @@ private:
         Mat3 R{};
     };
     void append_edge_factors(std::vector<Factor>& out, bool inverse) const;
+    Mat3 compose_rotation_in(const Frame& F) const;
 
     SymbolTable* table_;
     std::string name_;
@@ -107,6 +110,10 @@ private:
     std::optional<Vector> w_set_;
     std::optional<Vector> alpha_set_;
     mutable std::optional<Vector> w_edge_cache_;
+    // R_FB by F, valid while the orientation tree is unchanged (any set_edge of any frame
+    // moves the global epoch on and empties every cache at its next use)
+    mutable std::unordered_map<const Frame*, Mat3> R_cache_;
+    mutable std::uint64_t R_cache_epoch_ = 0;
 };
 
 /// R_AB, the rotation matrix with [v]_A = R_AB [v]_B.
