@@ -58,7 +58,7 @@ void BM_SpatialRoadmap(benchmark::State& s) { run(s, ChainKind::spatial, Method:
 
 }  // namespace
 
-BENCHMARK(BM_PlanarKane)->Arg(1)->Arg(2)->Arg(4)->Arg(6)->Arg(8)->Arg(10)->Arg(12)->Arg(16)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_PlanarKane)->Arg(1)->Arg(2)->Arg(4)->Arg(6)->Arg(8)->Arg(10)->Arg(12)->Arg(16)->Arg(20)->Arg(30)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_PlanarRoadmap)->Arg(1)->Arg(2)->Arg(4)->Arg(6)->Arg(8)->Arg(10)->Arg(12)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_PlanarLagrange)->Arg(1)->Arg(2)->Arg(4)->Arg(6)->Arg(8)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SpatialKane)->Arg(1)->Arg(2)->Arg(4)->Arg(8)->Unit(benchmark::kMillisecond);

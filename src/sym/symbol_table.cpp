@@ -112,6 +112,14 @@ ex SymbolTable::add_intermediate(const ex& definition, const std::string& name) 
     return make_intermediate(definition, n);
 }
 
+ex SymbolTable::name_subexpression(const ex& definition) {
+    auto it = z_by_definition_.find(definition);
+    if (it != z_by_definition_.end()) return it->second;
+    ex z = add_intermediate(definition);
+    z_by_definition_.emplace(definition, z);
+    return z;
+}
+
 ex SymbolTable::make_intermediate(const ex& definition, const std::string& n) {
     if (by_name_.count(n))
         throw ModelError("SymbolTable: '" + n + "' is already declared; choose another name");

@@ -236,12 +236,18 @@ Mat3 Frame::compose_rotation_in(const Frame& F) const {
     std::vector<Factor> factors;
     for (std::size_t j = 0; j < p->below_f; ++j) p->up_f[j]->append_edge_factors(factors, true);
     for (std::size_t i = p->below_b; i-- > 0;) p->up_b[i]->append_edge_factors(factors, false);
+    // Products of rotations about different axes do not fold: long ones (spatial chains) grow
+    // exponentially, so entries of a partial product beyond a size are named as intermediates
+    // (shared by every product with the same prefix), keeping each product linear in length.
+    constexpr std::size_t kNameOps = 200;
     Mat3 R = Mat3::identity();
     bool first = true;
     for (const Factor& f : factors) {
         Mat3 Rf = f.simple ? simple_rotation(f.axis, f.angle) : f.R;
         R = first ? Rf : R * Rf;
         first = false;
+        for (ex& e : R.m)
+            if (count_ops(e) > kNameOps) e = table_->name_subexpression(e);
     }
     return R;
 }

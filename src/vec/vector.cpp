@@ -107,6 +107,15 @@ Vector Vector::unit() const {
 }
 
 ex dot(const Vector& a, const Vector& b) {
+    const auto& pa = a.components();
+    const auto& pb = b.components();
+    if (pa.size() > 1 && pb.size() > 1) {
+        // both span several frames: pairwise products would cost |a| |b| rotated terms;
+        // expressed in one frame (the last of b's, usually the most distal body) the dot is
+        // three products of sums, linear in the number of parts
+        const Frame& F = *pb.back().first;
+        return dot(a.components_in(F), b.components_in(F));
+    }
     ex sum = 0;
     for (const auto& [A, ca] : a.components())
         for (const auto& [B, cb] : b.components())
@@ -117,6 +126,11 @@ ex dot(const Vector& a, const Vector& b) {
 Vector cross(const Vector& a, const Vector& b) {
     Vector r;
     if (a.is_zero()) return r;
+    if (a.components().size() > 1 && b.components().size() > 1) {
+        // as for dot: one frame keeps the result linear in the number of parts
+        const Frame& F = *b.components().back().first;
+        return Vector(F, cross(a.components_in(F), b.components_in(F)));
+    }
     for (const auto& [B, cb] : b.components()) r += Vector(*B, cross(a.components_in(*B), cb));
     return r;
 }

@@ -93,6 +93,10 @@ public:
     /// The definition may use earlier intermediates only (they are created in dependency order).
     ex add_intermediate(const ex& definition, const std::string& name = "");
 
+    /// The intermediate whose definition is `definition`, named z1, z2, ... the first time and
+    /// the same symbol afterwards, so formation steps that meet a subexpression again share it.
+    ex name_subexpression(const ex& definition);
+
     /// Sets (or replaces) the value of a constant.
     void set_value(const ex& constant, double value);
 
@@ -175,6 +179,7 @@ private:
     std::vector<ex> order_;          // every symbol in declaration order
     std::vector<ex> intermediates_;  // dependency order
     std::map<ex, ex, GiNaC::ex_is_less> z_dt_;
+    std::map<ex, ex, GiNaC::ex_is_less> z_by_definition_;
     mutable std::map<ex, ex, GiNaC::ex_is_less> z_expanded_;
     std::size_t next_z_ = 1;
 };
