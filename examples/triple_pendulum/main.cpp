@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: MIT
 // The seed's sit-to-stand model, an inverted triple pendulum, built through the public API:
-// prints angular velocities, mass-centre velocities and the angular momentum of {A, B, C}
-// about the ankle A_o.
+// prints the kinematics the road-map uses, the road-map the planner writes (the seed's three
+// rows), the torques it gives (inverse dynamics), the mass-matrix form (forward dynamics), the
+// statics torques, and the count brute-force free-body diagrams would need.
+#include <cstdio>
 #include <iostream>
 
 #include <alembert/alembert.hpp>
@@ -60,5 +62,48 @@ int main() {
     ex M_z = dot(sys.calc_resultant(S, A_o).moment, N.z());
     std::cout << "M_S_Ao> = (" << to_string(simplify(M_z)) << ")*Nz>\n";
     std::cout << "PE = " << to_string(simplify(sys.calc_potential_energy())) << "\n";
+
+    // the MG road-map: one row per unknown torque, each free of joint forces
+    std::vector<TimeVariable> q{qA, qB, qC};
+    std::vector<ex> T{T_A, T_B, T_C};
+    std::vector<RoadmapRow> rows = plan_roadmap(sys, q, T);
+    std::cout << "\nMG road-map (inverse dynamics)\n" << format_roadmap_table(sys, rows);
+
+    // inverse dynamics at one instant of rising from a chair (angles in rad, rad/s, rad/s^2)
+    exmap state{{qA, 0.35}, {qB, -1.2}, {qC, 0.9}, {qA.d(1), 0.5}, {qB.d(1), 1.1},
+                {qC.d(1), -0.8}, {qA.d(2), 0.2}, {qB.d(2), 1.5}, {qC.d(2), -1.0}};
+    Eigen::VectorXd torque = solve_numeric(s, form_linear_system(residuals_of(rows), T), state);
+    std::cout << "\ntorques at qA = 0.35, qB = -1.2, qC = 0.9 rad (moving):\n";
+    for (int i = 0; i < 3; ++i)
+        std::printf("  %s = %.4f N m\n", to_string(T[static_cast<std::size_t>(i)]).c_str(), torque(i));
+
+    // forward dynamics: the same rows solved for the accelerations, M(q) q'' = f
+    std::vector<ex> acc{qA.d(2), qB.d(2), qC.d(2)};
+    LinearSystem fwd = form_linear_system(residuals_of(plan_roadmap(sys, q, acc)), acc);
+    std::cout << "\nmass matrix M(q) (rows: qA, qB, qC road-map rows):\n";
+    for (unsigned i = 0; i < 3; ++i) {
+        std::cout << "  [";
+        for (unsigned j = 0; j < 3; ++j)
+            std::cout << (j ? ", " : "") << to_string(simplify(fwd.A(i, j)));
+        std::cout << "]\n";
+    }
+    exmap motors{{qA, 0.35}, {qB, -1.2}, {qC, 0.9}, {qA.d(1), 0.5}, {qB.d(1), 1.1},
+                 {qC.d(1), -0.8}};
+    for (int i = 0; i < 3; ++i) motors[T[static_cast<std::size_t>(i)]] = torque(i);
+    Eigen::VectorXd qdd = solve_numeric(s, fwd, motors);
+    std::printf("those torques give back qA'' = %.4f, qB'' = %.4f, qC'' = %.4f rad/s^2\n",
+                qdd(0), qdd(1), qdd(2));
+
+    // statics: holding a crouch still
+    std::vector<RoadmapRow> still = plan_roadmap(sys, q, T, Analysis::statics);
+    exmap crouch{{qA, 0.35}, {qB, -1.2}, {qC, 0.9}};
+    Eigen::VectorXd hold = solve_numeric(s, form_linear_system(residuals_of(still), T), crouch);
+    std::printf("\nstatics, same pose at rest: T_A = %.4f, T_B = %.4f, T_C = %.4f N m\n",
+                hold(0), hold(1), hold(2));
+
+    // what the road-map saves
+    std::cout << "\n" << summarize(form_newton_euler_equations(sys, q, T)) << "\n";
+    NewtonEulerOptions spatial{NewtonEulerMode::spatial};
+    std::cout << summarize(form_newton_euler_equations(sys, q, T, spatial)) << "\n";
     return 0;
 }

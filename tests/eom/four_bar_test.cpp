@@ -7,6 +7,7 @@
 
 #include "alembert/eom/equations.hpp"
 #include "alembert/eom/planner.hpp"
+#include "alembert/eom/statics.hpp"
 #include "alembert/error.hpp"
 #include "alembert/mech/sample_models.hpp"
 #include "support/expect.hpp"
@@ -117,6 +118,40 @@ TEST(FourBar, CrankTorqueHoldingItStillMatchesVirtualWorkOnBothBranches) {
         // the two assembly branches are different equilibria with different torques
         EXPECT_GT(std::abs(torque[0] - torque[1]), 1e-3);
     }
+}
+
+TEST(FourBar, SolvingTheRoadmapFindsEachAssemblyBranchAndItsTorque) {
+    // the whole statics road-map (3 balance rows, 2 loop rows) solved together for the crank
+    // torque, the pin force and the dependent angles; a sign condition picks the branch:
+    // the pin above (+) or below (-) the line from the crank tip to the rocker pivot
+    SampleModel m = make_four_bar();
+    const System& sys = m.system;
+    const SymbolTable& st = sys.symbols();
+    ex qA = m.q[0].symbol(), qB = m.q[1].symbol(), qC = m.q[2].symbol();
+    std::vector<ex> unknowns{m.unknowns[0], m.unknowns[1], m.unknowns[2], qB, qC};
+    std::vector<ex> E = residuals_of(plan_roadmap(sys, m.q, unknowns, Analysis::statics));
+    ex LA = st.symbol("L_A"), LN = st.symbol("L_N");
+    ex side = (LN - LA * GiNaC::cos(qA)) * GiNaC::sin(qA + qB) +
+              LA * GiNaC::sin(qA) * GiNaC::cos(qA + qB);  // (r^{N_c/A_tip} x Bx>) . Nz>
+    const double angle = std::numbers::pi / 3;
+    for (int branch : {+1, -1}) {
+        StaticsOptions opt;
+        opt.conditions = {{side, branch > 0, branch > 0 ? "pin above" : "pin below"}};
+        Pose hand = solve_pose(angle, branch);
+        // start from a rough guess on the wanted side
+        exmap guess{{qB, hand.qB + 0.3}, {qC, hand.qC - 0.3}};
+        Equilibrium eq = solve_equilibrium(st, E, unknowns, guess, {{qA, angle}}, opt);
+        EXPECT_NEAR(eq.value(qB), hand.qB, 1e-9) << "branch " << branch;
+        EXPECT_NEAR(eq.value(qC), hand.qC, 1e-9) << "branch " << branch;
+        EXPECT_NEAR(eq.value(m.unknowns[0]), holding_torque(angle, branch), 1e-7);
+    }
+    // a guess on one side with the other side's condition is refused, not silently accepted
+    StaticsOptions wrong;
+    wrong.conditions = {{side, false, "pin below"}};
+    Pose above = solve_pose(angle, +1);
+    EXPECT_THROW(solve_equilibrium(st, E, unknowns, {{qB, above.qB}, {qC, above.qC}},
+                                   {{qA, angle}}, wrong),
+                 SolveError);
 }
 
 TEST(FourBar, DynamicsRowsConserveEnergyAlongTheLoop) {
