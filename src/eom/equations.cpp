@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "alembert/error.hpp"
+#include "alembert/sym/evaluator.hpp"
 #include "alembert/sym/print.hpp"
 #include "alembert/sym/simplify.hpp"
 
@@ -61,14 +62,37 @@ std::vector<ex> solve_symbolic(const LinearSystem& sys) {
 Eigen::VectorXd solve_numeric(const SymbolTable& table, const LinearSystem& sys,
                               const exmap& values) {
     const int n = static_cast<int>(sys.A.rows());
-    Eigen::MatrixXd A(n, n);
-    Eigen::VectorXd b(n);
-    for (int i = 0; i < n; ++i) {
-        for (int j = 0; j < n; ++j) A(i, j) = table.evaluate(sys.A(i, j), values);
-        b(i) = table.evaluate(sys.b(i, 0), values);
+    // compiled once for this call: shared subexpressions and intermediates are evaluated
+    // once, which is what makes large models affordable
+    std::vector<ex> inputs, outputs;
+    std::vector<long double> in;
+    for (const auto& [s, v] : values) {
+        if (!GiNaC::is_a<GiNaC::numeric>(v))
+            throw ArgumentError("solve_numeric(): the value given for '" + to_string(s) +
+                                "' is not a number (" + to_string(v) + ")");
+        inputs.push_back(s);
+        in.push_back(GiNaC::ex_to<GiNaC::numeric>(v).to_double());
     }
-    Eigen::FullPivLU<Eigen::MatrixXd> lu(A);
-    double rcond = lu.rcond();
+    for (int i = 0; i < n; ++i) {
+        for (int j = 0; j < n; ++j) outputs.push_back(sys.A(static_cast<unsigned>(i), static_cast<unsigned>(j)));
+        outputs.push_back(sys.b(static_cast<unsigned>(i), 0));
+    }
+    // extended precision for the coefficients and the decomposition: the answer is then
+    // limited by the double it is returned in, not by rounding in long sums and in the LU of
+    // an ill-conditioned mass matrix (long chains), so methods compare cleanly
+    using MatrixXld = Eigen::Matrix<long double, Eigen::Dynamic, Eigen::Dynamic>;
+    using VectorXld = Eigen::Matrix<long double, Eigen::Dynamic, 1>;
+    CompiledExpressions f(table, inputs, outputs);
+    std::vector<long double> out(outputs.size());
+    f.evaluate_extended(in.data(), out.data());
+    MatrixXld A(n, n);
+    VectorXld b(n);
+    for (int i = 0; i < n; ++i) {
+        for (int j = 0; j < n; ++j) A(i, j) = out[static_cast<std::size_t>(i * (n + 1) + j)];
+        b(i) = out[static_cast<std::size_t>(i * (n + 1) + n)];
+    }
+    Eigen::FullPivLU<MatrixXld> lu(A);
+    double rcond = static_cast<double>(lu.rcond());
     if (!lu.isInvertible() || !(rcond > 1e-14)) {
         std::ostringstream os;
         os << "solve_numeric(): the coefficient matrix is singular or ill-conditioned at this "
@@ -78,7 +102,7 @@ Eigen::VectorXd solve_numeric(const SymbolTable& table, const LinearSystem& sys,
         os << "; the configuration may be singular (a locked or degenerate pose)";
         throw SolveError(os.str());
     }
-    return lu.solve(b);
+    return lu.solve(b).cast<double>();
 }
 
 }  // namespace alembert

@@ -29,7 +29,8 @@ constexpr long kMaxChainedPower = 1L << 20;
 
 // ---- one operation on doubles: evaluation and constant folding share it ----------------------
 
-inline double apply(TapeOp op, double a, double b) {
+template <class T>
+inline T apply(TapeOp op, T a, T b) {
     switch (op) {
         case TapeOp::combine: break;  // reads its term list: see combine()
         case TapeOp::sincos: break;   // two results: see CompiledExpressions::evaluate
@@ -56,21 +57,22 @@ inline double apply(TapeOp op, double a, double b) {
         case TapeOp::asinh: return std::asinh(a);
         case TapeOp::acosh: return std::acosh(a);
         case TapeOp::atanh: return std::atanh(a);
-        case TapeOp::csgn: return a > 0 ? 1.0 : (a < 0 ? -1.0 : 0.0);
-        case TapeOp::step: return a > 0 ? 1.0 : (a < 0 ? 0.0 : 0.5);
+        case TapeOp::csgn: return a > 0 ? T(1) : (a < 0 ? T(-1) : T(0));
+        case TapeOp::step: return a > 0 ? T(1) : (a < 0 ? T(0) : T(0.5));
     }
-    return std::numeric_limits<double>::quiet_NaN();
+    return std::numeric_limits<T>::quiet_NaN();
 }
 
 // sum of c_k r[reg_k], with two accumulators so that consecutive terms overlap
-inline double combine(const TapeTerm* t, std::uint32_t n, const double* r) {
-    double s0 = 0, s1 = 0;
+template <class T>
+inline T combine(const TapeTerm* t, std::uint32_t n, const T* r) {
+    T s0 = 0, s1 = 0;
     std::uint32_t k = 0;
     for (; k + 1 < n; k += 2) {
-        s0 += t[k].c * r[t[k].reg];
-        s1 += t[k + 1].c * r[t[k + 1].reg];
+        s0 += T(t[k].c) * r[t[k].reg];
+        s1 += T(t[k + 1].c) * r[t[k + 1].reg];
     }
-    if (k < n) s0 += t[k].c * r[t[k].reg];
+    if (k < n) s0 += T(t[k].c) * r[t[k].reg];
     return s0 + s1;
 }
 
@@ -655,6 +657,17 @@ void CompiledExpressions::evaluate(const double* inputs, double* outputs) const 
 }
 
 void CompiledExpressions::evaluate(const double* inputs, double* outputs, double* r) const {
+    run(inputs, outputs, r);
+}
+
+void CompiledExpressions::evaluate_extended(const long double* inputs,
+                                            long double* outputs) const {
+    std::vector<long double> r(register_count_);
+    run(inputs, outputs, r.data());
+}
+
+template <class T>
+void CompiledExpressions::run(const T* inputs, T* outputs, T* r) const {
     // registers: inputs, numbers, then temporaries
     const std::size_t n = inputs_.size();
     std::copy_n(inputs, n, r);
@@ -672,7 +685,7 @@ void CompiledExpressions::evaluate(const double* inputs, double* outputs, double
             case TapeOp::combine: r[t.dst] = combine(terms + t.a, t.b, r); break;
             case TapeOp::sincos: {
                 // one argument reduction for both (compilers fuse the pair into sincos)
-                const double x = r[t.a], s = std::sin(x), c = std::cos(x);
+                const T x = r[t.a], s = std::sin(x), c = std::cos(x);
                 r[t.dst] = s;
                 r[t.b] = c;
                 break;

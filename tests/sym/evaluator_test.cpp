@@ -438,3 +438,26 @@ TEST(CompiledExpressions, MalformedInputsAreRejected) {
     EXPECT_THROW_MSG(f.evaluate(std::vector<double>{1}, out), ArgumentError,
                      "room for 1 outputs given, 2 expected");
 }
+
+TEST(CompiledExpressions, ExtendedPrecisionSurvivesCancellation) {
+    // (a + b)^2 - a^2 - 2 a b = b^2 exactly; with a = 1e8 the square is near 1e16, where a
+    // double's spacing is 2, so double evaluation may be off by about 2 while long double
+    // (spacing 2^-10 there) stays within a few thousandths
+    SymbolTable t;
+    ex a = t.add_constant("a"), b = t.add_constant("b");
+    CompiledExpressions f(t, {a, b}, {pow(a + b, 2) - a * a - 2 * a * b});
+    const long double in[2] = {1e8L, 1.5L};
+    long double out = 0;
+    f.evaluate_extended(in, &out);
+    EXPECT_NEAR(static_cast<double>(out), 2.25, 5e-3);
+    // and both precisions agree on an ordinary expression
+    CompiledExpressions g(t, {a, b}, {sin(a) * cos(b) + pow(a, 3) / (1 + b * b)});
+    const double ind[2] = {0.7, -1.3};
+    const long double inl[2] = {0.7L, -1.3L};
+    double d = 0;
+    long double l = 0;
+    g.evaluate(ind, &d);
+    g.evaluate_extended(inl, &l);
+    EXPECT_NEAR(d, static_cast<double>(l), 1e-15);
+    EXPECT_NEAR(d, std::sin(0.7) * std::cos(-1.3) + 0.343 / (1 + 1.69), 1e-15);
+}

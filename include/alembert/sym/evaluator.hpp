@@ -108,6 +108,11 @@ public:
     /// As above with a caller-owned `workspace` of workspace_size() doubles; safe to call
     /// concurrently on one object with distinct workspaces and outputs.
     void evaluate(const double* inputs, double* outputs, double* workspace) const;
+    /// The same tape in extended precision (long double; 64-bit significand on x86-64), for
+    /// checks whose answer must not be blurred by rounding in large sums (cross-checks of
+    /// methods on ill-conditioned models). Numbers of the expressions are stored as doubles.
+    /// Allocates its workspace.
+    void evaluate_extended(const long double* inputs, long double* outputs) const;
     /// evaluate(inputs, outputs) with the sizes checked (scratch buffer: one thread at a time).
     /// @throws alembert::ArgumentError if a span has the wrong size.
     void evaluate(std::span<const double> inputs, std::span<double> outputs) const;
@@ -122,6 +127,9 @@ private:
     std::vector<detail::TapeInstruction> tape_;
     std::vector<detail::TapeTerm> terms_;  // of the linear combinations
     std::size_t operation_count_ = 0;
+    template <class T>
+    void run(const T* inputs, T* outputs, T* workspace) const;
+
     std::vector<double> literals_;       // registers [inputs, inputs + literals)
     std::vector<std::uint32_t> outputs_;  // register of each output
     std::size_t register_count_ = 0;
