@@ -2,55 +2,134 @@
 // Road-map, Kane, Lagrange and brute-force Newton–Euler side by side at random states.
 #include "alembert/eom/cross_check.hpp"
 
-#include <algorithm>
-#include <random>
+#include <Eigen/Dense>
 
-#include "alembert/eom/equations.hpp"
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <sstream>
+
 #include "alembert/eom/kane.hpp"
 #include "alembert/eom/lagrange.hpp"
 #include "alembert/eom/newton_euler.hpp"
 #include "alembert/eom/planner.hpp"
+#include "alembert/error.hpp"
+#include "alembert/sym/evaluator.hpp"
+#include "alembert/sym/print.hpp"
 
 namespace alembert {
 
+namespace {
+
+// one method's residuals E, linear in the unknowns x (E = b - A x), compiled once as functions
+// of x and the state; A and b come from evaluations at x = 0 and x = s e_j
+class CompiledMethod {
+public:
+    CompiledMethod(std::string name, const SymbolTable& st, const std::vector<ex>& residuals,
+                   std::vector<ex> x, const std::vector<ex>& state)
+        : name_(std::move(name)), x_(std::move(x)) {
+        if (residuals.size() != x_.size())
+            throw ModelError("compare_methods(): the " + name_ + " method gives " +
+                             std::to_string(residuals.size()) + " equations in " +
+                             std::to_string(x_.size()) + " unknowns");
+        std::vector<ex> inputs = x_;
+        inputs.insert(inputs.end(), state.begin(), state.end());
+        E_ = CompiledExpressions(st, std::move(inputs), residuals);
+    }
+
+    const std::string& name() const { return name_; }
+
+    // x at the state (values in the order of the `state` symbols)
+    Eigen::VectorXd solve(const std::vector<double>& state) const {
+        // a power of two: A_j = (b - E(s e_j)) / s exactly scaled, b's rounding divided by s
+        constexpr double s = 1 << 20;
+        const auto n = static_cast<Eigen::Index>(x_.size());
+        std::vector<double> in(x_.size(), 0.0);
+        in.insert(in.end(), state.begin(), state.end());
+        Eigen::VectorXd b(n), e(n), e2(n);
+        Eigen::MatrixXd A(n, n);
+        E_.evaluate(in.data(), b.data());
+        for (Eigen::Index j = 0; j < n; ++j) {
+            in[static_cast<std::size_t>(j)] = s;
+            E_.evaluate(in.data(), e.data());
+            in[static_cast<std::size_t>(j)] = 2 * s;
+            E_.evaluate(in.data(), e2.data());
+            in[static_cast<std::size_t>(j)] = 0;
+            A.col(j) = (b - e) / s;
+            // linear: E(2 s e_j) = b - 2 s A_j
+            double scale = 1 + b.cwiseAbs().maxCoeff() + 2 * s * A.col(j).cwiseAbs().maxCoeff();
+            if (!((e2 - (b - 2 * s * A.col(j))).cwiseAbs().maxCoeff() <= 1e-9 * scale))
+                throw SolveError("compare_methods(): the " + name_ +
+                                 " equations are not linear in '" +
+                                 to_string(x_[static_cast<std::size_t>(j)]) + "'");
+        }
+        Eigen::FullPivLU<Eigen::MatrixXd> lu(A);
+        if (!lu.isInvertible() || !(lu.rcond() > 1e-14)) {
+            std::ostringstream os;
+            os << "compare_methods(): the " << name_
+               << " coefficient matrix is singular or ill-conditioned at a drawn state "
+                  "(reciprocal condition estimate "
+               << lu.rcond() << "); the configuration may be singular";
+            throw SolveError(os.str());
+        }
+        return lu.solve(b);
+    }
+
+private:
+    std::string name_;
+    std::vector<ex> x_;
+    CompiledExpressions E_;
+};
+
+}  // namespace
+
 MethodComparison compare_methods(const System& sys, const std::vector<TimeVariable>& q,
                                  int states, unsigned seed) {
+    const SymbolTable& st = sys.symbols();
     std::vector<ex> acc;
     for (const TimeVariable& qi : q) acc.push_back(qi.d(2));
     std::vector<ex> roadmap;
     for (const RoadmapRow& r : plan_roadmap(sys, q, acc)) roadmap.push_back(r.equation);
     // Newton–Euler solves for the accelerations and every joint reaction together
     NewtonEulerEquations ne = form_newton_euler_equations(sys, q, acc);
-    std::vector<LinearSystem> forms{form_linear_system(roadmap, acc),
-                                    form_linear_system(form_kane_equations(sys, q), acc),
-                                    form_linear_system(form_lagrange_equations(sys, q), acc),
-                                    form_linear_system(ne.equations, ne.unknowns)};
-    MethodComparison out{{"road-map", "Kane", "Lagrange", "Newton–Euler"}, states, 0, {}};
-
-    out.differences.assign(forms.size(), 0.0);
     auto is_reaction = [&](const ex& s) {
         return std::any_of(ne.reactions.begin(), ne.reactions.end(),
                            [&](const ex& r) { return r.is_equal(s); });
     };
 
-    const SymbolTable& st = sys.symbols();
+    // what a state gives values to: coordinates, speeds, specified inputs, unknown loads,
+    // constants without a value, the time
+    std::vector<ex> state;
+    for (SymbolKind kind : {SymbolKind::variable, SymbolKind::specified, SymbolKind::unknown})
+        for (const ex& s : st.symbols(kind))
+            if (!(kind == SymbolKind::variable && st.derivative_order(s) >= 2) && !is_reaction(s))
+                state.push_back(s);
+    std::size_t free_constants = 0;
+    for (const ex& c : st.symbols(SymbolKind::constant))
+        if (!st.value(c)) state.push_back(c), ++free_constants;
+    state.push_back(st.time());
+
+    std::vector<CompiledMethod> methods;
+    methods.emplace_back("road-map", st, roadmap, acc, state);
+    methods.emplace_back("Kane", st, form_kane_equations(sys, q), acc, state);
+    methods.emplace_back("Lagrange", st, form_lagrange_equations(sys, q), acc, state);
+    methods.emplace_back("Newton–Euler", st, ne.equations, ne.unknowns, state);
+    MethodComparison out{{}, states, 0, std::vector<double>(methods.size(), 0.0)};
+    for (const CompiledMethod& m : methods) out.methods.push_back(m.name());
+
     std::mt19937 rng(seed);
     std::uniform_real_distribution<double> unit(-1, 1), positive(0.5, 1.5);
+    const std::size_t varying = state.size() - free_constants - 1;
     for (int k = 0; k < states; ++k) {
-        // a random state: coordinates, speeds, specified inputs, unknown loads, free constants
-        exmap values;
-        for (SymbolKind kind : {SymbolKind::variable, SymbolKind::specified, SymbolKind::unknown})
-            for (const ex& s : st.symbols(kind))
-                if (!(kind == SymbolKind::variable && st.derivative_order(s) >= 2) &&
-                    !is_reaction(s))
-                    values[s] = unit(rng);
-        for (const ex& c : st.symbols(SymbolKind::constant))
-            if (!st.value(c)) values[c] = positive(rng);
-        values[st.time()] = positive(rng);
-        Eigen::VectorXd ref = solve_numeric(st, forms[0], values);
-        for (std::size_t m = 1; m < forms.size(); ++m) {
-            Eigen::VectorXd x = solve_numeric(st, forms[m], values);
-            for (int i = 0; i < ref.size(); ++i)
+        // a random state, drawn in the order of `state`
+        std::vector<double> values;
+        for (std::size_t i = 0; i < varying; ++i) values.push_back(unit(rng));
+        for (std::size_t i = 0; i < free_constants; ++i) values.push_back(positive(rng));
+        values.push_back(positive(rng));
+        Eigen::VectorXd ref = methods[0].solve(values);
+        for (std::size_t m = 1; m < methods.size(); ++m) {
+            Eigen::VectorXd x = methods[m].solve(values);
+            for (Eigen::Index i = 0; i < ref.size(); ++i)
                 out.differences[m] = std::max(out.differences[m], std::abs(x(i) - ref(i)) /
                                                                       std::max(1.0, std::abs(ref(i))));
             out.max_difference = std::max(out.max_difference, out.differences[m]);

@@ -23,9 +23,12 @@ struct MethodComparison {
 /// solves each for the accelerations q'' at `states` pseudo-random states (q, q', specified
 /// inputs and unknown load measures drawn from [-1, 1], constants without a value from
 /// [0.5, 1.5]; deterministic for a given seed), and reports the largest relative difference
-/// from the road-map's.
+/// from the road-map's. Each method's residuals E (linear in its unknowns x, E = b - A x) are
+/// compiled once (alembert::CompiledExpressions); at each state b = E(0) and the columns of A
+/// come from evaluations at x = s e_j (s = 2^20), which also check that E is linear in x.
 /// @throws alembert::SolveError if a method's coefficient matrix is singular at a drawn
-///         state, alembert::ModelError if Newton–Euler cannot infer the model's joints.
+///         state or its equations are not linear in its unknowns, alembert::ModelError if
+///         Newton–Euler cannot infer the model's joints.
 MethodComparison compare_methods(const System& sys, const std::vector<TimeVariable>& q,
                                  int states = 3, unsigned seed = 1);
 
