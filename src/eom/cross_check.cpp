@@ -39,40 +39,45 @@ public:
 
     const std::string& name() const { return name_; }
 
-    // x at the state (values in the order of the `state` symbols)
+    // x at the state (values in the order of the `state` symbols), evaluated and solved in
+    // extended precision so that the comparison sees the methods, not rounding in long sums
+    // and in the LU of an ill-conditioned mass matrix
     Eigen::VectorXd solve(const std::vector<double>& state) const {
+        using Real = long double;
+        using Matrix = Eigen::Matrix<Real, Eigen::Dynamic, Eigen::Dynamic>;
+        using Column = Eigen::Matrix<Real, Eigen::Dynamic, 1>;
         // a power of two: A_j = (b - E(s e_j)) / s exactly scaled, b's rounding divided by s
-        constexpr double s = 1 << 20;
+        constexpr Real s = 1 << 20;
         const auto n = static_cast<Eigen::Index>(x_.size());
-        std::vector<double> in(x_.size(), 0.0);
+        std::vector<Real> in(x_.size(), 0.0L);
         in.insert(in.end(), state.begin(), state.end());
-        Eigen::VectorXd b(n), e(n), e2(n);
-        Eigen::MatrixXd A(n, n);
-        E_.evaluate(in.data(), b.data());
+        Column b(n), e(n), e2(n);
+        Matrix A(n, n);
+        E_.evaluate_extended(in.data(), b.data());
         for (Eigen::Index j = 0; j < n; ++j) {
             in[static_cast<std::size_t>(j)] = s;
-            E_.evaluate(in.data(), e.data());
+            E_.evaluate_extended(in.data(), e.data());
             in[static_cast<std::size_t>(j)] = 2 * s;
-            E_.evaluate(in.data(), e2.data());
+            E_.evaluate_extended(in.data(), e2.data());
             in[static_cast<std::size_t>(j)] = 0;
             A.col(j) = (b - e) / s;
             // linear: E(2 s e_j) = b - 2 s A_j
-            double scale = 1 + b.cwiseAbs().maxCoeff() + 2 * s * A.col(j).cwiseAbs().maxCoeff();
-            if (!((e2 - (b - 2 * s * A.col(j))).cwiseAbs().maxCoeff() <= 1e-9 * scale))
+            Real scale = 1 + b.cwiseAbs().maxCoeff() + 2 * s * A.col(j).cwiseAbs().maxCoeff();
+            if (!((e2 - (b - 2 * s * A.col(j))).cwiseAbs().maxCoeff() <= 1e-9L * scale))
                 throw SolveError("compare_methods(): the " + name_ +
                                  " equations are not linear in '" +
                                  to_string(x_[static_cast<std::size_t>(j)]) + "'");
         }
-        Eigen::FullPivLU<Eigen::MatrixXd> lu(A);
-        if (!lu.isInvertible() || !(lu.rcond() > 1e-14)) {
+        Eigen::FullPivLU<Matrix> lu(A);
+        if (!lu.isInvertible() || !(lu.rcond() > 1e-14L)) {
             std::ostringstream os;
             os << "compare_methods(): the " << name_
                << " coefficient matrix is singular or ill-conditioned at a drawn state "
                   "(reciprocal condition estimate "
-               << lu.rcond() << "); the configuration may be singular";
+               << static_cast<double>(lu.rcond()) << "); the configuration may be singular";
             throw SolveError(os.str());
         }
-        return lu.solve(b);
+        return lu.solve(b).template cast<double>();
     }
 
 private:
