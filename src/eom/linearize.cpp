@@ -1,0 +1,173 @@
+// SPDX-License-Identifier: MIT
+// Linearization of first-order implicit equations about an operating point.
+#include "alembert/eom/linearize.hpp"
+
+#include <string>
+
+#include "alembert/error.hpp"
+#include "alembert/sym/print.hpp"
+#include "alembert/sym/simplify.hpp"
+
+namespace alembert {
+
+namespace {
+
+const std::string kFn = "linearize(): ";
+
+std::size_t index_of(const std::vector<ex>& xs, const ex& x) {
+    for (std::size_t i = 0; i < xs.size(); ++i)
+        if (xs[i].is_equal(x)) return i;
+    return xs.size();
+}
+
+bool contains(const std::vector<ex>& xs, const ex& x) { return index_of(xs, x) < xs.size(); }
+
+void require_symbol(const ex& x, const std::string& role) {
+    if (!GiNaC::is_a<GiNaC::symbol>(x))
+        throw ArgumentError(kFn + role + " '" + to_string(x) + "' is not a symbol");
+}
+
+const GiNaC::symbol& sym(const ex& x) { return GiNaC::ex_to<GiNaC::symbol>(x); }
+
+}  // namespace
+
+FirstOrderEquations to_first_order(const KaneEquations& kane) {
+    FirstOrderEquations f;
+    f.states = kane.coordinates;
+    f.states.insert(f.states.end(), kane.independent_speeds.begin(),
+                    kane.independent_speeds.end());
+    f.rates = kane.coordinate_rate_symbols;
+    f.rates.insert(f.rates.end(), kane.dynamics.unknowns.begin(), kane.dynamics.unknowns.end());
+    // kinematic rows q' - k(q, u), except where q' is itself a state (u = q')
+    for (std::size_t i = 0; i < kane.coordinates.size(); ++i)
+        if (!contains(f.states, kane.coordinate_rate_symbols[i]))
+            f.residuals.push_back(kane.coordinate_rate_symbols[i] - kane.coordinate_rates[i]);
+    f.residuals.insert(f.residuals.end(), kane.residuals.begin(), kane.residuals.end());
+    return f;
+}
+
+FirstOrderEquations to_first_order(const std::vector<ex>& residuals,
+                                   const std::vector<TimeVariable>& q) {
+    if (residuals.size() != q.size())
+        throw ArgumentError("to_first_order(): " + std::to_string(residuals.size()) +
+                            " equations for " + std::to_string(q.size()) +
+                            " coordinates; give one second-order equation per coordinate");
+    FirstOrderEquations f;
+    for (const TimeVariable& qi : q) {
+        if (qi.order() < 2)
+            throw ArgumentError("to_first_order(): coordinate '" + qi.name() +
+                                "' has no second derivative; declare it with order 2");
+        f.states.push_back(qi.symbol());
+        f.rates.push_back(qi.d(1));
+    }
+    for (const TimeVariable& qi : q) {
+        f.states.push_back(qi.d(1));
+        f.rates.push_back(qi.d(2));
+    }
+    f.residuals = residuals;
+    return f;
+}
+
+LinearizedEquations linearize(const SymbolTable& table, const FirstOrderEquations& eqs,
+                              const LinearizeOptions& options) {
+    const std::vector<ex>& x = eqs.states;
+    const std::size_t N = x.size();
+    if (eqs.rates.size() != N)
+        throw ArgumentError(kFn + std::to_string(N) + " states and " +
+                            std::to_string(eqs.rates.size()) + " rates; give one rate per state");
+    for (std::size_t i = 0; i < N; ++i) {
+        require_symbol(x[i], "state");
+        require_symbol(eqs.rates[i], "rate");
+        if (index_of(x, x[i]) != i)
+            throw ArgumentError(kFn + "state '" + to_string(x[i]) + "' is listed twice");
+    }
+    for (const ex& r : options.inputs) {
+        require_symbol(r, "input");
+        if (contains(x, r) || contains(eqs.rates, r))
+            throw ArgumentError(kFn + "input '" + to_string(r) +
+                                "' is a state or a rate; inputs are specified functions or "
+                                "load measures");
+    }
+
+    // ---- the rates that are not states: the residuals fix them
+    std::vector<ex> free;        // x_f'
+    std::vector<std::size_t> free_row;  // the state row of each
+    for (std::size_t i = 0; i < N; ++i)
+        if (!contains(x, eqs.rates[i])) {
+            free.push_back(eqs.rates[i]);
+            free_row.push_back(i);
+        }
+    const std::size_t F = free.size();
+    if (eqs.residuals.size() != F)
+        throw ArgumentError(kFn + std::to_string(eqs.residuals.size()) + " residuals for " +
+                            std::to_string(F) +
+                            " rates that are not states; give one equation per such rate");
+    for (const auto& [key, value] : options.operating_point)
+        if (contains(free, key))
+            throw ArgumentError(kFn + "the operating point gives a value for the rate '" +
+                                to_string(key) +
+                                "'; give the states only, the rates follow from the equations");
+    const exmap& op = options.operating_point;
+
+    // ---- M x_f' = b: the rates at the operating point
+    std::vector<ex> E;
+    for (const ex& e : eqs.residuals) E.push_back(table.expand_intermediates(e));
+    exmap free0;
+    for (const ex& r : free) free0[r] = 0;
+    GiNaC::matrix M(static_cast<unsigned>(F), static_cast<unsigned>(F)),
+        b(static_cast<unsigned>(F), 1);
+    for (unsigned i = 0; i < F; ++i) {
+        for (unsigned j = 0; j < F; ++j) {
+            ex a = E[i].diff(sym(free[j]));
+            for (const ex& r : free)
+                if (a.has(r))
+                    throw SolveError(kFn + "equation " + std::to_string(i + 1) +
+                                     " is not linear in the rate '" + to_string(free[j]) +
+                                     "' (its coefficient holds '" + to_string(r) + "')");
+            M(i, j) = -a.subs(op);
+        }
+        b(i, 0) = E[i].subs(free0).subs(op);
+    }
+    const std::string singular =
+        std::string(kFn) + "the equations cannot be solved for the rates at the operating point "
+                           "(singular mass matrix there); choose another operating point or "
+                           "coordinates";
+    GiNaC::matrix xf0 = detail::solve_by_blocks(M, b, free, singular);
+    exmap at_op = op;  // states, inputs and rates at the operating point
+    for (unsigned j = 0; j < F; ++j) at_op[free[j]] = xf0(j, 0);
+
+    // ---- M [A_f B_f] = [dE/dx dE/dr] at the operating point
+    const std::size_t R = options.inputs.size();
+    GiNaC::matrix J(static_cast<unsigned>(F), static_cast<unsigned>(N + R));
+    for (unsigned i = 0; i < F; ++i) {
+        for (unsigned j = 0; j < N; ++j) J(i, j) = E[i].diff(sym(x[j])).subs(at_op);
+        for (unsigned k = 0; k < R; ++k)
+            J(i, static_cast<unsigned>(N) + k) = E[i].diff(sym(options.inputs[k])).subs(at_op);
+    }
+    GiNaC::matrix AB = detail::solve_by_blocks(M, J, free, singular);
+
+    // ---- assemble: unit rows for rates that are states, solved rows for the others
+    LinearizedEquations out;
+    out.states = x;
+    out.inputs = options.inputs;
+    out.A = GiNaC::matrix(static_cast<unsigned>(N), static_cast<unsigned>(N));
+    out.B = GiNaC::matrix(static_cast<unsigned>(N), static_cast<unsigned>(R));
+    out.operating_rates.assign(N, 0);
+    for (std::size_t i = 0; i < N; ++i) {
+        std::size_t j = index_of(x, eqs.rates[i]);
+        if (j < N) {
+            out.A(static_cast<unsigned>(i), static_cast<unsigned>(j)) = 1;
+            out.operating_rates[i] = x[j].subs(op);
+        }
+    }
+    auto tidy = [&](const ex& e) { return options.simplify ? simplify(GiNaC::normal(e)) : e; };
+    for (unsigned f = 0; f < F; ++f) {
+        const unsigned i = static_cast<unsigned>(free_row[f]);
+        for (unsigned j = 0; j < N; ++j) out.A(i, j) = tidy(AB(f, j));
+        for (unsigned k = 0; k < R; ++k) out.B(i, k) = tidy(AB(f, static_cast<unsigned>(N) + k));
+        out.operating_rates[i] = tidy(xf0(f, 0));
+    }
+    return out;
+}
+
+}  // namespace alembert
