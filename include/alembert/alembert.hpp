@@ -4,6 +4,7 @@
 
 #include "alembert/error.hpp"
 #include "alembert/sym/cse.hpp"
+#include "alembert/sym/evaluator.hpp"
 #include "alembert/sym/matrix.hpp"
 #include "alembert/sym/print.hpp"
 #include "alembert/sym/simplify.hpp"
@@ -26,6 +27,7 @@
 #include "alembert/eom/inertia_forces.hpp"
 #include "alembert/eom/kane.hpp"
 #include "alembert/eom/lagrange.hpp"
+#include "alembert/eom/linearize.hpp"
 #include "alembert/eom/newton_euler.hpp"
 #include "alembert/eom/planner.hpp"
 #include "alembert/eom/roadmap.hpp"
