@@ -225,9 +225,11 @@ std::vector<RoadmapRow> plan_roadmap(const System& sys,
     for (std::size_t k = 0; k < n; ++k) {
         const std::size_t i = static_cast<std::size_t>(row_of[k]);
         if (i >= coordinates.size()) {
+            // formed already, with no variable: its additional unknowns are all those it
+            // holds, so only the one it is now for leaves the list
             RoadmapRow r = constraint_rows[i - coordinates.size()];
             r.variable = unknowns[k];
-            form_constraint_row(sys, r, unknowns);
+            std::erase_if(r.additional_unknowns, [&](const ex& x) { return x.is_equal(r.variable); });
             rows.push_back(std::move(r));
             continue;
         }

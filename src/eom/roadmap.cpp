@@ -166,12 +166,12 @@ std::string motion_text(Motion m) {
 }
 
 Cells row_cells(const System& sys, const RoadmapRow& r) {
+    std::string extra;
+    for (std::size_t i = 0; i < r.additional_unknowns.size(); ++i)
+        extra += (i ? ", " : "") + to_string(r.additional_unknowns[i]);
+    if (extra.empty()) extra = "none";
+    if (!r.note.empty()) extra += " (" + r.note + ")";
     if (r.motion == Motion::constraint) {
-        std::string extra;
-        for (std::size_t i = 0; i < r.additional_unknowns.size(); ++i)
-            extra += (i ? ", " : "") + to_string(r.additional_unknowns[i]);
-        if (extra.empty()) extra = "none";
-        if (!r.note.empty()) extra += " (" + r.note + ")";
         bool motion = false;
         for (const Constraint& c : sys.constraints())
             if (c.name == r.constraint) motion = c.kind == ConstraintKind::motion;
@@ -187,11 +187,6 @@ Cells row_cells(const System& sys, const RoadmapRow& r) {
                                 : "u.(M^{S/O} - dH^{S/O}/dt - v^O x L^S) = 0");
     std::string fbd;
     for (std::size_t i = 0; i < r.fbd.size(); ++i) fbd += (i ? "; " : "") + r.fbd[i];
-    std::string extra;
-    for (std::size_t i = 0; i < r.additional_unknowns.size(); ++i)
-        extra += (i ? ", " : "") + to_string(r.additional_unknowns[i]);
-    if (extra.empty()) extra = "none";
-    if (!r.note.empty()) extra += " (" + r.note + ")";
     return {{to_string(r.variable), motion_text(r.motion),
              direction_text(sys, r.direction), set_text(r.system), fbd,
              r.about ? r.about->name() : "-", eq, extra}};

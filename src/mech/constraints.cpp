@@ -88,15 +88,20 @@ const Constraint& System::add_motion_constraint(const std::string& name, const e
                           "System::add_motion_constraint()");
 }
 
-namespace {
-template <class Add>
-std::vector<Constraint> add_measures(const std::string& name, const Vector& v, const Frame& F,
-                                     const char* caller, Add add) {
+std::vector<Constraint> System::add_vector_constraint(const std::string& name,
+                                                     ConstraintKind kind, const Vector& v,
+                                                     const Frame& F, const char* caller) {
     Col3 c = v.components_in(F);
+    // all measures or none: a later one failing leaves the earlier ones undeclared
+    const std::size_t before = constraints_.size();
     std::vector<Constraint> out;
-    for (int i = 0; i < 3; ++i) {
-        if (c[i].is_zero()) continue;
-        out.push_back(add(name + "_" + static_cast<char>('x' + i), c[i]));
+    try {
+        for (int i = 0; i < 3; ++i)
+            if (!c[i].is_zero())
+                out.push_back(add_constraint(name + "_" + static_cast<char>('x' + i), kind, c[i], caller));
+    } catch (...) {
+        constraints_.resize(before);
+        throw;
     }
     if (out.empty())
         throw ArgumentError(std::string(caller) + ": constraint '" + name +
@@ -105,36 +110,17 @@ std::vector<Constraint> add_measures(const std::string& name, const Vector& v, c
                             "define it");
     return out;
 }
-}  // namespace
 
 std::vector<Constraint> System::add_configuration_constraint(const std::string& name,
                                                              const Vector& v, const Frame& F) {
-    // all measures or none: a later one failing leaves the earlier ones undeclared
-    const std::size_t before = constraints_.size();
-    try {
-        return add_measures(name, v, F, "System::add_configuration_constraint()",
-                            [&](const std::string& n, const ex& e) {
-                                return add_configuration_constraint(n, e);
-                            });
-    } catch (...) {
-        constraints_.resize(before);
-        throw;
-    }
+    return add_vector_constraint(name, ConstraintKind::configuration, v, F,
+                                 "System::add_configuration_constraint()");
 }
 
 std::vector<Constraint> System::add_motion_constraint(const std::string& name, const Vector& v,
                                                       const Frame& F) {
-    // all measures or none: a later one failing leaves the earlier ones undeclared
-    const std::size_t before = constraints_.size();
-    try {
-        return add_measures(name, v, F, "System::add_motion_constraint()",
-                            [&](const std::string& n, const ex& e) {
-                                return add_motion_constraint(n, e);
-                            });
-    } catch (...) {
-        constraints_.resize(before);
-        throw;
-    }
+    return add_vector_constraint(name, ConstraintKind::motion, v, F,
+                                 "System::add_motion_constraint()");
 }
 
 }  // namespace alembert

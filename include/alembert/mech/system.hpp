@@ -165,6 +165,9 @@ private:
     const Body* require_owner(const Point& P, const char* caller) const;
     const Constraint& add_constraint(const std::string& name, ConstraintKind kind,
                                      const ex& residual, const char* caller);
+    std::vector<Constraint> add_vector_constraint(const std::string& name, ConstraintKind kind,
+                                                  const Vector& v, const Frame& F,
+                                                  const char* caller);
     void require_new_body_name(const std::string& name, const char* caller) const;
     void add_pair(const Point& P, const Point& Q, const Vector& F_on_P, const std::string& label,
                   bool conservative = false);
