@@ -7,8 +7,8 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
-#include <sstream>
 
+#include "alembert/eom/equations.hpp"
 #include "alembert/eom/kane.hpp"
 #include "alembert/eom/lagrange.hpp"
 #include "alembert/eom/newton_euler.hpp"
@@ -44,15 +44,13 @@ public:
     // and in the LU of an ill-conditioned mass matrix
     Eigen::VectorXd solve(const std::vector<double>& state) const {
         using Real = long double;
-        using Matrix = Eigen::Matrix<Real, Eigen::Dynamic, Eigen::Dynamic>;
-        using Column = Eigen::Matrix<Real, Eigen::Dynamic, 1>;
         // a power of two: A_j = (b - E(s e_j)) / s exactly scaled, b's rounding divided by s
         constexpr Real s = 1 << 20;
         const auto n = static_cast<Eigen::Index>(x_.size());
         std::vector<Real> in(x_.size(), 0.0L);
         in.insert(in.end(), state.begin(), state.end());
-        Column b(n), e(n), e2(n);
-        Matrix A(n, n);
+        VectorXld b(n), e(n), e2(n);
+        MatrixXld A(n, n);
         E_.evaluate_extended(in.data(), b.data());
         for (Eigen::Index j = 0; j < n; ++j) {
             in[static_cast<std::size_t>(j)] = s;
@@ -68,16 +66,10 @@ public:
                                  " equations are not linear in '" +
                                  to_string(x_[static_cast<std::size_t>(j)]) + "'");
         }
-        Eigen::FullPivLU<Matrix> lu(A);
-        if (!lu.isInvertible() || !(lu.rcond() > 1e-14L)) {
-            std::ostringstream os;
-            os << "compare_methods(): the " << name_
-               << " coefficient matrix is singular or ill-conditioned at a drawn state "
-                  "(reciprocal condition estimate "
-               << static_cast<double>(lu.rcond()) << "); the configuration may be singular";
-            throw SolveError(os.str());
-        }
-        return lu.solve(b).template cast<double>();
+        return solve_extended(A, b,
+                              "compare_methods(): the " + name_ +
+                                  " coefficient matrix at a drawn state",
+                              "; the configuration may be singular");
     }
 
 private:

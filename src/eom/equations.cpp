@@ -80,8 +80,6 @@ Eigen::VectorXd solve_numeric(const SymbolTable& table, const LinearSystem& sys,
     // extended precision for the coefficients and the decomposition: the answer is then
     // limited by the double it is returned in, not by rounding in long sums and in the LU of
     // an ill-conditioned mass matrix (long chains), so methods compare cleanly
-    using MatrixXld = Eigen::Matrix<long double, Eigen::Dynamic, Eigen::Dynamic>;
-    using VectorXld = Eigen::Matrix<long double, Eigen::Dynamic, 1>;
     CompiledExpressions f(table, inputs, outputs);
     std::vector<long double> out(outputs.size());
     f.evaluate_extended(in.data(), out.data());
@@ -91,15 +89,20 @@ Eigen::VectorXd solve_numeric(const SymbolTable& table, const LinearSystem& sys,
         for (int j = 0; j < n; ++j) A(i, j) = out[static_cast<std::size_t>(i * (n + 1) + j)];
         b(i) = out[static_cast<std::size_t>(i * (n + 1) + n)];
     }
+    std::string what = "solve_numeric(): the coefficient matrix for unknowns";
+    for (const ex& x : sys.unknowns) what += " " + to_string(x);
+    return solve_extended(A, b, what + " at this state",
+                          "; the configuration may be singular (a locked or degenerate pose)");
+}
+
+Eigen::VectorXd solve_extended(const MatrixXld& A, const VectorXld& b, const std::string& what,
+                               const std::string& hint) {
     Eigen::FullPivLU<MatrixXld> lu(A);
     double rcond = static_cast<double>(lu.rcond());
     if (!lu.isInvertible() || !(rcond > 1e-14)) {
         std::ostringstream os;
-        os << "solve_numeric(): the coefficient matrix is singular or ill-conditioned at this "
-              "state (reciprocal condition estimate "
-           << rcond << ") for unknowns";
-        for (const ex& x : sys.unknowns) os << " " << to_string(x);
-        os << "; the configuration may be singular (a locked or degenerate pose)";
+        os << what << " is singular or ill-conditioned (reciprocal condition estimate " << rcond
+           << ")" << hint;
         throw SolveError(os.str());
     }
     return lu.solve(b).cast<double>();

@@ -31,6 +31,17 @@ LinearSystem form_linear_system(const std::vector<ex>& residuals, const std::vec
 /// @throws alembert::SolveError if A is singular.
 std::vector<ex> solve_symbolic(const LinearSystem& sys);
 
+/// Dense matrices and columns in extended precision (long double).
+using MatrixXld = Eigen::Matrix<long double, Eigen::Dynamic, Eigen::Dynamic>;
+using VectorXld = Eigen::Matrix<long double, Eigen::Dynamic, 1>;
+
+/// Solves A x = b by a full-pivoting LU decomposition in extended precision.
+/// @throws alembert::SolveError reading "<what> is singular or ill-conditioned (reciprocal
+///         condition estimate r)<hint>" if A is singular or its reciprocal condition estimate
+///         is not above 1e-14.
+Eigen::VectorXd solve_extended(const MatrixXld& A, const VectorXld& b, const std::string& what,
+                               const std::string& hint);
+
 /// Evaluates A and b at the values given (constants take their table values) and solves
 /// A x = b with a pivoting LU decomposition.
 /// @throws alembert::SolveError if A is singular or ill-conditioned (naming the condition
