@@ -55,13 +55,15 @@ void BM_PlanarRoadmap(benchmark::State& s) { run(s, ChainKind::planar, Method::r
 void BM_PlanarLagrange(benchmark::State& s) { run(s, ChainKind::planar, Method::lagrange); }
 void BM_SpatialKane(benchmark::State& s) { run(s, ChainKind::spatial, Method::kane); }
 void BM_SpatialRoadmap(benchmark::State& s) { run(s, ChainKind::spatial, Method::roadmap); }
+void BM_SpatialLagrange(benchmark::State& s) { run(s, ChainKind::spatial, Method::lagrange); }
 
 }  // namespace
 
 BENCHMARK(BM_PlanarKane)->Arg(1)->Arg(2)->Arg(4)->Arg(6)->Arg(8)->Arg(10)->Arg(12)->Arg(16)->Arg(20)->Arg(30)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_PlanarRoadmap)->Arg(1)->Arg(2)->Arg(4)->Arg(6)->Arg(8)->Arg(10)->Arg(12)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_PlanarLagrange)->Arg(1)->Arg(2)->Arg(4)->Arg(6)->Arg(8)->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_SpatialKane)->Arg(1)->Arg(2)->Arg(4)->Arg(8)->Unit(benchmark::kMillisecond);
-BENCHMARK(BM_SpatialRoadmap)->Arg(1)->Arg(2)->Arg(4)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_SpatialKane)->Arg(1)->Arg(2)->Arg(4)->Arg(6)->Arg(8)->Arg(10)->Arg(12)->Arg(16)->Arg(20)->Arg(30)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_SpatialRoadmap)->Arg(1)->Arg(2)->Arg(4)->Arg(6)->Arg(8)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_SpatialLagrange)->Arg(1)->Arg(2)->Arg(4)->Arg(6)->Arg(8)->Unit(benchmark::kMillisecond);
 
 BENCHMARK_MAIN();
