@@ -444,7 +444,7 @@ void Interpreter::Impl::orient(const Statement& s) {
     Frame& B = frame(target);
     Frame& A = frame(from);
     const std::string& kind = s.word("kind").text;
-    auto angle = [&](const ExprPtr& e) { return scalar(*e, Dimension::none(), "an angle"); };
+    auto angle = [&](const ExprPtr& e) { return scalar(*e, Dimension::none(), "the rotation angle"); };
     static const std::vector<ExprPtr> none;
     const auto& angles = s.expr_lists.count("angles") ? s.expr_lists.at("angles") : none;
     Location where = from.location;
@@ -483,7 +483,7 @@ void Interpreter::Impl::set_motion(const Statement& s) {
     if (k == "translate") {
         Point& P = point(s.word("target"));
         Point& O = point(s.word("from"));
-        Vector r = vector(*s.exprs.at("value"), L, "a position");
+        Vector r = vector(*s.exprs.at("value"), L, "the position of " + s.word("target").text);
         guard(s.word("from").location, [&] { P.set_pos(O, r); });
         return;
     }
@@ -518,7 +518,7 @@ void Interpreter::Impl::set_motion(const Statement& s) {
 void Interpreter::Impl::set_mass_or_inertia(const Statement& s) {
     if (s.keyword == "mass") {
         Body& B = body(s.word("target"));
-        ex m = scalar(*s.exprs.at("value"), Dimension::mass(), "a mass");
+        ex m = scalar(*s.exprs.at("value"), Dimension::mass(), "the mass of " + s.word("target").text);
         guard(s.word("target").location, [&] { B.set_mass(m); });
         return;
     }
@@ -554,7 +554,7 @@ void Interpreter::Impl::add_load(const Statement& s) {
     const Word& label = s.word("label");
     if (k == "force") {
         Point& P = point(s.word("on"));
-        Vector F = vector(*s.exprs.at("value"), Dimension::force(), "a force");
+        Vector F = vector(*s.exprs.at("value"), Dimension::force(), "the force " + label.text);
         if (s.has_word("from")) {
             Point& Q = point(s.word("from"));
             guard(label.location, [&] { m.add_force_pair(P, Q, F, label.text); });
@@ -563,7 +563,7 @@ void Interpreter::Impl::add_load(const Statement& s) {
         }
     } else if (k == "torque") {
         Body& B = body(s.word("on"));
-        Vector T_ = vector(*s.exprs.at("value"), Dimension::torque(), "a torque");
+        Vector T_ = vector(*s.exprs.at("value"), Dimension::torque(), "the torque " + label.text);
         if (s.has_word("from")) {
             Frame& A = frame(s.word("from"));
             guard(label.location, [&] { m.add_torque_pair(B, A, T_, label.text); });

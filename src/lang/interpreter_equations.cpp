@@ -236,6 +236,16 @@ void Interpreter::Impl::solve(const Statement& s) {
     } else {
         LinearSystem ls = guard(n.location, [&] { return form_linear_system(eqs, xs); });
         if (s.bindings.count("at")) {
+            // every other symbol of the equations needs a value: a constant's, or one after 'at'
+            Location where = s.bindings.at("at").front().name.location;
+            for (const ex& e : eqs)
+                for (const ex& y : symbols_of(table.expand_intermediates(e))) {
+                    if (!table.owns(y) || at.count(y) || std::find(xs.begin(), xs.end(), y) != xs.end())
+                        continue;
+                    if (table.kind(y) == SymbolKind::constant && table.value(y)) continue;
+                    throw ScriptError(where, "'" + table.name(y) + "' has no value",
+                                      "give it one after 'at' (" + table.name(y) + " = ...), or solve for it");
+                }
             Eigen::VectorXd x = guard(n.location, [&] { return solve_numeric(table, ls, at); },
                                       "give every symbol a value after 'at'");
             for (std::size_t i = 0; i < xs.size(); ++i)
