@@ -136,7 +136,8 @@ auto Interpreter::Impl::guard(Location where, F&& f, const std::string& hint) ->
     } catch (const Error& e) {
         throw ScriptError(where, e.what(), hint);
     } catch (const std::exception& e) {
-        throw ScriptError(where, std::string("the computation failed: ") + e.what(), hint);
+        throw ScriptError(where, std::string("the computation failed: ") + e.what(),
+                          "check for a division by zero or a singular configuration at this point");
     }
 }
 

@@ -2,6 +2,8 @@
 // The parser: one statement's tokens to a Statement, expressions by precedence climbing.
 #include "alembert/lang/parser.hpp"
 
+#include "alembert/lang/units.hpp"
+
 #include <algorithm>
 #include <set>
 
@@ -110,6 +112,12 @@ void Parser::expect_word(std::string_view w, const std::string& context) {
 }
 
 void Parser::expect_end(const std::string& context) {
+    if (!at_end() && i_ > 0 && t_[i_ - 1].kind == TokenKind::number && peek().kind == TokenKind::name &&
+        find_unit(peek().text))
+        throw ScriptError(peek().location,
+                          "a unit may follow a number only in a constant's declaration or after 'at' "
+                          "or 'guess'",
+                          "declare a constant with the value and unit, e.g. constant I_A = 0.1 kg*m^2");
     if (!at_end()) {
         throw ScriptError(peek().location,
                           "unexpected " + describe(peek()) + " after " + context,

@@ -231,3 +231,27 @@ TEST(Language, EchoedTranscriptShowsEachStatementThenItsResult) {
     ASSERT_EQ(interp.run("# a comment\nnewtonian N\nframe A; z = 1 + 2  # three\n", "t.alb"), RunStatus::ok);
     EXPECT_EQ(out.str(), "# a comment\n> newtonian N\n> frame A\n> z = 1 + 2  # three\nz = 3\n");
 }
+
+TEST(Language, EveryStatementRunsAndTheHandCheckableResultsHold) {
+    Session s;
+    std::ifstream in(fs::path(ALEMBERT_SOURCE_DIR) / "tests" / "lang" / "every_statement.alb");
+    std::ostringstream text;
+    text << in.rdbuf();
+    std::string out = s.run(text.str());
+    // a left-handed rotation about x by q is a right-handed one by -q
+    EXPECT_NE(out.find("R_N_H = [1, 0, 0; 0, cos(q), sin(q); 0, -sin(q), cos(q)]\n"), std::string::npos) << out;
+    EXPECT_NE(out.find("R_N_G = [cos(q), -sin(q), 0; sin(q), cos(q), 0; 0, 0, 1]\n"), std::string::npos);
+    EXPECT_NE(out.find("a_Q_N> = x''*Nx> + y''*Ny>\n"), std::string::npos);
+    EXPECT_NE(out.find("L_Q_N> = m*x'*Nx> + m*y'*Ny>\n"), std::string::npos);
+    EXPECT_NE(out.find("KE_Q = m*(x'^2 + y'^2)/2\n"), std::string::npos);
+    EXPECT_NE(out.find("m_S = 2*m\n"), std::string::npos);
+    EXPECT_NE(out.find("= 3/5*Nx> + 4/5*Ny>\n"), std::string::npos);
+    EXPECT_NE(out.find("roll: 0 = -L*q' + x'\n"), std::string::npos);
+    EXPECT_NE(out.find("c1: 0 = -L*sin(q) + y\n"), std::string::npos);
+    EXPECT_NE(out.find("| T        | rotate           | Nz>       | {B}      |"), std::string::npos);
+    // potential energy at Q = (3, 4) m, R = (1, 0) m: m g y - G m^2 / |r|
+    const double m = 2, g = 9.81, G0 = 6.674e-11, r = std::hypot(3.0 - 1.0, 4.0);
+    std::string last = out.substr(out.rfind("= "));
+    expect_printed(std::stod(last.substr(2)), m * g * 4 - G0 * m * m / r);
+    EXPECT_NE(last.find(" N*m"), std::string::npos) << last;  // energy and torque share N*m
+}
