@@ -33,11 +33,11 @@ std::string_view line_of(std::string_view source, int n) {
 
 }  // namespace
 
-std::string format_diagnostic(const Diagnostic& d, std::string_view source) {
+std::string format_diagnostic(const Diagnostic& d, std::string_view source, int first_line) {
     std::string out = (d.file.empty() ? std::string("<input>") : d.file) + ":" +
                       std::to_string(d.location.line) + ":" + std::to_string(d.location.column) +
                       ": " + word(d.severity) + ": " + d.message + "\n";
-    std::string_view line = line_of(source, d.location.line);
+    std::string_view line = line_of(source, d.location.line - first_line + 1);
     constexpr std::size_t shown = 200;  // long lines are cut around the caret
     if (!line.empty()) {
         // walk the line by characters to place the caret under column `column`

@@ -60,24 +60,7 @@ RunStatus Interpreter::run(std::string_view source, const std::string& file, int
     auto report = [&](Location where, const std::string& message, const std::string& hint) {
         m.transcript.flush();
         Diagnostic d{Severity::error, file, where, message, hint};
-        // diagnostics count lines from the start of `source`
-        Location local{where.line - first_line + 1, where.column};
-        Diagnostic shown = d;
-        shown.location = local;
-        std::string text = format_diagnostic(shown, source);
-        // print the script's own line number, not the local one
-        std::string local_prefix = file + ":" + std::to_string(local.line) + ":";
-        std::string real_prefix = file + ":" + std::to_string(where.line) + ":";
-        if (text.rfind(local_prefix, 0) == 0) text = real_prefix + text.substr(local_prefix.size());
-        if (local.line != where.line) {
-            std::string from = std::to_string(local.line) + " | ";
-            std::size_t at = text.find(from);
-            if (at != std::string::npos) {
-                std::string to = std::to_string(where.line) + " | ";
-                text.replace(at, from.size(), to);
-            }
-        }
-        *m.err << text;
+        *m.err << format_diagnostic(d, source, first_line);
         m.err->flush();
         m.last_error = d;
     };

@@ -250,12 +250,19 @@ Token Lexer::lex_token() {
 }
 
 bool statement_is_open(std::string_view text) {
+    // a line ending in a backslash continues
+    std::string_view t = text;
+    while (!t.empty() && (t.back() == '\n' || t.back() == '\r')) t.remove_suffix(1);
+    if (!t.empty() && t.back() == '\\' && text.size() > t.size()) return true;
     try {
         Lexer lx(text);
-        while (!lx.next_statement().empty()) {
+        try {
+            while (!lx.next_statement().empty()) {
+            }
+        } catch (const ScriptError&) {
+            return lx.at_end() && lx.open_brackets() > 0;  // only the end of input came too soon
         }
-    } catch (const ScriptError& e) {
-        return std::string(e.what()).find("never ends") != std::string::npos;
+    } catch (const ScriptError&) {
     }
     return false;
 }

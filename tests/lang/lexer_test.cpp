@@ -77,4 +77,5 @@ TEST(Lexer, OpenStatementsWaitForMoreInput) {
     EXPECT_TRUE(statement_is_open("z = sin(q\n"));
     EXPECT_FALSE(statement_is_open("z = sin(q)\n"));
     EXPECT_FALSE(statement_is_open("z = sin(q))\n"));  // an error, reported when run
+    EXPECT_TRUE(statement_is_open("z = 1 + \\\n"));
 }

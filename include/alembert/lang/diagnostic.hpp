@@ -33,8 +33,10 @@ struct Diagnostic {
 ///       |                       ^
 /// hint: declare it first
 /// ```
-/// `source` is the whole script (the line is taken from it); an empty source prints no line.
-std::string format_diagnostic(const Diagnostic& d, std::string_view source);
+/// `source` is the script text (the line is taken from it), whose first line is numbered
+/// `first_line` (an interactive session runs its input in pieces); an empty source prints no
+/// line.
+std::string format_diagnostic(const Diagnostic& d, std::string_view source, int first_line = 1);
 
 /// Thrown by the lexer, parser and interpreter for a mistake in the script; the interpreter
 /// catches it and reports the diagnostic (the language never throws at the user).

@@ -64,6 +64,11 @@ public:
     ///         still open at the end of the source.
     std::vector<Token> next_statement();
 
+    /// How many '(' and '[' are open at the current position.
+    std::size_t open_brackets() const { return open_.size(); }
+    /// True when the whole source has been read.
+    bool at_end() const { return pos_ >= src_.size(); }
+
 private:
     Token lex_token();
     void skip_space_and_comments();
