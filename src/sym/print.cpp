@@ -78,11 +78,53 @@ std::string print_factors(std::vector<ex> fs) {
     return out;
 }
 
+// True if a sum prints with a leading minus: then -s prints with a leading plus. GiNaC's choice
+// between s and -s inside a product depends on its internal (address-dependent) term order,
+// so products print their sums with a leading plus and carry the sign themselves.
+bool leads_negative(const ex& s) { return is_a<add>(s) && p(s).negative; }
+
+// sin, cos or tan of a sum that leads negative: the argument's sign is taken out
+// (cos(-s) = cos(s), sin(-s) = -sin(s)), for the same reason
+bool trig_of_negative(const ex& f, bool& odd) {
+    if (!is_a<function>(f) || f.nops() != 1 || !leads_negative(f.op(0))) return false;
+    const std::string& name = ex_to<function>(f).get_name();
+    odd = name == "sin" || name == "tan";
+    return odd || name == "cos";
+}
+
+ex flip_trig(const ex& f) {
+    const std::string& name = ex_to<function>(f).get_name();
+    ex a = -f.op(0);
+    return name == "sin" ? sin(a) : name == "cos" ? cos(a) : tan(a);
+}
+
+// a factor with the sign of a sum (or of a trigonometric function's argument) fixed as
+// above; `flip` toggles for each sign moved out of the factor
+ex canonical_factor(const ex& f, bool& flip) {
+    bool odd = false;
+    if (leads_negative(f)) {
+        flip = !flip;
+        return -f;
+    }
+    if (trig_of_negative(f, odd)) {
+        if (odd) flip = !flip;
+        return flip_trig(f);
+    }
+    if (is_a<power>(f) && is_a<numeric>(f.op(1)) && ex_to<numeric>(f.op(1)).is_integer()) {
+        bool inner = false;
+        ex b = canonical_factor(f.op(0), inner);
+        if (inner && ex_to<numeric>(f.op(1)).is_odd()) flip = !flip;
+        return pow(b, f.op(1));
+    }
+    return f;
+}
+
 Printed print_mul(const ex& e) {
     numeric c = 1;
     std::vector<ex> num, den;
+    bool flip = false;
     for (std::size_t i = 0; i < e.nops(); ++i) {
-        const ex& f = e.op(i);
+        const ex f = is_a<numeric>(e.op(i)) ? e.op(i) : canonical_factor(e.op(i), flip);
         if (is_a<numeric>(f)) {
             c *= ex_to<numeric>(f);
         } else if (is_a<power>(f) && is_a<numeric>(f.op(1)) && ex_to<numeric>(f.op(1)) < 0) {
@@ -91,6 +133,7 @@ Printed print_mul(const ex& e) {
             num.push_back(f);
         }
     }
+    if (flip) c = -c;
     bool neg = c.is_real() && c < 0;
     if (neg) c = -c;
     numeric cn = c.is_rational() ? c.numer() : c, cd = c.is_rational() ? c.denom() : numeric(1);
@@ -150,7 +193,12 @@ Printed print_power(const ex& e) {
         Printed d = p(pow(b, -x));
         return {"1/" + paren(d, kPower), kProduct};
     }
-    Printed pb = p(b), px = p(x);
+    // an even power of a sum prints the sum with a leading plus: (-s)^2 = s^2
+    bool even = is_a<numeric>(x) && ex_to<numeric>(x).is_even();
+    bool flip = false;
+    ex base = is_a<numeric>(x) && ex_to<numeric>(x).is_integer() ? canonical_factor(b, flip) : b;
+    if (flip && !even) return p(-pow(base, x));
+    Printed pb = p(base), px = p(x);
     return {paren(pb, kAtom) + "^" + paren(px, kAtom), kPower};
 }
 
@@ -166,6 +214,11 @@ Printed p(const ex& e) {
     if (is_a<mul>(e)) return print_mul(e);
     if (is_a<power>(e)) return print_power(e);
     if (is_a<function>(e)) {
+        bool odd = false;
+        if (trig_of_negative(e, odd)) {
+            Printed t = p(flip_trig(e));
+            return odd ? Printed{"-" + t.text, kSum, true} : t;
+        }
         std::string s = ex_to<function>(e).get_name() + "(";
         for (std::size_t i = 0; i < e.nops(); ++i) s += (i ? ", " : "") + p(e.op(i)).text;
         return {s + ")", kAtom};

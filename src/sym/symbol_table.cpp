@@ -462,7 +462,7 @@ GiNaC::exset symbols_of(const ex& e) {
 }
 
 namespace detail {
-void throw_internal(const char* condition, std::source_location where) {
+void throw_internal(const char* condition, SourceLocation where) {
     std::ostringstream os;
     os << "internal error: " << condition << " failed at " << where.file_name() << ":"
        << where.line() << " (" << where.function_name() << "); please report this";
