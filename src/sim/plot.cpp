@@ -77,7 +77,7 @@ PlotResult plot_csv(const Table& table, const std::string& csv_path,
 
     // the gnuplot script: one multiplot per terminal, one panel per unit
     std::string panels;
-    panels += "set datafile separator ','\nset grid\nset key outside right top\n";
+    panels += "set datafile separator ','\nset grid\nset key outside right top\nset autoscale xfix\n";
     panels += "set xlabel " + gp_quoted(label(table, xc)) + "\n";
     std::string title = options.title;
     const std::size_t rows = units.size();
@@ -99,9 +99,9 @@ PlotResult plot_csv(const Table& table, const std::string& csv_path,
     body += "unset multiplot\n";
     const std::string height = std::to_string(300 + 300 * rows);
     std::string script = panels;
-    script += "set terminal pngcairo size 900," + height + " font 'sans,10'\n";
+    script += "set terminal pngcairo size 900," + height + " font 'sans,10' noenhanced\n";
     script += "set output " + gp_quoted(output_base + ".png") + "\n" + body;
-    script += "set terminal svg size 900," + height + " dynamic font 'sans,10'\n";
+    script += "set terminal svg size 900," + height + " dynamic font 'sans,10' noenhanced\n";
     script += "set output " + gp_quoted(output_base + ".svg") + "\n" + body;
     script += "set output\n";
 
