@@ -8,9 +8,10 @@
 
 namespace alembert {
 
-ProgressIndicator::ProgressIndicator(std::string label, double t0, double t1, bool enabled)
+ProgressIndicator::ProgressIndicator(std::string label, double t0, double t1, bool enabled,
+                                     std::chrono::milliseconds delay)
     : label_(std::move(label)), t0_(t0), t1_(t1), enabled_(enabled && ::isatty(2) == 1),
-      start_(Clock::now()), last_(start_) {}
+      delay_(delay), start_(Clock::now()), last_(start_) {}
 
 ProgressIndicator::~ProgressIndicator() {
     if (shown_) std::fprintf(stderr, "\r\033[K");
@@ -19,7 +20,7 @@ ProgressIndicator::~ProgressIndicator() {
 void ProgressIndicator::update(double t) {
     if (!enabled_) return;
     const Clock::time_point now = Clock::now();
-    if (now - start_ < std::chrono::seconds(1)) return;
+    if (now - start_ < delay_) return;
     if (shown_ && now - last_ < std::chrono::milliseconds(100)) return;
     last_ = now;
     shown_ = true;

@@ -12,8 +12,10 @@ namespace alembert {
 /// at most ten times a second, and erased when the run ends. Silent otherwise (pipes, CI).
 class ProgressIndicator {
 public:
-    /// Progress of `label` from t0 to t1; `enabled` = false keeps it silent.
-    ProgressIndicator(std::string label, double t0, double t1, bool enabled = true);
+    /// Progress of `label` from t0 to t1; `enabled` = false keeps it silent; the line appears
+    /// once the run has lasted `delay`.
+    ProgressIndicator(std::string label, double t0, double t1, bool enabled = true,
+                      std::chrono::milliseconds delay = std::chrono::seconds(1));
     ProgressIndicator(const ProgressIndicator&) = delete;
     ProgressIndicator& operator=(const ProgressIndicator&) = delete;
     /// Erases the line if one was shown.
@@ -29,6 +31,7 @@ private:
     std::string label_;
     double t0_, t1_;
     bool enabled_;
+    std::chrono::milliseconds delay_;
     bool shown_ = false;
     Clock::time_point start_, last_;
 };
