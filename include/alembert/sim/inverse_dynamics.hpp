@@ -1,0 +1,76 @@
+// SPDX-License-Identifier: MIT
+// Numeric inverse dynamics: the load measures (joint torques) of a motion, sample by sample.
+#pragma once
+
+#include <Eigen/Dense>
+
+#include <string>
+#include <vector>
+
+#include "alembert/sim/forward_dynamics.hpp"
+
+namespace alembert {
+
+/// Inverse dynamics of a model as numbers: at (t, q, q', q'') the load measures that make the
+/// motion happen (motor torques, and constraint forces when the equations hold them).
+///
+/// The evaluation is one NumericFunction, so a tape or generated code can serve:
+///   inputs  [t, q_1..q_n, q_1'..q_n', q_1''..q_n'']   (1 + 3n values)
+///   outputs solved form:   [T_1..T_k], the load measures themselves;
+///           unsolved form: [A row-major (k x k), b_1..b_k] of A T = b, solved per call by LU.
+/// compile_inverse_dynamics makes the solved form whenever each equation holds exactly one
+/// load measure (an MG road-map plans its rows so; Kane's equations of joint torques are so
+/// too): T_i = b_i / A_ii is compiled directly and no solve is left for run time.
+/// One call at a time per object.
+class InverseDynamics {
+public:
+    /// @throws alembert::ArgumentError if the function's sizes do not match the layout
+    ///         (layout.unknowns are the load measures; layout.inputs must be empty).
+    InverseDynamics(std::string model, StateLayout layout, NumericFunction loads, bool solved);
+
+    const std::string& model() const { return model_; }
+    const StateLayout& layout() const { return layout_; }
+    const NumericFunction& function() const { return function_; }
+    /// True if the function gives the load measures directly (no solve at run time).
+    bool solved() const { return solved_; }
+    std::size_t coordinate_count() const { return layout_.coordinates.size(); }
+    /// Number of load measures k.
+    std::size_t load_count() const { return layout_.unknowns.size(); }
+    /// Printed names of the load measures ("T_A").
+    std::vector<std::string> load_names() const;
+
+    /// The load measures (k values, in layout().unknowns order) at (t, q, q', q'').
+    /// @throws alembert::SolveError naming the model and the state if a value is not finite or
+    ///         (unsolved form) A is singular or ill-conditioned.
+    void calc_loads(double t, const double* q, const double* qd, const double* qdd,
+                    double* loads) const;
+
+private:
+    [[noreturn]] void fail(const std::string& what, double t, const double* q,
+                           const double* qd) const;
+
+    std::string model_;
+    StateLayout layout_;
+    NumericFunction function_;
+    bool solved_ = true;
+    mutable std::vector<double> in_, out_;
+    mutable Eigen::MatrixXd A_;
+    mutable Eigen::VectorXd b_;
+    mutable Eigen::PartialPivLU<Eigen::MatrixXd> lu_;
+};
+
+/// Compiles equations `eqs` that are linear in load measures (eqs.unknowns, e.g. joint
+/// torques; A T = b) as functions of t and the coordinates `q` with their first and second
+/// derivatives; constants with values are folded.
+/// @throws alembert::ArgumentError naming a symbol that is none of those.
+InverseDynamics compile_inverse_dynamics(const SymbolTable& table, const LinearSystem& eqs,
+                                         const std::vector<TimeVariable>& q,
+                                         const std::string& model);
+
+/// Plans the MG road-map of `sys` for the load measures `loads` (one row per measure, about
+/// the joint where the other unknown forces drop out) and compiles it.
+/// @throws as plan_roadmap and compile_inverse_dynamics above.
+InverseDynamics compile_inverse_dynamics(const System& sys, const std::vector<TimeVariable>& q,
+                                         const std::vector<ex>& loads, const std::string& model);
+
+}  // namespace alembert

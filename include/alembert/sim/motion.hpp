@@ -1,0 +1,77 @@
+// SPDX-License-Identifier: MIT
+// Motions for inverse dynamics: sampled data smoothed and differentiated, or formulas of time.
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "alembert/sim/table.hpp"
+#include "alembert/sym/evaluator.hpp"
+#include "alembert/sym/symbol_table.hpp"
+
+namespace alembert {
+
+/// Samples of a motion: times and, per coordinate, q, q', q'' in SI units (rad, m, s).
+struct MotionSamples {
+    std::vector<std::string> coordinates{};     ///< names, as the model prints them ("qA")
+    std::vector<double> t{};
+    std::vector<std::vector<double>> q{}, qd{}, qdd{};  ///< [coordinate][sample]
+};
+
+/// How sampled data become q, q', q''.
+struct MotionFilterOptions {
+    /// Cutoff of the zero-lag low-pass Butterworth filter (filter_lowpass), in Hz; 0 turns
+    /// filtering off (differences of the raw samples). 6 Hz is a common choice for
+    /// whole-body movements sampled at 50-200 Hz (Winter 2009, sec. 3.4.4).
+    double cutoff_hz = 6.0;
+};
+
+/// q, q', q'' from a motion table: the column "t" (or "time"; unit s or ms, default s) and
+/// one column per coordinate named as the coordinate ("qA [deg]": rad, deg, m, mm, ...;
+/// no unit means SI). Each coordinate is filtered (options.cutoff_hz), then differentiated
+/// once and twice by central differences (alembert::differentiate, differentiate_twice).
+/// Columns that are not coordinates are ignored.
+/// `source` names the data in messages (the file's path).
+/// @throws alembert::ArgumentError "source:line: ..." if the times are not increasing or not
+///         uniformly spaced (to 1e-6 of the step), naming the row; if a coordinate column is
+///         missing (listing those found) or has an unknown unit; if fewer than 4 samples.
+MotionSamples differentiate_motion(const Table& table, const std::string& source,
+                                   const std::vector<std::string>& coordinates,
+                                   const MotionFilterOptions& options = {});
+
+/// read_csv(path), then differentiate_motion.
+/// @throws as read_csv and differentiate_motion.
+MotionSamples read_motion(const std::string& path, const std::vector<std::string>& coordinates,
+                          const MotionFilterOptions& options = {});
+
+/// A motion prescribed by formulas of time, q_i = f_i(t): q' and q'' are exact (GiNaC
+/// differentiates the formulas; derivatives of step and csgn are taken as zero, so a formula
+/// pieced together with step must be continuous in value and first derivative, as
+/// minimum_jerk is, for q'' to hold). Formulas are in SI units and compiled once.
+class PrescribedMotion {
+public:
+    /// @throws alembert::ArgumentError if the counts differ or a formula holds a symbol other
+    ///         than time and constants with values (named).
+    PrescribedMotion(const SymbolTable& table, const std::vector<TimeVariable>& q,
+                     const std::vector<ex>& formulas);
+
+    /// Number of coordinates.
+    std::size_t size() const { return names_.size(); }
+    /// q, q', q'' (size() values each) at time t.
+    void calc_state(double t, double* q, double* qd, double* qdd) const;
+    /// The motion at each of `times`.
+    MotionSamples sample(const std::vector<double>& times) const;
+
+private:
+    std::vector<std::string> names_;
+    std::shared_ptr<const CompiledExpressions> tape_;  // [q, q', q''] of t
+};
+
+/// The minimum-jerk transition s(u) = 10u^3 - 15u^4 + 6u^5 with u = (t - t0)/(t1 - t0),
+/// held at 0 before t0 and at 1 after t1 (Flash & Hogan 1985): 0 -> 1 with zero velocity
+/// and acceleration at both ends. Built with step(), so it compiles to a tape.
+/// @throws alembert::ArgumentError if t1 <= t0.
+ex minimum_jerk(const ex& t, double t0, double t1);
+
+}  // namespace alembert

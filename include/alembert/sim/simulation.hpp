@@ -1,0 +1,147 @@
+// SPDX-License-Identifier: MIT
+// Forward simulation: adaptive Dormand-Prince integration with dense output, events, outputs.
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "alembert/sim/forward_dynamics.hpp"
+#include "alembert/sim/plot.hpp"
+#include "alembert/sim/table.hpp"
+
+namespace alembert {
+
+/// A column of simulation output: any expression of the model (a coordinate, a speed, a
+/// point's position measure, an energy, a torque, a constraint residual) and the unit to print
+/// it in (parse_unit; the expression is in SI, the column is divided by the unit's factor).
+struct OutputSpec {
+    std::string name{};
+    ex expression{};
+    std::string unit{};
+};
+
+/// Which zero crossings of an event expression stop the run.
+enum class EventDirection { any, rising, falling };
+
+/// An event: the run stops where `expression` crosses zero (in `direction`), located by
+/// bisection on the integrator's dense output.
+struct EventSpec {
+    std::string name{};
+    ex expression{};
+    EventDirection direction = EventDirection::any;
+};
+
+/// Integration settings (SI units).
+struct SimulationOptions {
+    double t_initial = 0.0;
+    double t_final = 1.0;
+    /// Output every output_step from t_initial to t_final (t_final included).
+    double output_step = 0.01;
+    /// Output exactly at these times instead (sorted, within [t_initial, t_final]).
+    std::vector<double> output_times{};
+    /// Error tolerances per step: |err_i| <= abs_tol + rel_tol |x_i| (odeint's controller).
+    double abs_tol = 1e-8;
+    double rel_tol = 1e-8;
+    /// First step tried; 0: output_step / 100 (the controller adapts it at once).
+    double initial_step = 0.0;
+    /// Stop with SolveError after this many steps (a stiff or singular model).
+    std::size_t max_steps = 50'000'000;
+    /// Progress line on a terminal for runs longer than a second.
+    bool progress = true;
+};
+
+/// Output columns as one NumericFunction over
+///   inputs  [t, q_1..q_n, q_1'..q_n', x_1..x_k (the unknowns: q'' and constraint forces),
+///            input_1..input_m]
+///   outputs one value per column, in SI (divide by factors[c] to print).
+struct OutputFunction {
+    NumericFunction function{};
+    std::vector<std::string> names{};
+    std::vector<std::string> units{};
+    std::vector<double> factors{};
+};
+
+/// Compiles `outputs` over the layout of a forward dynamics (see OutputFunction).
+/// @throws alembert::ArgumentError naming an output with an unknown unit or a symbol that is
+///         not in the layout (nor a constant with a value).
+OutputFunction compile_outputs(const SymbolTable& table, const StateLayout& layout,
+                               const std::vector<OutputSpec>& outputs);
+
+/// Event expressions as one NumericFunction over the same inputs as OutputFunction.
+struct EventFunction {
+    NumericFunction function{};
+    std::vector<std::string> names{};
+    std::vector<EventDirection> directions{};
+};
+
+/// Compiles `events` over the layout of a forward dynamics.
+/// @throws alembert::ArgumentError as compile_outputs.
+EventFunction compile_events(const SymbolTable& table, const StateLayout& layout,
+                             const std::vector<EventSpec>& events);
+
+/// The run-time inputs (load measures such as motor torques, in layout().inputs order) at a
+/// state: a controller, or a prescribed torque history.
+using InputFunction =
+    std::function<void(double t, const double* q, const double* qd, double* inputs)>;
+
+/// What a simulation produced.
+struct SimulationResult {
+    /// Column "t [s]", then the outputs in their units, one row per output time reached (and a
+    /// last row at the event time when an event stopped the run).
+    Table table{};
+    /// Empty if the run reached t_final; else the name of the event that stopped it.
+    std::string stopped_by{};
+    double t_end = 0.0;
+    std::vector<double> q_end{}, qd_end{};  ///< state at t_end (SI)
+    std::size_t steps = 0;                  ///< accepted steps
+};
+
+/// Integrates the forward dynamics `fd` from q(t_initial) = q0, q'(t_initial) = qd0 with
+/// Boost.Odeint's Dormand-Prince 5(4) method (runge_kutta_dopri5) under error control and
+/// dense output: outputs are interpolated exactly at the requested times (fourth-order dense
+/// output), events are checked at every accepted step and located by bisection on the dense
+/// output to 1e-12 s (a sign change inside one step is found; two crossings inside one step
+/// cancel). `inputs` gives the run-time inputs (empty: all zero).
+/// @throws alembert::ArgumentError for bad options or state sizes (named);
+///         alembert::SolveError naming the model and the time if the dynamics fail (singular
+///         mass matrix) or the step count exceeds options.max_steps.
+SimulationResult simulate(const ForwardDynamics& fd, const std::vector<double>& q0,
+                          const std::vector<double>& qd0, const SimulationOptions& options,
+                          const OutputFunction& outputs, const EventFunction& events = {},
+                          const InputFunction& inputs = {});
+
+/// Everything a script's simulation statements state, for run_simulation.
+struct SimulationRequest {
+    /// The model's name in messages and the progress line.
+    std::string model = "model";
+    std::vector<TimeVariable> coordinates{};
+    /// Load measures solved with the accelerations in a constrained model (closed loop's pin
+    /// force); see compile_forward_dynamics.
+    std::vector<ex> constraint_forces{};
+    /// Values of the other load measures as formulas of t, q, q' (a motor law); a load
+    /// measure of the model not given here is zero.
+    exmap inputs{};
+    /// Initial values (SI) of coordinates q_i and rates q_i'; those not given are 0.
+    exmap initial_values{};
+    std::vector<OutputSpec> outputs{};
+    std::vector<EventSpec> events{};
+    SimulationOptions options{};
+    /// Add the checks users rely on: "energy [J]" (kinetic plus potential) when the model is
+    /// conservative (no non-conservative generalized force once the inputs are substituted),
+    /// and one "drift_<name>" column per declared constraint (its residual).
+    bool checks = true;
+};
+
+/// Forms the forward dynamics of `sys` (compile_forward_dynamics), substitutes the inputs,
+/// compiles outputs, checks and events, and simulates.
+/// @throws as compile_forward_dynamics, compile_outputs and simulate.
+SimulationResult run_simulation(const System& sys, const SimulationRequest& request);
+
+/// Writes `table` to `dir`/`name`.csv (atomically) and plots it to `dir`/`name`.png and .svg
+/// (plot_csv; the first column along the horizontal axis). Creates `dir` if needed.
+/// @throws alembert::ArgumentError if the CSV cannot be written.
+PlotResult write_table_and_plot(const Table& table, const std::string& dir,
+                                const std::string& name, const PlotOptions& options = {});
+
+}  // namespace alembert

@@ -1,0 +1,55 @@
+// SPDX-License-Identifier: MIT
+// Tables of numbers with named columns and units: CSV written atomically and read with checks.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace alembert {
+
+/// A unit for printing or reading a column: its name as written ("deg", "N m") and the factor
+/// that turns a value in it into SI (value_SI = factor * value; deg: pi/180).
+struct Unit {
+    std::string name{};
+    double factor = 1.0;
+};
+
+/// The unit of this name. Known: "" and "1" (no unit), s, ms, min, rad, deg, rev, m, cm, mm,
+/// km, kg, g, N, kN, N m (also N*m, N.m, Nm, N·m), J, kJ, W, Hz, rad/s, deg/s, rpm, rad/s^2,
+/// deg/s^2, m/s, km/h, m/s^2, N m/kg, N/kg, kg m^2.
+/// @throws alembert::ArgumentError naming the unit and listing the known ones.
+Unit parse_unit(const std::string& name);
+
+/// A table of numbers stored by column: column c has the name names[c], the unit units[c]
+/// (as printed) and the values columns[c][row], in that unit.
+struct Table {
+    std::vector<std::string> names{};
+    std::vector<std::string> units{};
+    std::vector<std::vector<double>> columns{};
+    /// For a table read from a file: the line each row came from (for messages); else empty.
+    std::vector<int> lines{};
+
+    /// Appends an empty column; returns its index.
+    std::size_t add_column(const std::string& name, const std::string& unit);
+    /// Number of rows (0 without columns).
+    std::size_t row_count() const { return columns.empty() ? 0 : columns.front().size(); }
+    /// The index of the column named `name`.
+    /// @throws alembert::ArgumentError naming the column and listing the table's columns.
+    std::size_t column_index(const std::string& name) const;
+};
+
+/// Writes `table` as CSV: a header row "name [unit]" per column (a name alone when the unit
+/// is empty), then one row per sample with 12 significant digits. The file is written to a
+/// temporary beside `path` and renamed, so readers never see half a file.
+/// @throws alembert::ArgumentError naming the path if it cannot be written (directory
+///         missing, no permission).
+void write_csv(const Table& table, const std::string& path);
+
+/// Reads a CSV table as write_csv writes it: a header row of "name [unit]" cells (the unit
+/// optional), then rows of numbers, separated by commas; blank lines and lines starting with
+/// '#' are skipped.
+/// @throws alembert::ArgumentError with "path:line: " and what is wrong (a cell that is not a
+///         number, a row with the wrong number of cells, a duplicate column, no rows).
+Table read_csv(const std::string& path);
+
+}  // namespace alembert

@@ -1,0 +1,172 @@
+// SPDX-License-Identifier: MIT
+// Numeric inverse dynamics: solved load measures compiled directly, else A T = b solved by LU.
+#include "alembert/sim/inverse_dynamics.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+
+#include "alembert/eom/planner.hpp"
+#include "alembert/eom/statics.hpp"
+#include "alembert/error.hpp"
+
+namespace alembert {
+
+namespace {
+
+std::string number(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.6g", v);
+    return buf;
+}
+
+std::string printed(const ex& e) {
+    std::ostringstream s;
+    s << e;
+    return s.str();
+}
+
+}  // namespace
+
+InverseDynamics::InverseDynamics(std::string model, StateLayout layout, NumericFunction loads,
+                                 bool solved)
+    : model_(std::move(model)), layout_(std::move(layout)), function_(std::move(loads)),
+      solved_(solved) {
+    const std::size_t n = coordinate_count(), k = load_count();
+    const std::size_t outputs = solved_ ? k : k * k + k;
+    ALEMBERT_CHECK_ARG(layout_.inputs.empty() && layout_.rates.size() == n &&
+                           layout_.coordinate_names.size() == n,
+                       "InverseDynamics('" + model_ + "'): the layout needs one rate and one "
+                       "name per coordinate and no inputs");
+    ALEMBERT_CHECK_ARG(function_.input_count == 1 + 3 * n && function_.output_count == outputs &&
+                           function_.evaluate,
+                       "InverseDynamics('" + model_ + "'): the function takes " +
+                           std::to_string(function_.input_count) + " inputs and gives " +
+                           std::to_string(function_.output_count) + " outputs; the layout needs " +
+                           std::to_string(1 + 3 * n) + " inputs [t, q, q', q''] and " +
+                           std::to_string(outputs) + " outputs");
+    in_.resize(function_.input_count);
+    out_.resize(function_.output_count);
+    if (!solved_) {
+        A_.resize(static_cast<Eigen::Index>(k), static_cast<Eigen::Index>(k));
+        b_.resize(static_cast<Eigen::Index>(k));
+        lu_ = Eigen::PartialPivLU<Eigen::MatrixXd>(static_cast<Eigen::Index>(k));
+    }
+}
+
+std::vector<std::string> InverseDynamics::load_names() const {
+    std::vector<std::string> names;
+    for (const ex& u : layout_.unknowns) names.push_back(printed(u));
+    return names;
+}
+
+void InverseDynamics::fail(const std::string& what, double t, const double* q,
+                           const double* qd) const {
+    throw SolveError("inverse dynamics of '" + model_ + "': " + what + " at " +
+                     detail::describe_state(layout_, t, q, qd, nullptr) +
+                     "; check the model's constants and whether the loads can hold this "
+                     "configuration (a constraint losing rank)");
+}
+
+void InverseDynamics::calc_loads(double t, const double* q, const double* qd, const double* qdd,
+                                 double* loads) const {
+    const std::size_t n = coordinate_count(), k = load_count();
+    // gather [t, q, q', q''] and evaluate
+    double* in = in_.data();
+    in[0] = t;
+    for (std::size_t i = 0; i < n; ++i)
+        in[1 + i] = q[i], in[1 + n + i] = qd[i], in[1 + 2 * n + i] = qdd[i];
+    if (solved_) {
+        function_.evaluate(in, loads);
+        for (std::size_t i = 0; i < k; ++i)
+            if (!std::isfinite(loads[i]))
+                fail(printed(layout_.unknowns[i]) + " is " + number(loads[i]), t, q, qd);
+        return;
+    }
+    // unsolved form: A T = b by LU with a condition check
+    function_.evaluate(in, out_.data());
+    const auto K = static_cast<Eigen::Index>(k);
+    for (Eigen::Index r = 0; r < K; ++r) {
+        for (Eigen::Index c = 0; c < K; ++c) A_(r, c) = out_[static_cast<std::size_t>(r * K + c)];
+        b_(r) = out_[static_cast<std::size_t>(K * K + r)];
+    }
+    if (!A_.allFinite() || !b_.allFinite())
+        fail("the equations are not finite", t, q, qd);
+    lu_.compute(A_);
+    const double rcond = lu_.rcond();
+    if (!(rcond > 1e-13))
+        fail("the equations are singular or ill-conditioned in the load measures (reciprocal "
+             "condition estimate " + number(rcond) + ")",
+             t, q, qd);
+    Eigen::Map<Eigen::VectorXd>(loads, K) = lu_.solve(b_);
+}
+
+InverseDynamics compile_inverse_dynamics(const SymbolTable& table, const LinearSystem& eqs,
+                                         const std::vector<TimeVariable>& q,
+                                         const std::string& model) {
+    StateLayout layout;
+    layout.time = table.time();
+    std::vector<ex> in{layout.time};
+    for (const TimeVariable& qi : q) {
+        layout.coordinates.push_back(qi.symbol());
+        layout.rates.push_back(qi.d(1));
+        layout.accelerations.push_back(qi.d(2));
+        layout.coordinate_names.push_back(qi.name());
+    }
+    in.insert(in.end(), layout.coordinates.begin(), layout.coordinates.end());
+    in.insert(in.end(), layout.rates.begin(), layout.rates.end());
+    in.insert(in.end(), layout.accelerations.begin(), layout.accelerations.end());
+    layout.unknowns = eqs.unknowns;
+    const unsigned k = static_cast<unsigned>(eqs.unknowns.size());
+    ALEMBERT_CHECK_ARG(eqs.A.rows() == k && eqs.A.cols() == k,
+                       "compile_inverse_dynamics('" + model + "'): " +
+                           std::to_string(eqs.A.rows()) + " equations for " + std::to_string(k) +
+                           " load measures; give one equation per measure");
+
+    // solved form when every row and column of A holds exactly one non-zero entry
+    std::vector<int> row_of(k, -1);
+    bool solved = true;
+    for (unsigned r = 0; r < k && solved; ++r) {
+        int found = -1;
+        for (unsigned c = 0; c < k; ++c) {
+            if (eqs.A(r, c).is_zero()) continue;
+            if (found >= 0 || row_of[c] >= 0) {
+                solved = false;
+                break;
+            }
+            found = static_cast<int>(c);
+        }
+        if (found < 0) solved = false;
+        if (solved) row_of[static_cast<std::size_t>(found)] = static_cast<int>(r);
+    }
+    std::vector<ex> outputs;
+    if (solved) {
+        for (unsigned c = 0; c < k; ++c) {
+            const auto r = static_cast<unsigned>(row_of[c]);
+            outputs.push_back(eqs.b(r, 0) / eqs.A(r, c));
+        }
+    } else {
+        for (unsigned r = 0; r < k; ++r)
+            for (unsigned c = 0; c < k; ++c) outputs.push_back(eqs.A(r, c));
+        for (unsigned r = 0; r < k; ++r) outputs.push_back(eqs.b(r, 0));
+    }
+    NumericFunction f;
+    try {
+        f = make_tape_function(table, in, outputs);
+    } catch (const ArgumentError& e) {
+        throw ArgumentError("compile_inverse_dynamics('" + model + "'): " + e.what() +
+                            "; inverse dynamics may depend on t and the coordinates with their "
+                            "first and second derivatives: give a constant a value, or make a "
+                            "load measure one of the unknowns");
+    }
+    return InverseDynamics(model, std::move(layout), std::move(f), solved);
+}
+
+InverseDynamics compile_inverse_dynamics(const System& sys, const std::vector<TimeVariable>& q,
+                                         const std::vector<ex>& loads, const std::string& model) {
+    std::vector<RoadmapRow> rows = plan_roadmap(sys, q, loads, Analysis::dynamics);
+    return compile_inverse_dynamics(sys.symbols(), form_linear_system(residuals_of(rows), loads),
+                                    q, model);
+}
+
+}  // namespace alembert

@@ -1,0 +1,167 @@
+// SPDX-License-Identifier: MIT
+// Motions: sampled data filtered and differentiated; formulas of time differentiated exactly.
+#include "alembert/sim/motion.hpp"
+
+#include <cmath>
+#include <cstdio>
+
+#include "alembert/error.hpp"
+#include "alembert/sim/filter.hpp"
+
+namespace alembert {
+
+namespace {
+
+// d/dt with the derivatives of step and csgn taken as zero (they are impulses at switches)
+ex derivative(const ex& e, const GiNaC::symbol& t) {
+    struct DropSwitchImpulses : GiNaC::map_function {
+        ex operator()(const ex& x) override {
+            if (GiNaC::is_a<GiNaC::fderivative>(x)) {
+                const unsigned serial = GiNaC::ex_to<GiNaC::function>(x).get_serial();
+                if (serial == GiNaC::step_SERIAL::serial || serial == GiNaC::csgn_SERIAL::serial)
+                    return 0;
+            }
+            return x.map(*this);
+        }
+    } drop;
+    return drop(e.diff(t));
+}
+
+std::string where(const Table& table, const std::string& source, std::size_t row) {
+    return source + ":" +
+           (row < table.lines.size() ? std::to_string(table.lines[row])
+                                     : "row " + std::to_string(row + 1)) +
+           ": ";
+}
+
+}  // namespace
+
+MotionSamples differentiate_motion(const Table& table, const std::string& source,
+                                   const std::vector<std::string>& coordinates,
+                                   const MotionFilterOptions& options) {
+    const std::size_t rows = table.row_count();
+    ALEMBERT_CHECK_ARG(rows >= 4, source + ": the motion has " + std::to_string(rows) +
+                                      " samples; differentiating it needs at least 4");
+    // the time column, in seconds
+    std::size_t tc = table.names.size();
+    for (std::size_t c = 0; c < table.names.size(); ++c)
+        if (table.names[c] == "t" || table.names[c] == "time") tc = c;
+    std::string found;
+    for (const std::string& n : table.names) found += (found.empty() ? "" : ", ") + n;
+    ALEMBERT_CHECK_ARG(tc < table.names.size(),
+                       source + ": no time column; name one 't [s]' (columns found: " + found + ")");
+    Unit tu;
+    try {
+        tu = parse_unit(table.units[tc]);
+    } catch (const ArgumentError& e) {
+        throw ArgumentError(source + ": column '" + table.names[tc] + "': " + e.what());
+    }
+    MotionSamples m;
+    m.coordinates = coordinates;
+    for (double v : table.columns[tc]) m.t.push_back(tu.factor * v);
+
+    // increasing, uniformly spaced times
+    const double h = (m.t.back() - m.t.front()) / static_cast<double>(rows - 1);
+    for (std::size_t r = 1; r < rows; ++r)
+        if (!(m.t[r] > m.t[r - 1]))
+            throw ArgumentError(where(table, source, r) + "time " + std::to_string(m.t[r]) +
+                                " s does not increase (previous row: " +
+                                std::to_string(m.t[r - 1]) + " s); sort the rows by time");
+    for (std::size_t r = 1; r < rows; ++r) {
+        const double step = m.t[r] - m.t[r - 1];
+        if (std::abs(step - h) > 1e-6 * h)
+            throw ArgumentError(where(table, source, r) + "time step " + std::to_string(step) +
+                                " s differs from the mean step " + std::to_string(h) +
+                                " s; filtering needs uniformly sampled data (resample it)");
+    }
+
+    // per coordinate: SI, filter, differentiate
+    for (const std::string& name : coordinates) {
+        std::size_t c = table.names.size();
+        for (std::size_t k = 0; k < table.names.size(); ++k)
+            if (table.names[k] == name) c = k;
+        ALEMBERT_CHECK_ARG(c < table.names.size(),
+                           source + ": no column for the coordinate '" + name +
+                               "'; name a column '" + name + " [deg]' (columns found: " + found +
+                               ")");
+        Unit u;
+        try {
+            u = parse_unit(table.units[c]);
+        } catch (const ArgumentError& e) {
+            throw ArgumentError(source + ": column '" + name + "': " + e.what());
+        }
+        std::vector<double> q;
+        for (double v : table.columns[c]) q.push_back(u.factor * v);
+        if (options.cutoff_hz > 0) q = filter_lowpass(q, 1.0 / h, options.cutoff_hz);
+        m.qd.push_back(differentiate(q, h));
+        m.qdd.push_back(differentiate_twice(q, h));
+        m.q.push_back(std::move(q));
+    }
+    return m;
+}
+
+MotionSamples read_motion(const std::string& path, const std::vector<std::string>& coordinates,
+                          const MotionFilterOptions& options) {
+    return differentiate_motion(read_csv(path), path, coordinates, options);
+}
+
+PrescribedMotion::PrescribedMotion(const SymbolTable& table, const std::vector<TimeVariable>& q,
+                                   const std::vector<ex>& formulas) {
+    ALEMBERT_CHECK_ARG(q.size() == formulas.size(),
+                       "PrescribedMotion(): " + std::to_string(formulas.size()) +
+                           " formulas for " + std::to_string(q.size()) +
+                           " coordinates; give one formula of time per coordinate");
+    const auto& t = GiNaC::ex_to<GiNaC::symbol>(table.time());
+    std::vector<ex> outputs, rates, accelerations;
+    for (std::size_t i = 0; i < q.size(); ++i) {
+        names_.push_back(q[i].name());
+        const ex f = table.expand_intermediates(formulas[i]);
+        const ex fd = derivative(f, t);
+        outputs.push_back(f);
+        rates.push_back(fd);
+        accelerations.push_back(derivative(fd, t));
+    }
+    outputs.insert(outputs.end(), rates.begin(), rates.end());
+    outputs.insert(outputs.end(), accelerations.begin(), accelerations.end());
+    try {
+        tape_ = std::make_shared<const CompiledExpressions>(table, std::vector<ex>{table.time()},
+                                                            outputs);
+    } catch (const ArgumentError& e) {
+        throw ArgumentError(std::string("PrescribedMotion(): ") + e.what() +
+                            "; a prescribed motion is a formula of time t and constants with "
+                            "values");
+    }
+}
+
+void PrescribedMotion::calc_state(double t, double* q, double* qd, double* qdd) const {
+    const std::size_t n = size();
+    std::vector<double> out(3 * n);
+    tape_->evaluate(&t, out.data());
+    for (std::size_t i = 0; i < n; ++i) q[i] = out[i], qd[i] = out[n + i], qdd[i] = out[2 * n + i];
+}
+
+MotionSamples PrescribedMotion::sample(const std::vector<double>& times) const {
+    const std::size_t n = size();
+    MotionSamples m;
+    m.coordinates = names_;
+    m.t = times;
+    m.q.assign(n, std::vector<double>(times.size()));
+    m.qd = m.q;
+    m.qdd = m.q;
+    std::vector<double> q(n), qd(n), qdd(n);
+    for (std::size_t k = 0; k < times.size(); ++k) {
+        calc_state(times[k], q.data(), qd.data(), qdd.data());
+        for (std::size_t i = 0; i < n; ++i)
+            m.q[i][k] = q[i], m.qd[i][k] = qd[i], m.qdd[i][k] = qdd[i];
+    }
+    return m;
+}
+
+ex minimum_jerk(const ex& t, double t0, double t1) {
+    ALEMBERT_CHECK_ARG(t1 > t0, "minimum_jerk(): the end time must follow the start time");
+    const ex u = (t - t0) / (t1 - t0);
+    const ex s = 10 * pow(u, 3) - 15 * pow(u, 4) + 6 * pow(u, 5);
+    return GiNaC::step(u) * GiNaC::step(1 - u) * s + GiNaC::step(u - 1);
+}
+
+}  // namespace alembert

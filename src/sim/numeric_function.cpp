@@ -1,0 +1,35 @@
+// SPDX-License-Identifier: MIT
+// Numeric functions from compiled tapes and from plain C functions.
+#include "alembert/sim/numeric_function.hpp"
+
+#include <memory>
+
+#include "alembert/error.hpp"
+
+namespace alembert {
+
+NumericFunction make_tape_function(const SymbolTable& table, const std::vector<ex>& inputs,
+                                   const std::vector<ex>& outputs) {
+    auto tape = std::make_shared<const CompiledExpressions>(table, inputs, outputs);
+    NumericFunction f;
+    f.input_count = tape->input_count();
+    f.output_count = tape->output_count();
+    f.operation_count = tape->operation_count();
+    f.kind = "tape";
+    f.evaluate = [tape](const double* x, double* y) { tape->evaluate(x, y); };
+    return f;
+}
+
+NumericFunction make_c_function(void (*fn)(const double* inputs, double* outputs),
+                                std::size_t input_count, std::size_t output_count) {
+    ALEMBERT_CHECK_ARG(fn != nullptr, "make_c_function(): the function pointer is null; pass the "
+                                      "address of a function void f(const double*, double*)");
+    NumericFunction f;
+    f.input_count = input_count;
+    f.output_count = output_count;
+    f.kind = "compiled";
+    f.evaluate = fn;
+    return f;
+}
+
+}  // namespace alembert

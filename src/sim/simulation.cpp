@@ -1,0 +1,340 @@
+// SPDX-License-Identifier: MIT
+// Forward simulation with Boost.Odeint's Dormand-Prince stepper, dense output and events.
+#include "alembert/sim/simulation.hpp"
+
+#include <boost/numeric/odeint.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <sstream>
+
+#include "alembert/eom/kane.hpp"
+#include "alembert/error.hpp"
+#include "alembert/sim/progress.hpp"
+#include "alembert/sym/print.hpp"
+#include "alembert/sym/simplify.hpp"
+
+namespace alembert {
+
+namespace {
+
+namespace odeint = boost::numeric::odeint;
+using State = std::vector<double>;
+
+std::string number(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.6g", v);
+    return buf;
+}
+
+// [t, q, q', x, inputs]: the inputs of output and event functions
+std::vector<ex> output_inputs(const StateLayout& layout) {
+    std::vector<ex> in{layout.time};
+    in.insert(in.end(), layout.coordinates.begin(), layout.coordinates.end());
+    in.insert(in.end(), layout.rates.begin(), layout.rates.end());
+    in.insert(in.end(), layout.unknowns.begin(), layout.unknowns.end());
+    in.insert(in.end(), layout.inputs.begin(), layout.inputs.end());
+    return in;
+}
+
+NumericFunction compile_over_layout(const SymbolTable& table, const StateLayout& layout,
+                                    const std::vector<ex>& expressions, const char* caller) {
+    try {
+        return make_tape_function(table, output_inputs(layout), expressions);
+    } catch (const ArgumentError& e) {
+        throw ArgumentError(std::string(caller) + ": " + e.what() +
+                            "; an output may use t, the coordinates, their rates, the unknowns "
+                            "of the equations (accelerations, constraint forces), the inputs and "
+                            "constants with values");
+    }
+}
+
+// the state at one instant and the functions of it
+struct Evaluator {
+    const ForwardDynamics& fd;
+    const InputFunction& inputs;
+    std::vector<double> in, u;
+
+    Evaluator(const ForwardDynamics& f, const InputFunction& i)
+        : fd(f), inputs(i),
+          in(1 + 2 * f.coordinate_count() + f.unknown_count() + f.input_count()),
+          u(f.input_count(), 0.0) {}
+
+    // fills in = [t, q, q', x, inputs] from the state [q, q']
+    const double* gather(double t, const State& x) {
+        const std::size_t n = fd.coordinate_count(), k = fd.unknown_count();
+        if (inputs) inputs(t, x.data(), x.data() + n, u.data());
+        in[0] = t;
+        std::copy(x.begin(), x.end(), in.begin() + 1);
+        fd.calc_unknowns(t, x.data(), x.data() + n, u.data(), in.data() + 1 + 2 * n);
+        std::copy(u.begin(), u.end(), in.begin() + static_cast<std::ptrdiff_t>(1 + 2 * n + k));
+        return in.data();
+    }
+};
+
+}  // namespace
+
+OutputFunction compile_outputs(const SymbolTable& table, const StateLayout& layout,
+                               const std::vector<OutputSpec>& outputs) {
+    OutputFunction f;
+    std::vector<ex> expressions;
+    for (const OutputSpec& o : outputs) {
+        Unit unit;
+        try {
+            unit = parse_unit(o.unit);
+        } catch (const ArgumentError& e) {
+            throw ArgumentError("compile_outputs(): output '" + o.name + "': " + e.what());
+        }
+        f.names.push_back(o.name);
+        f.units.push_back(unit.name);
+        f.factors.push_back(unit.factor);
+        expressions.push_back(o.expression);
+    }
+    f.function = compile_over_layout(table, layout, expressions, "compile_outputs()");
+    return f;
+}
+
+EventFunction compile_events(const SymbolTable& table, const StateLayout& layout,
+                             const std::vector<EventSpec>& events) {
+    EventFunction f;
+    std::vector<ex> expressions;
+    for (const EventSpec& e : events) {
+        f.names.push_back(e.name);
+        f.directions.push_back(e.direction);
+        expressions.push_back(e.expression);
+    }
+    f.function = compile_over_layout(table, layout, expressions, "compile_events()");
+    return f;
+}
+
+SimulationResult simulate(const ForwardDynamics& fd, const std::vector<double>& q0,
+                          const std::vector<double>& qd0, const SimulationOptions& options,
+                          const OutputFunction& outputs, const EventFunction& events,
+                          const InputFunction& inputs) {
+    const std::size_t n = fd.coordinate_count();
+    const std::string who = "simulate('" + fd.model() + "'): ";
+    const double t0 = options.t_initial, tf = options.t_final;
+    ALEMBERT_CHECK_ARG(q0.size() == n && qd0.size() == n,
+                       who + "the initial state has " + std::to_string(q0.size()) +
+                           " coordinates and " + std::to_string(qd0.size()) +
+                           " rates; the model has " + std::to_string(n) + " coordinates");
+    ALEMBERT_CHECK_ARG(tf > t0, who + "the final time " + number(tf) +
+                                    " s must follow the initial time " + number(t0) + " s");
+    ALEMBERT_CHECK_ARG(options.abs_tol > 0 && options.rel_tol >= 0,
+                       who + "the error tolerances must be positive");
+    const std::size_t width = 1 + 2 * n + fd.unknown_count() + fd.input_count();
+    ALEMBERT_CHECK_ARG(outputs.function.input_count == width &&
+                           (events.names.empty() || events.function.input_count == width),
+                       who + "the outputs or events were compiled for another layout; compile "
+                             "them with this model's layout()");
+
+    // the output times
+    std::vector<double> times = options.output_times;
+    if (times.empty()) {
+        ALEMBERT_CHECK_ARG(options.output_step > 0,
+                           who + "the output step must be positive, not " +
+                               number(options.output_step));
+        const auto count =
+            static_cast<std::size_t>(std::floor((tf - t0) / options.output_step + 1e-9));
+        for (std::size_t k = 0; k <= count; ++k)
+            times.push_back(t0 + static_cast<double>(k) * options.output_step);
+        if (times.back() < tf - 1e-12 * std::max(1.0, std::abs(tf))) times.push_back(tf);
+    }
+    for (std::size_t k = 0; k < times.size(); ++k)
+        ALEMBERT_CHECK_ARG(times[k] >= t0 && times[k] <= tf && (k == 0 || times[k] > times[k - 1]),
+                           who + "output time " + number(times[k]) +
+                               " s is out of order or outside [t_initial, t_final]");
+
+    // the table: t, then the outputs
+    SimulationResult result;
+    Table& table = result.table;
+    table.add_column("t", "s");
+    for (std::size_t c = 0; c < outputs.names.size(); ++c)
+        table.add_column(outputs.names[c], outputs.units[c]);
+    Evaluator at(fd, inputs);
+    std::vector<double> out(outputs.names.size()), g(events.names.size());
+    auto emit = [&](double t, const State& x) {
+        outputs.function.evaluate(at.gather(t, x), out.data());
+        table.columns[0].push_back(t);
+        for (std::size_t c = 0; c < out.size(); ++c)
+            table.columns[c + 1].push_back(out[c] / outputs.factors[c]);
+    };
+    auto event_values = [&](double t, const State& x, std::vector<double>& values) {
+        if (!values.empty()) events.function.evaluate(at.gather(t, x), values.data());
+    };
+    auto crossed = [&](std::size_t j, double before, double after) {
+        const bool up = before < 0 && after >= 0, down = before > 0 && after <= 0;
+        switch (events.directions[j]) {
+            case EventDirection::rising: return up;
+            case EventDirection::falling: return down;
+            case EventDirection::any: break;
+        }
+        return up || down;
+    };
+
+    // the right-hand side x' = [q', q''(t, q, q', inputs)]
+    std::vector<double> u(fd.input_count(), 0.0);
+    auto rhs = [&](const State& x, State& dxdt, double t) {
+        if (inputs) inputs(t, x.data(), x.data() + n, u.data());
+        std::copy(x.begin() + static_cast<std::ptrdiff_t>(n), x.end(), dxdt.begin());
+        fd.calc_accelerations(t, x.data(), x.data() + n, u.data(), dxdt.data() + n);
+    };
+
+    State x(2 * n);
+    std::copy(q0.begin(), q0.end(), x.begin());
+    std::copy(qd0.begin(), qd0.end(), x.begin() + static_cast<std::ptrdiff_t>(n));
+    auto stepper = odeint::make_dense_output(options.abs_tol, options.rel_tol,
+                                             odeint::runge_kutta_dopri5<State>());
+    const double first_step = options.initial_step > 0
+                                  ? options.initial_step
+                                  : std::min(tf - t0, times.size() > 1 ? times[1] - times[0]
+                                                                       : tf - t0) / 100;
+    stepper.initialize(x, t0, first_step);
+
+    ProgressIndicator progress("simulating '" + fd.model() + "'", t0, tf, options.progress);
+    std::vector<double> g_before(events.names.size()), g_after(events.names.size());
+    event_values(t0, x, g_before);
+    std::size_t next = 0;
+    State xi(2 * n);
+    double t_end = tf;
+    try {
+        while (next < times.size() && times[next] <= t0) emit(t0, x), ++next;
+        while (stepper.current_time() < tf) {
+            if (result.steps >= options.max_steps)
+                throw SolveError(who + "more than " + std::to_string(options.max_steps) +
+                                 " steps before t = " + number(stepper.current_time()) +
+                                 " s; the model may be stiff or near a singularity (loosen the "
+                                 "tolerances or raise max_steps)");
+            const auto [t_prev, t_cur] = stepper.do_step(rhs);
+            ++result.steps;
+            if (!(t_cur > t_prev) || t_cur - t_prev < 1e-14 * std::max(1.0, std::abs(t_cur)))
+                throw SolveError(who + "the step size fell to " + number(t_cur - t_prev) +
+                                 " s at t = " + number(t_cur) + " s; the model may be singular "
+                                 "or discontinuous there");
+            // events: the earliest crossing inside this step, by bisection on the dense output
+            double t_event = t_cur;
+            std::size_t fired = events.names.size();
+            if (!g_after.empty()) {
+                event_values(t_cur, stepper.current_state(), g_after);
+                for (std::size_t j = 0; j < g_after.size(); ++j) {
+                    if (!crossed(j, g_before[j], g_after[j])) continue;
+                    double lo = t_prev, hi = t_cur;
+                    std::vector<double> gm(g_after.size());
+                    for (int it = 0; it < 200 && hi - lo > 1e-12 * std::max(1.0, std::abs(hi));
+                         ++it) {
+                        const double mid = 0.5 * (lo + hi);
+                        stepper.calc_state(mid, xi);
+                        event_values(mid, xi, gm);
+                        (crossed(j, g_before[j], gm[j]) ? hi : lo) = mid;
+                    }
+                    if (hi < t_event || fired == events.names.size()) t_event = hi, fired = j;
+                }
+                g_before = g_after;
+            }
+            // outputs inside the step (up to the event), then stop at an event or the end
+            const double t_limit = std::min(fired < events.names.size() ? t_event : t_cur, tf);
+            while (next < times.size() && times[next] <= t_limit) {
+                stepper.calc_state(times[next], xi);
+                emit(times[next], xi);
+                ++next;
+            }
+            if (fired < events.names.size() && t_event <= tf) {
+                stepper.calc_state(t_event, xi);
+                if (table.columns[0].empty() || table.columns[0].back() < t_event) emit(t_event, xi);
+                result.stopped_by = events.names[fired];
+                t_end = t_event;
+                break;
+            }
+            progress.update(t_cur);
+        }
+    } catch (const Error&) {
+        throw;
+    } catch (const std::exception& e) {
+        throw SolveError(who + "the integrator failed at t = " + number(stepper.current_time()) +
+                         " s: " + e.what());
+    }
+    if (result.stopped_by.empty()) {
+        if (stepper.current_time() > tf) stepper.calc_state(tf, xi);
+        else xi = stepper.current_state();
+    }
+    result.t_end = t_end;
+    result.q_end.assign(xi.begin(), xi.begin() + static_cast<std::ptrdiff_t>(n));
+    result.qd_end.assign(xi.begin() + static_cast<std::ptrdiff_t>(n), xi.end());
+    return result;
+}
+
+SimulationResult run_simulation(const System& sys, const SimulationRequest& request) {
+    const SymbolTable& table = sys.symbols();
+    const std::string who = "run_simulation('" + request.model + "'): ";
+    const std::vector<TimeVariable>& q = request.coordinates;
+
+    // load measures: the given formulas, the constraint forces solved for, the rest zero
+    exmap loads;
+    for (const auto& [measure, formula] : request.inputs)
+        ALEMBERT_CHECK_ARG(table.owns(measure) && table.kind(measure) == SymbolKind::unknown,
+                           who + "an input is given for '" + to_string(measure) +
+                               "', which is not a load measure of the model (declare it with "
+                               "add_unknown and use it in a load)");
+    for (const ex& measure : table.symbols(SymbolKind::unknown)) {
+        if (std::any_of(request.constraint_forces.begin(), request.constraint_forces.end(),
+                        [&](const ex& c) { return c.is_equal(measure); }))
+            continue;
+        auto it = request.inputs.find(measure);
+        loads[measure] = it == request.inputs.end() ? ex(0) : it->second;
+    }
+    LinearSystem eqs = form_forward_equations(sys, q, request.constraint_forces);
+    eqs.A = GiNaC::ex_to<GiNaC::matrix>(eqs.A.subs(loads));
+    eqs.b = GiNaC::ex_to<GiNaC::matrix>(eqs.b.subs(loads));
+    ForwardDynamics fd = compile_forward_dynamics(table, eqs, q, {}, request.model);
+
+    // outputs: the user's, then the checks
+    std::vector<OutputSpec> outputs = request.outputs;
+    for (OutputSpec& o : outputs) o.expression = o.expression.subs(loads);
+    if (request.checks) {
+        bool conservative = true;
+        exmap without_constraint_forces = loads;
+        for (const ex& c : request.constraint_forces) without_constraint_forces[c] = 0;
+        for (const ex& f : form_generalized_active_forces(sys, q, LoadSelection::nonconservative))
+            conservative = conservative && equal(f.subs(without_constraint_forces), 0);
+        if (conservative)
+            outputs.push_back({"energy",
+                               sys.calc_kinetic_energy(sys.bodies()) + sys.calc_potential_energy(),
+                               "J"});
+        for (const Constraint& c : sys.constraints())
+            outputs.push_back({"drift_" + c.name, c.residual, ""});
+    }
+    OutputFunction out = compile_outputs(table, fd.layout(), outputs);
+    std::vector<EventSpec> event_specs = request.events;
+    for (EventSpec& e : event_specs) e.expression = e.expression.subs(loads);
+    EventFunction events = compile_events(table, fd.layout(), event_specs);
+
+    // initial values
+    std::vector<double> q0(q.size(), 0.0), qd0(q.size(), 0.0);
+    for (const auto& [symbol, value] : request.initial_values) {
+        bool found = false;
+        for (std::size_t i = 0; i < q.size(); ++i) {
+            if (symbol.is_equal(q[i].symbol())) q0[i] = table.evaluate(value), found = true;
+            if (symbol.is_equal(q[i].d(1))) qd0[i] = table.evaluate(value), found = true;
+        }
+        ALEMBERT_CHECK_ARG(found, who + "an initial value is given for '" + to_string(symbol) +
+                                      "', which is neither a coordinate nor a coordinate's rate");
+    }
+    return simulate(fd, q0, qd0, request.options, out, events);
+}
+
+PlotResult write_table_and_plot(const Table& table, const std::string& dir,
+                                const std::string& name, const PlotOptions& options) {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    fs::create_directories(dir, ec);
+    if (ec)
+        throw ArgumentError("write_table_and_plot(): cannot create the directory '" + dir +
+                            "' (" + ec.message() + ")");
+    const std::string csv = (fs::path(dir) / (name + ".csv")).string();
+    write_csv(table, csv);
+    return plot_csv(table, csv, (fs::path(dir) / name).string(), options);
+}
+
+}  // namespace alembert

@@ -1,0 +1,181 @@
+// SPDX-License-Identifier: MIT
+// Units, tables and CSV files.
+#include "alembert/sim/table.hpp"
+
+#include <unistd.h>
+
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <numbers>
+#include <utility>
+
+#include "alembert/error.hpp"
+
+namespace alembert {
+
+namespace {
+
+const std::vector<std::pair<std::string, double>>& unit_table() {
+    constexpr double deg = std::numbers::pi / 180;
+    static const std::vector<std::pair<std::string, double>> units = {
+        {"", 1}, {"1", 1}, {"s", 1}, {"ms", 1e-3}, {"min", 60}, {"rad", 1}, {"deg", deg},
+        {"rev", 2 * std::numbers::pi}, {"m", 1}, {"cm", 1e-2}, {"mm", 1e-3}, {"km", 1e3},
+        {"kg", 1}, {"g", 1e-3}, {"N", 1}, {"kN", 1e3}, {"N m", 1}, {"N*m", 1}, {"N.m", 1},
+        {"Nm", 1}, {"N\u00b7m", 1}, {"J", 1}, {"kJ", 1e3}, {"W", 1}, {"Hz", 1}, {"rad/s", 1},
+        {"deg/s", deg}, {"rpm", 2 * std::numbers::pi / 60}, {"rad/s^2", 1}, {"deg/s^2", deg},
+        {"m/s", 1}, {"km/h", 1 / 3.6}, {"m/s^2", 1}, {"N m/kg", 1}, {"N/kg", 1},
+        {"kg m^2", 1}};
+    return units;
+}
+
+std::string trim(const std::string& s) {
+    std::size_t a = s.find_first_not_of(" \t\r"), b = s.find_last_not_of(" \t\r");
+    return a == std::string::npos ? std::string() : s.substr(a, b - a + 1);
+}
+
+std::vector<std::string> split(const std::string& line) {
+    std::vector<std::string> cells;
+    std::size_t start = 0;
+    while (true) {
+        std::size_t comma = line.find(',', start);
+        cells.push_back(trim(line.substr(start, comma - start)));
+        if (comma == std::string::npos) break;
+        start = comma + 1;
+    }
+    return cells;
+}
+
+}  // namespace
+
+Unit parse_unit(const std::string& name) {
+    const std::string n = trim(name);
+    for (const auto& [known, factor] : unit_table())
+        if (known == n) return Unit{n, factor};
+    std::string list;
+    for (const auto& [known, factor] : unit_table())
+        if (!known.empty()) list += (list.empty() ? "" : ", ") + known;
+    throw ArgumentError("unknown unit '" + n + "'; use one of: " + list);
+}
+
+std::size_t Table::add_column(const std::string& name, const std::string& unit) {
+    names.push_back(name);
+    units.push_back(unit);
+    columns.emplace_back();
+    return columns.size() - 1;
+}
+
+std::size_t Table::column_index(const std::string& name) const {
+    for (std::size_t c = 0; c < names.size(); ++c)
+        if (names[c] == name) return c;
+    std::string list;
+    for (const std::string& n : names) list += (list.empty() ? "" : ", ") + n;
+    throw ArgumentError("the table has no column '" + name + "'; its columns are: " + list);
+}
+
+void write_csv(const Table& table, const std::string& path) {
+    namespace fs = std::filesystem;
+    const fs::path target(path);
+    const fs::path temporary =
+        target.parent_path() / ("." + target.filename().string() + ".tmp" +
+                                std::to_string(static_cast<long>(::getpid())));
+    std::FILE* f = std::fopen(temporary.c_str(), "w");
+    if (!f)
+        throw ArgumentError("write_csv(): cannot write '" + path + "' (" + std::strerror(errno) +
+                            "); create its directory or choose a writable path");
+    // header: name [unit]
+    for (std::size_t c = 0; c < table.names.size(); ++c) {
+        std::fputs(c ? "," : "", f);
+        std::fputs(table.names[c].c_str(), f);
+        if (!table.units[c].empty()) std::fprintf(f, " [%s]", table.units[c].c_str());
+    }
+    std::fputc('\n', f);
+    // rows
+    for (std::size_t r = 0; r < table.row_count(); ++r) {
+        for (std::size_t c = 0; c < table.columns.size(); ++c)
+            std::fprintf(f, c ? ",%.12g" : "%.12g", table.columns[c][r]);
+        std::fputc('\n', f);
+    }
+    const bool ok = std::ferror(f) == 0;
+    if (std::fclose(f) != 0 || !ok) {
+        std::remove(temporary.c_str());
+        throw ArgumentError("write_csv(): writing '" + path + "' failed (disk full?)");
+    }
+    std::error_code ec;
+    fs::rename(temporary, target, ec);
+    if (ec) {
+        std::remove(temporary.c_str());
+        throw ArgumentError("write_csv(): cannot replace '" + path + "' (" + ec.message() + ")");
+    }
+}
+
+Table read_csv(const std::string& path) {
+    std::ifstream in(path);
+    if (!in)
+        throw ArgumentError("read_csv(): cannot open '" + path + "'; check the file name");
+    Table table;
+    std::string line;
+    int line_no = 0;
+    bool have_header = false;
+    while (std::getline(in, line)) {
+        ++line_no;
+        const std::string where = path + ":" + std::to_string(line_no) + ": ";
+        const std::string t = trim(line);
+        if (t.empty() || t[0] == '#') continue;
+        std::vector<std::string> cells = split(t);
+        if (!have_header) {
+            // header cells: name [unit]
+            for (const std::string& cell : cells) {
+                std::string name = cell, unit;
+                std::size_t open = cell.find('[');
+                if (open != std::string::npos) {
+                    std::size_t close = cell.find(']', open);
+                    if (close == std::string::npos)
+                        throw ArgumentError(where + "header cell '" + cell +
+                                            "' opens '[' without ']'; write units as 'qA [deg]'");
+                    name = trim(cell.substr(0, open));
+                    unit = trim(cell.substr(open + 1, close - open - 1));
+                }
+                if (name.empty())
+                    throw ArgumentError(where + "a header cell has no column name; the first "
+                                                "row must name every column");
+                for (const std::string& n : table.names)
+                    if (n == name)
+                        throw ArgumentError(where + "column '" + name + "' appears twice");
+                table.add_column(name, unit);
+            }
+            have_header = true;
+            continue;
+        }
+        if (cells.size() != table.names.size())
+            throw ArgumentError(where + "the row has " + std::to_string(cells.size()) +
+                                " cells but the header names " +
+                                std::to_string(table.names.size()) + " columns");
+        for (std::size_t c = 0; c < cells.size(); ++c) {
+            const char* s = cells[c].c_str();
+            char* end = nullptr;
+            errno = 0;
+            double v = std::strtod(s, &end);
+            if (cells[c].empty() || end != s + cells[c].size() || errno == ERANGE ||
+                !std::isfinite(v))
+                throw ArgumentError(where + "cell " + std::to_string(c + 1) + " ('" +
+                                    table.names[c] + "') is '" + cells[c] +
+                                    "', not a finite number");
+            table.columns[c].push_back(v);
+        }
+        table.lines.push_back(line_no);
+    }
+    if (!have_header)
+        throw ArgumentError("read_csv(): '" + path + "' is empty; it needs a header row "
+                            "naming the columns and rows of numbers");
+    if (table.row_count() == 0)
+        throw ArgumentError(path + ":" + std::to_string(line_no) + ": the file has a header " +
+                            "but no rows of numbers");
+    return table;
+}
+
+}  // namespace alembert

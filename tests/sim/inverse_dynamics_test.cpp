@@ -1,0 +1,106 @@
+// SPDX-License-Identifier: MIT
+// Numeric inverse dynamics: the hand-written recursion, statics by hand, solved and unsolved
+// forms, and errors by name.
+#include "alembert/sim/inverse_dynamics.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "alembert/mech/sample_models.hpp"
+#include "planar_chain_reference.hpp"
+#include "alembert/error.hpp"
+#include "support/expect.hpp"
+
+namespace alembert {
+namespace {
+
+TEST(InverseDynamics, PlanarChainsMatchTheHandWrittenNewtonEulerRecursion) {
+    std::mt19937 rng(3);
+    std::uniform_real_distribution<double> angle(-3.0, 3.0), rate(-2.0, 2.0);
+    for (int n : {1, 3, 7}) {
+        SampleModel chain = make_planar_chain(n);
+        InverseDynamics id = compile_inverse_dynamics(chain.system, chain.q, chain.unknowns, "chain");
+        EXPECT_TRUE(id.solved()) << "a road-map row per torque leaves no solve for run time";
+        bench::PlanarChainReference reference(n);
+        const auto un = static_cast<std::size_t>(n);
+        std::vector<double> q(un), qd(un), qdd(un), ours(un), theirs(un);
+        for (int trial = 0; trial < 10; ++trial) {
+            for (std::size_t i = 0; i < un; ++i) q[i] = angle(rng), qd[i] = rate(rng), qdd[i] = rate(rng);
+            id.calc_loads(0.0, q.data(), qd.data(), qdd.data(), ours.data());
+            reference.inverse_dynamics(q.data(), qd.data(), qdd.data(), theirs.data());
+            for (std::size_t i = 0; i < un; ++i)
+                EXPECT_NEAR(ours[i], theirs[i], 1e-12 * (1 + std::abs(theirs[i])))
+                    << "n = " << n << ", joint " << i + 1;
+        }
+    }
+}
+
+TEST(InverseDynamics, TriplePendulumHoldsAStillPoseWithItsWeightMoments) {
+    // at rest, each joint torque balances the weight of the segments above it:
+    // T_j = -sum_{k >= j} m_k g (x_k - x_j), x horizontal positions (first principles)
+    SampleModel m = make_triple_pendulum();
+    InverseDynamics id = compile_inverse_dynamics(m.system, m.q, m.unknowns, "triple_pendulum");
+    const double L[3] = {0.4182, 0.4165, 0.4896}, mass[3] = {6.51, 14.00, 47.46},
+                 d[3] = {0.2371, 0.2362, 0.3065}, g = 9.81;
+    const double q[3] = {-0.3, 1.4, -1.9}, zero[3] = {0, 0, 0};
+    double T[3];
+    id.calc_loads(0, q, zero, zero, T);
+    double theta = 0, joint_x[3], cm_x[3], x = 0;
+    for (int k = 0; k < 3; ++k) {
+        theta += q[k];
+        joint_x[k] = x;
+        cm_x[k] = x - d[k] * std::sin(theta);  // a_y turned by theta points to (-sin, cos)
+        x -= L[k] * std::sin(theta);
+    }
+    for (int j = 0; j < 3; ++j) {
+        double moment = 0;
+        for (int k = j; k < 3; ++k) moment += mass[k] * g * (cm_x[k] - joint_x[j]);
+        EXPECT_NEAR(T[j], moment, 1e-10) << "joint " << j;
+    }
+    EXPECT_EQ(id.load_names(), (std::vector<std::string>{"T_A", "T_B", "T_C"}));
+}
+
+TEST(InverseDynamics, CoupledLoadMeasuresAreSolvedAtRunTime) {
+    // the four-bar's crank torque and pin force share rows: the unsolved form, solved by LU;
+    // at rest the crank torque equals the virtual-work holding torque dV/dqA along the loop
+    SampleModel fb = make_four_bar();
+    InverseDynamics id = compile_inverse_dynamics(fb.system, fb.q, fb.unknowns, "four_bar");
+    EXPECT_FALSE(id.solved());
+    const double LN = 1, LA = 0.4, LB = 1.2, LC = 0.8, g = 9.81;
+    auto pose = [&](double qA, double* q) {
+        const double ax = LA * std::cos(qA), ay = LA * std::sin(qA);
+        const double dx = LN - ax, dy = -ay, dd = std::hypot(dx, dy);
+        const double along = (LB * LB - LC * LC + dd * dd) / (2 * dd);
+        const double h = std::sqrt(LB * LB - along * along);
+        const double px = ax + along * dx / dd - h * dy / dd, py = ay + along * dy / dd + h * dx / dd;
+        q[0] = qA, q[1] = std::atan2(py - ay, px - ax) - qA, q[2] = std::atan2(py, px - LN);
+    };
+    auto potential = [&](double qA) {
+        double q[3];
+        pose(qA, q);
+        const double yA = LA / 2 * std::sin(q[0]);
+        const double yB = LA * std::sin(q[0]) + LB / 2 * std::sin(q[0] + q[1]);
+        const double yC = LC / 2 * std::sin(q[2]);
+        return g * (1.0 * yA + 2.0 * yB + 1.5 * yC);
+    };
+    const double qA = 1.1, h = 1e-5;
+    double q[3], zero[3] = {0, 0, 0}, loads[3];
+    pose(qA, q);
+    id.calc_loads(0, q, zero, zero, loads);
+    const double holding = (potential(qA + h) - potential(qA - h)) / (2 * h);
+    EXPECT_NEAR(loads[0], holding, 1e-6);
+}
+
+TEST(InverseDynamics, AMissingConstantValueIsNamed) {
+    SampleModel rod = make_planar_chain(1);
+    SymbolTable& s = rod.system.symbols();
+    ex k = s.add_constant("k_spring");  // no value
+    rod.system.add_torque(*rod.links[0], -k * rod.q[0] * rod.system.newtonian().z(), "spring");
+    EXPECT_THROW_MSG(compile_inverse_dynamics(rod.system, rod.q, rod.unknowns, "rod"),
+                     ArgumentError, "k_spring");
+}
+
+}  // namespace
+}  // namespace alembert

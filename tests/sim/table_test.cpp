@@ -1,0 +1,86 @@
+// SPDX-License-Identifier: MIT
+// Units and CSV tables: round trip, atomic writing, errors with file:line.
+#include "alembert/sim/table.hpp"
+
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <numbers>
+
+#include <unistd.h>
+
+#include "alembert/error.hpp"
+#include "support/expect.hpp"
+
+namespace alembert {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::path scratch(const std::string& name) {
+    fs::path dir = fs::temp_directory_path() / ("alembert_table_test_" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    return dir / name;
+}
+
+void write_text(const fs::path& p, const std::string& text) { std::ofstream(p) << text; }
+
+TEST(Unit, DegreesAndTorqueUnitsConvertToSI) {
+    EXPECT_DOUBLE_EQ(parse_unit("deg").factor, std::numbers::pi / 180);
+    EXPECT_DOUBLE_EQ(parse_unit(" N m ").factor, 1.0);
+    EXPECT_DOUBLE_EQ(parse_unit("mm").factor, 1e-3);
+    EXPECT_DOUBLE_EQ(parse_unit("rpm").factor, 2 * std::numbers::pi / 60);
+    EXPECT_THROW_MSG(parse_unit("furlong"), ArgumentError, "unknown unit 'furlong'; use one of: ");
+}
+
+TEST(Table, WritesAHeaderWithUnitsAndReadsItBack) {
+    Table t;
+    t.add_column("t", "s");
+    t.add_column("qA", "deg");
+    t.add_column("count", "");
+    t.columns = {{0, 0.01}, {-25, -24.999}, {1, 2}};
+    const fs::path p = scratch("round_trip.csv");
+    write_csv(t, p);
+    std::ifstream in(p);
+    std::string header;
+    std::getline(in, header);
+    EXPECT_EQ(header, "t [s],qA [deg],count");
+    Table back = read_csv(p);
+    EXPECT_EQ(back.names, t.names);
+    EXPECT_EQ(back.units, t.units);
+    EXPECT_EQ(back.columns, t.columns);
+    EXPECT_EQ(back.lines, (std::vector<int>{2, 3}));
+    // the temporary is gone: only the file itself is left
+    int files = 0;
+    for (const auto& e : fs::directory_iterator(p.parent_path()))
+        if (e.path().filename().string().find("round_trip") != std::string::npos) ++files;
+    EXPECT_EQ(files, 1);
+}
+
+TEST(Table, BadRowsAreReportedWithFileAndLine) {
+    const fs::path p = scratch("bad.csv");
+    write_text(p, "t [s], qA [deg]\n# a comment\n0, 1\n0.01, one\n");
+    EXPECT_THROW_MSG(read_csv(p), ArgumentError,
+                     p.string() + ":4: cell 2 ('qA') is 'one', not a finite number");
+    write_text(p, "t [s], qA [deg]\n0, 1, 2\n");
+    EXPECT_THROW_MSG(read_csv(p), ArgumentError,
+                     p.string() + ":2: the row has 3 cells but the header names 2 columns");
+    write_text(p, "t [s], qA [deg\n0, 1\n");
+    EXPECT_THROW_MSG(read_csv(p), ArgumentError, p.string() + ":1: header cell 'qA [deg' opens");
+    write_text(p, "t [s], t [s]\n0, 1\n");
+    EXPECT_THROW_MSG(read_csv(p), ArgumentError, p.string() + ":1: column 't' appears twice");
+    write_text(p, "t [s]\n");
+    EXPECT_THROW_MSG(read_csv(p), ArgumentError, "the file has a header but no rows of numbers");
+    EXPECT_THROW_MSG(read_csv(scratch("missing.csv")), ArgumentError, "cannot open");
+}
+
+TEST(Table, AnUnwritablePathIsAnArgumentError) {
+    Table t;
+    t.add_column("t", "s");
+    EXPECT_THROW_MSG(write_csv(t, "/nonexistent-dir/x.csv"), ArgumentError,
+                     "write_csv(): cannot write '/nonexistent-dir/x.csv'");
+}
+
+}  // namespace
+}  // namespace alembert
