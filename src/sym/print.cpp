@@ -78,15 +78,31 @@ std::string print_factors(std::vector<ex> fs) {
     return out;
 }
 
-// True if a sum prints with a leading minus: then -s prints with a leading plus. GiNaC's choice
-// between s and -s inside a product depends on its internal (address-dependent) term order,
-// so products print their sums with a leading plus and carry the sign themselves.
-bool leads_negative(const ex& s) { return is_a<add>(s) && p(s).negative; }
+// GiNaC's choice between s and -s inside a product depends on its internal (address-dependent)
+// term order, so products print their sums in one canonical sign and carry the sign themselves.
+// -s, negated term by term (GiNaC may hold -s as the product (-1)*s)
+ex negated(const ex& s) {
+    ex neg = 0;
+    for (std::size_t i = 0; i < s.nops(); ++i) neg += -s.op(i);
+    return neg;
+}
+
+// True if the sum s should print as -(-s): -s prints with a leading plus and s does not, or,
+// when both or neither do, -s prints first in text order. The choice is the same for s and -s,
+// so a sign taken out once is never taken out again.
+bool should_flip(const ex& s) {
+    if (!is_a<add>(s)) return false;
+    ex n = negated(s);
+    if (!is_a<add>(n)) return false;
+    Printed a = p(s), b = p(n);
+    if (a.negative != b.negative) return a.negative;
+    return b.text < a.text;
+}
 
 // sin, cos or tan of a sum that leads negative: the argument's sign is taken out
 // (cos(-s) = cos(s), sin(-s) = -sin(s)), for the same reason
 bool trig_of_negative(const ex& f, bool& odd) {
-    if (!is_a<function>(f) || f.nops() != 1 || !leads_negative(f.op(0))) return false;
+    if (!is_a<function>(f) || f.nops() != 1 || !should_flip(f.op(0))) return false;
     const std::string& name = ex_to<function>(f).get_name();
     odd = name == "sin" || name == "tan";
     return odd || name == "cos";
@@ -94,7 +110,7 @@ bool trig_of_negative(const ex& f, bool& odd) {
 
 ex flip_trig(const ex& f) {
     const std::string& name = ex_to<function>(f).get_name();
-    ex a = -f.op(0);
+    ex a = negated(f.op(0));
     return name == "sin" ? sin(a) : name == "cos" ? cos(a) : tan(a);
 }
 
@@ -102,9 +118,9 @@ ex flip_trig(const ex& f) {
 // above; `flip` toggles for each sign moved out of the factor
 ex canonical_factor(const ex& f, bool& flip) {
     bool odd = false;
-    if (leads_negative(f)) {
+    if (should_flip(f)) {
         flip = !flip;
-        return -f;
+        return negated(f);
     }
     if (trig_of_negative(f, odd)) {
         if (odd) flip = !flip;
@@ -124,7 +140,15 @@ Printed print_mul(const ex& e) {
     std::vector<ex> num, den;
     bool flip = false;
     for (std::size_t i = 0; i < e.nops(); ++i) {
-        const ex f = is_a<numeric>(e.op(i)) ? e.op(i) : canonical_factor(e.op(i), flip);
+        const bool flip_before = flip;
+        ex f = is_a<numeric>(e.op(i)) ? e.op(i) : canonical_factor(e.op(i), flip);
+        if (is_a<mul>(f)) {
+            // GiNaC may return the canonical form as a product (a power of a sum with a
+            // numeric content, say); printing that would come back here without end, so the
+            // factor keeps its own form (factors of a product are never products themselves)
+            f = e.op(i);
+            flip = flip_before;
+        }
         if (is_a<numeric>(f)) {
             c *= ex_to<numeric>(f);
         } else if (is_a<power>(f) && is_a<numeric>(f.op(1)) && ex_to<numeric>(f.op(1)) < 0) {
@@ -197,9 +221,12 @@ Printed print_power(const ex& e) {
     bool even = is_a<numeric>(x) && ex_to<numeric>(x).is_even();
     bool flip = false;
     ex base = is_a<numeric>(x) && ex_to<numeric>(x).is_integer() ? canonical_factor(b, flip) : b;
-    if (flip && !even) return p(-pow(base, x));
     Printed pb = p(base), px = p(x);
-    return {paren(pb, kAtom) + "^" + paren(px, kAtom), kPower};
+    std::string text = paren(pb, kAtom) + "^" + paren(px, kAtom);
+    // an odd power carries the sign out, printed here: GiNaC would fold -(base^x) back into
+    // the power it came from
+    if (flip && !even) return {"-" + text, kSum, true};
+    return {text, kPower};
 }
 
 Printed p(const ex& e) {
