@@ -59,10 +59,14 @@ SampleModel make_triple_pendulum() {
     return m;
 }
 
-SampleModel make_n_link_pendulum(int n, ChainKind kind) {
+namespace {
+
+// n uniform rods, each lying along its own y axis: +y (standing, `up`) or -y (hanging)
+SampleModel make_chain(const char* caller, int n, ChainKind kind, bool up) {
     if (n < 1)
-        throw ArgumentError("make_n_link_pendulum(): a chain needs at least one link, not " +
+        throw ArgumentError(std::string(caller) + ": a chain needs at least one link, not " +
                             std::to_string(n));
+    const ex along = up ? 1 : -1;
     SampleModel m{System("N"), {}, {}, {}};
     System& sys = m.system;
     SymbolTable& s = sys.symbols();
@@ -96,8 +100,8 @@ SampleModel make_n_link_pendulum(int n, ChainKind kind) {
             m.unknowns.push_back(Tx);
         }
         Point& Bo = sys.point("B" + k + "_o");
-        Bo.set_pos(*joint, i == 1 ? Vector() : -previous_length * parent->y());
-        B.cm().set_pos(Bo, -(L / 2) * F.y());
+        Bo.set_pos(*joint, i == 1 ? Vector() : along * previous_length * parent->y());
+        B.cm().set_pos(Bo, along * (L / 2) * F.y());
         B.set_mass(mass);
         ex I = mass * L * L / 12;
         B.set_inertia(B.cm(), I, 0, I);
@@ -108,6 +112,16 @@ SampleModel make_n_link_pendulum(int n, ChainKind kind) {
     }
     sys.set_gravity(-g * N.y());
     return m;
+}
+
+}  // namespace
+
+SampleModel make_n_link_pendulum(int n, ChainKind kind) {
+    return make_chain("make_n_link_pendulum()", n, kind, false);
+}
+
+SampleModel make_planar_chain(int n) {
+    return make_chain("make_planar_chain()", n, ChainKind::planar, true);
 }
 
 SampleModel make_mass_spring_damper() {
