@@ -7,7 +7,6 @@
 #include <alembert/mech/sample_models.hpp>
 #include <alembert/sim/forward_dynamics.hpp>
 #include <alembert/sim/inverse_dynamics.hpp>
-
 #include <algorithm>
 #include <cmath>
 #include <map>
@@ -35,10 +34,10 @@ using namespace alembert;
 struct Fixture {
     explicit Fixture(int n)
         : model(make_planar_chain(n)),
-          id(compile_inverse_dynamics(model.system.symbols(),
-                                      form_linear_system(form_kane_equations(model.system, model.q),
-                                                         model.unknowns),
-                                      model.q, "planar_chain")),
+          id(compile_inverse_dynamics(
+              model.system.symbols(),
+              form_linear_system(form_kane_equations(model.system, model.q), model.unknowns),
+              model.q, "planar_chain")),
           fd(compile_forward_dynamics(model.system, model.q, model.unknowns, "planar_chain")),
           reference(n) {
         const auto un = static_cast<std::size_t>(n);
@@ -93,8 +92,8 @@ void BM_InverseTapeRoadmap(benchmark::State& state) {
     static std::map<int, std::unique_ptr<InverseDynamics>> cache;
     auto& id = cache[static_cast<int>(state.range(0))];
     if (!id)
-        id = std::make_unique<InverseDynamics>(compile_inverse_dynamics(
-            f.model.system, f.model.q, f.model.unknowns, "planar_chain"));
+        id = std::make_unique<InverseDynamics>(
+            compile_inverse_dynamics(f.model.system, f.model.q, f.model.unknowns, "planar_chain"));
     for (auto _ : state) {
         id->calc_loads(0.0, f.q.data(), f.qd.data(), f.qdd.data(), f.out.data());
         benchmark::DoNotOptimize(f.out.data());
