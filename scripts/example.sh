@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Builds the release preset and runs the triple pendulum example.
+# Builds the release preset and runs the main example, the seed's sit-to-stand model, through
+# the alembert command: `alembert run examples/sit_to_stand/model.alb`.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -7,9 +8,9 @@ bash scripts/install_deps.sh
 cmake --preset release
 cmake --build --preset release -j2
 
-exe=build/release/examples/triple_pendulum/triple_pendulum
+exe=build/release/bin/alembert
 if [[ ! -x $exe ]]; then
-  echo "example.sh: $exe was not built (is examples/triple_pendulum there yet?)" >&2
+  echo "example.sh: $exe was not built" >&2
   exit 1
 fi
-exec "$exe" "$@"
+exec "$exe" run examples/sit_to_stand/model.alb "$@"

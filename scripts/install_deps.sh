@@ -6,7 +6,7 @@ packages=(
   build-essential cmake pkg-config
   libginac-dev libcln-dev libeigen3-dev
   libgtest-dev libgmock-dev googletest libbenchmark-dev
-  libboost-dev libfmt-dev libcli11-dev
+  libboost-dev libfmt-dev libcli11-dev libedit-dev
   gnuplot-nox
 )
 

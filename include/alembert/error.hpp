@@ -2,7 +2,10 @@
 // Exceptions thrown by Alembert, named for whose fault the failure is.
 #pragma once
 
+#include <version>
+#if defined(__cpp_lib_source_location)
 #include <source_location>
+#endif
 #include <stdexcept>
 #include <string>
 
@@ -62,7 +65,19 @@ public:
 };
 
 namespace detail {
-[[noreturn]] void throw_internal(const char* condition, std::source_location where);
+#if defined(__cpp_lib_source_location)
+using SourceLocation = std::source_location;
+#else
+/// Stand-in where the standard library has no std::source_location (Debian 12's clang 14 with
+/// libstdc++ 12, used to build the fuzz targets): internal errors then name no place.
+struct SourceLocation {
+    static constexpr SourceLocation current() noexcept { return {}; }
+    constexpr const char* file_name() const noexcept { return "(unknown file)"; }
+    constexpr const char* function_name() const noexcept { return "(unknown function)"; }
+    constexpr unsigned line() const noexcept { return 0; }
+};
+#endif
+[[noreturn]] void throw_internal(const char* condition, SourceLocation where);
 }  // namespace detail
 
 }  // namespace alembert
@@ -77,5 +92,5 @@ namespace detail {
 #define ALEMBERT_ASSERT(cond)                                                              \
     do {                                                                                   \
         if (!(cond))                                                                       \
-            ::alembert::detail::throw_internal(#cond, std::source_location::current());    \
+            ::alembert::detail::throw_internal(#cond, ::alembert::detail::SourceLocation::current());    \
     } while (false)

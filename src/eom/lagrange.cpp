@@ -12,9 +12,9 @@ std::vector<ex> form_lagrange_equations(const System& sys, const std::vector<Tim
     SymbolTable& st = sys.newtonian().symbols();
     std::vector<ex> E;
     for (std::size_t i = 0; i < q.size(); ++i) {
-        const GiNaC::symbol& qi = GiNaC::ex_to<GiNaC::symbol>(q[i].symbol());
-        const GiNaC::symbol& ui = GiNaC::ex_to<GiNaC::symbol>(q[i].d(1));
-        E.push_back(Q[i] + L.diff(qi) - st.dt(L.diff(ui)));
+        // through intermediates: the kinetic energy of a long chain is written in its named
+        // velocity measures, which depend on q and q'
+        E.push_back(Q[i] + st.diff(L, q[i].symbol()) - st.dt(st.diff(L, q[i].d(1))));
     }
     return E;
 }

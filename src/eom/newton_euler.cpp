@@ -7,12 +7,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <optional>
 #include <random>
 #include <set>
 
 #include "alembert/eom/inertia_forces.hpp"
 #include "alembert/error.hpp"
+#include "alembert/sym/evaluator.hpp"
 #include "alembert/sym/print.hpp"
 #include "alembert/sym/simplify.hpp"
 
@@ -27,19 +29,24 @@ class GenericState {
 public:
     explicit GenericState(const SymbolTable& st) : st_(st), rng_(20240611) {}
 
+    // e at the state, through its intermediates (compiled, not expanded: the intermediates
+    // of a long chain's kinematics expand to expressions far larger than their definitions)
     double value(const ex& e) {
-        ex x = st_.expand_intermediates(e);
         std::uniform_real_distribution<double> mag(0.3, 1.7);
         std::bernoulli_distribution negative(0.5);
-        for (const ex& s : symbols_of(x)) {
-            if (values_.count(s)) continue;
-            std::optional<double> given;
-            if (st_.owns(s) && st_.kind(s) == SymbolKind::constant) given = st_.value(s);
-            values_[s] = given ? *given : (negative(rng_) ? -1 : 1) * mag(rng_);
+        std::vector<ex> inputs;
+        std::vector<double> x;
+        for (const ex& s : leaves(e)) {
+            if (st_.owns(s) && st_.kind(s) == SymbolKind::constant && st_.value(s)) continue;
+            if (!values_.count(s)) values_[s] = (negative(rng_) ? -1 : 1) * mag(rng_);
+            inputs.push_back(s);
+            x.push_back(values_.at(s));
         }
-        ex v = GiNaC::evalf(x.subs(values_));
-        ALEMBERT_ASSERT(GiNaC::is_a<GiNaC::numeric>(v));
-        return GiNaC::ex_to<GiNaC::numeric>(v).real().to_double();
+        CompiledExpressions f(st_, inputs, {e});
+        double out = 0;
+        f.evaluate(x.data(), &out);
+        ALEMBERT_ASSERT(std::isfinite(out));
+        return out;
     }
 
     Eigen::Vector3d value(const Vector& v, const Frame& N) {
@@ -48,9 +55,27 @@ public:
     }
 
 private:
+    // the symbols e depends on, through intermediates, other than intermediates
+    GiNaC::exset leaves(const ex& e) const {
+        GiNaC::exset out, seen;
+        std::vector<ex> todo{e};
+        while (!todo.empty()) {
+            ex cur = todo.back();
+            todo.pop_back();
+            for (const ex& s : symbols_of(cur)) {
+                if (st_.owns(s) && st_.kind(s) == SymbolKind::intermediate) {
+                    if (seen.insert(s).second) todo.push_back(st_.definition(s));
+                } else {
+                    out.insert(s);
+                }
+            }
+        }
+        return out;
+    }
+
     const SymbolTable& st_;
     std::mt19937 rng_;
-    exmap values_;
+    std::map<ex, double, GiNaC::ex_is_less> values_;
 };
 
 // the directions of `dirs` that are independent at the random state, in order

@@ -78,11 +78,77 @@ std::string print_factors(std::vector<ex> fs) {
     return out;
 }
 
+// GiNaC's choice between s and -s inside a product depends on its internal (address-dependent)
+// term order, so products print their sums in one canonical sign and carry the sign themselves.
+// -s, negated term by term (GiNaC may hold -s as the product (-1)*s)
+ex negated(const ex& s) {
+    ex neg = 0;
+    for (std::size_t i = 0; i < s.nops(); ++i) neg += -s.op(i);
+    return neg;
+}
+
+// True if the sum s should print as -(-s): -s prints with a leading plus and s does not, or,
+// when both or neither do, -s prints first in text order. The choice is the same for s and -s,
+// so a sign taken out once is never taken out again.
+bool should_flip(const ex& s) {
+    if (!is_a<add>(s)) return false;
+    ex n = negated(s);
+    if (!is_a<add>(n)) return false;
+    Printed a = p(s), b = p(n);
+    if (a.negative != b.negative) return a.negative;
+    return b.text < a.text;
+}
+
+// sin, cos or tan of a sum that leads negative: the argument's sign is taken out
+// (cos(-s) = cos(s), sin(-s) = -sin(s)), for the same reason
+bool trig_of_negative(const ex& f, bool& odd) {
+    if (!is_a<function>(f) || f.nops() != 1 || !should_flip(f.op(0))) return false;
+    const std::string& name = ex_to<function>(f).get_name();
+    odd = name == "sin" || name == "tan";
+    return odd || name == "cos";
+}
+
+ex flip_trig(const ex& f) {
+    const std::string& name = ex_to<function>(f).get_name();
+    ex a = negated(f.op(0));
+    return name == "sin" ? sin(a) : name == "cos" ? cos(a) : tan(a);
+}
+
+// a factor with the sign of a sum (or of a trigonometric function's argument) fixed as
+// above; `flip` toggles for each sign moved out of the factor
+ex canonical_factor(const ex& f, bool& flip) {
+    bool odd = false;
+    if (should_flip(f)) {
+        flip = !flip;
+        return negated(f);
+    }
+    if (trig_of_negative(f, odd)) {
+        if (odd) flip = !flip;
+        return flip_trig(f);
+    }
+    if (is_a<power>(f) && is_a<numeric>(f.op(1)) && ex_to<numeric>(f.op(1)).is_integer()) {
+        bool inner = false;
+        ex b = canonical_factor(f.op(0), inner);
+        if (inner && ex_to<numeric>(f.op(1)).is_odd()) flip = !flip;
+        return pow(b, f.op(1));
+    }
+    return f;
+}
+
 Printed print_mul(const ex& e) {
     numeric c = 1;
     std::vector<ex> num, den;
+    bool flip = false;
     for (std::size_t i = 0; i < e.nops(); ++i) {
-        const ex& f = e.op(i);
+        const bool flip_before = flip;
+        ex f = is_a<numeric>(e.op(i)) ? e.op(i) : canonical_factor(e.op(i), flip);
+        if (is_a<mul>(f)) {
+            // GiNaC may return the canonical form as a product (a power of a sum with a
+            // numeric content, say); printing that would come back here without end, so the
+            // factor keeps its own form (factors of a product are never products themselves)
+            f = e.op(i);
+            flip = flip_before;
+        }
         if (is_a<numeric>(f)) {
             c *= ex_to<numeric>(f);
         } else if (is_a<power>(f) && is_a<numeric>(f.op(1)) && ex_to<numeric>(f.op(1)) < 0) {
@@ -91,6 +157,7 @@ Printed print_mul(const ex& e) {
             num.push_back(f);
         }
     }
+    if (flip) c = -c;
     bool neg = c.is_real() && c < 0;
     if (neg) c = -c;
     numeric cn = c.is_rational() ? c.numer() : c, cd = c.is_rational() ? c.denom() : numeric(1);
@@ -150,8 +217,16 @@ Printed print_power(const ex& e) {
         Printed d = p(pow(b, -x));
         return {"1/" + paren(d, kPower), kProduct};
     }
-    Printed pb = p(b), px = p(x);
-    return {paren(pb, kAtom) + "^" + paren(px, kAtom), kPower};
+    // an even power of a sum prints the sum with a leading plus: (-s)^2 = s^2
+    bool even = is_a<numeric>(x) && ex_to<numeric>(x).is_even();
+    bool flip = false;
+    ex base = is_a<numeric>(x) && ex_to<numeric>(x).is_integer() ? canonical_factor(b, flip) : b;
+    Printed pb = p(base), px = p(x);
+    std::string text = paren(pb, kAtom) + "^" + paren(px, kAtom);
+    // an odd power carries the sign out, printed here: GiNaC would fold -(base^x) back into
+    // the power it came from
+    if (flip && !even) return {"-" + text, kSum, true};
+    return {text, kPower};
 }
 
 Printed p(const ex& e) {
@@ -166,6 +241,11 @@ Printed p(const ex& e) {
     if (is_a<mul>(e)) return print_mul(e);
     if (is_a<power>(e)) return print_power(e);
     if (is_a<function>(e)) {
+        bool odd = false;
+        if (trig_of_negative(e, odd)) {
+            Printed t = p(flip_trig(e));
+            return odd ? Printed{"-" + t.text, kSum, true} : t;
+        }
         std::string s = ex_to<function>(e).get_name() + "(";
         for (std::size_t i = 0; i < e.nops(); ++i) s += (i ? ", " : "") + p(e.op(i)).text;
         return {s + ")", kAtom};

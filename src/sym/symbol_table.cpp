@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "alembert/error.hpp"
+#include "alembert/sym/simplify.hpp"
 
 namespace alembert {
 
@@ -209,6 +210,13 @@ std::vector<ex> SymbolTable::symbols(SymbolKind k) const {
 }
 
 ex SymbolTable::dt(const ex& e) {
+    // term by term: each term is differentiated only with respect to its own symbols, where
+    // the whole sum would be traversed once per symbol of any term
+    if (GiNaC::is_a<GiNaC::add>(e)) {
+        ex sum = 0;
+        for (std::size_t i = 0; i < e.nops(); ++i) sum += dt(e.op(i));
+        return sum;
+    }
     ex result = 0;
     for (const ex& s : symbols_of(e)) {
         const Info& i = info(s, "SymbolTable::dt()");
@@ -233,11 +241,8 @@ ex SymbolTable::dt(const ex& e) {
                 auto it = z_dt_.find(s);
                 if (it == z_dt_.end()) {
                     ex d = dt(i.definition);
-                    ex named = d.is_zero() || GiNaC::is_a<GiNaC::symbol>(d) ||
-                                       GiNaC::is_a<GiNaC::numeric>(d)
-                                   ? d
-                                   : make_intermediate(d, i.name + "'");
-                    it = z_dt_.emplace(s, named).first;
+                    std::string name = i.name + "'";
+                    it = z_dt_.emplace(s, name_derivative(d, name)).first;
                 }
                 ds = it->second;
                 break;
@@ -249,19 +254,132 @@ ex SymbolTable::dt(const ex& e) {
     return result;
 }
 
-ex SymbolTable::diff(const ex& e, const ex& s) const {
+ex SymbolTable::diff(const ex& e, const ex& s) {
+    if (GiNaC::is_a<GiNaC::add>(e)) {  // term by term, as dt()
+        ex sum = 0;
+        for (std::size_t i = 0; i < e.nops(); ++i) sum += diff(e.op(i), s);
+        return sum;
+    }
     const Info& is = info(s, "SymbolTable::diff()");
+    const bool s_is_z = is.kind == SymbolKind::intermediate;
     ex result = e.diff(GiNaC::ex_to<GiNaC::symbol>(s));
     for (const ex& z : symbols_of(e)) {
         const Info& iz = info(z, "SymbolTable::diff()");
         if (iz.kind != SymbolKind::intermediate || z.is_equal(s)) continue;
-        if (!iz.leaves.count(s) &&
-            !(is.kind == SymbolKind::intermediate && depends_on(iz.definition, s)))
-            continue;
-        ex dz = diff(iz.definition, s);
+        if (!iz.leaves.count(s) && !(s_is_z && depends_on(iz.definition, s))) continue;
+        ex dz = diff_intermediate(z, s);
         if (!dz.is_zero()) result += e.diff(GiNaC::ex_to<GiNaC::symbol>(z)) * dz;
     }
     return result;
+}
+
+// dz/ds, taken once per pair and named when not small
+ex SymbolTable::diff_intermediate(const ex& z, const ex& s) {
+    auto& row = z_diff_[z];
+    if (auto it = row.find(s); it != row.end()) return it->second;
+    constexpr std::size_t kNameOps = 4;
+    ex dz = diff(info_.at(z).definition, s);
+    ex named = name_if_large(dz, kNameOps);
+    z_diff_[z].emplace(s, named);  // `row` may have moved while diff() added entries
+    return named;
+}
+
+bool SymbolTable::is_solve_level(const ex& s) const {
+    auto it = info_.find(s);
+    if (it == info_.end()) return false;
+    const Info& i = it->second;
+    switch (i.kind) {
+        case SymbolKind::unknown: return true;
+        case SymbolKind::variable:
+        case SymbolKind::specified: return !GiNaC::is_a<GiNaC::symbol>(i.next);
+        case SymbolKind::intermediate:
+            for (const ex& l : i.leaves)
+                if (is_solve_level(l)) return true;
+            return false;
+        default: return false;
+    }
+}
+
+namespace {
+bool is_atom(const ex& e) { return GiNaC::is_a<GiNaC::symbol>(e) || GiNaC::is_a<GiNaC::numeric>(e); }
+}  // namespace
+
+ex SymbolTable::name_if_large(const ex& e, std::size_t min_ops) {
+    if (is_atom(e) || count_ops(e) <= min_ops) return e;
+    return name_parts(e, min_ops, "");
+}
+
+ex SymbolTable::name_derivative(const ex& d, const std::string& name) {
+    constexpr std::size_t kNameOps = 4;  // coefficients of q'' this small stay written out
+    return d.is_zero() || is_atom(d) ? d : name_parts(d, kNameOps, name);
+}
+
+// Splits `e` (times `factor`) into sum_k c_k x_k + rest over the solve-level symbols x_k in
+// one pass over its sums and products; false if e is not visibly linear in them (an x_k
+// inside a power or a function, or in two factors of one product).
+bool SymbolTable::collect_linear(const ex& e, const ex& factor,
+                                 std::map<ex, ex, GiNaC::ex_is_less>& coeffs, ex& rest) const {
+    auto holds_x = [&](const ex& f) {
+        for (const ex& s : symbols_of(f))
+            if (is_solve_level(s)) return true;
+        return false;
+    };
+    if (GiNaC::is_a<GiNaC::symbol>(e)) {
+        if (is_solve_level(e)) {
+            if (info_.at(e).kind == SymbolKind::intermediate) return false;
+            coeffs[e] += factor;
+        } else {
+            rest += factor * e;
+        }
+        return true;
+    }
+    if (GiNaC::is_a<GiNaC::add>(e)) {
+        for (std::size_t i = 0; i < e.nops(); ++i)
+            if (!collect_linear(e.op(i), factor, coeffs, rest)) return false;
+        return true;
+    }
+    if (GiNaC::is_a<GiNaC::mul>(e)) {
+        std::size_t holder = e.nops();
+        for (std::size_t i = 0; i < e.nops(); ++i) {
+            if (!holds_x(e.op(i))) continue;
+            if (holder != e.nops()) return false;  // x in two factors
+            holder = i;
+        }
+        if (holder == e.nops()) {
+            rest += factor * e;
+            return true;
+        }
+        ex others = factor;
+        for (std::size_t i = 0; i < e.nops(); ++i)
+            if (i != holder) others *= e.op(i);
+        return collect_linear(e.op(holder), others, coeffs, rest);
+    }
+    if (holds_x(e)) return false;
+    rest += factor * e;
+    return true;
+}
+
+// e = sum_k c_k x_k + r over the solve-level symbols x_k of e, with c_k named when larger
+// than min_ops and r named `rest_name` (or by its definition when rest_name is empty and r is
+// large); e itself if it is not linear in the x_k
+ex SymbolTable::name_parts(const ex& e, std::size_t min_ops, const std::string& rest_name) {
+    auto name_rest = [&](const ex& r) {
+        if (r.is_zero() || is_atom(r)) return r;
+        if (!rest_name.empty()) return make_intermediate(r, unique_name(rest_name));
+        return count_ops(r) <= min_ops ? r : name_subexpression(r);
+    };
+    std::map<ex, ex, GiNaC::ex_is_less> coeffs;
+    ex rest = 0;
+    if (!collect_linear(e, 1, coeffs, rest)) return e;
+    ex out = 0;
+    for (const auto& [x, c] : coeffs) out += name_if_large(c, min_ops) * x;
+    return out + name_rest(rest);
+}
+
+std::string SymbolTable::unique_name(const std::string& name) const {
+    std::string n = name;
+    while (by_name_.count(n)) n += "'";
+    return n;
 }
 
 bool SymbolTable::depends_on(const ex& e, const ex& s) const {
@@ -344,7 +462,7 @@ GiNaC::exset symbols_of(const ex& e) {
 }
 
 namespace detail {
-void throw_internal(const char* condition, std::source_location where) {
+void throw_internal(const char* condition, SourceLocation where) {
     std::ostringstream os;
     os << "internal error: " << condition << " failed at " << where.file_name() << ":"
        << where.line() << " (" << where.function_name() << "); please report this";

@@ -12,8 +12,8 @@ namespace alembert {
 
 namespace {
 std::atomic<std::uint64_t> g_next_frame_id{1};
-// moves on whenever any frame is (re)oriented, invalidating every cached rotation matrix
-std::atomic<std::uint64_t> g_orientation_epoch{1};
+// moves on whenever anything kinematic changes, invalidating every cache of derived kinematics
+std::atomic<std::uint64_t> g_kinematics_epoch{1};
 
 std::string path_text(const std::vector<const Frame*>& path) {
     std::string s;
@@ -22,13 +22,16 @@ std::string path_text(const std::vector<const Frame*>& path) {
 }
 }  // namespace
 
+std::uint64_t kinematics_epoch() { return g_kinematics_epoch.load(); }
+void invalidate_kinematics() { ++g_kinematics_epoch; }
+
 Frame::Frame(SymbolTable& table, std::string name)
     : table_(&table), name_(std::move(name)), id_(g_next_frame_id++) {
     if (name_.empty()) throw ArgumentError("Frame: a frame needs a non-empty name");
 }
 
 // a frame's address may be reused: cached rotations keyed by it must not outlive it
-Frame::~Frame() { ++g_orientation_epoch; }
+Frame::~Frame() { invalidate_kinematics(); }
 
 Vector Frame::unit(Axis a) const {
     Col3 c;
@@ -56,7 +59,7 @@ void Frame::set_edge(const Frame& parent, Kind kind, const Mat3& R, const char* 
                              "' relative to a frame outside that chain");
     }
     parent_ = &parent;
-    ++g_orientation_epoch;
+    invalidate_kinematics();
     kind_ = kind;
     R_parent_ = R;
     w_set_.reset();
@@ -111,6 +114,7 @@ void Frame::set_ang_vel(const Frame& reference, const Vector& w) {
             (parent_ ? "" : "; orient '" + name_ + "' first"));
     w_set_ = w;
     w_edge_cache_.reset();
+    invalidate_kinematics();
 }
 
 void Frame::set_ang_acc(const Frame& reference, const Vector& alpha) {
@@ -120,6 +124,7 @@ void Frame::set_ang_acc(const Frame& reference, const Vector& alpha) {
                             (parent_ ? " ('" + parent_->name_ + "')" : std::string()) +
                             ", not in '" + reference.name_ + "'");
     alpha_set_ = alpha;
+    invalidate_kinematics();
 }
 
 Vector Frame::edge_ang_vel() const {
@@ -190,8 +195,24 @@ std::optional<TreePath> tree_path(std::vector<const Frame*> up_b, std::vector<co
 }
 }  // namespace
 
+void Frame::refresh_caches() const {
+    const std::uint64_t epoch = kinematics_epoch();
+    if (cache_epoch_ == epoch) return;
+    R_cache_.clear();
+    w_cache_.clear();
+    alpha_cache_.clear();
+    cache_epoch_ = epoch;
+}
+
+bool Frame::has_ancestor(const Frame& F) const {
+    for (const Frame* p = parent_; p; p = p->parent_)
+        if (p == &F) return true;
+    return false;
+}
+
 Vector Frame::ang_vel_in(const Frame& F) const {
     if (&F == this) return {};
+    if (has_ancestor(F)) return ang_vel_from_ancestor(F).value;
     auto p = tree_path(path_to_root(), F.path_to_root());
     if (!p)
         throw ModelError("Frame::ang_vel_in(): frames '" + name_ + "' and '" + F.name_ +
@@ -204,19 +225,32 @@ Vector Frame::ang_vel_in(const Frame& F) const {
     return w;
 }
 
+// ^F w^B = ^F w^P + ^P w^B for F an ancestor of B (Kane 1985, eq. 2.4.1), formed outward
+const FormedVector& Frame::ang_vel_from_ancestor(const Frame& F) const {
+    refresh_caches();
+    if (auto it = w_cache_.find(&F); it != w_cache_.end()) return it->second;
+    FormedVector w{edge_ang_vel(), false};
+    if (parent_ != &F) {
+        const FormedVector& wp = parent_->ang_vel_from_ancestor(F);
+        w = form_compact_if_long(wp.value + w.value, *this, wp.compact);
+    }
+    return w_cache_.emplace(&F, std::move(w)).first->second;
+}
+
 Vector Frame::ang_acc_in(const Frame& F) const {
     if (&F == this) return {};
     if (parent_ == &F && alpha_set_) return *alpha_set_;
-    return ang_vel_in(F).dt_in(*this);
+    refresh_caches();
+    if (auto it = alpha_cache_.find(&F); it != alpha_cache_.end()) return it->second;
+    Vector alpha = ang_vel_in(F).dt_in(*this);
+    if (has_ancestor(F) && ang_vel_from_ancestor(F).compact)
+        alpha = form_compact_if_long(alpha, *this, true).value;
+    return alpha_cache_.emplace(&F, std::move(alpha)).first->second;
 }
 
 Mat3 Frame::rotation_in(const Frame& F) const {
     if (&F == this) return Mat3::identity();
-    const std::uint64_t epoch = g_orientation_epoch.load();
-    if (R_cache_epoch_ != epoch) {
-        R_cache_.clear();
-        R_cache_epoch_ = epoch;
-    }
+    refresh_caches();
     if (auto it = R_cache_.find(&F); it != R_cache_.end()) return it->second;
     Mat3 R = compose_rotation_in(F);
     R_cache_.emplace(&F, R);
@@ -239,7 +273,7 @@ Mat3 Frame::compose_rotation_in(const Frame& F) const {
     // Products of rotations about different axes do not fold: long ones (spatial chains) grow
     // exponentially, so entries of a partial product beyond a size are named as intermediates
     // (shared by every product with the same prefix), keeping each product linear in length.
-    constexpr std::size_t kNameOps = 200;
+    constexpr std::size_t kProductNameOps = 200;
     Mat3 R = Mat3::identity();
     bool first = true;
     for (const Factor& f : factors) {
@@ -247,7 +281,7 @@ Mat3 Frame::compose_rotation_in(const Frame& F) const {
         R = first ? Rf : R * Rf;
         first = false;
         for (ex& e : R.m)
-            if (count_ops(e) > kNameOps) e = table_->name_subexpression(e);
+            if (count_ops(e) > kProductNameOps) e = table_->name_subexpression(e);
     }
     return R;
 }

@@ -63,7 +63,7 @@ Vector Vector::dt_in(const Frame& F) const {
 Vector Vector::diff(const ex& s) const {
     Vector r;
     for (const auto& [B, c] : parts_) {
-        const SymbolTable& st = B->symbols();
+        SymbolTable& st = B->symbols();
         r.add_part(B, c.map([&](const ex& e) { return st.diff(e, s); }));
     }
     return r;

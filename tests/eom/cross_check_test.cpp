@@ -58,7 +58,7 @@ TEST(CompareMethods, PlanarChainsAgree) {
 }
 
 TEST(CompareMethods, SpatialChainsAgree) {
-    for (int n = 1; n <= 4; ++n) {
+    for (int n = 1; n <= 8; ++n) {
         SampleModel m = make_n_link_pendulum(n, ChainKind::spatial);
         EXPECT_TRUE(all_agree(compare_methods(m.system, m.q, 2))) << n << " links";
     }

@@ -7,7 +7,8 @@
 
 #include "alembert/error.hpp"
 #include "alembert/mech/system.hpp"
-#include "support/expect.hpp"
+#include "alembert/mech/sample_models.hpp"
+#include "alembert/sym/evaluator.hpp"
 #include "support/expect.hpp"
 
 namespace alembert {
@@ -155,6 +156,61 @@ TEST(Point, SetVelocityReplacesTheDerivedOneAndItsDerivativeIsTheAcceleration) {
     ex a = s.add_constant("a");
     P.set_acc(N, a * N.y());
     EXPECT_TRUE(same(P.acc_in(N), a * N.y(), N));
+}
+
+TEST(Point, DerivedVelocitiesFollowChangesToTheModel) {
+    // velocities are formed once and kept; every change of the model must show in them
+    System sys;
+    Frame& N = sys.newtonian();
+    SymbolTable& s = sys.symbols();
+    TimeVariable x = s.add_variable("x"), th = s.add_variable("th"), u = s.add_variable("u");
+    Frame& B = sys.add_frame("B");
+    B.orient_axis(N, Axis::z, th);
+    Point& P = sys.add_point("P");
+    P.set_pos(sys.origin(), x * N.x());
+    EXPECT_TRUE(same(P.vel_in(N), x.d(1) * N.x(), N));
+    P.set_pos(sys.origin(), x * B.x());  // relocated
+    EXPECT_TRUE(same(P.vel_in(N), x.d(1) * B.x() + x * th.d(1) * B.y(), N));
+    EXPECT_TRUE(same(B.ang_vel_in(N), th.d(1) * N.z(), N));
+    B.orient_axis(N, Axis::x, th);  // re-oriented
+    EXPECT_TRUE(same(B.ang_vel_in(N), th.d(1) * N.x(), N));
+    EXPECT_TRUE(same(P.vel_in(N), x.d(1) * B.x(), N));
+    P.set_vel(N, P.vel_in(N) + u * N.z());  // set from the derived one
+    EXPECT_TRUE(same(P.vel_in(N), x.d(1) * B.x() + u * N.z(), N));
+    EXPECT_TRUE(same(P.acc_in(N), x.d(2) * B.x() + u.d(1) * N.z(), N));
+}
+
+TEST(Point, LongChainVelocitiesAreCompactAndEqualTheRateOfThePosition) {
+    // the tip of a 7-link chain with two-axis joints: its velocity is formed in one frame with
+    // named measures; it must equal d/dt of the position, by central differences along
+    // q(t) = q0 + t q'
+    SampleModel m = make_n_link_pendulum(7, ChainKind::spatial);
+    const Point& tip = m.links.back()->cm();
+    const Frame& N = m.system.newtonian();
+    SymbolTable& s = m.system.symbols();
+    Vector v = tip.vel_in(N);
+    ASSERT_EQ(v.components().size(), 1u);
+    for (int i = 0; i < 3; ++i) EXPECT_LT(count_ops(v.components()[0].second[i]), 60u);
+    std::vector<ex> inputs, outputs;
+    for (const TimeVariable& q : m.q) inputs.push_back(q.symbol());
+    for (const TimeVariable& q : m.q) inputs.push_back(q.d(1));
+    Col3 vN = v.components_in(N), rN = tip.pos_from(m.system.origin()).components_in(N);
+    for (int i = 0; i < 3; ++i) outputs.push_back(vN[i]);
+    for (int i = 0; i < 3; ++i) outputs.push_back(rN[i]);
+    CompiledExpressions f(s, inputs, outputs);
+    const std::size_t n = m.q.size();
+    std::vector<double> x(2 * n);
+    for (std::size_t k = 0; k < 2 * n; ++k)
+        x[k] = 0.3 + 0.17 * static_cast<double>(k % 5) - 0.4 * static_cast<double>(k % 2);
+    const double h = 1e-5;
+    auto at = [&](double t) {
+        std::vector<double> y = x;
+        for (std::size_t k = 0; k < n; ++k) y[k] += t * x[n + k];
+        return f.evaluate(y);
+    };
+    std::vector<double> here = at(0), ahead = at(h), behind = at(-h);
+    for (std::size_t i = 0; i < 3; ++i)
+        EXPECT_NEAR(here[i], (ahead[3 + i] - behind[3 + i]) / (2 * h), 1e-7) << "component " << i;
 }
 
 TEST(Point, OnePointTheoryGivesTheVelocityOfABeadOnASpinningRod) {

@@ -25,10 +25,14 @@ std::string on_terminal(F body) {
     ::dup2(saved, 2);
     ::close(saved);
     ::close(slave);
+    // the terminal may hand the text over in pieces: read until it is drained (with the slave
+    // side closed, read() ends with EIO once nothing is left)
+    std::string text;
     char buf[512];
-    const ssize_t n = ::read(master, buf, sizeof buf);
+    for (ssize_t n; (n = ::read(master, buf, sizeof buf)) > 0;)
+        text.append(buf, static_cast<std::size_t>(n));
     ::close(master);
-    return n > 0 ? std::string(buf, static_cast<std::size_t>(n)) : std::string();
+    return text;
 }
 
 TEST(ProgressIndicator, ShowsTimeAndPercentOnATerminalAndErasesItAtTheEnd) {

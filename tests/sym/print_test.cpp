@@ -52,3 +52,18 @@ TEST(Print, SimpleFormsReadAsWritten) {
     EXPECT_EQ(to_string(GiNaC::numeric(1, 3)), "1/3");
     EXPECT_EQ(to_string(GiNaC::ex(0.25)), "0.25");
 }
+
+TEST(Print, SignsOfSumsAndTrigArgumentsDoNotDependOnHowTheyWereBuilt) {
+    // GiNaC may hold a*(b - c) as -a*(c - b), cos(b - c) as cos(c - b), depending on its
+    // internal term order; each pair is one value and must print one way
+    SymbolTable s;
+    ex a = s.add_constant("a"), b = s.add_constant("b"), c = s.add_constant("c");
+    EXPECT_EQ(to_string(a * (b - c)), to_string(-a * (c - b)));
+    EXPECT_EQ(to_string(a * (b - c)), "a*(b - c)");
+    EXPECT_EQ(to_string(cos(c - b)), "cos(b - c)");
+    EXPECT_EQ(to_string(sin(c - b)), "-sin(b - c)");
+    EXPECT_EQ(to_string(a * sin(c - b)), to_string(-a * sin(b - c)));
+    EXPECT_EQ(to_string(pow(c - b, 2)), "(b - c)^2");
+    EXPECT_EQ(to_string(a * pow(c - b, 3)), to_string(-a * pow(b - c, 3)));
+    EXPECT_EQ(to_string(a + sin(c - b)), "a - sin(b - c)");
+}

@@ -5,6 +5,8 @@
 #include <cmath>
 
 #include "alembert/error.hpp"
+#include "alembert/sym/evaluator.hpp"
+#include "alembert/sym/simplify.hpp"
 #include "support/expect.hpp"
 
 using namespace alembert;
@@ -136,4 +138,72 @@ TEST(SymbolTable, EvaluateUsesConstantValuesAndIntermediates) {
     s.set_value(L, 3.0);
     EXPECT_NEAR(s.evaluate(L), 3.0, 0);
     EXPECT_THROW_MSG(s.set_value(q, 1.0), ArgumentError, "is not a constant");
+}
+
+TEST(SymbolTable, DerivativeOfAVelocityIntermediateKeepsTheAccelerationExplicit) {
+    // z = L q' cos(q) is a velocity measure; z' = L q'' cos(q) - L q'^2 sin(q) must show q''
+    // (equations are later solved for it) and hide only the rest
+    SymbolTable s;
+    TimeVariable q = s.add_variable("q", 2);
+    ex L = s.add_constant("L");
+    ex z = s.add_intermediate(L * q.d(1) * cos(q) + pow(q.d(1), 3) * sin(q) * sin(q));
+    ex dz = s.dt(z);
+    ex expected = L * q.d(2) * cos(q) - L * pow(q.d(1), 2) * sin(q) +
+                  3 * pow(q.d(1), 2) * q.d(2) * pow(sin(q), 2) +
+                  2 * pow(q.d(1), 4) * sin(q) * cos(q);
+    EXPECT_TRUE(same(s.expand_intermediates(dz), expected));
+    // linear in q'' with coefficients free of q'', every intermediate free of q''
+    const GiNaC::symbol& a = GiNaC::ex_to<GiNaC::symbol>(q.d(2));
+    EXPECT_TRUE(dz.diff(a, 2).is_zero());
+    EXPECT_TRUE(same(s.expand_intermediates(dz.diff(a)),
+                     L * cos(q) + 3 * pow(q.d(1), 2) * pow(sin(q), 2)));
+    for (const ex& zi : s.intermediates()) EXPECT_FALSE(s.depends_on(zi, q.d(2))) << s.name(zi);
+}
+
+TEST(SymbolTable, NameIfLargeNamesTheBulkAndKeepsUnknownsAndAccelerationsExplicit) {
+    SymbolTable s;
+    TimeVariable q = s.add_variable("q", 2);
+    ex T = s.add_unknown("T"), m = s.add_constant("m");
+    ex big = 0;
+    for (int k = 1; k <= 6; ++k) big += m * pow(sin(k * q), k) * q.d(1);
+    ex e = T + (big + m) * q.d(2) + big * q.d(1);
+    ex small = s.name_if_large(q.d(1) * m, 20);
+    EXPECT_TRUE(small.is_equal(q.d(1) * m));  // small: left as it is
+    ex named = s.name_if_large(e, 20);
+    EXPECT_TRUE(same(s.expand_intermediates(named), e));
+    EXPECT_LT(count_ops(named), 10u);
+    const GiNaC::symbol& a = GiNaC::ex_to<GiNaC::symbol>(q.d(2));
+    const GiNaC::symbol& t = GiNaC::ex_to<GiNaC::symbol>(T);
+    EXPECT_TRUE(named.diff(t).is_equal(1));
+    EXPECT_TRUE(same(s.expand_intermediates(named.diff(a)), big + m));
+    for (const ex& zi : s.intermediates()) {
+        EXPECT_FALSE(s.depends_on(zi, q.d(2))) << s.name(zi);
+        EXPECT_FALSE(s.depends_on(zi, T)) << s.name(zi);
+    }
+    // not linear in the unknown: left as it is
+    ex nonlinear = T * T * big;
+    EXPECT_TRUE(s.name_if_large(nonlinear, 20).is_equal(nonlinear));
+}
+
+TEST(SymbolTable, PartialDerivativeOfALongChainOfIntermediatesStaysSmall) {
+    // z_k = cos(q) z_{k-1} + sin(q) w_{k-1}, w_k = -sin(q) z_{k-1} + cos(q) w_{k-1}: a rotation
+    // applied 60 times. Written out, d z_60 / d q would have about 2^60 terms; through named
+    // partial derivatives it is a chain of small ones. z_60 = cos(60 q) z_0 + sin(60 q) w_0.
+    SymbolTable s;
+    TimeVariable q = s.add_variable("q", 2);
+    ex z = s.add_constant("a"), w = s.add_constant("b");
+    const ex z0 = z, w0 = w;
+    for (int k = 1; k <= 60; ++k) {
+        ex zk = s.add_intermediate(cos(q) * z + sin(q) * w);
+        ex wk = s.add_intermediate(-sin(q) * z + cos(q) * w);
+        z = zk, w = wk;
+    }
+    ex dz = s.diff(z, q);
+    EXPECT_LT(count_ops(dz), 20u);
+    CompiledExpressions f(s, {q, z0, w0}, {dz});
+    for (double qv : {0.1, -0.7, 2.3}) {
+        double expected = 60 * (-std::sin(60 * qv) * 0.8 + std::cos(60 * qv) * -0.3);
+        std::vector<double> x{qv, 0.8, -0.3};
+        EXPECT_NEAR(f.evaluate(x)[0], expected, 1e-9);
+    }
 }

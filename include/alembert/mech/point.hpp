@@ -23,6 +23,7 @@ class Body;
 class Point {
 public:
     Point(std::string name, const Body* owner = nullptr) : name_(std::move(name)), owner_(owner) {}
+    ~Point() { invalidate_kinematics(); }
     Point(const Point&) = delete;
     Point& operator=(const Point&) = delete;
 
@@ -56,10 +57,13 @@ public:
     void set_vel_one_point(const Frame& N, const Point& O, const Frame& B);
 
     /// ^F v^P: the velocity set for F, or ^F v^O + ^F d/dt r^{P/O} from the point O this one
-    /// is located from.
+    /// is located from, formed point by point outward; for long chains in compact form in
+    /// the last frame r^{P/O} is written in, usually the body P is fixed on (see
+    /// FormedVector).
     /// @throws alembert::ModelError if neither is available.
     Vector vel_in(const Frame& F) const;
-    /// ^F a^P: the acceleration set for F, or ^F d/dt ^F v^P.
+    /// ^F a^P: the acceleration set for F, or ^F d/dt ^F v^P, in compact form when ^F v^P
+    /// is.
     Vector acc_in(const Frame& F) const;
     /// True if a velocity in F is set directly.
     bool has_vel_set(const Frame& F) const { return v_.count(&F) != 0; }
@@ -72,8 +76,14 @@ private:
     const Body* owner_;
     const Point* parent_ = nullptr;
     Vector p_parent_;
+    const FormedVector& formed_vel_in(const Frame& F) const;
+    void refresh_caches() const;
     std::map<const Frame*, Vector> v_;
     std::map<const Frame*, Vector> a_;
+    // derived ^F v^P and ^F a^P by F, valid while the kinematics epoch stands still
+    mutable std::map<const Frame*, FormedVector> v_cache_;
+    mutable std::map<const Frame*, Vector> a_cache_;
+    mutable std::uint64_t cache_epoch_ = 0;
 };
 
 }  // namespace alembert

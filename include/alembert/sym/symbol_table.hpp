@@ -132,14 +132,31 @@ public:
     /// Total time derivative of `e` by the chain rule over the table.
     ///
     /// The derivative of an intermediate z is itself named as an intermediate z' when it is not
-    /// zero, so derivatives stay as compact as their definitions. This is the only reason dt is
-    /// not const.
+    /// zero, so derivatives stay as compact as their definitions; where z' holds solve-level
+    /// symbols (z a velocity measure, z' holding q''), z' = r + sum_k c_k x_k is kept as that
+    /// sum with r named z' and the coefficients named where large, so q'' stays explicit.
+    /// This is the only reason dt is not const.
     /// @throws alembert::ModelError if a derivative beyond the declared order is needed or `e`
     ///         holds an unknown (which has no time derivative).
     ex dt(const ex& e);
     /// Partial derivative de/ds with respect to a symbol of the table, differentiating through
-    /// intermediates (de/ds = del e/del s + sum_z del e/del z dz/ds).
-    ex diff(const ex& e, const ex& s) const;
+    /// intermediates (de/ds = del e/del s + sum_z del e/del z dz/ds). The partial derivative
+    /// dz/ds of each intermediate is taken once and, when it is not small, named as an
+    /// intermediate itself, so a chain of intermediates (velocities formed body by body)
+    /// differentiates in time linear in its length instead of exponential. This is the only
+    /// reason diff is not const.
+    ex diff(const ex& e, const ex& s);
+    /// `e` itself when it is small (at most `min_ops` operations); otherwise `e` with its bulk
+    /// named as intermediates (shared with earlier equal definitions). Symbols that equations
+    /// are later solved for stay explicit, never hidden inside an intermediate: the highest
+    /// declared derivatives of variables and specified quantities (q'' of a q declared to order
+    /// 2) and unknowns. An `e` linear in those, sum_k c_k x_k + r, becomes the same sum with
+    /// the coefficients c_k and the rest r named where large; an `e` not linear in them is
+    /// returned unchanged.
+    ex name_if_large(const ex& e, std::size_t min_ops);
+    /// True if `s` is a symbol equations are solved for: an unknown, the highest declared
+    /// derivative of a variable or specified quantity, or an intermediate that depends on one.
+    bool is_solve_level(const ex& s) const;
     /// True if `e` depends on `s`, directly or through intermediates.
     bool depends_on(const ex& e, const ex& s) const;
     /// `e` with every intermediate replaced by its definition (recursively).
@@ -170,6 +187,12 @@ private:
     ex make_intermediate(const ex& definition, const std::string& name);
     TimeVariable add_time_varying(const std::string& name, int order, SymbolKind kind);
     void check_new_name(const std::string& name) const;
+    std::string unique_name(const std::string& name) const;
+    ex diff_intermediate(const ex& z, const ex& s);
+    ex name_derivative(const ex& d, const std::string& name);
+    ex name_parts(const ex& e, std::size_t min_ops, const std::string& rest_name);
+    bool collect_linear(const ex& e, const ex& factor, std::map<ex, ex, GiNaC::ex_is_less>& coeffs,
+                        ex& rest) const;
     const Info& info(const ex& s, const char* caller) const;
     const ex& expanded_definition(const ex& z) const;
 
@@ -179,6 +202,7 @@ private:
     std::vector<ex> order_;          // every symbol in declaration order
     std::vector<ex> intermediates_;  // dependency order
     std::map<ex, ex, GiNaC::ex_is_less> z_dt_;
+    std::map<ex, std::map<ex, ex, GiNaC::ex_is_less>, GiNaC::ex_is_less> z_diff_;  // dz/ds
     std::map<ex, ex, GiNaC::ex_is_less> z_by_definition_;
     mutable std::map<ex, ex, GiNaC::ex_is_less> z_expanded_;
     std::size_t next_z_ = 1;

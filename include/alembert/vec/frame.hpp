@@ -9,10 +9,19 @@
 #include <vector>
 
 #include "alembert/sym/symbol_table.hpp"
+#include "alembert/vec/compact_form.hpp"
 #include "alembert/vec/rotation.hpp"
 #include "alembert/vec/vector.hpp"
 
 namespace alembert {
+
+/// A counter that moves on whenever anything kinematic of any model changes (a frame is
+/// oriented, given an angular velocity or destroyed; a point is located or given a velocity):
+/// caches of derived kinematics (rotation matrices, angular velocities, point velocities)
+/// are valid while it stands still.
+std::uint64_t kinematics_epoch();
+/// Moves the kinematics epoch on, invalidating every cache of derived kinematics.
+void invalidate_kinematics();
 
 /// A reference frame with right-handed, mutually perpendicular unit vectors Fx>, Fy>, Fz>.
 ///
@@ -74,10 +83,13 @@ public:
 
     // ---- kinematics (calc: derived, may be expensive, mutates nothing observable) --------
     /// ^F w^B, the angular velocity of this frame B in frame F: the sum of the edge angular
-    /// velocities on the tree path from F to B (addition theorem).
+    /// velocities on the tree path from F to B (addition theorem). When F is an ancestor of B
+    /// (F = N, usually) it is formed frame by frame outward, ^F w^B = ^F w^P + ^P w^B, and
+    /// put in compact form in B for long chains (see FormedVector).
     /// @throws alembert::ModelError if the frames are not connected.
     Vector ang_vel_in(const Frame& F) const;
-    /// ^F alpha^B = ^F d/dt ^F w^B (equal to ^B d/dt ^F w^B, the cheaper one used).
+    /// ^F alpha^B = ^F d/dt ^F w^B (equal to ^B d/dt ^F w^B, the cheaper one used), in
+    /// compact form when ^F w^B is.
     Vector ang_acc_in(const Frame& F) const;
     /// R_FB, the rotation matrix with [v]_F = R_FB [v]_B, from the tree path.
     /// @throws alembert::ModelError naming both frames if they are not connected.
@@ -110,10 +122,14 @@ private:
     std::optional<Vector> w_set_;
     std::optional<Vector> alpha_set_;
     mutable std::optional<Vector> w_edge_cache_;
-    // R_FB by F, valid while the orientation tree is unchanged (any set_edge of any frame
-    // moves the global epoch on and empties every cache at its next use)
+    const FormedVector& ang_vel_from_ancestor(const Frame& F) const;
+    bool has_ancestor(const Frame& F) const;
+    void refresh_caches() const;
+    // R_FB, ^F w^B and ^F alpha^B by F, valid while the kinematics epoch stands still
     mutable std::unordered_map<const Frame*, Mat3> R_cache_;
-    mutable std::uint64_t R_cache_epoch_ = 0;
+    mutable std::unordered_map<const Frame*, FormedVector> w_cache_;
+    mutable std::unordered_map<const Frame*, Vector> alpha_cache_;
+    mutable std::uint64_t cache_epoch_ = 0;
 };
 
 /// R_AB, the rotation matrix with [v]_A = R_AB [v]_B.

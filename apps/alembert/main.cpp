@@ -1,0 +1,231 @@
+// SPDX-License-Identifier: MIT
+// The `alembert` command-line tool: argument parsing, batch runs and the interactive session.
+// No mechanics here: scripts go to alembert::lang::Interpreter.
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <iostream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <CLI/CLI.hpp>
+
+#include "alembert/error.hpp"
+#include "alembert/lang/interpreter.hpp"
+#include "alembert/lang/lexer.hpp"
+
+#ifdef ALEMBERT_HAVE_LIBEDIT
+#include <editline/readline.h>
+#endif
+
+namespace {
+
+using alembert::lang::Interpreter;
+using alembert::lang::RunStatus;
+
+// exit statuses: 0 success, 1 script error, 2 usage error, 3 internal error
+constexpr int kOk = 0, kScriptError = 1, kUsageError = 2, kInternalError = 3;
+constexpr std::size_t kMaxScriptBytes = 64u << 20;
+
+int exit_status(RunStatus s) {
+    switch (s) {
+        case RunStatus::ok: return kOk;
+        case RunStatus::script_error: return kScriptError;
+        case RunStatus::internal_error: return kInternalError;
+    }
+    return kInternalError;
+}
+
+// reads FILE, or standard input for "-"; false (and a message) if it cannot
+bool read_script(const std::string& path, std::string& text) {
+    std::istream* in = &std::cin;
+    std::ifstream file;
+    if (path != "-") {
+        if (std::filesystem::is_directory(path)) {
+            std::cerr << "alembert: '" << path << "' is a directory, not a script\n";
+            return false;
+        }
+        file.open(path, std::ios::binary);
+        if (!file) {
+            std::cerr << "alembert: cannot open '" << path << "': " << std::strerror(errno) << "\n";
+            return false;
+        }
+        in = &file;
+    }
+    std::ostringstream buf;
+    char chunk[65536];
+    while (in->read(chunk, sizeof chunk) || in->gcount() > 0) {
+        buf.write(chunk, in->gcount());
+        if (static_cast<std::size_t>(buf.tellp()) > kMaxScriptBytes) {
+            std::cerr << "alembert: '" << path << "' is larger than 64 MiB\n";
+            return false;
+        }
+    }
+    text = buf.str();
+    return true;
+}
+
+std::string display_name(const std::string& path) { return path == "-" ? "<stdin>" : path; }
+
+// ---- subcommands ------------------------------------------------------------------------
+
+struct RunOptions {
+    std::string file;
+    bool quiet = false;
+};
+
+int run_script(const RunOptions& o) {
+    std::string text;
+    if (!read_script(o.file, text)) return kUsageError;
+    Interpreter interp(std::cout, std::cerr, !o.quiet);
+    return exit_status(interp.run(text, display_name(o.file)));
+}
+
+struct RoadmapOptions {
+    std::string file;
+    bool json = false;
+};
+
+int print_roadmap(const RoadmapOptions& o) {
+    std::string text;
+    if (!read_script(o.file, text)) return kUsageError;
+    std::ostringstream discard;  // the transcript is not wanted, only the table
+    Interpreter interp(discard, std::cerr, false);
+    RunStatus s = interp.run(text, display_name(o.file));
+    if (s != RunStatus::ok) return exit_status(s);
+    try {
+        std::cout << interp.roadmap_text(o.json);
+        if (o.json) std::cout << "\n";
+    } catch (const alembert::lang::ScriptError& e) {
+        std::cerr << display_name(o.file) << ": error: " << e.what() << "\n";
+        if (!e.hint().empty()) std::cerr << "hint: " << e.hint() << "\n";
+        return kScriptError;
+    }
+    return kOk;
+}
+
+// ---- the interactive session ------------------------------------------------------------
+
+// one line of input, with editing and history on a terminal; false at the end of input
+bool read_line(const char* prompt, bool terminal, std::string& line) {
+#ifdef ALEMBERT_HAVE_LIBEDIT
+    if (terminal) {
+        char* got = readline(prompt);
+        if (!got) return false;
+        line = got;
+        std::free(got);
+        if (!line.empty()) add_history(line.c_str());
+        return true;
+    }
+#else
+    if (terminal) std::cout << prompt << std::flush;
+#endif
+    (void)prompt;
+    return static_cast<bool>(std::getline(std::cin, line));
+}
+
+std::string history_path() {
+    const char* home = std::getenv("HOME");
+    return home ? std::string(home) + "/.alembert_history" : std::string();
+}
+
+int interactive() {
+    bool terminal = isatty(STDIN_FILENO) != 0;
+    std::string history = history_path();
+#ifdef ALEMBERT_HAVE_LIBEDIT
+    if (terminal && !history.empty()) {
+        stifle_history(1000);
+        read_history(history.c_str());
+    }
+#endif
+    if (terminal)
+        std::cout << "alembert " << ALEMBERT_VERSION
+                  << ": type statements (docs/language.md); Ctrl-D ends the session\n";
+    Interpreter interp(std::cout, std::cerr, false);
+    std::string buffer, line;
+    int line_number = 1, first_line = 1;
+    while (read_line(buffer.empty() ? "alembert> " : "      ... ", terminal, line)) {
+        if (buffer.empty()) first_line = line_number;
+        buffer += line + "\n";
+        ++line_number;
+        // a statement with an open bracket continues on the next line
+        if (alembert::lang::statement_is_open(buffer)) continue;
+        interp.run(buffer, "<stdin>", first_line);  // errors are reported; the session goes on
+        buffer.clear();
+    }
+    if (!buffer.empty()) interp.run(buffer, "<stdin>", first_line);
+#ifdef ALEMBERT_HAVE_LIBEDIT
+    if (terminal && !history.empty()) {
+        // written atomically: a temporary file renamed over the history
+        std::string tmp = history + ".tmp" + std::to_string(getpid());
+        if (write_history(tmp.c_str()) == 0) std::rename(tmp.c_str(), history.c_str());
+        else std::remove(tmp.c_str());
+    }
+#endif
+    if (terminal) std::cout << "\n";
+    return kOk;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    CLI::App app{"Alembert: equations of motion of multibody systems by MG road-maps, "
+                 "Kane's and Lagrange's methods.\nWithout a command, starts an interactive session.",
+                 "alembert"};
+    app.set_version_flag("--version", std::string("alembert ") + ALEMBERT_VERSION);
+    app.require_subcommand(0, 1);
+
+    RunOptions run_opts;
+    RoadmapOptions roadmap_opts;
+    // The subcommand table. Each row adds one subcommand and the function that carries it out;
+    // layers that come later add theirs here ("inverse": inverse dynamics over a motion,
+    // "codegen": generated code), so main() stays a dispatcher.
+    struct Subcommand {
+        const char* name;
+        const char* help;
+        std::function<void(CLI::App&)> options;
+        std::function<int()> action;
+    };
+    const std::vector<Subcommand> table{
+        {"run", "Run a script (.alb) and print its transcript",
+         [&](CLI::App& c) {
+             c.add_option("FILE", run_opts.file, "the script; '-' reads standard input")->required();
+             c.add_flag("-q,--quiet", run_opts.quiet, "print only results, not the statements");
+         },
+         [&] { return run_script(run_opts); }},
+        {"roadmap", "Print the MG road-map table of the model in a script",
+         [&](CLI::App& c) {
+             c.add_option("FILE", roadmap_opts.file, "the script; '-' reads standard input")->required();
+             c.add_flag("--json", roadmap_opts.json, "print the road-map as JSON");
+         },
+         [&] { return print_roadmap(roadmap_opts); }},
+    };
+    std::vector<CLI::App*> commands;
+    for (const Subcommand& s : table) {
+        CLI::App* c = app.add_subcommand(s.name, s.help);
+        s.options(*c);
+        commands.push_back(c);
+    }
+
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::ParseError& e) {
+        int code = app.exit(e);
+        return code == 0 ? kOk : kUsageError;
+    }
+    try {
+        for (std::size_t i = 0; i < table.size(); ++i)
+            if (commands[i]->parsed()) return table[i].action();
+        return interactive();
+    } catch (const std::exception& e) {
+        std::cerr << "alembert: internal error: " << e.what() << "\n";
+        return kInternalError;
+    }
+}

@@ -1,0 +1,66 @@
+// SPDX-License-Identifier: MIT
+// The interpreter of the Alembert language: runs statements against an alembert::System.
+#pragma once
+#include <memory>
+#include <optional>
+#include <ostream>
+#include <string>
+#include <string_view>
+
+#include "alembert/lang/diagnostic.hpp"
+
+namespace alembert {
+class System;
+}
+
+namespace alembert::lang {
+
+/// How a run ended, as the command-line tool maps it to its exit status.
+enum class RunStatus {
+    ok = 0,              ///< every statement ran
+    script_error = 1,    ///< a mistake in the script, or a library error it caused
+    internal_error = 3,  ///< a bug in Alembert (alembert::InternalError)
+};
+
+/// Runs Alembert scripts. Each statement is parsed and then carried out by one call of the
+/// library (docs/language.md gives the call of each statement); the interpreter keeps the
+/// model (an alembert::System) and the names the script gave, across runs, so an interactive
+/// session can feed it one statement at a time.
+///
+/// The interpreter never throws at the user: an error in a statement (lexical, syntactic, a
+/// dimension mismatch, or an alembert::Error from the library) becomes a Diagnostic printed to
+/// the error stream with the offending line and a caret, and run() stops there.
+class Interpreter {
+public:
+    /// Transcripts go to `out`, diagnostics to `err`. With `echo`, statements are echoed.
+    Interpreter(std::ostream& out, std::ostream& err, bool echo = true);
+    ~Interpreter();
+    Interpreter(const Interpreter&) = delete;
+    Interpreter& operator=(const Interpreter&) = delete;
+
+    /// Echo statements (batch transcripts) or not (--quiet, interactive sessions).
+    void set_echo(bool echo);
+
+    /// Runs the statements of `source` (named `file` in diagnostics, its first line numbered
+    /// `first_line`) until the end or the first error, which is printed to `err`.
+    RunStatus run(std::string_view source, const std::string& file, int first_line = 1);
+
+    /// The diagnostic of the last failed run, if the last run failed.
+    const std::optional<Diagnostic>& last_error() const;
+
+    /// The road-map table of the model: the last road-map the script formed, or else the
+    /// planner's road-map for the declared coordinates and unknowns (the accelerations of the
+    /// coordinates when no unknowns are declared); as JSON with `json`.
+    /// @throws ScriptError if there is no model or nothing to plan.
+    std::string roadmap_text(bool json);
+
+    /// The model built so far, or nullptr before `newtonian`.
+    const System* system() const;
+
+    struct Impl;
+
+private:
+    std::unique_ptr<Impl> impl_;
+};
+
+}  // namespace alembert::lang

@@ -1,0 +1,37 @@
+// SPDX-License-Identifier: MIT
+// The transcript printer: each statement echoed, then what it produced.
+#pragma once
+#include <ostream>
+#include <string>
+
+namespace alembert::lang {
+
+/// Writes a session's transcript, like a calculator's: each statement echoed after "> "
+/// (continuation lines indented to match), followed by the lines it produced. Quiet
+/// transcripts print only the produced lines.
+class Transcript {
+public:
+    /// A transcript on `out`; `echo` prints statements and comment lines as well as results.
+    Transcript(std::ostream& out, bool echo) : out_(&out), echo_(echo) {}
+
+    void set_echo(bool echo) { echo_ = echo; }
+    bool echo() const { return echo_; }
+
+    /// Echoes a statement's source text (nothing when not echoing).
+    void statement(const std::string& source);
+    /// Echoes a comment line (nothing when not echoing).
+    void comment(const std::string& text);
+    /// Prints what a statement produced; `text` may hold several lines.
+    void result(const std::string& text);
+    /// Flushes the stream.
+    void flush() { out_->flush(); }
+
+private:
+    std::ostream* out_;
+    bool echo_;
+};
+
+/// A number as transcripts print it: 6 significant digits, no trailing zeros, "-0" as "0".
+std::string format_number(double x);
+
+}  // namespace alembert::lang

@@ -1,0 +1,274 @@
+// SPDX-License-Identifier: MIT
+// Assignments, printed values, road-maps, Kane's and Lagrange's methods, solving, evaluating.
+#include <algorithm>
+
+#include "alembert/lang/parser.hpp"
+#include "interpreter_impl.hpp"
+
+namespace alembert::lang {
+
+namespace {
+
+using Kind = Value::Kind;
+
+Value array_value(std::vector<ex> a) {
+    Value v;
+    v.kind = Kind::array;
+    v.a = std::move(a);
+    return v;
+}
+
+}  // namespace
+
+void Interpreter::Impl::assign(const Statement& s) {
+    const Word& target = s.word("target");
+    bool want_vector = s.flag("vector");
+    std::string key = target.text + (want_vector ? ">" : "");
+    if (!want_vector) {
+        if (is_reserved(target.text))
+            throw ScriptError(target.location, "'" + target.text + "' is a word of the language and cannot be assigned",
+                              "choose another name");
+        auto it = names.find(target.text);
+        if (it != names.end() && it->second.kind != NameKind::value)
+            throw ScriptError(target.location, "'" + target.text + "' is already declared (line " +
+                                                   std::to_string(it->second.declared.line) +
+                                                   ") and cannot be assigned",
+                              "assign the value to a new name");
+        if (target.text.find('\'') != std::string::npos)
+            throw ScriptError(target.location, "'" + target.text + "': only declared variables have primes",
+                              "name the value without primes");
+    }
+    Value v = eval(*s.exprs.at("value"));
+    if (want_vector && v.kind == Kind::scalar && v.s.is_zero()) v.kind = Kind::vector, v.v = Vector();
+    if (want_vector && v.kind != Kind::vector)
+        throw ScriptError(s.exprs.at("value")->location,
+                          "'" + target.text + ">' names a vector, but this is not a vector",
+                          "drop the '>' to assign a scalar, or multiply by a unit vector");
+    if (!want_vector && v.kind == Kind::vector)
+        throw ScriptError(target.location, "a vector must be named with a trailing '>': " + target.text + ">",
+                          "write " + target.text + "> = ...");
+    if (v.kind == Kind::matrix)
+        throw ScriptError(s.exprs.at("value")->location, "matrices cannot be assigned; use them in 'rotate ... dcm'", "");
+    if (!want_vector) names[target.text] = {NameKind::value, target.location};
+    values[key] = v;
+    if (v.kind == Kind::array) print_equations(target.text, v.a);
+    else transcript.result(key + " = " + print(v));
+}
+
+void Interpreter::Impl::show(const Statement& s) {
+    const Expr& e = *s.exprs.at("value");
+    Value v = eval(e);
+    std::string name = monogram(e);
+    if (!name.empty()) {
+        // derived quantities print simplified under their monogram name, and keep that name
+        v = guard(e.location, [&] {
+            if (v.kind == Kind::scalar) v.s = alembert::simplify(v.s);
+            else if (v.kind == Kind::vector) v.v = v.v.simplify();
+            else if (v.kind == Kind::matrix) v.m = v.m.map([](const ex& x) { return alembert::simplify(x); });
+            return v;
+        });
+        if (v.kind != Kind::matrix) {
+            values[name] = v;
+            if (v.kind == Kind::scalar) names[name] = {NameKind::value, e.location};
+        }
+        transcript.result(name + " = " + print(v));
+        return;
+    }
+    if (e.kind == Expr::Kind::name && v.kind == Kind::array) return print_equations(e.text, v.a);
+    std::string label;
+    if (e.kind == Expr::Kind::name) label = e.text + " = ";
+    else if (e.kind == Expr::Kind::vector_name) label = e.text + "> = ";
+    else if (e.kind == Expr::Kind::index) label = e.text + "[" + to_string(eval(*e.args[0]).s) + "] = ";
+    else label = "= ";
+    transcript.result(label + print(v));
+}
+
+void Interpreter::Impl::roadmap(const Statement& s) {
+    System& m = model(s.location);
+    const Word& n = s.word("name");
+    if (!s.lists.count("unknowns")) {
+        auto it = roadmaps.find(n.text);
+        if (it == roadmaps.end() || it->second.rows.empty())
+            throw ScriptError(n.location, "there is no road-map '" + n.text + "'",
+                              "plan one with 'roadmap " + n.text + " for x, y' or add rows with 'row " +
+                                  n.text + " for x ...'");
+        last_roadmap = n.text;
+        transcript.result("MG road-map " + n.text + "\n" + format_roadmap_table(m, it->second.rows));
+        return;
+    }
+    if (names.count(n.text) && !roadmaps.count(n.text)) declare_name(n, NameKind::value);
+    std::vector<ex> unknowns;
+    for (const Word& w : s.lists.at("unknowns")) {
+        ex x = symbol(w, "an unknown, coordinate or acceleration");
+        if (std::find(unknowns.begin(), unknowns.end(), x) != unknowns.end())
+            throw ScriptError(w.location, "'" + w.text + "' is listed twice", "list each unknown once");
+        unknowns.push_back(x);
+    }
+    std::vector<TimeVariable> q = default_coordinates();
+    Analysis analysis = s.flag("statics") ? Analysis::statics : Analysis::dynamics;
+    std::vector<RoadmapRow> rows = guard(n.location, [&] { return plan_roadmap(m, q, unknowns, analysis); });
+    names[n.text] = {NameKind::value, n.location};
+    roadmaps[n.text].rows = rows;
+    values[n.text] = array_value(residuals_of(rows));
+    last_roadmap = n.text;
+    transcript.result("MG road-map " + n.text + " (" + (analysis == Analysis::statics ? "statics" : "dynamics") +
+                      ")\n" + guard(n.location, [&] { return format_roadmap_table(m, rows); }));
+}
+
+void Interpreter::Impl::row(const Statement& s) {
+    System& m = model(s.location);
+    const Word& n = s.word("name");
+    auto it = names.find(n.text);
+    if (it != names.end() && !roadmaps.count(n.text))
+        throw ScriptError(n.location, "'" + n.text + "' is already used and is not a road-map",
+                          "choose another name for the road-map");
+    RoadmapRow r;
+    r.variable = symbol(s.word("variable"), "an unknown, coordinate or acceleration");
+    r.analysis = s.flag("statics") ? Analysis::statics : Analysis::dynamics;
+    std::vector<ex> unknowns = m.symbols().symbols(SymbolKind::unknown);
+    if (std::find(unknowns.begin(), unknowns.end(), r.variable) == unknowns.end())
+        unknowns.push_back(r.variable);
+    const std::string& motion = s.word("motion").text;
+    if (motion == "constraint") {
+        r.constraint = s.word("constraint").text;
+        guard(s.word("constraint").location, [&] { form_constraint_row(m, r, unknowns); });
+    } else {
+        r.motion = motion == "rotate" ? Motion::rotate : Motion::translate;
+        r.system = body_set(s.word("system"));
+        if (r.motion == Motion::rotate) r.about = &point(s.word("about"));
+        r.direction = vector(*s.exprs.at("direction"), Dimension::none(), "a direction");
+        guard(s.word("motion").location, [&] { form_roadmap_row(m, r, unknowns); });
+    }
+    names[n.text] = {NameKind::value, n.location};
+    ScriptRoadmap& rm = roadmaps[n.text];
+    rm.rows.push_back(r);
+    values[n.text] = array_value(residuals_of(rm.rows));
+    last_roadmap = n.text;
+    transcript.result(n.text + "[" + std::to_string(rm.rows.size()) + "] for " + to_string(r.variable) +
+                      ": 0 = " + to_string(r.equation));
+}
+
+void Interpreter::Impl::methods(const Statement& s) {
+    System& m = model(s.location);
+    const Word& n = s.word("name");
+    auto it = names.find(n.text);
+    if (it != names.end() && it->second.kind != NameKind::value)
+        throw ScriptError(n.location, "'" + n.text + "' is already declared and cannot name equations",
+                          "choose another name");
+    std::vector<TimeVariable> q;
+    for (const Word& w : s.lists.at("coordinates")) q.push_back(variable(w));
+    std::vector<ex> eqs;
+    if (s.keyword == "lagrange") {
+        eqs = guard(n.location, [&] { return form_lagrange_equations(m, q); });
+    } else if (s.lists.size() == 1 && s.exprs.empty()) {
+        eqs = guard(n.location, [&] { return form_kane_equations(m, q); });
+    } else {
+        KaneOptions o;
+        o.coordinates = q;
+        auto symbols_of_list = [&](const char* role) {
+            std::vector<ex> out;
+            if (s.lists.count(role))
+                for (const Word& w : s.lists.at(role)) out.push_back(symbol(w, "a speed"));
+            return out;
+        };
+        o.speeds = symbols_of_list("speeds");
+        o.dependent_speeds = symbols_of_list("dependent");
+        o.auxiliary_speeds = symbols_of_list("auxiliary");
+        if (s.expr("kinematics")) o.kinematic_equations = array(*s.expr("kinematics"), "the kinematic equations");
+        if (s.expr("constraints")) o.motion_constraints = array(*s.expr("constraints"), "the motion constraints");
+        KaneEquations k = guard(n.location, [&] { return form_kane_equations(m, o); });
+        eqs = k.residuals;
+        eqs.insert(eqs.end(), k.auxiliary_equations.begin(), k.auxiliary_equations.end());
+    }
+    names[n.text] = {NameKind::value, n.location};
+    values[n.text] = array_value(eqs);
+    print_equations(n.text, eqs);
+}
+
+void Interpreter::Impl::solve(const Statement& s) {
+    System& m = model(s.location);
+    SymbolTable& table = m.symbols();
+    const Word& n = s.word("name");
+    auto it = values.find(n.text);
+    if (it == values.end() || it->second.kind != Kind::array) {
+        if (!names.count(n.text))
+            throw ScriptError(n.location, "there are no equations named '" + n.text + "'",
+                              "form them first with kane, lagrange or roadmap, or assign a list");
+        throw ScriptError(n.location, "'" + n.text + "' is not a list of equations", "");
+    }
+    const std::vector<ex>& eqs = it->second.a;
+    std::vector<ex> xs;
+    std::vector<std::string> printed;
+    for (const Word& w : s.lists.at("unknowns")) {
+        ex x = symbol(w, "a symbol to solve for");
+        if (std::find(xs.begin(), xs.end(), x) != xs.end())
+            throw ScriptError(w.location, "'" + w.text + "' is listed twice", "list each unknown once");
+        bool appears = std::any_of(eqs.begin(), eqs.end(), [&](const ex& e) { return table.depends_on(e, x); });
+        if (!appears)
+            throw ScriptError(w.location, "'" + w.text + "' does not appear in the equations " + n.text,
+                              "solve for symbols the equations hold (print them with: " + n.text + ")");
+        xs.push_back(x);
+        printed.push_back(w.text);
+    }
+    bool nonlinear = s.bindings.count("guess") != 0;
+    if (!nonlinear && xs.size() != eqs.size())
+        throw ScriptError(s.lists.at("unknowns").front().location,
+                          std::to_string(eqs.size()) + " equations cannot be solved for " +
+                              std::to_string(xs.size()) + " unknowns",
+                          "list as many unknowns as " + n.text + " has equations");
+    exmap at = s.bindings.count("at") ? bindings(s.bindings.at("at"), "in 'at'") : exmap{};
+    for (const auto& [x, v] : at)
+        if (std::find(xs.begin(), xs.end(), x) != xs.end())
+            throw ScriptError(s.bindings.at("at").front().name.location,
+                              "'" + table.name(x) + "' is solved for and cannot also be given a value",
+                              "remove it from 'at'");
+    std::string out;
+    if (nonlinear) {
+        exmap guess = bindings(s.bindings.at("guess"), "in 'guess'");
+        for (const auto& [x, v] : guess)
+            if (std::find(xs.begin(), xs.end(), x) == xs.end())
+                throw ScriptError(s.bindings.at("guess").front().name.location,
+                                  "'" + table.name(x) + "' is guessed but not solved for",
+                                  "guess only the unknowns after 'for'");
+        Equilibrium q = guard(n.location, [&] { return solve_equilibrium(table, eqs, xs, guess, at); },
+                              "try another guess, nearer the solution you want");
+        for (std::size_t i = 0; i < xs.size(); ++i) out += format_value(printed[i], q.values[i]) + "\n";
+    } else {
+        LinearSystem ls = guard(n.location, [&] { return form_linear_system(eqs, xs); });
+        if (s.bindings.count("at")) {
+            // every other symbol of the equations needs a value: a constant's, or one after 'at'
+            Location where = s.bindings.at("at").front().name.location;
+            for (const ex& e : eqs)
+                for (const ex& y : symbols_of(table.expand_intermediates(e))) {
+                    if (!table.owns(y) || at.count(y) || std::find(xs.begin(), xs.end(), y) != xs.end())
+                        continue;
+                    if (table.kind(y) == SymbolKind::constant && table.value(y)) continue;
+                    throw ScriptError(where, "'" + table.name(y) + "' has no value",
+                                      "give it one after 'at' (" + table.name(y) + " = ...), or solve for it");
+                }
+            Eigen::VectorXd x = guard(n.location, [&] { return solve_numeric(table, ls, at); },
+                                      "give every symbol a value after 'at'");
+            for (std::size_t i = 0; i < xs.size(); ++i)
+                out += format_value(printed[i], x(static_cast<Eigen::Index>(i))) + "\n";
+        } else {
+            std::vector<ex> x = guard(n.location, [&] { return solve_symbolic(ls); });
+            for (std::size_t i = 0; i < xs.size(); ++i) out += printed[i] + " = " + to_string(x[i]) + "\n";
+        }
+    }
+    transcript.result(out);
+}
+
+void Interpreter::Impl::evaluate_statement(const Statement& s) {
+    System& m = model(s.location);
+    const Expr& e = *s.exprs.at("value");
+    Value v = eval(e);
+    if (v.kind != Kind::scalar)
+        throw ScriptError(e.location, "evaluate takes a scalar", "take a measure with dot(v>, Nx>)");
+    exmap at = s.bindings.count("at") ? bindings(s.bindings.at("at"), "in 'at'") : exmap{};
+    double x = guard(e.location, [&] { return m.symbols().evaluate(v.s, at); },
+                     "give every symbol a value after 'at'");
+    std::string unit = si_unit(v.dim);
+    transcript.result("= " + format_number(x) + (unit.empty() ? "" : " " + unit));
+}
+
+}  // namespace alembert::lang

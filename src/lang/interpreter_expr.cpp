@@ -1,0 +1,492 @@
+// SPDX-License-Identifier: MIT
+// Expressions: values, dimension checks, functions and the monogram names of kinematic calls.
+#include <cmath>
+
+#include "alembert/lang/lexer.hpp"
+#include "interpreter_impl.hpp"
+
+namespace alembert::lang {
+
+namespace {
+
+using Kind = Value::Kind;
+
+const char* kind_name(Kind k) {
+    switch (k) {
+        case Kind::scalar: return "a scalar";
+        case Kind::vector: return "a vector";
+        case Kind::array: return "an array";
+        case Kind::matrix: return "a matrix";
+    }
+    return "a value";
+}
+
+Value scalar_value(const ex& s, Dimension d) {
+    Value v;
+    v.kind = Kind::scalar, v.s = s, v.dim = d;
+    return v;
+}
+
+Value vector_value(const Vector& x, Dimension d) {
+    Value v;
+    v.kind = Kind::vector, v.v = x, v.dim = d;
+    return v;
+}
+
+const Dimension kL = Dimension::length(), kM = Dimension::mass(), kT = Dimension::time();
+
+}  // namespace
+
+void Interpreter::Impl::check_dimension(const Dimension& got, const Dimension& expected,
+                                        const std::string& what, Location where) const {
+    if (got.conflicts(expected))
+        throw ScriptError(where, what + " must be " + describe(expected) + ", but this is " + describe(got),
+                          "check the units of the quantities in it");
+}
+
+ex Interpreter::Impl::scalar(const Expr& e, const Dimension& expected, const std::string& what) {
+    Value v = eval(e);
+    if (v.kind != Kind::scalar)
+        throw ScriptError(e.location, what + " must be a scalar, but this is " + kind_name(v.kind),
+                          v.kind == Kind::vector ? "take a measure with dot(v>, Nx>) or mag(v>)" : "");
+    check_dimension(v.dim, expected, what, e.location);
+    return v.s;
+}
+
+Vector Interpreter::Impl::vector(const Expr& e, const Dimension& expected, const std::string& what) {
+    Value v = eval(e);
+    if (v.kind == Kind::scalar && v.s.is_zero()) return Vector();
+    if (v.kind != Kind::vector)
+        throw ScriptError(e.location, what + " must be a vector, but this is " + kind_name(v.kind),
+                          "multiply by a unit vector such as Nx>, or write 0> for the zero vector");
+    check_dimension(v.dim, expected, what, e.location);
+    return v.v;
+}
+
+std::vector<ex> Interpreter::Impl::array(const Expr& e, const std::string& what) {
+    Value v = eval(e);
+    if (v.kind == Kind::scalar) return {v.s};
+    if (v.kind != Kind::array)
+        throw ScriptError(e.location, what + " must be a list of scalars [a, b, ...]", "");
+    return v.a;
+}
+
+Value Interpreter::Impl::eval_name(const Expr& e) {
+    const std::string& n = e.text;
+    auto it = values.find(n);
+    if (it != values.end()) return it->second;
+    if (n == "t") return scalar_value(model(e.location).symbols().time(), kT);
+    if (n == "pi") return scalar_value(GiNaC::Pi, Dimension::none());
+    if (sys && sys->symbols().contains(n)) return scalar_value(sys->symbols().symbol(n), symbol_dimension(n));
+    auto kn = names.find(n);
+    if (kn != names.end())
+        throw ScriptError(e.location, "'" + n + "' is not a number or an array, so it cannot stand here",
+                          "frames, bodies and points appear as arguments, e.g. vel(" + n + ", N)");
+    undeclared({n, e.location}, "a symbol or value");
+}
+
+Value Interpreter::Impl::eval_vector_name(const Expr& e) {
+    const std::string& n = e.text;
+    auto it = values.find(n + ">");
+    if (it != values.end()) return it->second;
+    if (n.size() >= 2) {
+        char axis = n.back();
+        std::string f = n.substr(0, n.size() - 1);
+        auto kn = names.find(f);
+        if ((axis == 'x' || axis == 'y' || axis == 'z') && kn != names.end() &&
+            (kn->second.kind == NameKind::frame || kn->second.kind == NameKind::body)) {
+            Frame& F = frame({f, e.location});
+            return vector_value(F.unit(axis == 'x' ? Axis::x : axis == 'y' ? Axis::y : Axis::z),
+                                Dimension::none());
+        }
+    }
+    throw ScriptError(e.location, "the vector '" + n + ">' is not defined",
+                      "unit vectors are a frame or body name followed by x, y or z (Nx>); other "
+                      "vectors must be assigned first (r> = ...)");
+}
+
+Value Interpreter::Impl::eval(const Expr& e) {
+    switch (e.kind) {
+        case Expr::Kind::number: {
+            bool whole = e.number_text.find_first_of(".eE") == std::string::npos;
+            ex n = whole ? ex(GiNaC::numeric(e.number_text.c_str())) : ex(GiNaC::numeric(e.number));
+            // zero has every dimension (0 N*m is 0 m); other numbers are dimensionless
+            return scalar_value(n, n.is_zero() ? Dimension::open() : Dimension::none());
+        }
+        case Expr::Kind::name: return eval_name(e);
+        case Expr::Kind::vector_name: return eval_vector_name(e);
+        case Expr::Kind::zero_vector: return vector_value(Vector(), Dimension::open());
+        case Expr::Kind::negate: {
+            Value v = eval(*e.args[0]);
+            if (v.kind == Kind::scalar) v.s = -v.s;
+            else if (v.kind == Kind::vector) v.v = -v.v;
+            else throw ScriptError(e.location, std::string("cannot negate ") + kind_name(v.kind), "");
+            return v;
+        }
+        case Expr::Kind::sum: {
+            Value acc;
+            for (std::size_t i = 0; i < e.args.size(); ++i) {
+                Value v = eval(*e.args[i]);
+                Location where = e.args[i]->location;
+                if (v.kind != Kind::scalar && v.kind != Kind::vector)
+                    throw ScriptError(where, std::string("cannot add ") + kind_name(v.kind),
+                                      "index an array, e.g. E[1]");
+                if (i == 0) {
+                    acc = v;
+                    if (e.inverted[0]) acc.s = -acc.s, acc.v = -acc.v;
+                    continue;
+                }
+                bool zero_s = v.kind == Kind::scalar && v.s.is_zero();
+                bool acc_zero = acc.kind == Kind::scalar && acc.s.is_zero();
+                if (v.kind != acc.kind && !zero_s && !acc_zero)
+                    throw ScriptError(where, std::string("cannot add ") + kind_name(v.kind) + " to " +
+                                                 kind_name(acc.kind),
+                                      v.kind == Kind::vector ? "take a measure with dot(v>, Nx>)"
+                                                             : "multiply the scalar by a unit vector");
+                if (v.dim.conflicts(acc.dim))
+                    throw ScriptError(where, "cannot add " + describe(v.dim) + " to " + describe(acc.dim),
+                                      "the terms of a sum must have the same dimension; check the units");
+                if (acc_zero && v.kind == Kind::vector) acc.kind = Kind::vector, acc.v = Vector();
+                if (!v.dim.known) acc.dim = acc.dim.known ? acc.dim : v.dim;
+                else if (!acc.dim.known) acc.dim = v.dim;
+                if (acc.kind == Kind::scalar) acc.s = e.inverted[i] ? acc.s - v.s : acc.s + v.s;
+                else if (!zero_s) acc.v = e.inverted[i] ? acc.v - v.v : acc.v + v.v;
+            }
+            return acc;
+        }
+        case Expr::Kind::product: {
+            Value acc;
+            for (std::size_t i = 0; i < e.args.size(); ++i) {
+                Value v = eval(*e.args[i]);
+                Location where = e.args[i]->location;
+                if (v.kind != Kind::scalar && v.kind != Kind::vector)
+                    throw ScriptError(where, std::string("cannot multiply ") + kind_name(v.kind),
+                                      "index an array, e.g. E[1]");
+                if (i == 0) {
+                    acc = v;
+                    continue;
+                }
+                if (e.inverted[i]) {
+                    if (v.kind == Kind::vector)
+                        throw ScriptError(where, "cannot divide by a vector", "divide by mag(v>) instead");
+                    if (v.s.is_zero()) throw ScriptError(where, "division by zero", "");
+                    acc.dim = acc.dim / v.dim;
+                    if (acc.kind == Kind::scalar) acc.s = acc.s / v.s;
+                    else acc.v = acc.v / v.s;
+                    continue;
+                }
+                if (v.kind == Kind::vector && acc.kind == Kind::vector)
+                    throw ScriptError(where, "cannot multiply two vectors with '*'",
+                                      "use dot(a>, b>) or cross(a>, b>)");
+                acc.dim = acc.dim * v.dim;
+                if (v.kind == Kind::vector) acc.v = acc.s * v.v, acc.kind = Kind::vector;
+                else if (acc.kind == Kind::vector) acc.v = v.s * acc.v;
+                else acc.s = acc.s * v.s;
+            }
+            return acc;
+        }
+        case Expr::Kind::power: {
+            Value base = eval(*e.args[0]);
+            Value p = eval(*e.args[1]);
+            if (base.kind != Kind::scalar || p.kind != Kind::scalar)
+                throw ScriptError(e.location, "powers take scalars", "for vectors use dot(v>, v>)");
+            check_dimension(p.dim, Dimension::none(), "an exponent", e.args[1]->location);
+            Dimension d = base.dim;
+            if (GiNaC::is_a<GiNaC::numeric>(p.s)) {
+                const auto& n = GiNaC::ex_to<GiNaC::numeric>(p.s);
+                if (n.is_integer()) {
+                    if (GiNaC::abs(n) > Limits::max_power)
+                        throw ScriptError(e.args[1]->location,
+                                          "the power " + to_string(p.s) + " is too large (the limit is 64)",
+                                          "");
+                    d = pow(base.dim, n.to_int());
+                } else if (base.dim.known && !base.dim.is_none()) {
+                    GiNaC::numeric twice = n * 2;
+                    bool even = twice.is_integer();
+                    for (int x : base.dim.exponent) even = even && (x % 2 == 0);
+                    if (!even)
+                        throw ScriptError(e.location, "this power of " + describe(base.dim) + " has no dimension",
+                                          "only whole powers, or square roots of squares, keep units");
+                    Dimension h;
+                    for (std::size_t i = 0; i < 3; ++i)
+                        h.exponent[i] = base.dim.exponent[i] / 2 * twice.to_int();
+                    d = h;
+                }
+            } else {
+                check_dimension(base.dim, Dimension::none(), "the base of a symbolic power",
+                                e.args[0]->location);
+            }
+            return scalar_value(GiNaC::pow(base.s, p.s), d);
+        }
+        case Expr::Kind::index: {
+            auto it = values.find(e.text);
+            if (it == values.end() || it->second.kind != Kind::array) {
+                if (it == values.end() && !names.count(e.text))
+                    throw ScriptError(e.location, "'" + e.text + "' is not defined",
+                                      "arrays come from kane, lagrange, roadmap or name = [a, b]");
+                throw ScriptError(e.location, "'" + e.text + "' is not an array", "");
+            }
+            Value i = eval(*e.args[0]);
+            if (i.kind != Kind::scalar || !GiNaC::is_a<GiNaC::numeric>(i.s) ||
+                !GiNaC::ex_to<GiNaC::numeric>(i.s).is_integer())
+                throw ScriptError(e.args[0]->location, "an index must be a whole number", "");
+            const auto& n = GiNaC::ex_to<GiNaC::numeric>(i.s);
+            const auto& a = it->second.a;
+            if (n < 1 || n > static_cast<long>(a.size()))
+                throw ScriptError(e.args[0]->location,
+                                  "index " + to_string(i.s) + " is out of range: " + e.text + " has " +
+                                      std::to_string(a.size()) + " elements",
+                                  "indices start at 1");
+            return scalar_value(a[static_cast<std::size_t>(n.to_int() - 1)], Dimension::open());
+        }
+        case Expr::Kind::list: {
+            Value out;
+            out.kind = Kind::array;
+            for (const ExprPtr& x : e.args) out.a.push_back(scalar(*x, Dimension::open(), "an element of a list"));
+            return out;
+        }
+        case Expr::Kind::matrix: {
+            if (e.rows != 3 || e.args.size() != 9)
+                throw ScriptError(e.location, "a matrix must be 3 by 3 (a direction-cosine matrix)",
+                                  "write [a, b, c; d, e, f; g, h, i]");
+            Value out;
+            out.kind = Kind::matrix;
+            out.dim = Dimension::none();
+            for (int i = 0; i < 9; ++i) {
+                Value x = eval(*e.args[static_cast<std::size_t>(i)]);
+                if (x.kind != Kind::scalar)
+                    throw ScriptError(e.args[static_cast<std::size_t>(i)]->location,
+                                      "matrix entries must be scalars", "");
+                if (x.dim.conflicts(Dimension::none())) out.dim = x.dim;
+                out.m(i / 3, i % 3) = x.s;
+            }
+            return out;
+        }
+        case Expr::Kind::call: return eval_call(e);
+    }
+    throw ScriptError(e.location, "internal: unknown expression", "");
+}
+
+std::string Interpreter::Impl::monogram(const Expr& c) const {
+    if (c.kind != Expr::Kind::call) return "";
+    auto arg = [&](std::size_t i) {
+        return i < c.args.size() && c.args[i]->kind == Expr::Kind::name ? monogram_part(c.args[i]->text) : "";
+    };
+    const std::string& f = c.text;
+    std::size_t n = c.args.size();
+    if (n == 2 && !arg(0).empty() && !arg(1).empty()) {
+        if (f == "angvel") return "w_" + arg(0) + "_" + arg(1) + ">";
+        if (f == "angacc") return "alf_" + arg(0) + "_" + arg(1) + ">";
+        if (f == "vel") return "v_" + arg(0) + "_" + arg(1) + ">";
+        if (f == "acc") return "a_" + arg(0) + "_" + arg(1) + ">";
+        if (f == "pos") return "p_" + arg(1) + "_" + arg(0) + ">";
+        if (f == "rotation") return "R_" + arg(0) + "_" + arg(1);
+        if (f == "angmomentum") return "H_" + arg(0) + "_" + arg(1) + ">";
+        if (f == "moment") return "M_" + arg(0) + "_" + arg(1) + ">";
+    }
+    if (n == 1 && !arg(0).empty()) {
+        if (f == "mass") return "m_" + arg(0);
+        if (f == "momentum") return "L_" + arg(0) + "_" + sys->newtonian().name() + ">";
+        if (f == "kinetic") return "KE_" + arg(0);
+        if (f == "resultant") return "F_" + arg(0) + ">";
+    }
+    if (n == 0 && f == "potential") return "PE";
+    return "";
+}
+
+Value Interpreter::Impl::eval_call(const Expr& e) {
+    const std::string& f = e.text;
+    const auto& a = e.args;
+    auto want = [&](std::size_t n, const std::string& form) {
+        if (a.size() != n)
+            throw ScriptError(e.location, f + "() takes " + std::to_string(n) + " argument" +
+                                              (n == 1 ? "" : "s") + ", not " + std::to_string(a.size()),
+                              "write " + form);
+    };
+    auto word = [&](std::size_t i, const std::string& what) -> Word {
+        if (a[i]->kind != Expr::Kind::name)
+            throw ScriptError(a[i]->location, f + "() needs " + what + " here, by name", "");
+        return {a[i]->text, a[i]->location};
+    };
+    auto guarded = [&](auto&& fn) { return guard(e.location, fn); };
+    static const char* math[] = {"sin", "cos", "tan", "asin", "acos", "atan", "sqrt", "exp", "log", "abs"};
+    for (const char* m : math) {
+        if (f != m) continue;
+        want(1, f + "(x)");
+        Value x = eval(*a[0]);
+        if (x.kind != Kind::scalar) throw ScriptError(a[0]->location, f + "() takes a scalar", "");
+        Dimension d = Dimension::none();
+        if (f == "abs") d = x.dim;
+        else if (f == "sqrt") {
+            d = x.dim;
+            if (x.dim.known) {
+                for (int k : x.dim.exponent)
+                    if (k % 2)
+                        throw ScriptError(a[0]->location, "the square root of " + describe(x.dim) + " has no dimension",
+                                          "check the units");
+                for (auto& k : d.exponent) k /= 2;
+            }
+        } else {
+            check_dimension(x.dim, Dimension::none(), "the argument of " + f + "()", a[0]->location);
+        }
+        ex r = guarded([&]() -> ex {
+            if (f == "sin") return GiNaC::sin(x.s);
+            if (f == "cos") return GiNaC::cos(x.s);
+            if (f == "tan") return GiNaC::tan(x.s);
+            if (f == "asin") return GiNaC::asin(x.s);
+            if (f == "acos") return GiNaC::acos(x.s);
+            if (f == "atan") return GiNaC::atan(x.s);
+            if (f == "sqrt") return GiNaC::sqrt(x.s);
+            if (f == "exp") return GiNaC::exp(x.s);
+            if (f == "log") return GiNaC::log(x.s);
+            return GiNaC::abs(x.s);
+        });
+        return scalar_value(r, d);
+    }
+    if (f == "dot" || f == "cross") {
+        want(2, f + "(a>, b>)");
+        Value x = eval(*a[0]), y = eval(*a[1]);
+        for (std::size_t i = 0; i < 2; ++i)
+            if ((i ? y : x).kind != Kind::vector)
+                throw ScriptError(a[i]->location, f + "() takes two vectors", "");
+        if (f == "dot") return scalar_value(guarded([&] { return alembert::dot(x.v, y.v); }), x.dim * y.dim);
+        return vector_value(guarded([&] { return alembert::cross(x.v, y.v); }), x.dim * y.dim);
+    }
+    if (f == "express") {
+        want(2, "express(v>, F)");
+        Value x = eval(*a[0]);
+        if (x.kind != Kind::vector) throw ScriptError(a[0]->location, "express() takes a vector", "");
+        Frame& F = frame(word(1, "a frame"));
+        return vector_value(guarded([&] { return x.v.express_in(F); }), x.dim);
+    }
+    if (f == "dt") {
+        if (a.size() != 1 && a.size() != 2)
+            throw ScriptError(e.location, "dt() takes 1 or 2 arguments, not " + std::to_string(a.size()),
+                              "write dt(s) for a scalar or dt(v>, N) for a vector in frame N");
+        Value x = eval(*a[0]);
+        if (a.size() == 2) {
+            if (x.kind != Kind::vector) throw ScriptError(a[0]->location, "dt(v>, N) takes a vector", "");
+            Frame& F = frame(word(1, "a frame"));
+            return vector_value(guarded([&] { return x.v.dt_in(F); }), x.dim / kT);
+        }
+        if (x.kind != Kind::scalar)
+            throw ScriptError(a[0]->location, "a vector's time derivative depends on the frame",
+                              "write dt(v>, N)");
+        SymbolTable& table = model(e.location).symbols();
+        return scalar_value(guarded([&] { return table.dt(x.s); }), x.dim / kT);
+    }
+    if (f == "mag" || f == "unit") {
+        want(1, f + "(v>)");
+        Value x = eval(*a[0]);
+        if (x.kind != Kind::vector) throw ScriptError(a[0]->location, f + "() takes a vector", "");
+        if (f == "mag") return scalar_value(guarded([&] { return x.v.magnitude(); }), x.dim);
+        return vector_value(guarded([&] { return x.v.unit(); }), Dimension::none());
+    }
+    if (f == "simplify" || f == "expand") {
+        want(1, f + "(x)");
+        Value x = eval(*a[0]);
+        auto op = [&](const ex& s) { return f == "simplify" ? alembert::simplify(s) : GiNaC::expand(s); };
+        guarded([&] {
+            if (x.kind == Kind::scalar) x.s = op(x.s);
+            else if (x.kind == Kind::vector) x.v = x.v.map(op);
+            else if (x.kind == Kind::array)
+                for (ex& s : x.a) s = op(s);
+            else x.m = x.m.map(op);
+            return 0;
+        });
+        return x;
+    }
+    if (f == "angvel" || f == "angacc") {
+        want(2, f + "(B, N)");
+        Frame& B = frame(word(0, "a frame or body"));
+        Frame& N = frame(word(1, "a frame"));
+        bool acc = f == "angacc";
+        return vector_value(guarded([&] { return acc ? B.ang_acc_in(N) : B.ang_vel_in(N); }),
+                            acc ? pow(kT, -2) : pow(kT, -1));
+    }
+    if (f == "vel" || f == "acc") {
+        want(2, f + "(P, N)");
+        Point& P = point(word(0, "a point"));
+        Frame& N = frame(word(1, "a frame"));
+        bool acc = f == "acc";
+        return vector_value(guarded([&] { return acc ? P.acc_in(N) : P.vel_in(N); }),
+                            acc ? kL / pow(kT, 2) : kL / kT);
+    }
+    if (f == "pos") {
+        want(2, "pos(P, O)");
+        Point& P = point(word(0, "a point"));
+        Point& O = point(word(1, "a point"));
+        return vector_value(guarded([&] { return P.pos_from(O); }), kL);
+    }
+    if (f == "rotation") {
+        want(2, "rotation(A, B)");
+        Frame& A = frame(word(0, "a frame"));
+        Frame& B = frame(word(1, "a frame"));
+        Value v;
+        v.kind = Kind::matrix;
+        v.m = guarded([&] { return rotation_matrix(A, B); });
+        v.dim = Dimension::none();
+        return v;
+    }
+    if (f == "potential") {
+        want(0, "potential()");
+        System& m = model(e.location);
+        return scalar_value(guarded([&] { return m.calc_potential_energy(); }), kM * kL * kL / kT / kT);
+    }
+    if (f == "mass" || f == "momentum" || f == "kinetic" || f == "resultant") {
+        want(1, f + "(S)");
+        BodySet S = body_set(word(0, "a system or body"));
+        System& m = model(e.location);
+        if (f == "mass") return scalar_value(guarded([&] { return m.calc_mass(S); }), kM);
+        if (f == "kinetic")
+            return scalar_value(guarded([&] { return m.calc_kinetic_energy(S); }), kM * kL * kL / kT / kT);
+        if (f == "momentum")
+            return vector_value(guarded([&] { return m.calc_linear_momentum(S); }), kM * kL / kT);
+        return vector_value(guarded([&] { return m.calc_resultant(S, m.origin()).force; }),
+                            Dimension::force());
+    }
+    if (f == "angmomentum" || f == "moment") {
+        want(2, f + "(S, O)");
+        BodySet S = body_set(word(0, "a system or body"));
+        Point& O = point(word(1, "a point"));
+        System& m = model(e.location);
+        if (f == "moment")
+            return vector_value(guarded([&] { return m.calc_resultant(S, O).moment; }), Dimension::torque());
+        return vector_value(guarded([&] { return m.calc_angular_momentum(S, O); }), kM * kL * kL / kT);
+    }
+    throw ScriptError(e.location, "unknown function '" + f + "'",
+                      "functions: sin cos tan asin acos atan sqrt exp log abs dot cross express dt "
+                      "mag unit simplify expand angvel angacc vel acc pos rotation mass momentum "
+                      "angmomentum kinetic potential resultant moment");
+}
+
+// ---- output ----------------------------------------------------------------------------
+
+std::string Interpreter::Impl::print(const Value& v) const {
+    switch (v.kind) {
+        case Kind::scalar: return to_string(v.s);
+        case Kind::vector: return v.v.to_string();
+        case Kind::array: {
+            std::string s = "[";
+            for (std::size_t i = 0; i < v.a.size(); ++i) s += (i ? ", " : "") + to_string(v.a[i]);
+            return s + "]";
+        }
+        case Kind::matrix: {
+            std::string s = "[";
+            for (int i = 0; i < 3; ++i)
+                for (int j = 0; j < 3; ++j)
+                    s += to_string(v.m(i, j)) + (j < 2 ? ", " : i < 2 ? "; " : "]");
+            return s;
+        }
+    }
+    return "";
+}
+
+void Interpreter::Impl::print_equations(const std::string& name, const std::vector<ex>& eqs) {
+    std::string out;
+    for (std::size_t i = 0; i < eqs.size(); ++i)
+        out += name + "[" + std::to_string(i + 1) + "]: 0 = " + to_string(eqs[i]) + "\n";
+    transcript.result(out);
+}
+
+}  // namespace alembert::lang

@@ -1,0 +1,144 @@
+// SPDX-License-Identifier: MIT
+// The interpreter's state and the helpers its statement files share (private to src/lang).
+#pragma once
+#include <functional>
+#include <map>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "alembert/alembert.hpp"
+#include "alembert/lang/ast.hpp"
+#include "alembert/lang/interpreter.hpp"
+#include "alembert/lang/transcript.hpp"
+#include "alembert/lang/units.hpp"
+
+namespace alembert::lang {
+
+/// A value of an expression: a scalar, a vector, an array of scalars or a 3x3 matrix, with
+/// the dimension of its measures.
+struct Value {
+    enum class Kind { scalar, vector, array, matrix };
+    Kind kind = Kind::scalar;
+    ex s{};
+    Vector v{};
+    std::vector<ex> a{};
+    Mat3 m{};
+    Dimension dim = Dimension::open();
+};
+
+/// What a name of the script stands for.
+enum class NameKind { frame, body, particle, point, system, symbol, value };
+
+struct NameInfo {
+    NameKind kind = NameKind::value;
+    Location declared{};
+};
+
+/// The dimension and display unit of a declared symbol (by base name).
+struct SymbolUnits {
+    Dimension dim = Dimension::open();
+    std::optional<Unit> display{};
+};
+
+/// A road-map of the script: its rows and the unknowns they were formed for.
+struct ScriptRoadmap {
+    std::vector<RoadmapRow> rows{};
+};
+
+struct Interpreter::Impl {
+    Impl(std::ostream& out, std::ostream& err, bool echo) : transcript(out, echo), err(&err) {}
+
+    Transcript transcript;
+    std::ostream* err;
+    std::optional<Diagnostic> last_error{};
+
+    std::unique_ptr<System> sys{};
+    std::map<std::string, NameInfo> names{};
+    std::map<std::string, SymbolUnits> units{};
+    std::map<std::string, Value> values{};  // scalars and arrays by name, vectors by "name>"
+    std::map<std::string, BodySet> systems{};
+    std::map<std::string, ScriptRoadmap> roadmaps{};
+    std::vector<TimeVariable> coordinates{};
+    bool coordinates_given = false;
+    std::string last_roadmap{};
+
+    // ---- statements (interpreter.cpp, interpreter_equations.cpp) ---------------------------
+    void execute(const Statement& s);
+    void declare_objects(const Statement& s);
+    void declare_symbols(const Statement& s);
+    void orient(const Statement& s);
+    void set_motion(const Statement& s);
+    void set_mass_or_inertia(const Statement& s);
+    void add_load(const Statement& s);
+    void add_constraint(const Statement& s);
+    void assign(const Statement& s);
+    void show(const Statement& s);
+    void roadmap(const Statement& s);
+    void row(const Statement& s);
+    void methods(const Statement& s);
+    void solve(const Statement& s);
+    void evaluate_statement(const Statement& s);
+
+    // ---- names and objects -----------------------------------------------------------------
+    System& model(Location where);
+    void declare_name(const Word& w, NameKind kind);
+    [[noreturn]] void undeclared(const Word& w, const std::string& wanted) const;
+    Frame& frame(const Word& w);
+    Point& point(const Word& w);
+    Body& body(const Word& w);
+    RigidBody& rigid_body(const Word& w);
+    BodySet body_set(const Word& w);
+    ex symbol(const Word& w, const std::string& wanted);
+    TimeVariable variable(const Word& w);
+    std::vector<TimeVariable> default_coordinates();
+    Dimension symbol_dimension(const std::string& printed) const;
+    std::optional<Unit> display_unit(const std::string& printed) const;
+    std::string format_value(const std::string& printed, double si) const;
+    exmap bindings(const std::vector<Binding>& list, const std::string& purpose);
+    double number_of(const Quantity& q, const Dimension& expected, const std::string& what,
+                     Location where, Dimension* got = nullptr);
+
+    // ---- expressions (interpreter_expr.cpp) ------------------------------------------------
+    Value eval(const Expr& e);
+    Value eval_call(const Expr& e);
+    Value eval_name(const Expr& e);
+    Value eval_vector_name(const Expr& e);
+    ex scalar(const Expr& e, const Dimension& expected, const std::string& what);
+    Vector vector(const Expr& e, const Dimension& expected, const std::string& what);
+    std::vector<ex> array(const Expr& e, const std::string& what);
+    void check_dimension(const Dimension& got, const Dimension& expected, const std::string& what,
+                         Location where) const;
+    /// The monogram name of a kinematic call such as vel(Bcm, N) (v_Bcm_N>), or "".
+    std::string monogram(const Expr& call) const;
+
+    // ---- output ----------------------------------------------------------------------------
+    std::string print(const Value& v) const;
+    void print_equations(const std::string& name, const std::vector<ex>& eqs);
+
+    /// Runs `f`, turning library and GiNaC exceptions into a ScriptError at `where`.
+    template <class F>
+    auto guard(Location where, F&& f, const std::string& hint = "") -> decltype(f());
+};
+
+/// A name as monograms print it: A_o -> Ao.
+std::string monogram_part(const std::string& name);
+
+template <class F>
+auto Interpreter::Impl::guard(Location where, F&& f, const std::string& hint) -> decltype(f()) {
+    try {
+        return f();
+    } catch (const ScriptError&) {
+        throw;
+    } catch (const InternalError&) {
+        throw;
+    } catch (const Error& e) {
+        throw ScriptError(where, e.what(), hint);
+    } catch (const std::exception& e) {
+        throw ScriptError(where, std::string("the computation failed: ") + e.what(),
+                          "check for a division by zero or a singular configuration at this point");
+    }
+}
+
+}  // namespace alembert::lang
