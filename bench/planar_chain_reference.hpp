@@ -24,8 +24,8 @@ class PlanarChainReference {
 public:
     static constexpr double kLength = 1.0;
     static constexpr double kMass = 1.0;
-    static constexpr double kHalf = 0.5;               // joint to mass centre
-    static constexpr double kInertia = 1.0 / 12.0;     // about the mass centre
+    static constexpr double kHalf = 0.5;            // joint to mass centre
+    static constexpr double kInertia = 1.0 / 12.0;  // about the mass centre
     static constexpr double kGravity = 9.81;
 
     explicit PlanarChainReference(int n) : n_(n), link_(static_cast<std::size_t>(n)) {}
@@ -121,12 +121,12 @@ public:
 
 private:
     struct Link {
-        double ex, ey;                      // direction of the link
-        double alpha, acx, acy;             // inverse dynamics: accelerations
-        double kx, ky;                      // forward: joint bias acceleration
+        double ex, ey;                        // direction of the link
+        double alpha, acx, acy;               // inverse dynamics: accelerations
+        double kx, ky;                        // forward: joint bias acceleration
         double i00, i01, i02, i11, i12, i22;  // forward: articulated inertia at the joint
-        double p0, p1, p2;                  // forward: articulated bias force at the joint
-        double u;                           // forward: tau - S^T p
+        double p0, p1, p2;                    // forward: articulated bias force at the joint
+        double u;                             // forward: tau - S^T p
     };
 
     int n_;

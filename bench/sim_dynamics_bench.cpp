@@ -7,12 +7,21 @@
 #include <alembert/mech/sample_models.hpp>
 #include <alembert/sim/forward_dynamics.hpp>
 #include <alembert/sim/inverse_dynamics.hpp>
-
+#include <algorithm>
+#include <cmath>
 #include <map>
 #include <memory>
 #include <vector>
 
 #include "planar_chain_reference.hpp"
+
+#ifdef ALEMBERT_BENCH_MUJOCO
+#include <mujoco/mujoco.h>
+
+#include <cstdio>
+#include <stdexcept>
+#include <string>
+#endif
 
 namespace {
 
@@ -25,10 +34,10 @@ using namespace alembert;
 struct Fixture {
     explicit Fixture(int n)
         : model(make_planar_chain(n)),
-          id(compile_inverse_dynamics(model.system.symbols(),
-                                      form_linear_system(form_kane_equations(model.system, model.q),
-                                                         model.unknowns),
-                                      model.q, "planar_chain")),
+          id(compile_inverse_dynamics(
+              model.system.symbols(),
+              form_linear_system(form_kane_equations(model.system, model.q), model.unknowns),
+              model.q, "planar_chain")),
           fd(compile_forward_dynamics(model.system, model.q, model.unknowns, "planar_chain")),
           reference(n) {
         const auto un = static_cast<std::size_t>(n);
@@ -83,8 +92,8 @@ void BM_InverseTapeRoadmap(benchmark::State& state) {
     static std::map<int, std::unique_ptr<InverseDynamics>> cache;
     auto& id = cache[static_cast<int>(state.range(0))];
     if (!id)
-        id = std::make_unique<InverseDynamics>(compile_inverse_dynamics(
-            f.model.system, f.model.q, f.model.unknowns, "planar_chain"));
+        id = std::make_unique<InverseDynamics>(
+            compile_inverse_dynamics(f.model.system, f.model.q, f.model.unknowns, "planar_chain"));
     for (auto _ : state) {
         id->calc_loads(0.0, f.q.data(), f.qd.data(), f.qdd.data(), f.out.data());
         benchmark::DoNotOptimize(f.out.data());
@@ -127,6 +136,59 @@ void BM_ForwardTapeEvaluateOnly(benchmark::State& state) {
     state.counters["links"] = static_cast<double>(state.range(0));
     state.counters["ops"] = static_cast<double>(f.fd.function().operation_count);
 }
+
+#ifdef ALEMBERT_BENCH_MUJOCO
+// MuJoCo's mj_inverse on the same chain (built only where Debian's libmujoco-dev is installed):
+// nested bodies with hinges about z, inertial frames at mid-length (the rod's own axis gets a
+// negligible inertia, which planar motion never uses), gravity along -y, no geoms, no damping
+struct MujocoChain {
+    explicit MujocoChain(int n) {
+        std::string xml = "<mujoco><option gravity=\"0 -9.81 0\"/><worldbody>";
+        for (int i = 0; i < n; ++i)
+            xml += std::string("<body pos=\"0 ") + (i == 0 ? "0" : "1") +
+                   " 0\"><joint type=\"hinge\" axis=\"0 0 1\"/><inertial pos=\"0 0.5 0\" "
+                   "mass=\"1\" diaginertia=\"0.0833333333333333 1e-9 0.0833333333333333\"/>";
+        for (int i = 0; i < n; ++i) xml += "</body>";
+        xml += "</worldbody></mujoco>";
+        const std::string path = "/tmp/alembert_bench_chain_" + std::to_string(n) + ".xml";
+        std::FILE* f = std::fopen(path.c_str(), "w");
+        std::fputs(xml.c_str(), f);
+        std::fclose(f);
+        char error[1000] = "";
+        model = mj_loadXML(path.c_str(), nullptr, error, sizeof error);
+        if (!model) throw std::runtime_error(std::string("MuJoCo: ") + error);
+        data = mj_makeData(model);
+    }
+    ~MujocoChain() {
+        mj_deleteData(data);
+        mj_deleteModel(model);
+    }
+    mjModel* model = nullptr;
+    mjData* data = nullptr;
+};
+
+void BM_InverseMujoco(benchmark::State& state) {
+    Fixture& f = fixture(state);
+    static std::map<int, std::unique_ptr<MujocoChain>> cache;
+    auto& mj = cache[static_cast<int>(state.range(0))];
+    if (!mj) mj = std::make_unique<MujocoChain>(static_cast<int>(state.range(0)));
+    for (std::size_t i = 0; i < f.q.size(); ++i)
+        mj->data->qpos[i] = f.q[i], mj->data->qvel[i] = f.qd[i], mj->data->qacc[i] = f.qdd[i];
+    for (auto _ : state) {
+        mj_inverse(mj->model, mj->data);
+        benchmark::DoNotOptimize(mj->data->qfrc_inverse);
+        benchmark::ClobberMemory();
+    }
+    // the largest difference from the hand-written recursion, so the models are known equal
+    f.reference.inverse_dynamics(f.q.data(), f.qd.data(), f.qdd.data(), f.out.data());
+    double diff = 0;
+    for (std::size_t i = 0; i < f.q.size(); ++i)
+        diff = std::max(diff, std::abs(mj->data->qfrc_inverse[i] - f.out[i]));
+    state.counters["links"] = static_cast<double>(state.range(0));
+    state.counters["max_diff"] = diff;
+}
+BENCHMARK(BM_InverseMujoco)->Arg(3)->Arg(7)->Arg(15)->Arg(30);
+#endif
 
 }  // namespace
 

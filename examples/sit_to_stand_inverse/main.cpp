@@ -20,8 +20,8 @@ int main(int argc, char** argv) try {
 
     // the model (Winter's segment data) and its inverse dynamics, one road-map row per torque
     SampleModel model = make_triple_pendulum();
-    InverseDynamics id = compile_inverse_dynamics(model.system, model.q, model.unknowns,
-                                                  "sit_to_stand");
+    InverseDynamics id =
+        compile_inverse_dynamics(model.system, model.q, model.unknowns, "sit_to_stand");
     std::printf("inverse dynamics of 'sit_to_stand': %zu torques, %zu operations per sample%s\n",
                 id.load_count(), id.function().operation_count,
                 id.solved() ? " (solved form)" : "");

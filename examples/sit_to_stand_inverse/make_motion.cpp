@@ -22,7 +22,8 @@ int main(int argc, char** argv) try {
         double q[3], qd[3], qdd[3];
         motion.calc_state(t, q, qd, qdd);
         table.columns[0].push_back(t);
-        for (int j = 0; j < 3; ++j) table.columns[static_cast<std::size_t>(j) + 1].push_back(q[j] / deg.factor);
+        for (int j = 0; j < 3; ++j)
+            table.columns[static_cast<std::size_t>(j) + 1].push_back(q[j] / deg.factor);
     }
     write_csv(table, path);
     std::printf("wrote %zu samples at 100 Hz to %s\n", table.row_count(), path);

@@ -2,10 +2,9 @@
 // The sit-to-stand motion as formulas of time: minimum jerk from seat-off to standing.
 #pragma once
 
+#include <alembert/alembert.hpp>
 #include <numbers>
 #include <vector>
-
-#include <alembert/alembert.hpp>
 
 /// qA, qB, qC (rad) of rising from a chair: minimum-jerk transitions (Flash & Hogan 1985)
 /// from seat-off (-25, 105, -130) deg to standing (-5, 10, -10) deg; knee and hip move over

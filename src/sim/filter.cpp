@@ -48,8 +48,8 @@ std::vector<double> filter_lowpass(const std::vector<double>& x, double sample_r
 
     // pad both ends by odd reflection about the end values
     const std::size_t n = x.size();
-    const std::size_t pad = std::min(
-        n - 1, static_cast<std::size_t>(std::ceil(6 * sample_rate_hz / cutoff_hz)));
+    const std::size_t pad =
+        std::min(n - 1, static_cast<std::size_t>(std::ceil(6 * sample_rate_hz / cutoff_hz)));
     std::vector<double> y;
     y.reserve(n + 2 * pad);
     for (std::size_t k = pad; k >= 1; --k) y.push_back(2 * x.front() - x[k]);

@@ -52,12 +52,13 @@ ForwardDynamics::ForwardDynamics(std::string model, StateLayout layout, NumericF
                        "ForwardDynamics('" + model_ + "'): the layout lists " + std::to_string(n) +
                            " coordinates but " + std::to_string(layout_.rates.size()) +
                            " rates; give one rate and one name per coordinate");
-    ALEMBERT_CHECK_ARG(function_.input_count == 1 + 2 * n + m && function_.output_count == k * k + k,
-                       "ForwardDynamics('" + model_ + "'): the function takes " +
-                           std::to_string(function_.input_count) + " inputs and gives " +
-                           std::to_string(function_.output_count) + " outputs; the layout needs " +
-                           std::to_string(1 + 2 * n + m) + " inputs [t, q, q', inputs] and " +
-                           std::to_string(k * k + k) + " outputs [A row-major, b]");
+    ALEMBERT_CHECK_ARG(
+        function_.input_count == 1 + 2 * n + m && function_.output_count == k * k + k,
+        "ForwardDynamics('" + model_ + "'): the function takes " +
+            std::to_string(function_.input_count) + " inputs and gives " +
+            std::to_string(function_.output_count) + " outputs; the layout needs " +
+            std::to_string(1 + 2 * n + m) + " inputs [t, q, q', inputs] and " +
+            std::to_string(k * k + k) + " outputs [A row-major, b]");
     ALEMBERT_CHECK_ARG(static_cast<bool>(function_.evaluate),
                        "ForwardDynamics('" + model_ + "'): the function is empty");
     // where each q_i'' sits among the unknowns
@@ -223,8 +224,8 @@ LinearSystem form_forward_equations(const System& sys, const std::vector<TimeVar
 ForwardDynamics compile_forward_dynamics(const System& sys, const std::vector<TimeVariable>& q,
                                          const std::vector<ex>& inputs, const std::string& model,
                                          const std::vector<ex>& constraint_forces) {
-    return compile_forward_dynamics(sys.symbols(), form_forward_equations(sys, q, constraint_forces),
-                                    q, inputs, model);
+    return compile_forward_dynamics(
+        sys.symbols(), form_forward_equations(sys, q, constraint_forces), q, inputs, model);
 }
 
 }  // namespace alembert

@@ -29,9 +29,9 @@ Table calc_inverse_dynamics(const InverseDynamics& id, const MotionSamples& moti
             names.push_back(s);
         }
     if (units.empty()) units.assign(k, "N m");
-    ALEMBERT_CHECK_ARG(names.size() == k && units.size() == k,
-                       who + "give one column name and one unit per load measure (" +
-                           std::to_string(k) + ")");
+    ALEMBERT_CHECK_ARG(
+        names.size() == k && units.size() == k,
+        who + "give one column name and one unit per load measure (" + std::to_string(k) + ")");
     Table table;
     table.add_column("t", "s");
     std::vector<double> factor;
@@ -64,8 +64,7 @@ InverseAnalysisReport run_inverse_dynamics(const InverseDynamics& id, const Moti
     return report;
 }
 
-InverseAnalysisReport run_inverse_dynamics(const InverseDynamics& id,
-                                           const std::string& motion_csv,
+InverseAnalysisReport run_inverse_dynamics(const InverseDynamics& id, const std::string& motion_csv,
                                            const std::string& out_dir,
                                            const InverseAnalysisOptions& options) {
     return run_inverse_dynamics(

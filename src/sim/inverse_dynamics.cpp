@@ -30,14 +30,17 @@ std::string printed(const ex& e) {
 
 InverseDynamics::InverseDynamics(std::string model, StateLayout layout, NumericFunction loads,
                                  bool solved)
-    : model_(std::move(model)), layout_(std::move(layout)), function_(std::move(loads)),
+    : model_(std::move(model)),
+      layout_(std::move(layout)),
+      function_(std::move(loads)),
       solved_(solved) {
     const std::size_t n = coordinate_count(), k = load_count();
     const std::size_t outputs = solved_ ? k : k * k + k;
-    ALEMBERT_CHECK_ARG(layout_.inputs.empty() && layout_.rates.size() == n &&
-                           layout_.coordinate_names.size() == n,
-                       "InverseDynamics('" + model_ + "'): the layout needs one rate and one "
-                       "name per coordinate and no inputs");
+    ALEMBERT_CHECK_ARG(
+        layout_.inputs.empty() && layout_.rates.size() == n && layout_.coordinate_names.size() == n,
+        "InverseDynamics('" + model_ +
+            "'): the layout needs one rate and one "
+            "name per coordinate and no inputs");
     ALEMBERT_CHECK_ARG(function_.input_count == 1 + 3 * n && function_.output_count == outputs &&
                            function_.evaluate,
                        "InverseDynamics('" + model_ + "'): the function takes " +
@@ -90,14 +93,15 @@ void InverseDynamics::calc_loads(double t, const double* q, const double* qd, co
         for (Eigen::Index c = 0; c < K; ++c) A_(r, c) = out_[static_cast<std::size_t>(r * K + c)];
         b_(r) = out_[static_cast<std::size_t>(K * K + r)];
     }
-    if (!A_.allFinite() || !b_.allFinite())
-        fail("the equations are not finite", t, q, qd);
+    if (!A_.allFinite() || !b_.allFinite()) fail("the equations are not finite", t, q, qd);
     lu_.compute(A_);
     const double rcond = lu_.rcond();
     if (!(rcond > 1e-13))
-        fail("the equations are singular or ill-conditioned in the load measures (reciprocal "
-             "condition estimate " + number(rcond) + ")",
-             t, q, qd);
+        fail(
+            "the equations are singular or ill-conditioned in the load measures (reciprocal "
+            "condition estimate " +
+                number(rcond) + ")",
+            t, q, qd);
     Eigen::Map<Eigen::VectorXd>(loads, K) = lu_.solve(b_);
 }
 
@@ -119,9 +123,9 @@ InverseDynamics compile_inverse_dynamics(const SymbolTable& table, const LinearS
     layout.unknowns = eqs.unknowns;
     const unsigned k = static_cast<unsigned>(eqs.unknowns.size());
     ALEMBERT_CHECK_ARG(eqs.A.rows() == k && eqs.A.cols() == k,
-                       "compile_inverse_dynamics('" + model + "'): " +
-                           std::to_string(eqs.A.rows()) + " equations for " + std::to_string(k) +
-                           " load measures; give one equation per measure");
+                       "compile_inverse_dynamics('" + model +
+                           "'): " + std::to_string(eqs.A.rows()) + " equations for " +
+                           std::to_string(k) + " load measures; give one equation per measure");
 
     // solved form when every row and column of A holds exactly one non-zero entry
     std::vector<int> row_of(k, -1);
@@ -165,8 +169,8 @@ InverseDynamics compile_inverse_dynamics(const SymbolTable& table, const LinearS
 InverseDynamics compile_inverse_dynamics(const System& sys, const std::vector<TimeVariable>& q,
                                          const std::vector<ex>& loads, const std::string& model) {
     std::vector<RoadmapRow> rows = plan_roadmap(sys, q, loads, Analysis::dynamics);
-    return compile_inverse_dynamics(sys.symbols(), form_linear_system(residuals_of(rows), loads),
-                                    q, model);
+    return compile_inverse_dynamics(sys.symbols(), form_linear_system(residuals_of(rows), loads), q,
+                                    model);
 }
 
 }  // namespace alembert

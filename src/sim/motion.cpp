@@ -48,8 +48,9 @@ MotionSamples differentiate_motion(const Table& table, const std::string& source
         if (table.names[c] == "t" || table.names[c] == "time") tc = c;
     std::string found;
     for (const std::string& n : table.names) found += (found.empty() ? "" : ", ") + n;
-    ALEMBERT_CHECK_ARG(tc < table.names.size(),
-                       source + ": no time column; name one 't [s]' (columns found: " + found + ")");
+    ALEMBERT_CHECK_ARG(
+        tc < table.names.size(),
+        source + ": no time column; name one 't [s]' (columns found: " + found + ")");
     Unit tu;
     try {
         tu = parse_unit(table.units[tc]);
@@ -80,10 +81,9 @@ MotionSamples differentiate_motion(const Table& table, const std::string& source
         std::size_t c = table.names.size();
         for (std::size_t k = 0; k < table.names.size(); ++k)
             if (table.names[k] == name) c = k;
-        ALEMBERT_CHECK_ARG(c < table.names.size(),
-                           source + ": no column for the coordinate '" + name +
-                               "'; name a column '" + name + " [deg]' (columns found: " + found +
-                               ")");
+        ALEMBERT_CHECK_ARG(c < table.names.size(), source + ": no column for the coordinate '" +
+                                                       name + "'; name a column '" + name +
+                                                       " [deg]' (columns found: " + found + ")");
         Unit u;
         try {
             u = parse_unit(table.units[c]);
@@ -108,8 +108,8 @@ MotionSamples read_motion(const std::string& path, const std::vector<std::string
 PrescribedMotion::PrescribedMotion(const SymbolTable& table, const std::vector<TimeVariable>& q,
                                    const std::vector<ex>& formulas) {
     ALEMBERT_CHECK_ARG(q.size() == formulas.size(),
-                       "PrescribedMotion(): " + std::to_string(formulas.size()) +
-                           " formulas for " + std::to_string(q.size()) +
+                       "PrescribedMotion(): " + std::to_string(formulas.size()) + " formulas for " +
+                           std::to_string(q.size()) +
                            " coordinates; give one formula of time per coordinate");
     const auto& t = GiNaC::ex_to<GiNaC::symbol>(table.time());
     std::vector<ex> outputs, rates, accelerations;

@@ -22,8 +22,9 @@ NumericFunction make_tape_function(const SymbolTable& table, const std::vector<e
 
 NumericFunction make_c_function(void (*fn)(const double* inputs, double* outputs),
                                 std::size_t input_count, std::size_t output_count) {
-    ALEMBERT_CHECK_ARG(fn != nullptr, "make_c_function(): the function pointer is null; pass the "
-                                      "address of a function void f(const double*, double*)");
+    ALEMBERT_CHECK_ARG(fn != nullptr,
+                       "make_c_function(): the function pointer is null; pass the "
+                       "address of a function void f(const double*, double*)");
     NumericFunction f;
     f.input_count = input_count;
     f.output_count = output_count;

@@ -45,8 +45,8 @@ bool gnuplot_available() {
     return status != -1 && WIFEXITED(status) && WEXITSTATUS(status) == 0;
 }
 
-PlotResult plot_csv(const Table& table, const std::string& csv_path,
-                    const std::string& output_base, const PlotOptions& options) {
+PlotResult plot_csv(const Table& table, const std::string& csv_path, const std::string& output_base,
+                    const PlotOptions& options) {
     // columns: x, then the y columns grouped by unit (first appearance order)
     const std::size_t xc = options.x.empty() ? 0 : table.column_index(options.x);
     std::vector<std::size_t> ys;
@@ -67,7 +67,8 @@ PlotResult plot_csv(const Table& table, const std::string& csv_path,
     if (!gnuplot_available()) {
         result.message = "plot not drawn: gnuplot ('" + gnuplot_program() +
                          "') was not found; install it (Debian: apt install gnuplot-nox) or set "
-                         "ALEMBERT_GNUPLOT to its path. The numbers are in " + csv_path;
+                         "ALEMBERT_GNUPLOT to its path. The numbers are in " +
+                         csv_path;
         return result;
     }
     if (ys.empty()) {
@@ -77,7 +78,8 @@ PlotResult plot_csv(const Table& table, const std::string& csv_path,
 
     // the gnuplot script: one multiplot per terminal, one panel per unit
     std::string panels;
-    panels += "set datafile separator ','\nset grid\nset key outside right top\nset autoscale xfix\n";
+    panels +=
+        "set datafile separator ','\nset grid\nset key outside right top\nset autoscale xfix\n";
     panels += "set xlabel " + gp_quoted(label(table, xc)) + "\n";
     std::string title = options.title;
     const std::size_t rows = units.size();

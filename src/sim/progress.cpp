@@ -10,8 +10,13 @@ namespace alembert {
 
 ProgressIndicator::ProgressIndicator(std::string label, double t0, double t1, bool enabled,
                                      std::chrono::milliseconds delay)
-    : label_(std::move(label)), t0_(t0), t1_(t1), enabled_(enabled && ::isatty(2) == 1),
-      delay_(delay), start_(Clock::now()), last_(start_) {}
+    : label_(std::move(label)),
+      t0_(t0),
+      t1_(t1),
+      enabled_(enabled && ::isatty(2) == 1),
+      delay_(delay),
+      start_(Clock::now()),
+      last_(start_) {}
 
 ProgressIndicator::~ProgressIndicator() {
     if (shown_) std::fprintf(stderr, "\r\033[K");

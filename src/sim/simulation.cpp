@@ -2,9 +2,8 @@
 // Forward simulation with Boost.Odeint's Dormand-Prince stepper, dense output and events.
 #include "alembert/sim/simulation.hpp"
 
-#include <boost/numeric/odeint.hpp>
-
 #include <algorithm>
+#include <boost/numeric/odeint.hpp>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -58,7 +57,8 @@ struct Evaluator {
     std::vector<double> in, u;
 
     Evaluator(const ForwardDynamics& f, const InputFunction& i)
-        : fd(f), inputs(i),
+        : fd(f),
+          inputs(i),
           in(1 + 2 * f.coordinate_count() + f.unknown_count() + f.input_count()),
           u(f.input_count(), 0.0) {}
 
@@ -127,15 +127,15 @@ SimulationResult simulate(const ForwardDynamics& fd, const std::vector<double>& 
     const std::size_t width = 1 + 2 * n + fd.unknown_count() + fd.input_count();
     ALEMBERT_CHECK_ARG(outputs.function.input_count == width &&
                            (events.names.empty() || events.function.input_count == width),
-                       who + "the outputs or events were compiled for another layout; compile "
-                             "them with this model's layout()");
+                       who +
+                           "the outputs or events were compiled for another layout; compile "
+                           "them with this model's layout()");
 
     // the output times
     std::vector<double> times = options.output_times;
     if (times.empty()) {
-        ALEMBERT_CHECK_ARG(options.output_step > 0,
-                           who + "the output step must be positive, not " +
-                               number(options.output_step));
+        ALEMBERT_CHECK_ARG(options.output_step > 0, who + "the output step must be positive, not " +
+                                                        number(options.output_step));
         const auto count =
             static_cast<std::size_t>(std::floor((tf - t0) / options.output_step + 1e-9));
         for (std::size_t k = 0; k <= count; ++k)
@@ -167,9 +167,12 @@ SimulationResult simulate(const ForwardDynamics& fd, const std::vector<double>& 
     auto crossed = [&](std::size_t j, double before, double after) {
         const bool up = before < 0 && after >= 0, down = before > 0 && after <= 0;
         switch (events.directions[j]) {
-            case EventDirection::rising: return up;
-            case EventDirection::falling: return down;
-            case EventDirection::any: break;
+            case EventDirection::rising:
+                return up;
+            case EventDirection::falling:
+                return down;
+            case EventDirection::any:
+                break;
         }
         return up || down;
     };
@@ -187,10 +190,10 @@ SimulationResult simulate(const ForwardDynamics& fd, const std::vector<double>& 
     std::copy(qd0.begin(), qd0.end(), x.begin() + static_cast<std::ptrdiff_t>(n));
     auto stepper = odeint::make_dense_output(options.abs_tol, options.rel_tol,
                                              odeint::runge_kutta_dopri5<State>());
-    const double first_step = options.initial_step > 0
-                                  ? options.initial_step
-                                  : std::min(tf - t0, times.size() > 1 ? times[1] - times[0]
-                                                                       : tf - t0) / 100;
+    const double first_step =
+        options.initial_step > 0
+            ? options.initial_step
+            : std::min(tf - t0, times.size() > 1 ? times[1] - times[0] : tf - t0) / 100;
     stepper.initialize(x, t0, first_step);
 
     ProgressIndicator progress("simulating '" + fd.model() + "'", t0, tf, options.progress);
@@ -211,7 +214,8 @@ SimulationResult simulate(const ForwardDynamics& fd, const std::vector<double>& 
             ++result.steps;
             if (!(t_cur > t_prev) || t_cur - t_prev < 1e-14 * std::max(1.0, std::abs(t_cur)))
                 throw SolveError(who + "the step size fell to " + number(t_cur - t_prev) +
-                                 " s at t = " + number(t_cur) + " s; the model may be singular "
+                                 " s at t = " + number(t_cur) +
+                                 " s; the model may be singular "
                                  "or discontinuous there");
             // events: the earliest crossing inside this step, by bisection on the dense output
             double t_event = t_cur;
@@ -242,7 +246,8 @@ SimulationResult simulate(const ForwardDynamics& fd, const std::vector<double>& 
             }
             if (fired < events.names.size() && t_event <= tf) {
                 stepper.calc_state(t_event, xi);
-                if (table.columns[0].empty() || table.columns[0].back() < t_event) emit(t_event, xi);
+                if (table.columns[0].empty() || table.columns[0].back() < t_event)
+                    emit(t_event, xi);
                 result.stopped_by = events.names[fired];
                 t_end = t_event;
                 break;
@@ -256,8 +261,10 @@ SimulationResult simulate(const ForwardDynamics& fd, const std::vector<double>& 
                          " s: " + e.what());
     }
     if (result.stopped_by.empty()) {
-        if (stepper.current_time() > tf) stepper.calc_state(tf, xi);
-        else xi = stepper.current_state();
+        if (stepper.current_time() > tf)
+            stepper.calc_state(tf, xi);
+        else
+            xi = stepper.current_state();
     }
     result.t_end = t_end;
     result.q_end.assign(xi.begin(), xi.begin() + static_cast<std::ptrdiff_t>(n));
@@ -324,14 +331,14 @@ SimulationResult run_simulation(const System& sys, const SimulationRequest& requ
     return simulate(fd, q0, qd0, request.options, out, events);
 }
 
-PlotResult write_table_and_plot(const Table& table, const std::string& dir,
-                                const std::string& name, const PlotOptions& options) {
+PlotResult write_table_and_plot(const Table& table, const std::string& dir, const std::string& name,
+                                const PlotOptions& options) {
     namespace fs = std::filesystem;
     std::error_code ec;
     fs::create_directories(dir, ec);
     if (ec)
-        throw ArgumentError("write_table_and_plot(): cannot create the directory '" + dir +
-                            "' (" + ec.message() + ")");
+        throw ArgumentError("write_table_and_plot(): cannot create the directory '" + dir + "' (" +
+                            ec.message() + ")");
     const std::string csv = (fs::path(dir) / (name + ".csv")).string();
     write_csv(table, csv);
     return plot_csv(table, csv, (fs::path(dir) / name).string(), options);

@@ -23,13 +23,15 @@ namespace {
 const std::vector<std::pair<std::string, double>>& unit_table() {
     constexpr double deg = std::numbers::pi / 180;
     static const std::vector<std::pair<std::string, double>> units = {
-        {"", 1}, {"1", 1}, {"s", 1}, {"ms", 1e-3}, {"min", 60}, {"rad", 1}, {"deg", deg},
-        {"rev", 2 * std::numbers::pi}, {"m", 1}, {"cm", 1e-2}, {"mm", 1e-3}, {"km", 1e3},
-        {"kg", 1}, {"g", 1e-3}, {"N", 1}, {"kN", 1e3}, {"N m", 1}, {"N*m", 1}, {"N.m", 1},
-        {"Nm", 1}, {"N\u00b7m", 1}, {"J", 1}, {"kJ", 1e3}, {"W", 1}, {"Hz", 1}, {"rad/s", 1},
-        {"deg/s", deg}, {"rpm", 2 * std::numbers::pi / 60}, {"rad/s^2", 1}, {"deg/s^2", deg},
-        {"m/s", 1}, {"km/h", 1 / 3.6}, {"m/s^2", 1}, {"N m/kg", 1}, {"N/kg", 1},
-        {"kg m^2", 1}};
+        {"", 1},         {"1", 1},         {"s", 1},       {"ms", 1e-3},
+        {"min", 60},     {"rad", 1},       {"deg", deg},   {"rev", 2 * std::numbers::pi},
+        {"m", 1},        {"cm", 1e-2},     {"mm", 1e-3},   {"km", 1e3},
+        {"kg", 1},       {"g", 1e-3},      {"N", 1},       {"kN", 1e3},
+        {"N m", 1},      {"N*m", 1},       {"N.m", 1},     {"Nm", 1},
+        {"N\u00b7m", 1}, {"J", 1},         {"kJ", 1e3},    {"W", 1},
+        {"Hz", 1},       {"rad/s", 1},     {"deg/s", deg}, {"rpm", 2 * std::numbers::pi / 60},
+        {"rad/s^2", 1},  {"deg/s^2", deg}, {"m/s", 1},     {"km/h", 1 / 3.6},
+        {"m/s^2", 1},    {"N m/kg", 1},    {"N/kg", 1},    {"kg m^2", 1}};
     return units;
 }
 
@@ -81,8 +83,8 @@ void write_csv(const Table& table, const std::string& path) {
     namespace fs = std::filesystem;
     const fs::path target(path);
     const fs::path temporary =
-        target.parent_path() / ("." + target.filename().string() + ".tmp" +
-                                std::to_string(static_cast<long>(::getpid())));
+        target.parent_path() /
+        ("." + target.filename().string() + ".tmp" + std::to_string(static_cast<long>(::getpid())));
     std::FILE* f = std::fopen(temporary.c_str(), "w");
     if (!f)
         throw ArgumentError("write_csv(): cannot write '" + path + "' (" + std::strerror(errno) +
@@ -115,8 +117,7 @@ void write_csv(const Table& table, const std::string& path) {
 
 Table read_csv(const std::string& path) {
     std::ifstream in(path);
-    if (!in)
-        throw ArgumentError("read_csv(): cannot open '" + path + "'; check the file name");
+    if (!in) throw ArgumentError("read_csv(): cannot open '" + path + "'; check the file name");
     Table table;
     std::string line;
     int line_no = 0;
@@ -141,8 +142,9 @@ Table read_csv(const std::string& path) {
                     unit = trim(cell.substr(open + 1, close - open - 1));
                 }
                 if (name.empty())
-                    throw ArgumentError(where + "a header cell has no column name; the first "
-                                                "row must name every column");
+                    throw ArgumentError(where +
+                                        "a header cell has no column name; the first "
+                                        "row must name every column");
                 for (const std::string& n : table.names)
                     if (n == name)
                         throw ArgumentError(where + "column '" + name + "' appears twice");
@@ -170,7 +172,8 @@ Table read_csv(const std::string& path) {
         table.lines.push_back(line_no);
     }
     if (!have_header)
-        throw ArgumentError("read_csv(): '" + path + "' is empty; it needs a header row "
+        throw ArgumentError("read_csv(): '" + path +
+                            "' is empty; it needs a header row "
                             "naming the columns and rows of numbers");
     if (table.row_count() == 0)
         throw ArgumentError(path + ":" + std::to_string(line_no) + ": the file has a header " +

@@ -96,7 +96,8 @@ TEST_P(PlanarChainReferenceVsKane, InverseAndForwardDynamicsSatisfyKanesEquation
     std::uniform_real_distribution<double> angle(-M_PI, M_PI), rate(-2.0, 2.0);
     for (int trial = 0; trial < 20; ++trial) {
         std::vector<double> q(un), qd(un), qdd(un), tau(un), qdd_back(un);
-        for (std::size_t i = 0; i < un; ++i) q[i] = angle(rng), qd[i] = rate(rng), qdd[i] = rate(rng);
+        for (std::size_t i = 0; i < un; ++i)
+            q[i] = angle(rng), qd[i] = rate(rng), qdd[i] = rate(rng);
         chain.inverse_dynamics(q.data(), qd.data(), qdd.data(), tau.data());
         double scale = 1.0;
         for (double t : tau) scale = std::max(scale, std::abs(t));

@@ -11,9 +11,9 @@
 #include <random>
 
 #include "alembert/eom/kane.hpp"
+#include "alembert/error.hpp"
 #include "alembert/mech/sample_models.hpp"
 #include "planar_chain_reference.hpp"
-#include "alembert/error.hpp"
 #include "support/expect.hpp"
 
 namespace alembert {
@@ -35,7 +35,8 @@ TEST(ForwardDynamics, PlanarChainsMatchTheHandWrittenArticulatedBodyRecursion) {
     std::uniform_real_distribution<double> angle(-3.0, 3.0), rate(-2.0, 2.0);
     for (int n : {2, 3, 6}) {
         SampleModel chain = make_planar_chain(n);
-        ForwardDynamics fd = compile_forward_dynamics(chain.system, chain.q, chain.unknowns, "chain");
+        ForwardDynamics fd =
+            compile_forward_dynamics(chain.system, chain.q, chain.unknowns, "chain");
         bench::PlanarChainReference reference(n);
         const auto un = static_cast<std::size_t>(n);
         std::vector<double> q(un), qd(un), tau(un), ours(un), theirs(un);
@@ -106,7 +107,8 @@ TEST(ForwardDynamics, ASingularMassMatrixIsReportedWithTheModelAndTheState) {
     SymbolTable& s = chain.system.symbols();
     s.set_value(s.symbol("m1"), 0.0);
     s.set_value(s.symbol("m2"), 0.0);
-    ForwardDynamics fd = compile_forward_dynamics(chain.system, chain.q, chain.unknowns, "massless");
+    ForwardDynamics fd =
+        compile_forward_dynamics(chain.system, chain.q, chain.unknowns, "massless");
     const double q[2] = {0.1, 0.2}, qd[2] = {0, 0}, T[2] = {0, 0};
     double qdd[2];
     EXPECT_THROW_MSG(fd.calc_accelerations(0.5, q, qd, T, qdd), SolveError,
@@ -131,8 +133,7 @@ TEST(ForwardDynamics, ALoadMeasureLeftOutOfTheInputsIsNamed) {
     SampleModel rod = make_planar_chain(1);
     EXPECT_THROW_MSG(compile_forward_dynamics(rod.system, rod.q, {}, "rod"), ArgumentError,
                      "compile_forward_dynamics('rod'): ");
-    EXPECT_THROW_MSG(compile_forward_dynamics(rod.system, rod.q, {}, "rod"), ArgumentError,
-                     "T1");
+    EXPECT_THROW_MSG(compile_forward_dynamics(rod.system, rod.q, {}, "rod"), ArgumentError, "T1");
 }
 
 TEST(ForwardDynamics, AClosedLoopIsSolvedWithItsConstraintForcesByLU) {
@@ -146,7 +147,8 @@ TEST(ForwardDynamics, AClosedLoopIsSolvedWithItsConstraintForcesByLU) {
     const double LN = 1, LA = 0.4, LB = 1.2, LC = 0.8, qA = std::numbers::pi / 3;
     const double ax = LA * std::cos(qA), ay = LA * std::sin(qA);
     const double dx = LN - ax, dy = -ay, d = std::hypot(dx, dy);
-    const double along = (LB * LB - LC * LC + d * d) / (2 * d), h = std::sqrt(LB * LB - along * along);
+    const double along = (LB * LB - LC * LC + d * d) / (2 * d),
+                 h = std::sqrt(LB * LB - along * along);
     const double px = ax + along * dx / d - h * dy / d, py = ay + along * dy / d + h * dx / d;
     const double thB = std::atan2(py - ay, px - ax);
     const double q[3] = {qA, thB - qA, std::atan2(py, px - LN)}, qd[3] = {0, 0, 0};

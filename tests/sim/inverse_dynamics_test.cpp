@@ -8,9 +8,9 @@
 #include <cmath>
 #include <random>
 
+#include "alembert/error.hpp"
 #include "alembert/mech/sample_models.hpp"
 #include "planar_chain_reference.hpp"
-#include "alembert/error.hpp"
 #include "support/expect.hpp"
 
 namespace alembert {
@@ -21,13 +21,15 @@ TEST(InverseDynamics, PlanarChainsMatchTheHandWrittenNewtonEulerRecursion) {
     std::uniform_real_distribution<double> angle(-3.0, 3.0), rate(-2.0, 2.0);
     for (int n : {1, 3, 7}) {
         SampleModel chain = make_planar_chain(n);
-        InverseDynamics id = compile_inverse_dynamics(chain.system, chain.q, chain.unknowns, "chain");
+        InverseDynamics id =
+            compile_inverse_dynamics(chain.system, chain.q, chain.unknowns, "chain");
         EXPECT_TRUE(id.solved()) << "a road-map row per torque leaves no solve for run time";
         bench::PlanarChainReference reference(n);
         const auto un = static_cast<std::size_t>(n);
         std::vector<double> q(un), qd(un), qdd(un), ours(un), theirs(un);
         for (int trial = 0; trial < 10; ++trial) {
-            for (std::size_t i = 0; i < un; ++i) q[i] = angle(rng), qd[i] = rate(rng), qdd[i] = rate(rng);
+            for (std::size_t i = 0; i < un; ++i)
+                q[i] = angle(rng), qd[i] = rate(rng), qdd[i] = rate(rng);
             id.calc_loads(0.0, q.data(), qd.data(), qdd.data(), ours.data());
             reference.inverse_dynamics(q.data(), qd.data(), qdd.data(), theirs.data());
             for (std::size_t i = 0; i < un; ++i)
@@ -74,7 +76,8 @@ TEST(InverseDynamics, CoupledLoadMeasuresAreSolvedAtRunTime) {
         const double dx = LN - ax, dy = -ay, dd = std::hypot(dx, dy);
         const double along = (LB * LB - LC * LC + dd * dd) / (2 * dd);
         const double h = std::sqrt(LB * LB - along * along);
-        const double px = ax + along * dx / dd - h * dy / dd, py = ay + along * dy / dd + h * dx / dd;
+        const double px = ax + along * dx / dd - h * dy / dd,
+                     py = ay + along * dy / dd + h * dx / dd;
         q[0] = qA, q[1] = std::atan2(py - ay, px - ax) - qA, q[2] = std::atan2(py, px - LN);
     };
     auto potential = [&](double qA) {

@@ -3,14 +3,13 @@
 #include "alembert/sim/motion.hpp"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <numbers>
-
-#include <unistd.h>
 
 #include "alembert/error.hpp"
 #include "support/expect.hpp"
@@ -44,14 +43,14 @@ TEST(PrescribedMotion, AFormulaWithAnUnknownSymbolIsNamed) {
     SymbolTable s;
     TimeVariable q = s.add_variable("q");
     ex w = s.add_constant("omega");
-    EXPECT_THROW_MSG(PrescribedMotion(s, {q}, {GiNaC::sin(w * s.time())}), ArgumentError,
-                     "omega");
+    EXPECT_THROW_MSG(PrescribedMotion(s, {q}, {GiNaC::sin(w * s.time())}), ArgumentError, "omega");
 }
 
 TEST(ReadMotion, ConvertsDegreesFiltersAndDifferentiates) {
     // a slow sine in degrees at 200 Hz: the filter barely touches it, so q' and q'' follow
     // the exact derivatives away from the ends
-    const fs::path p = fs::temp_directory_path() / ("alembert_motion_" + std::to_string(::getpid()) + ".csv");
+    const fs::path p =
+        fs::temp_directory_path() / ("alembert_motion_" + std::to_string(::getpid()) + ".csv");
     {
         std::ofstream out(p);
         out << "t [s],qB [deg],other [m]\n";

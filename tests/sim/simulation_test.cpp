@@ -10,10 +10,10 @@
 #include <numbers>
 
 #include "alembert/eom/kane.hpp"
+#include "alembert/error.hpp"
 #include "alembert/mech/sample_models.hpp"
 #include "alembert/sim/inverse_dynamics.hpp"
 #include "alembert/sim/motion.hpp"
-#include "alembert/error.hpp"
 #include "support/expect.hpp"
 
 namespace alembert {
@@ -50,7 +50,8 @@ TEST(Simulation, TriplePendulumReleasedFromRestConservesEnergy) {
     double worst = 0;
     for (double e : E) worst = std::max(worst, std::abs(e - V) / std::abs(V));
     EXPECT_LT(worst, 1e-9);
-    std::printf("energy: largest relative change %.2e over 5 s in %zu steps\n", worst, result.steps);
+    std::printf("energy: largest relative change %.2e over 5 s in %zu steps\n", worst,
+                result.steps);
     // it moved: the pendulum falls
     EXPECT_GT(std::abs(t.columns[1].back() - 0.3 * 180 / kPi), 10.0);
 }
@@ -113,7 +114,8 @@ TEST(Simulation, TorquesOfAPrescribedMotionReproduceItForward) {
         double q[3], qd[3], qdd[3];
         motion.calc_state(tab.columns[0][row], q, qd, qdd);
         for (int i = 0; i < 3; ++i)
-            worst = std::max(worst, std::abs(tab.columns[static_cast<std::size_t>(i) + 1][row] - q[i]));
+            worst =
+                std::max(worst, std::abs(tab.columns[static_cast<std::size_t>(i) + 1][row] - q[i]));
     }
     EXPECT_LT(worst, 100 * opt.abs_tol);
     std::printf("round trip: largest coordinate error %.2e rad over 2 s\n", worst);
@@ -126,7 +128,8 @@ TEST(Simulation, AClosedLoopReportsItsConstraintDrift) {
     const double LN = 1, LA = 0.4, LB = 1.2, LC = 0.8, qA = 1.0;
     const double ax = LA * std::cos(qA), ay = LA * std::sin(qA);
     const double dx = LN - ax, dy = -ay, dd = std::hypot(dx, dy);
-    const double along = (LB * LB - LC * LC + dd * dd) / (2 * dd), h = std::sqrt(LB * LB - along * along);
+    const double along = (LB * LB - LC * LC + dd * dd) / (2 * dd),
+                 h = std::sqrt(LB * LB - along * along);
     const double px = ax + along * dx / dd - h * dy / dd, py = ay + along * dy / dd + h * dx / dd;
     SimulationRequest r;
     r.model = "four_bar";

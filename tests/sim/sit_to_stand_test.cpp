@@ -33,19 +33,23 @@ std::array<double, 3> holding_torques(const double q[3]) {
     }
     std::array<double, 3> T{};
     for (int j = 0; j < 3; ++j)
-        for (int k = j; k < 3; ++k) T[static_cast<std::size_t>(j)] += kMass[k] * kG * (cm_x[k] - joint_x[j]);
+        for (int k = j; k < 3; ++k)
+            T[static_cast<std::size_t>(j)] += kMass[k] * kG * (cm_x[k] - joint_x[j]);
     return T;
 }
 
 class SitToStand : public ::testing::Test {
 protected:
     SampleModel model = make_triple_pendulum();
-    InverseDynamics id = compile_inverse_dynamics(model.system, model.q, model.unknowns, "sit_to_stand");
+    InverseDynamics id =
+        compile_inverse_dynamics(model.system, model.q, model.unknowns, "sit_to_stand");
     // the minimum-jerk motion: knee and hip over [0, 1.5] s, ankle over [0.15, 1.5] s
-    PrescribedMotion motion{model.system.symbols(), model.q,
-                            {(-25 + 20 * minimum_jerk(model.system.symbols().time(), 0.15, 1.5)) * kDeg,
-                             (105 - 95 * minimum_jerk(model.system.symbols().time(), 0.0, 1.5)) * kDeg,
-                             (-130 + 120 * minimum_jerk(model.system.symbols().time(), 0.0, 1.5)) * kDeg}};
+    PrescribedMotion motion{
+        model.system.symbols(),
+        model.q,
+        {(-25 + 20 * minimum_jerk(model.system.symbols().time(), 0.15, 1.5)) * kDeg,
+         (105 - 95 * minimum_jerk(model.system.symbols().time(), 0.0, 1.5)) * kDeg,
+         (-130 + 120 * minimum_jerk(model.system.symbols().time(), 0.0, 1.5)) * kDeg}};
 };
 
 TEST_F(SitToStand, UprightAtRestNeedsNoTorque) {
@@ -62,7 +66,9 @@ TEST_F(SitToStand, SeatOffAndStandingNeedTheStaticHoldingTorques) {
         motion.calc_state(t, q, qd, qdd);
         id.calc_loads(t, q, qd, qdd, T);
         const std::array<double, 3> hold = holding_torques(q);
-        for (int j = 0; j < 3; ++j) EXPECT_NEAR(T[j], hold[static_cast<std::size_t>(j)], 1e-9) << "t = " << t << ", joint " << j;
+        for (int j = 0; j < 3; ++j)
+            EXPECT_NEAR(T[j], hold[static_cast<std::size_t>(j)], 1e-9)
+                << "t = " << t << ", joint " << j;
     }
     // the poses are the issue's: seat-off (-25, 105, -130) deg, standing (-5, 10, -10) deg
     double q[3], qd[3], qdd[3];
@@ -77,14 +83,16 @@ TEST_F(SitToStand, FilteredSampledDataReproduceTheExactTorquesAwayFromTheEnds) {
     // read back, filtered at 6 Hz and differentiated; compared with the exact formulas over
     // [0.2, 1.3] s. Stated tolerance: 3 % of each torque's peak magnitude.
     namespace fs = std::filesystem;
-    const fs::path csv = fs::temp_directory_path() / ("alembert_sts_" + std::to_string(::getpid()) + ".csv");
+    const fs::path csv =
+        fs::temp_directory_path() / ("alembert_sts_" + std::to_string(::getpid()) + ".csv");
     {
         std::FILE* f = std::fopen(csv.c_str(), "w");
         std::fprintf(f, "t [s],qA [deg],qB [deg],qC [deg]\n");
         for (int i = 0; i <= 150; ++i) {
             double q[3], qd[3], qdd[3];
             motion.calc_state(i / 100.0, q, qd, qdd);
-            std::fprintf(f, "%.2f,%.6f,%.6f,%.6f\n", i / 100.0, q[0] / kDeg, q[1] / kDeg, q[2] / kDeg);
+            std::fprintf(f, "%.2f,%.6f,%.6f,%.6f\n", i / 100.0, q[0] / kDeg, q[1] / kDeg,
+                         q[2] / kDeg);
         }
         std::fclose(f);
     }

@@ -3,12 +3,11 @@
 #include "alembert/sim/table.hpp"
 
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <filesystem>
 #include <fstream>
 #include <numbers>
-
-#include <unistd.h>
 
 #include "alembert/error.hpp"
 #include "support/expect.hpp"
@@ -19,7 +18,8 @@ namespace {
 namespace fs = std::filesystem;
 
 fs::path scratch(const std::string& name) {
-    fs::path dir = fs::temp_directory_path() / ("alembert_table_test_" + std::to_string(::getpid()));
+    fs::path dir =
+        fs::temp_directory_path() / ("alembert_table_test_" + std::to_string(::getpid()));
     fs::create_directories(dir);
     return dir / name;
 }

@@ -34,9 +34,9 @@ Table calc_inverse_dynamics(const InverseDynamics& id, const MotionSamples& moti
 
 /// What run_inverse_dynamics wrote.
 struct InverseAnalysisReport {
-    Table loads{};          ///< t and the load measures, in their units
-    std::string csv{};      ///< path of torques.csv
-    PlotResult plot{};      ///< torques.png and torques.svg, or why not
+    Table loads{};      ///< t and the load measures, in their units
+    std::string csv{};  ///< path of torques.csv
+    PlotResult plot{};  ///< torques.png and torques.svg, or why not
 };
 
 /// The library call behind `alembert inverse MODEL --motion FILE --out DIR`: reads the motion
@@ -45,8 +45,7 @@ struct InverseAnalysisReport {
 /// units in the header) and its plot DIR/torques.png and DIR/torques.svg. DIR is created if
 /// needed. A missing gnuplot leaves the CSV written and says so in report.plot.message.
 /// @throws as read_motion, calc_inverse_dynamics and write_csv.
-InverseAnalysisReport run_inverse_dynamics(const InverseDynamics& id,
-                                           const std::string& motion_csv,
+InverseAnalysisReport run_inverse_dynamics(const InverseDynamics& id, const std::string& motion_csv,
                                            const std::string& out_dir,
                                            const InverseAnalysisOptions& options = {});
 

@@ -14,7 +14,7 @@ namespace alembert {
 
 /// Samples of a motion: times and, per coordinate, q, q', q'' in SI units (rad, m, s).
 struct MotionSamples {
-    std::vector<std::string> coordinates{};     ///< names, as the model prints them ("qA")
+    std::vector<std::string> coordinates{};  ///< names, as the model prints them ("qA")
     std::vector<double> t{};
     std::vector<std::vector<double>> q{}, qd{}, qdd{};  ///< [coordinate][sample]
 };

@@ -21,9 +21,9 @@ struct PlotOptions {
 
 /// What plotting did.
 struct PlotResult {
-    bool drawn = false;             ///< both files were written
+    bool drawn = false;                ///< both files were written
     std::vector<std::string> files{};  ///< the files written
-    std::string message{};          ///< why not, when not drawn (print it for the user)
+    std::string message{};             ///< why not, when not drawn (print it for the user)
 };
 
 /// The gnuplot program used: $ALEMBERT_GNUPLOT if set, else "gnuplot" on the PATH.
@@ -40,7 +40,7 @@ bool gnuplot_available();
 /// Does not throw for a missing or failing gnuplot: `drawn` is false and `message` says what to
 /// install or what gnuplot reported; the CSV stays written.
 /// @throws alembert::ArgumentError if a named column does not exist.
-PlotResult plot_csv(const Table& table, const std::string& csv_path,
-                    const std::string& output_base, const PlotOptions& options = {});
+PlotResult plot_csv(const Table& table, const std::string& csv_path, const std::string& output_base,
+                    const PlotOptions& options = {});
 
 }  // namespace alembert

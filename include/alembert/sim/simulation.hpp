@@ -141,7 +141,7 @@ SimulationResult run_simulation(const System& sys, const SimulationRequest& requ
 /// Writes `table` to `dir`/`name`.csv (atomically) and plots it to `dir`/`name`.png and .svg
 /// (plot_csv; the first column along the horizontal axis). Creates `dir` if needed.
 /// @throws alembert::ArgumentError if the CSV cannot be written.
-PlotResult write_table_and_plot(const Table& table, const std::string& dir,
-                                const std::string& name, const PlotOptions& options = {});
+PlotResult write_table_and_plot(const Table& table, const std::string& dir, const std::string& name,
+                                const PlotOptions& options = {});
 
 }  // namespace alembert
