@@ -7,6 +7,7 @@
 #include "alembert/sym/evaluator.hpp"
 #include "alembert/sym/matrix.hpp"
 #include "alembert/sym/print.hpp"
+#include "alembert/sym/program.hpp"
 #include "alembert/sym/simplify.hpp"
 #include "alembert/sym/symbol_table.hpp"
 #include "alembert/vec/dyadic.hpp"
