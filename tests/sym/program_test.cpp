@@ -204,3 +204,45 @@ TEST(StraightLineProgram, MalformedParametersAreRejected) {
     EXPECT_THROW_MSG(f.set_parameters(std::vector<double>{1, 2}), ArgumentError,
                      "set_parameters(): 2 values given, 1 expected");
 }
+
+TEST(StraightLineProgram, LinearSplitGivesTheCoefficientsAndTheRest) {
+    // E = b - A x for E linear in x1, x2 (inside sums, products, quotients and intermediates)
+    SymbolTable s;
+    ex a = s.add_constant("a"), k = s.add_constant("k", 3.0), x1 = s.add_constant("x1"),
+       x2 = s.add_constant("x2");
+    ex z = s.add_intermediate(sin(a) * x1 - x2 / k, "z");
+    std::vector<ex> E{(cos(a) + 2) * (z + 4 * x2) + a * a, x1 / (1 + a * a) - 7 + z * cos(a)};
+    CompiledExpressions f(s, {a, x1, x2}, E, {k});
+    StraightLineProgram split = split_linear(f.calc_program(), {1, 2});
+    EXPECT_EQ(split.input_count, 1u);
+    EXPECT_EQ(split.outputs.size(), 2u * 2u + 2u);
+    EXPECT_TRUE(single_assignment(split));
+    for (double av : {0.3, -1.2}) {
+        std::vector<double> out(6);
+        const double kv = 3.0;
+        evaluate(split, &av, &kv, out.data());
+        // A_ij = -dE_i/dx_j, b_i = E_i at x = 0, by hand
+        const double c = std::cos(av), sn = std::sin(av);
+        EXPECT_NEAR(out[0], -(c + 2) * sn, 1e-14);
+        EXPECT_NEAR(out[1], -(c + 2) * (4 - 1 / kv), 1e-14);
+        EXPECT_NEAR(out[2], -(1 / (1 + av * av) + sn * c), 1e-14);
+        EXPECT_NEAR(out[3], c / kv, 1e-14);
+        EXPECT_NEAR(out[4], av * av, 1e-14);
+        EXPECT_NEAR(out[5], -7, 1e-14);
+    }
+    // a product of unknowns is not linear
+    CompiledExpressions g(s, {a, x1, x2}, {x1 * x2 + a});
+    EXPECT_THROW_MSG(split_linear(g.calc_program(), {1, 2}), SolveError, "not linear in unknown");
+    CompiledExpressions h(s, {a, x1, x2}, {sin(x1)});
+    EXPECT_THROW_MSG(split_linear(h.calc_program(), {1, 2}), SolveError, "not linear in unknown 0");
+}
+
+TEST(StraightLineProgram, InterpretationAgreesWithTheTape) {
+    Pendulum P;
+    CompiledExpressions f(P.s, P.inputs, P.outputs, {P.m, P.L, P.g});
+    StraightLineProgram p = f.calc_program();
+    std::vector<double> params = f.parameter_values(), out(3);
+    evaluate(p, P.state.data(), params.data(), out.data());
+    std::vector<double> tape = f.evaluate(P.state);
+    for (int k = 0; k < 3; ++k) EXPECT_NEAR(out[k], tape[k], 1e-14 * std::max(1.0, std::fabs(tape[k])));
+}

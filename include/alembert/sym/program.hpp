@@ -91,4 +91,23 @@ struct StraightLineProgram {
     std::size_t call_count(const std::vector<ProgramInstruction>& code) const;
 };
 
+/// Evaluates `p` by interpretation (a reference and a check, not a fast path: use
+/// CompiledExpressions or generated code for speed): `inputs` and `parameters` in program
+/// order, `outputs` one per program output.
+void evaluate(const StraightLineProgram& p, const double* inputs, const double* parameters,
+              double* outputs);
+
+/// The linear split of a program whose outputs E_i are linear in some of its inputs x_j
+/// (`unknowns`, input positions): a program of the other inputs (in their order) and the same
+/// parameters whose outputs are A (row by row, outputs x unknowns) and then b, with
+/// E = b - A x (A_ij = -dE_i/dx_j, b_i = E_i at x = 0), the form of
+/// alembert::form_linear_system. Each instruction that depends on x is split into its part
+/// free of x and its coefficients of the x_j (sums term by term, products and quotients with a
+/// factor or divisor free of x), so the cost is linear in the program's length times the
+/// number of unknowns each value holds; the prelude is kept as it is.
+/// @throws alembert::SolveError naming the output and the unknown (by position) if an output
+///         is not linear in the unknowns (a product of two, a function of one).
+StraightLineProgram split_linear(const StraightLineProgram& p,
+                                 const std::vector<std::size_t>& unknowns);
+
 }  // namespace alembert
