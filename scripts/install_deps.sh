@@ -7,6 +7,7 @@ packages=(
   libginac-dev libcln-dev libeigen3-dev
   libgtest-dev libgmock-dev googletest libbenchmark-dev
   libboost-dev libfmt-dev libcli11-dev
+  python3-numpy python3-scipy  # the tests run the generated Python
 )
 
 missing=()
