@@ -209,6 +209,27 @@ TEST(SampleModelNLinkPendulum,
         EXPECT_TRUE(same(R.moment.diff(s.symbol(T)), Vector(), N)) << T;
 }
 
+TEST(SampleModelPlanarChain, TwoUprightLinksHaveTheTextbookEnergies) {
+    SampleModel model = make_planar_chain(2);
+    System& sys = model.system;
+    SymbolTable& s = sys.symbols();
+    ASSERT_EQ(model.q.size(), 2u);
+    ex q1 = model.q[0], q2 = model.q[1], d1 = model.q[0].d(1), d2 = model.q[1].d(1);
+    ex g = s.symbol("g");
+    exmap unit{{s.symbol("L1"), 1}, {s.symbol("L2"), 1}, {s.symbol("m1"), 1}, {s.symbol("m2"), 1}};
+    // unit rods (1 m, 1 kg) standing on N_o: centres at heights cos(q1)/2 and cos(q1) + cos(q1 + q2)/2
+    EXPECT_TRUE(same(sys.calc_potential_energy().subs(unit), g * (cos(q1) / 2 + cos(q1) + cos(q1 + q2) / 2)));
+    // K = 1/2 (1/3) q1'^2 + 1/2 [q1'^2 + q1' (q1' + q2') cos q2 + (q1' + q2')^2 / 3]
+    ex w2 = d1 + d2;
+    EXPECT_TRUE(same(sys.calc_kinetic_energy(sys.bodies()).subs(unit),
+                     d1 * d1 / 6 + (d1 * d1 + d1 * w2 * cos(q2) + w2 * w2 / 3) / 2));
+}
+
+TEST(SampleModelPlanarChain, AChainWithoutLinksIsAnArgumentError) {
+    EXPECT_THROW_MSG(make_planar_chain(0), ArgumentError,
+                     "make_planar_chain(): a chain needs at least one link, not 0");
+}
+
 TEST(SampleModelNLinkPendulum, AChainWithoutLinksIsAnArgumentError) {
     EXPECT_THROW_MSG(make_n_link_pendulum(0), ArgumentError,
                      "make_n_link_pendulum(): a chain needs at least one link, not 0");
