@@ -37,7 +37,7 @@ std::string per_second(const std::string& unit, int power) {
 
 // compiles `outputs` of `inputs` with the parameters; the compiler's messages get our context
 StraightLineProgram compile(const SymbolTable& table, const std::vector<ex>& inputs,
-                            const std::vector<ex>& outputs, const std::vector<ex>& parameters,
+                            const std::vector<ex>& outputs, const CompileOptions& parameters,
                             const std::string& what) {
     try {
         return CompiledExpressions(table, inputs, outputs, parameters).calc_program();
@@ -184,6 +184,8 @@ CodePlan plan_code(const SymbolTable& table, const DynamicsEquations& eq,
     }
     std::vector<std::string> parameter_names;
     for (const ex& c : parameters) parameter_names.push_back(table.name(c));
+    const CompileOptions compile_options{.parameters = parameters,
+                                         .expand_angle_sums = options.expand_angle_sums};
     std::vector<std::string> q_names, qp_names, qpp_names, u_names;
     for (std::size_t i = 0; i < n; ++i) {
         q_names.push_back(plan.q[i].name);
@@ -215,11 +217,11 @@ CodePlan plan_code(const SymbolTable& table, const DynamicsEquations& eq,
         for (unsigned i = 0; i < n; ++i)
             for (unsigned j = 0; j < n; ++j) mf.push_back(D.A(i, j));
         for (unsigned i = 0; i < n; ++i) mf.push_back(D.b(i, 0));
-        mf_program = compile(table, symbols({&q, &qp, &eq.loads}), mf, parameters,
+        mf_program = compile(table, symbols({&q, &qp, &eq.loads}), mf, compile_options,
                              "the mass matrix and forcing");
     } else {
         StraightLineProgram E = compile(table, symbols({&q, &qp, &eq.loads, &qpp}),
-                                        eq.residuals, parameters, "the equations of motion");
+                                        eq.residuals, compile_options, "the equations of motion");
         std::vector<std::size_t> accelerations;
         for (std::size_t i = 0; i < n; ++i) accelerations.push_back(1 + 2 * n + eq.loads.size() + i);
         try {
@@ -249,7 +251,7 @@ CodePlan plan_code(const SymbolTable& table, const DynamicsEquations& eq,
             .arrays = {"q", "qp", "qpp"},
             .results = {"u"},
             .result_sizes = {n},
-            .program = compile(table, symbols({&q, &qp, &qpp}), u, parameters, "inverse dynamics"),
+            .program = compile(table, symbols({&q, &qp, &qpp}), u, compile_options, "inverse dynamics"),
             .input_names = input_names({&q_names, &qp_names, &qpp_names}),
             .parameter_names = parameter_names};
     }
@@ -272,7 +274,7 @@ CodePlan plan_code(const SymbolTable& table, const DynamicsEquations& eq,
             .arrays = {"q", "qp", "qpp", "u"},
             .results = {"y"},
             .result_sizes = {y.size()},
-            .program = compile(table, symbols({&q, &qp, &qpp, &eq.loads}), y, parameters,
+            .program = compile(table, symbols({&q, &qp, &qpp, &eq.loads}), y, compile_options,
                                "the outputs"),
             .input_names = input_names({&q_names, &qp_names, &qpp_names, &u_names}),
             .parameter_names = parameter_names};
@@ -305,7 +307,7 @@ CodePlan plan_code(const SymbolTable& table, const DynamicsEquations& eq,
                           .arrays = {"q", "qp"},
                           .results = {"u"},
                           .result_sizes = {eq.loads.size()},
-                          .program = compile(table, symbols({&q, &qp}), laws, parameters,
+                          .program = compile(table, symbols({&q, &qp}), laws, compile_options,
                                              "the load laws"),
                           .input_names = input_names({&q_names, &qp_names}),
                           .parameter_names = parameter_names};

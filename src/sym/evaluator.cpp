@@ -570,9 +570,34 @@ private:
             throw NotImplemented(std::string(kWho) + ": the function '" + f.get_name() +
                                  "' (in " + context_ +
                                  ") cannot be compiled; supported functions: " + kSupportedList);
+        if (expand_angle_sums && (it->second == TapeOp::sin || it->second == TapeOp::cos) &&
+            is_a<add>(e.op(0)))
+            return angle_sum(it->second, e.op(0));
         Value a = compile(e.op(0));
         return emit(it->second, a, e.nops() > 1 ? compile(e.op(1)) : a);
     }
+
+    // sin or cos of a + t from sin and cos of a and of t, t the term compiled last (for the
+    // relative angles of a chain, the last coordinate), so that the shorter sums are shared
+    Value angle_sum(TapeOp op, const ex& sum) {
+        std::size_t pick = sum.nops();
+        Value last = 0;
+        for (std::size_t i = 0; i < sum.nops(); ++i) {
+            if (is_a<numeric>(sum.op(i))) continue;
+            Value v = compile(sum.op(i));
+            if (pick == sum.nops() || v > last) pick = i, last = v;
+        }
+        const ex t = sum.op(pick), a = sum - t;
+        const Value sa = compile(GiNaC::sin(a)), ca = compile(GiNaC::cos(a)),
+                    st = compile(GiNaC::sin(t)), ct = compile(GiNaC::cos(t));
+        if (op == TapeOp::sin) return emit(TapeOp::add, emit(TapeOp::mul, sa, ct), emit(TapeOp::mul, ca, st));
+        return emit(TapeOp::sub, emit(TapeOp::mul, ca, ct), emit(TapeOp::mul, sa, st));
+    }
+
+public:
+    bool expand_angle_sums = false;
+
+private:
 
     std::string name_of(const ex& s) const {
         if (table_.owns(s)) return table_.name(s);
@@ -763,13 +788,20 @@ void rename(const std::vector<TapeInstruction>& tape, const std::vector<TapeTerm
 
 CompiledExpressions::CompiledExpressions(const SymbolTable& table, std::vector<ex> inputs,
                                          const std::vector<ex>& outputs)
-    : CompiledExpressions(table, std::move(inputs), outputs, {}) {}
+    : CompiledExpressions(table, std::move(inputs), outputs, std::vector<ex>{}) {}
 
 CompiledExpressions::CompiledExpressions(const SymbolTable& table, std::vector<ex> inputs,
                                          const std::vector<ex>& outputs,
                                          std::vector<ex> parameters)
-    : inputs_(std::move(inputs)), parameters_(std::move(parameters)) {
+    : CompiledExpressions(table, std::move(inputs), outputs,
+                          CompileOptions{.parameters = std::move(parameters)}) {}
+
+CompiledExpressions::CompiledExpressions(const SymbolTable& table, std::vector<ex> inputs,
+                                         const std::vector<ex>& outputs,
+                                         const CompileOptions& options)
+    : inputs_(std::move(inputs)), parameters_(options.parameters) {
     Compiler c(table, inputs_, parameters_);
+    c.expand_angle_sums = options.expand_angle_sums;
     // named intermediates first, in dependency order, so that no definition is compiled
     // inside another (a long chain of intermediates costs no recursion depth)
     for (const ex& z : c.reachable_intermediates(outputs)) c.compile_intermediate(z);

@@ -94,6 +94,10 @@ struct CodegenOptions {
     /// Units by symbol or output name ("L_A" -> "m", "qA" -> "rad", "T_A" -> "N*m"), shown in
     /// comments and CSV headers; a rate's unit is its coordinate's per second.
     std::map<std::string, std::string> units{};
+    /// Sines and cosines of sums of angles from those of shorter sums (CompileOptions::
+    /// expand_angle_sums): a chain's q_i + ... + q_j cost six operations each instead of two
+    /// calls. More operations, less time.
+    bool expand_angle_sums = true;
     /// Extra outputs computed by an `outputs` function (and written by the simulation).
     std::vector<CodegenOutput> outputs{};
     /// Also write a complete simulation program (see SimulationSpec).

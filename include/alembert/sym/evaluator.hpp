@@ -36,6 +36,19 @@ struct TapeTerm {
 
 }  // namespace detail
 
+/// How CompiledExpressions compiles, beyond its inputs and outputs.
+struct CompileOptions {
+    /// Symbols passed once per parameter set (see CompiledExpressions, parameters).
+    std::vector<ex> parameters{};
+    /// Computes sin and cos of a sum a + t from those of a and t by the angle-sum formulas
+    /// (sin(a + t) = sin a cos t + cos a sin t, cos(a + t) = cos a cos t - sin a sin t), t the
+    /// term compiled last, recursively: the angles q_i + ... + q_j of a planar chain then cost
+    /// six arithmetic operations each instead of a sine and a cosine, because the shorter sums
+    /// are shared. More operations, less time wherever such sums are many; results differ
+    /// from the direct functions by rounding only.
+    bool expand_angle_sums = false;
+};
+
 /// Expressions of a symbol table compiled once into a flat tape of double-precision
 /// operations, then evaluated many times at numbers (cross-checks, simulation, inverse
 /// dynamics), orders of magnitude faster than `SymbolTable::evaluate` (GiNaC subs + evalf).
@@ -95,6 +108,10 @@ public:
     ///         listed twice or also as an input.
     CompiledExpressions(const SymbolTable& table, std::vector<ex> inputs,
                         const std::vector<ex>& outputs, std::vector<ex> parameters);
+
+    /// As above with the options (parameters, angle sums) of `options`.
+    CompiledExpressions(const SymbolTable& table, std::vector<ex> inputs,
+                        const std::vector<ex>& outputs, const CompileOptions& options);
 
     /// The input symbols, in the order their values are passed.
     const std::vector<ex>& inputs() const { return inputs_; }
