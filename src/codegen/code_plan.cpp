@@ -213,6 +213,12 @@ CodePlan plan_code(const SymbolTable& table, const DynamicsEquations& eq,
             throw ArgumentError(std::string(kWho) + ": the mass matrix given is " +
                                 std::to_string(D.A.rows()) + " x " + std::to_string(D.A.cols()) +
                                 " for " + std::to_string(n) + " coordinates");
+        for (std::size_t i = 0; i < n; ++i)
+            if (D.unknowns.size() != n || !D.unknowns[i].is_equal(qpp[i]))
+                throw ArgumentError(std::string(kWho) + ": the mass matrix given is not for the "
+                                    "accelerations q'' of the coordinates, in their order (its "
+                                    "unknowns differ at position " + std::to_string(i + 1) +
+                                    "); give M and f of M q'' = f, or leave mass_forcing empty");
         std::vector<ex> mf;
         for (unsigned i = 0; i < n; ++i)
             for (unsigned j = 0; j < n; ++j) mf.push_back(D.A(i, j));

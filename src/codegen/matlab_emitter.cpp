@@ -12,6 +12,13 @@ std::string labelled(const CodeSymbol& s) {
     return s.unit.empty() ? s.name : s.name + " [" + s.unit + "]";
 }
 
+// the text of a MATLAB string literal: quotes doubled (qA' -> qA'')
+std::string matlab_string(const std::string& text) {
+    std::string s;
+    for (char ch : text) s += ch == '\'' ? std::string("''") : std::string(1, ch);
+    return s;
+}
+
 std::string column_of(const std::vector<double>& v, const CodePrinter& pr) {
     std::string s;
     for (double x : v) s += (s.empty() ? "" : "; ") + pr.number(x);
@@ -173,7 +180,7 @@ std::vector<GeneratedFile> MatlabEmitter::emit(const CodePlan& plan) const {
           << "fid = fopen(path, 'w');\n"
           << "if fid < 0\n    error('" << N << ":file', '" << N
           << "_simulate: cannot open %s for writing', path);\nend\n"
-          << "fprintf(fid, '%s\\n', '" << head << "');\n"
+          << "fprintf(fid, '%s\\n', '" << matlab_string(head) << "');\n"
           << "for k = 1:numel(t)\n"
           << "    q = x(k, 1:" << n << ")';\n    qp = x(k, " << n + 1 << ":" << 2 * n << ")';\n"
           << "    u = " << (plan.load_count ? N + "_load_laws(t(k), q, qp, ctx)" : "zeros(0, 1)")

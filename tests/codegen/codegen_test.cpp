@@ -193,6 +193,11 @@ TEST(GenerateCode, BadRequestsFailWithClearMessages) {
     missing.loads.pop_back();
     EXPECT_THROW_MSG(generate_code(T, missing, Language::c, dir.path()), ArgumentError,
                      "the unknown 'T_C'");
+    // a mass matrix for other unknowns than the accelerations
+    CodegenCase e = planar_chain_case(2);
+    std::swap(e.equations.mass_forcing->unknowns[0], e.equations.mass_forcing->unknowns[1]);
+    EXPECT_THROW_MSG(generate_code(e.table(), e.equations, Language::c, dir.path()),
+                     ArgumentError, "its unknowns differ at position 1");
     // a parameter needs a default
     CodegenCase d = planar_chain_case(2);
     SymbolTable& S = d.model->system.symbols();

@@ -101,3 +101,27 @@ TEST(GeneratedMatlab, AgreesWithTheEvaluatorUnderOctave) {
         << out;
     expect_agreement(c, states, numbers(out), 1e-12, "Octave, " + c.name);
 }
+
+TEST(GeneratedMatlab, FilesAreFunctionsWithQuotedStrings) {
+    // checked without Octave: one function per file, named as the file, closed by end;
+    // primes in the CSV header doubled inside MATLAB's single-quoted string
+    CodegenCase c = triple_pendulum_case();
+    ScratchDir dir("m-text");
+    CodegenOptions o{.name = "tp", .simulation = true};
+    o.units = {{"qA", "rad"}};
+    GeneratedCode g = generate_code(c.table(), c.equations, Language::matlab, dir.path(), o);
+    ASSERT_EQ(g.files.size(), 8u);  // parameters, context, M and f, ID, load laws, FD, rhs, simulate
+    for (const fs::path& f : g.files) {
+        std::ifstream in(f);
+        std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+        const std::string stem = f.stem().string();
+        EXPECT_EQ(text.rfind("function ", 0), 0u) << f;
+        EXPECT_NE(text.find(stem + "("), std::string::npos) << f;
+        EXPECT_EQ(text.substr(text.size() - 4), "end\n") << f;
+        if (stem == "tp_simulate") {
+            EXPECT_NE(text.find("'t [s],qA [rad],qB,qC,qA'' [rad/s],qB'',qC'',T_A,T_B,T_C'"),
+                      std::string::npos)
+                << text;
+        }
+    }
+}
