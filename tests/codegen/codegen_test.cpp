@@ -26,11 +26,11 @@ std::vector<double> run_generated(const CodegenCase& c, Language lang, const fs:
     std::string cmd;
     if (lang == Language::c) {
         write(dir / "driver.c", c_driver(c.name));
-        cmd = "cd " + dir.string() + " && cc -std=c99 -pedantic -Wall -Wextra -Werror -O1 " +
+        cmd = "cd " + dir.string() + " && cc -std=c99 -pedantic -Wall -Wextra -Werror -O0 " +
               c.name + ".c driver.c -lm -o driver";
     } else {
         write(dir / "driver.cpp", cpp_driver(c.name, setup));
-        cmd = "cd " + dir.string() + " && c++ -std=c++17 -pedantic -Wall -Wextra -Werror -O1 " +
+        cmd = "cd " + dir.string() + " && c++ -std=c++17 -pedantic -Wall -Wextra -Werror -O0 " +
               c.name + ".cpp driver.cpp -o driver";
     }
     EXPECT_EQ(run(cmd, out), 0) << "compiling the generated code failed:\n" << out;
@@ -122,7 +122,7 @@ TEST(GenerateCode, SimulationProgramsConserveEnergyAndWriteLabelledColumns) {
         std::string out;
         std::string cmd = "cd " + dir.path().string() + " && " +
                           (cpp ? "c++ -std=c++17" : "cc -std=c99") +
-                          " -pedantic -Wall -Wextra -Werror -O2 " + c.name +
+                          " -pedantic -Wall -Wextra -Werror -O1 " + c.name +
                           (cpp ? ".cpp " : ".c ") + c.name + (cpp ? "_main.cpp" : "_main.c") +
                           " -lm -o sim && ./sim run.csv";
         ASSERT_EQ(run(cmd, out), 0) << out;
