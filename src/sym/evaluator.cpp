@@ -6,6 +6,7 @@
 #include <bit>
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <unordered_map>
@@ -76,7 +77,6 @@ inline T combine(const TapeTerm* t, std::uint32_t n, const T* r) {
     return s0 + s1;
 }
 
-bool is_unary(TapeOp op) { return op >= TapeOp::neg; }
 bool is_commutative(TapeOp op) { return op == TapeOp::add || op == TapeOp::mul; }
 
 // the GiNaC functions the tape computes, by serial
@@ -114,9 +114,10 @@ using ExSet = std::unordered_set<ex, std::hash<ex>, EqualSharing>;
 using Value = std::uint32_t;
 
 struct ValueInfo {
-    enum class Kind : std::uint8_t { input, literal, temporary } kind;
+    enum class Kind : std::uint8_t { input, parameter, literal, temporary } kind;
     double literal = 0;      // literal
-    std::uint32_t index = 0;  // input: its position; temporary: its defining instruction
+    std::uint32_t index = 0;  // input, parameter: its position; temporary: its instruction
+    bool fixed = false;       // a parameter, a number, or computed from those only
 };
 
 // r = a op b, or for a linear combination r = sum of the terms [a, a + b) of the term list
@@ -146,21 +147,12 @@ struct OpKeyHash {
 
 class Compiler {
 public:
-    Compiler(const SymbolTable& table, const std::vector<ex>& inputs) : table_(table) {
-        for (std::size_t i = 0; i < inputs.size(); ++i) {
-            const ex& s = inputs[i];
-            if (!is_a<symbol>(s)) {
-                std::ostringstream os;
-                os << kWho << ": input " << i << " ('" << s
-                   << "') is not a symbol; list symbols only (q, q', constants, t)";
-                throw ArgumentError(os.str());
-            }
-            Value v = new_value({.kind = ValueInfo::Kind::input,
-                                 .index = static_cast<std::uint32_t>(i)});
-            if (!memo_.emplace(s, v).second)
-                throw ArgumentError(std::string(kWho) + ": '" + name_of(s) +
-                                    "' is listed twice as an input; list each symbol once");
-        }
+    Compiler(const SymbolTable& table, const std::vector<ex>& inputs,
+             const std::vector<ex>& parameters)
+        : table_(table) {
+        declare(inputs, ValueInfo::Kind::input, "input");
+        declare(parameters, ValueInfo::Kind::parameter, "parameter");
+        has_parameters_ = !parameters.empty();
     }
 
     /// Intermediates the outputs reach (not overridden by inputs), in dependency order.
@@ -221,6 +213,29 @@ public:
     std::vector<SsaTerm> terms;  // of the linear combinations
 
 private:
+    void declare(const std::vector<ex>& symbols, ValueInfo::Kind kind, const char* what) {
+        for (std::size_t i = 0; i < symbols.size(); ++i) {
+            const ex& s = symbols[i];
+            if (!is_a<symbol>(s)) {
+                std::ostringstream os;
+                os << kWho << ": " << what << " " << i << " ('" << s
+                   << "') is not a symbol; list symbols only (q, q', constants, t)";
+                throw ArgumentError(os.str());
+            }
+            auto known = memo_.find(s);
+            if (known != memo_.end()) {
+                bool same = values[known->second].kind == kind;
+                throw ArgumentError(std::string(kWho) + ": '" + name_of(s) + "' is listed " +
+                                    (same ? std::string("twice as ") + (kind == ValueInfo::Kind::input ? "an " : "a ") + what
+                                          : std::string("both as an input and as a parameter")) +
+                                    "; list each symbol once");
+            }
+            memo_.emplace(s, new_value({.kind = kind,
+                                        .index = static_cast<std::uint32_t>(i),
+                                        .fixed = kind == ValueInfo::Kind::parameter}));
+        }
+    }
+
     // ---- values ---------------------------------------------------------------------------
     Value new_value(ValueInfo info) {
         values.push_back(info);
@@ -229,11 +244,16 @@ private:
 
     Value literal(double x) {
         auto [it, fresh] = literals_.try_emplace(std::bit_cast<std::uint64_t>(x), 0);
-        if (fresh) it->second = new_value({.kind = ValueInfo::Kind::literal, .literal = x});
+        if (fresh)
+            it->second =
+                new_value({.kind = ValueInfo::Kind::literal, .literal = x, .fixed = true});
         return it->second;
     }
 
     bool is_literal(Value v) const { return values[v].kind == ValueInfo::Kind::literal; }
+    // depends on parameters (and numbers) only: computed once per parameter set
+    bool is_fixed(Value v) const { return values[v].fixed; }
+    bool is_hoistable(Value v) const { return is_fixed(v) && !is_literal(v); }
     bool is_literal(Value v, double x) const { return is_literal(v) && values[v].literal == x; }
 
     // one operation, folded when its operands are numbers or an identity, and shared when the
@@ -287,7 +307,8 @@ private:
         auto [it, fresh] = shared_ops_.try_emplace(OpKey{op, a, b}, 0);
         if (!fresh) return it->second;
         Value r = new_value({.kind = ValueInfo::Kind::temporary,
-                             .index = static_cast<std::uint32_t>(instructions.size())});
+                             .index = static_cast<std::uint32_t>(instructions.size()),
+                             .fixed = is_fixed(a) && is_fixed(b)});
         instructions.push_back({op, a, b, r});
         it->second = r;
         return r;
@@ -369,7 +390,15 @@ private:
             if (is_a<mul>(term)) {
                 numeric k = coefficient(term);
                 c = values[number(k)].literal;
-                v = k.is_equal(numeric(1)) ? compile(term) : product(term, numeric(1));
+                if (k.is_equal(numeric(1))) {
+                    v = compile(term);
+                } else if (has_hoistable_factor(term)) {
+                    // the coefficient joins the parameters' product, computed once
+                    v = product(term, k);
+                    c = 1;
+                } else {
+                    v = product(term, numeric(1));
+                }
             } else {
                 v = compile(term);
             }
@@ -384,6 +413,21 @@ private:
                 t[it->second].c += c;
         }
         std::erase_if(t, [](const SsaTerm& x) { return x.c == 0; });
+        // the terms on parameters only and the number, summed once per parameter set
+        auto rest = std::partition(t.begin(), t.end(),
+                                   [&](const SsaTerm& x) { return is_hoistable(x.v); });
+        std::vector<SsaTerm> fixed(t.begin(), rest);
+        if (!fixed.empty() && (fixed.size() > 1 || c0 != 0 || std::fabs(fixed[0].c) != 1)) {
+            std::vector<SsaTerm> varying(rest, t.end());
+            if (varying.empty()) return linear(std::move(fixed), c0);
+            varying.push_back({1, linear(std::move(fixed), c0)});
+            return linear(std::move(varying), 0);
+        }
+        return linear(std::move(t), c0);
+    }
+
+    // c0 + sum c_k v_k over terms with distinct values, none zero
+    Value linear(std::vector<SsaTerm> t, double c0) {
         if (t.empty()) return literal(c0);
         if (t.size() + (c0 != 0 ? 1 : 0) > 2) {
             if (c0 != 0) t.push_back({c0, literal(1)});
@@ -403,8 +447,10 @@ private:
     }
 
     Value record_combination(const std::vector<SsaTerm>& t) {
+        bool fixed = std::all_of(t.begin(), t.end(), [&](const SsaTerm& x) { return is_fixed(x.v); });
         Value r = new_value({.kind = ValueInfo::Kind::temporary,
-                             .index = static_cast<std::uint32_t>(instructions.size())});
+                             .index = static_cast<std::uint32_t>(instructions.size()),
+                             .fixed = fixed});
         instructions.push_back({TapeOp::combine, static_cast<Value>(terms.size()),
                                 static_cast<Value>(t.size()), r});
         terms.insert(terms.end(), t.begin(), t.end());
@@ -446,10 +492,41 @@ private:
             else
                 (below ? den : num).push_back(v);
         }
+        // with parameters: their factors and the number first, as one value computed once
+        auto varies = [&](Value v) { return !is_fixed(v); };
+        auto num_rest = std::stable_partition(num.begin(), num.end(), varies);
+        auto den_rest = std::stable_partition(den.begin(), den.end(), varies);
+        if (num_rest != num.end() || den_rest != den.end()) {
+            std::vector<Value> fixed_num(num_rest, num.end()), fixed_den(den_rest, den.end());
+            num.erase(num_rest, num.end());
+            den.erase(den_rest, den.end());
+            Value f = quotient(std::move(fixed_num), std::move(fixed_den), k);
+            if (num.empty() && den.empty()) return f;
+            if (den.empty()) return emit(TapeOp::mul, reduce(TapeOp::mul, std::move(num)), f);
+            num.push_back(f);
+            return quotient(std::move(num), std::move(den), 1);
+        }
+        return quotient(std::move(num), std::move(den), k);
+    }
+
+    // k * prod(num) / prod(den)
+    Value quotient(std::vector<Value> num, std::vector<Value> den, double k) {
         Value top = literal(k);
         if (!num.empty()) top = emit(TapeOp::mul, reduce(TapeOp::mul, std::move(num)), top);
         if (den.empty()) return top;
         return emit(TapeOp::div, top, reduce(TapeOp::mul, std::move(den)));
+    }
+
+    // true if a factor of the product `m` (or its base, for a power) depends on parameters
+    // only; without parameters, never
+    bool has_hoistable_factor(const ex& m) {
+        if (!has_parameters_) return false;
+        for (std::size_t i = 0; i < m.nops(); ++i) {
+            ex f = m.op(i);
+            if (is_a<numeric>(f)) continue;
+            if (is_hoistable(compile(is_a<power>(f) ? f.op(0) : f))) return true;
+        }
+        return false;
     }
 
     // b^k for a number k: products for integers, sqrt for halves, std::pow otherwise
@@ -493,9 +570,34 @@ private:
             throw NotImplemented(std::string(kWho) + ": the function '" + f.get_name() +
                                  "' (in " + context_ +
                                  ") cannot be compiled; supported functions: " + kSupportedList);
+        if (expand_angle_sums && (it->second == TapeOp::sin || it->second == TapeOp::cos) &&
+            is_a<add>(e.op(0)))
+            return angle_sum(it->second, e.op(0));
         Value a = compile(e.op(0));
         return emit(it->second, a, e.nops() > 1 ? compile(e.op(1)) : a);
     }
+
+    // sin or cos of a + t from sin and cos of a and of t, t the term compiled last (for the
+    // relative angles of a chain, the last coordinate), so that the shorter sums are shared
+    Value angle_sum(TapeOp op, const ex& sum) {
+        std::size_t pick = sum.nops();
+        Value last = 0;
+        for (std::size_t i = 0; i < sum.nops(); ++i) {
+            if (is_a<numeric>(sum.op(i))) continue;
+            Value v = compile(sum.op(i));
+            if (pick == sum.nops() || v > last) pick = i, last = v;
+        }
+        const ex t = sum.op(pick), a = sum - t;
+        const Value sa = compile(GiNaC::sin(a)), ca = compile(GiNaC::cos(a)),
+                    st = compile(GiNaC::sin(t)), ct = compile(GiNaC::cos(t));
+        if (op == TapeOp::sin) return emit(TapeOp::add, emit(TapeOp::mul, sa, ct), emit(TapeOp::mul, ca, st));
+        return emit(TapeOp::sub, emit(TapeOp::mul, ca, ct), emit(TapeOp::mul, sa, st));
+    }
+
+public:
+    bool expand_angle_sums = false;
+
+private:
 
     std::string name_of(const ex& s) const {
         if (table_.owns(s)) return table_.name(s);
@@ -513,17 +615,21 @@ private:
     std::unordered_map<std::uint64_t, Value> literals_;
     std::unordered_map<OpKey, Value, OpKeyHash> shared_ops_;
     std::string context_;
+    bool has_parameters_ = false;
 };
 
 // ---- register allocation: live instructions only, registers reused after a value's last use --
 
 struct Program {
-    std::vector<TapeInstruction> tape;
+    std::vector<TapeInstruction> prelude;  // parameter-only instructions, once per parameter set
+    std::vector<TapeInstruction> tape;     // the rest, every call
     std::vector<TapeTerm> terms;
     std::vector<double> literals;
+    std::size_t hoisted = 0;  // registers written by the prelude, after the literals
     std::vector<std::uint32_t> outputs;
     std::size_t registers = 0;
     std::size_t operations = 0;
+    std::size_t prelude_operations = 0;
 };
 
 // calls f(value) for each operand of instruction `in`
@@ -537,7 +643,8 @@ void for_each_operand(const Compiler& c, const SsaInstruction& in, F&& f) {
     }
 }
 
-Program allocate(const Compiler& c, const std::vector<Value>& outputs, std::size_t n_inputs) {
+Program allocate(const Compiler& c, const std::vector<Value>& outputs, std::size_t n_inputs,
+                 std::size_t n_parameters) {
     const auto& values = c.values;
     const auto& code = c.instructions;
     using Kind = ValueInfo::Kind;
@@ -553,12 +660,29 @@ Program allocate(const Compiler& c, const std::vector<Value>& outputs, std::size
         for_each_operand(c, code[i], [&](Value x) { live[x] = 1; });
     }
 
-    // inputs first, then each live number, then temporaries
+    // hoisting: an instruction on parameters, numbers and hoisted values only goes to the
+    // prelude (numbers alone were folded by the compiler)
+    std::vector<char> fixed(values.size(), 0);
+    for (std::size_t v = 0; v < values.size(); ++v)
+        fixed[v] = values[v].kind == Kind::parameter || values[v].kind == Kind::literal;
+    std::vector<char> hoist(code.size(), 0);
+    for (std::size_t i = 0; i < code.size(); ++i) {
+        if (!needed[i]) continue;
+        bool all = true;
+        for_each_operand(c, code[i], [&](Value x) { all = all && fixed[x]; });
+        hoist[i] = all;
+        fixed[code[i].result] = all;
+    }
+
+    // inputs first, then parameters, each live number, the prelude's results, temporaries
     Program p;
     std::vector<std::uint32_t> reg(values.size(), 0);
-    for (std::size_t v = 0; v < values.size(); ++v)
+    for (std::size_t v = 0; v < values.size(); ++v) {
         if (values[v].kind == Kind::input) reg[v] = values[v].index;
-    auto next = static_cast<std::uint32_t>(n_inputs);
+        if (values[v].kind == Kind::parameter)
+            reg[v] = static_cast<std::uint32_t>(n_inputs + values[v].index);
+    }
+    auto next = static_cast<std::uint32_t>(n_inputs + n_parameters);
     for (std::size_t v = 0; v < values.size(); ++v)
         if (values[v].kind == Kind::literal && live[v]) {
             reg[v] = next++;
@@ -578,7 +702,8 @@ Program allocate(const Compiler& c, const std::vector<Value>& outputs, std::size
             partner[i] = Compiler::kNoPartner;
 
     // temporaries: a register is free again once its value's last use has read it, so the
-    // result of an instruction may overwrite one of its own operands
+    // result of an instruction may overwrite one of its own operands; the prelude's results
+    // keep their registers
     std::vector<std::uint32_t> free;
     auto take = [&] {
         if (free.empty()) return next++;
@@ -586,55 +711,97 @@ Program allocate(const Compiler& c, const std::vector<Value>& outputs, std::size
         free.pop_back();
         return d;
     };
-    for (std::size_t i = 0; i < code.size(); ++i) {
-        if (!needed[i]) continue;
+    auto place = [&](std::size_t i, std::vector<TapeInstruction>& tape, std::size_t& operations,
+                     bool release) {
         const SsaInstruction& in = code[i];
-        for_each_operand(c, in, [&](Value x) {
-            if (values[x].kind == Kind::temporary && last_use[x] == i) {
-                free.push_back(reg[x]);
-                last_use[x] = kNever;  // freed once even when x is read twice
-            }
-        });
+        if (release)
+            for_each_operand(c, in, [&](Value x) {
+                if (values[x].kind == Kind::temporary && !fixed[x] && last_use[x] == i) {
+                    free.push_back(reg[x]);
+                    last_use[x] = kNever;  // freed once even when x is read twice
+                }
+            });
         if (partner[i] != Compiler::kNoPartner) {
-            if (partner[i] < i) continue;  // computed with its partner
+            if (partner[i] < i) return;  // computed with its partner
             const SsaInstruction& other = code[partner[i]];
             const SsaInstruction& sine = in.op == TapeOp::sin ? in : other;
             const SsaInstruction& cosine = in.op == TapeOp::sin ? other : in;
             std::uint32_t ds = take(), dc = take();
-            p.tape.push_back({TapeOp::sincos, ds, reg[in.a], dc});
-            p.operations += 2;
+            tape.push_back({TapeOp::sincos, ds, reg[in.a], dc});
+            operations += 2;
             reg[sine.result] = ds;
             reg[cosine.result] = dc;
-            continue;
+            return;
         }
         std::uint32_t d = take();
         if (in.op == TapeOp::combine) {
             // n terms: n - 1 additions and a product per coefficient other than +-1
             auto first = static_cast<std::uint32_t>(p.terms.size());
-            p.operations += in.b - 1;
+            operations += in.b - 1;
             for (Value k = in.a; k < in.a + in.b; ++k) {
                 const SsaTerm& t = c.terms[k];
                 p.terms.push_back({t.c, reg[t.v]});
-                if (values[t.v].kind != Kind::literal && std::fabs(t.c) != 1) ++p.operations;
+                if (values[t.v].kind != Kind::literal && std::fabs(t.c) != 1) ++operations;
             }
-            p.tape.push_back({in.op, d, first, in.b});
+            tape.push_back({in.op, d, first, in.b});
         } else {
-            p.tape.push_back({in.op, d, reg[in.a], reg[in.b]});
-            ++p.operations;
+            tape.push_back({in.op, d, reg[in.a], reg[in.b]});
+            ++operations;
         }
         reg[in.result] = d;
-    }
+    };
+    const std::uint32_t first_hoisted = next;
+    for (std::size_t i = 0; i < code.size(); ++i)
+        if (needed[i] && hoist[i]) place(i, p.prelude, p.prelude_operations, false);
+    p.hoisted = next - first_hoisted;
+    for (std::size_t i = 0; i < code.size(); ++i)
+        if (needed[i] && !hoist[i]) place(i, p.tape, p.operations, true);
     for (Value v : outputs) p.outputs.push_back(reg[v]);
     p.registers = next;
     return p;
+}
+
+// the instructions of `tape` in single-assignment form: each write defines a new value, each
+// read takes the value its register holds at that point (`current`, updated)
+void rename(const std::vector<TapeInstruction>& tape, const std::vector<TapeTerm>& terms,
+            std::vector<std::uint32_t>& current, StraightLineProgram& out,
+            std::vector<ProgramInstruction>& code) {
+    for (const TapeInstruction& t : tape) {
+        auto result = static_cast<std::uint32_t>(out.value_count++);
+        if (t.op == TapeOp::combine) {
+            auto first = static_cast<std::uint32_t>(out.terms.size());
+            for (std::uint32_t k = t.a; k < t.a + t.b; ++k)
+                out.terms.push_back({terms[k].c, current[terms[k].reg]});
+            code.push_back({t.op, result, first, t.b});
+        } else if (t.op == TapeOp::sincos) {
+            auto cosine = static_cast<std::uint32_t>(out.value_count++);
+            code.push_back({t.op, result, current[t.a], cosine});
+            current[t.b] = cosine;
+        } else {
+            code.push_back({t.op, result, current[t.a], current[t.b]});
+        }
+        current[t.dst] = result;
+    }
 }
 
 }  // namespace
 
 CompiledExpressions::CompiledExpressions(const SymbolTable& table, std::vector<ex> inputs,
                                          const std::vector<ex>& outputs)
-    : inputs_(std::move(inputs)) {
-    Compiler c(table, inputs_);
+    : CompiledExpressions(table, std::move(inputs), outputs, std::vector<ex>{}) {}
+
+CompiledExpressions::CompiledExpressions(const SymbolTable& table, std::vector<ex> inputs,
+                                         const std::vector<ex>& outputs,
+                                         std::vector<ex> parameters)
+    : CompiledExpressions(table, std::move(inputs), outputs,
+                          CompileOptions{.parameters = std::move(parameters)}) {}
+
+CompiledExpressions::CompiledExpressions(const SymbolTable& table, std::vector<ex> inputs,
+                                         const std::vector<ex>& outputs,
+                                         const CompileOptions& options)
+    : inputs_(std::move(inputs)), parameters_(options.parameters) {
+    Compiler c(table, inputs_, parameters_);
+    c.expand_angle_sums = options.expand_angle_sums;
     // named intermediates first, in dependency order, so that no definition is compiled
     // inside another (a long chain of intermediates costs no recursion depth)
     for (const ex& z : c.reachable_intermediates(outputs)) c.compile_intermediate(z);
@@ -642,14 +809,46 @@ CompiledExpressions::CompiledExpressions(const SymbolTable& table, std::vector<e
     out.reserve(outputs.size());
     for (std::size_t k = 0; k < outputs.size(); ++k) out.push_back(c.compile_output(outputs[k], k));
 
-    Program p = allocate(c, out, inputs_.size());
+    Program p = allocate(c, out, inputs_.size(), parameters_.size());
+    prelude_ = std::move(p.prelude);
     tape_ = std::move(p.tape);
     terms_ = std::move(p.terms);
     operation_count_ = p.operations;
+    prelude_operation_count_ = p.prelude_operations;
     literals_ = std::move(p.literals);
     outputs_ = std::move(p.outputs);
     register_count_ = p.registers;
     scratch_.assign(register_count_, 0.0);
+
+    // parameters start at their table values (NaN without one); the prelude runs once now
+    fixed_.assign(parameters_.size() + literals_.size() + p.hoisted, 0.0);
+    for (std::size_t i = 0; i < parameters_.size(); ++i) {
+        const ex& s = parameters_[i];
+        std::optional<double> x = table.owns(s) && table.kind(s) == SymbolKind::constant
+                                      ? table.value(s)
+                                      : std::nullopt;
+        fixed_[i] = x ? *x : std::numeric_limits<double>::quiet_NaN();
+    }
+    set_parameters(std::span<const double>(fixed_.data(), parameters_.size()));
+}
+
+std::vector<double> CompiledExpressions::parameter_values() const {
+    return {fixed_.begin(), fixed_.begin() + static_cast<std::ptrdiff_t>(parameters_.size())};
+}
+
+void CompiledExpressions::set_parameters(std::span<const double> values) {
+    if (values.size() != parameters_.size()) {
+        std::ostringstream os;
+        os << kWho << "::set_parameters(): " << values.size() << " values given, "
+           << parameters_.size() << " expected (one per parameter, in the order of parameters())";
+        throw ArgumentError(os.str());
+    }
+    // parameters and numbers into a workspace, the prelude, then keep what it computed
+    std::vector<double> r(register_count_);
+    const std::size_t n = inputs_.size();
+    std::copy(values.begin(), values.end(), r.begin() + static_cast<std::ptrdiff_t>(n));
+    run_prelude(r.data());
+    std::copy_n(r.begin() + static_cast<std::ptrdiff_t>(n), fixed_.size(), fixed_.begin());
 }
 
 void CompiledExpressions::evaluate(const double* inputs, double* outputs) const {
@@ -657,23 +856,28 @@ void CompiledExpressions::evaluate(const double* inputs, double* outputs) const 
 }
 
 void CompiledExpressions::evaluate(const double* inputs, double* outputs, double* r) const {
+    // registers: inputs, then parameters, numbers and the prelude's results as set
+    std::copy_n(inputs, inputs_.size(), r);
+    std::copy(fixed_.begin(), fixed_.end(), r + inputs_.size());
     run(inputs, outputs, r);
 }
 
 void CompiledExpressions::evaluate_extended(const long double* inputs,
                                             long double* outputs) const {
+    // the prelude too runs in extended precision, from the parameter values
     std::vector<long double> r(register_count_);
+    const std::size_t n = inputs_.size();
+    std::copy_n(inputs, n, r.begin());
+    std::copy_n(fixed_.begin(), parameters_.size(), r.begin() + static_cast<std::ptrdiff_t>(n));
+    run_prelude(r.data());
     run(inputs, outputs, r.data());
 }
 
+namespace {
+
 template <class T>
-void CompiledExpressions::run(const T* inputs, T* outputs, T* r) const {
-    // registers: inputs, numbers, then temporaries
-    const std::size_t n = inputs_.size();
-    std::copy_n(inputs, n, r);
-    std::copy(literals_.begin(), literals_.end(), r + n);
-    const TapeTerm* terms = terms_.data();
-    for (const TapeInstruction& t : tape_) {
+void run_tape(const std::vector<TapeInstruction>& tape, const TapeTerm* terms, T* r) {
+    for (const TapeInstruction& t : tape) {
         // products dominate once sums are linear combinations: a direct test for them costs
         // less than the jump table (measured: 40% less time on the spatial chains)
         if (t.op == TapeOp::mul) {
@@ -693,7 +897,38 @@ void CompiledExpressions::run(const T* inputs, T* outputs, T* r) const {
             default: r[t.dst] = apply(t.op, r[t.a], r[t.b]); break;
         }
     }
+}
+
+}  // namespace
+
+template <class T>
+void CompiledExpressions::run_prelude(T* r) const {
+    // parameters are in place; numbers follow them, then the prelude's results
+    const std::size_t first_literal = inputs_.size() + parameters_.size();
+    std::copy(literals_.begin(), literals_.end(), r + first_literal);
+    run_tape(prelude_, terms_.data(), r);
+}
+
+template <class T>
+void CompiledExpressions::run(const T* /*inputs*/, T* outputs, T* r) const {
+    run_tape(tape_, terms_.data(), r);
     for (std::size_t k = 0; k < outputs_.size(); ++k) outputs[k] = r[outputs_[k]];
+}
+
+StraightLineProgram CompiledExpressions::calc_program() const {
+    StraightLineProgram out;
+    out.input_count = inputs_.size();
+    out.parameter_count = parameters_.size();
+    out.literals = literals_;
+    // inputs, parameters and numbers are their own registers
+    out.value_count = out.first_hoisted();
+    std::vector<std::uint32_t> current(register_count_, 0);
+    for (std::size_t v = 0; v < out.value_count; ++v) current[v] = static_cast<std::uint32_t>(v);
+    rename(prelude_, terms_, current, out, out.prelude);
+    out.first_temporary = out.value_count;
+    rename(tape_, terms_, current, out, out.body);
+    for (std::uint32_t r : outputs_) out.outputs.push_back(current[r]);
+    return out;
 }
 
 void CompiledExpressions::check_input_size(std::size_t n) const {

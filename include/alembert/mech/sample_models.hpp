@@ -42,7 +42,7 @@ SampleModel make_n_link_pendulum(int n, ChainKind kind = ChainKind::planar);
 /// N_o, link B_i turning about Nz by q_i relative to B_{i-1} (N for the first), lying along its
 /// own +y axis (q = 0: every link upright), joint B_i_o at the tip of B_{i-1}; L_i = 1 m,
 /// m_i = 1 kg, mass centre at L_i/2, central inertia m_i L_i^2/12 = 1/12 kg m^2 about x and z;
-/// gravity -g Ny (g = 9.81); joint torques T_i (about z) on B_i from B_{i-1}.
+/// gravity -g Ny (g = 9.81); joint torques T_i Nz on B_i from B_{i-1}.
 /// @throws alembert::ArgumentError if n < 1.
 SampleModel make_planar_chain(int n);
 

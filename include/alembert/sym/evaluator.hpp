@@ -7,20 +7,16 @@
 #include <span>
 #include <vector>
 
+#include "alembert/sym/program.hpp"
 #include "alembert/sym/symbol_table.hpp"
 
 namespace alembert {
 
 namespace detail {
 
-/// One operation of a compiled tape.
-enum class TapeOp : std::uint8_t {
-    combine,  // r[dst] = sum of c_k r[reg_k] over the terms [a, a + b) of the term list
-    sincos,   // r[dst] = sin(r[a]), r[b] = cos(r[a])
-    add, sub, mul, div, pow, atan2,  // binary: r[dst] = r[a] op r[b]
-    neg, sqrt, sin, cos, tan, exp, log, abs, asin, acos, atan, sinh, cosh, tanh, asinh, acosh,
-    atanh, csgn, step,  // unary: r[dst] = f(r[a])
-};
+/// One operation of a compiled tape: combine reads r[dst] = sum of c_k r[reg_k] over the terms
+/// [a, a + b) of the term list, sincos writes r[dst] = sin(r[a]) and r[b] = cos(r[a]).
+using TapeOp = ProgramOp;
 
 /// An instruction of a compiled tape over registers r: r[dst] = r[a] op r[b] (b unused by
 /// unary operations; a linear combination reads its terms from a separate list, sincos writes
@@ -39,6 +35,19 @@ struct TapeTerm {
 };
 
 }  // namespace detail
+
+/// How CompiledExpressions compiles, beyond its inputs and outputs.
+struct CompileOptions {
+    /// Symbols passed once per parameter set (see CompiledExpressions, parameters).
+    std::vector<ex> parameters{};
+    /// Computes sin and cos of a sum a + t from those of a and t by the angle-sum formulas
+    /// (sin(a + t) = sin a cos t + cos a sin t, cos(a + t) = cos a cos t - sin a sin t), t the
+    /// term compiled last, recursively: the angles q_i + ... + q_j of a planar chain then cost
+    /// six arithmetic operations each instead of a sine and a cosine, because the shorter sums
+    /// are shared. More operations, less time wherever such sums are many; results differ
+    /// from the direct functions by rounding only.
+    bool expand_angle_sums = false;
+};
 
 /// Expressions of a symbol table compiled once into a flat tape of double-precision
 /// operations, then evaluated many times at numbers (cross-checks, simulation, inverse
@@ -68,6 +77,12 @@ struct TapeTerm {
 /// rounding (terms are summed in another order), and a value outside a function's real domain
 /// gives NaN instead of an exception.
 ///
+/// Parameters: symbols listed as parameters are passed once per parameter set
+/// (`set_parameters`) instead of at every call. The operations that depend on parameters and
+/// numbers only form a prelude, run by `set_parameters`; `evaluate` runs the rest (the body)
+/// and reads the prelude's results. Code generators use the same split (`calc_program`):
+/// constants kept as named parameters cost nothing per call beyond what folding them would.
+///
 /// Thread safety: `evaluate(inputs, outputs)` uses a scratch buffer owned by the object, so one
 /// object serves one thread at a time; copies are independent, and the overload taking a
 /// workspace is safe to call concurrently on one object.
@@ -86,18 +101,50 @@ public:
     CompiledExpressions(const SymbolTable& table, std::vector<ex> inputs,
                         const std::vector<ex>& outputs);
 
+    /// As above with `parameters`: symbols (usually constants) whose values are set once per
+    /// parameter set with set_parameters() rather than passed at every call. A parameter
+    /// starts at its value in the table, or NaN when it has none.
+    /// @throws alembert::ArgumentError as above, and if a parameter is not a symbol or is
+    ///         listed twice or also as an input.
+    CompiledExpressions(const SymbolTable& table, std::vector<ex> inputs,
+                        const std::vector<ex>& outputs, std::vector<ex> parameters);
+
+    /// As above with the options (parameters, angle sums) of `options`.
+    CompiledExpressions(const SymbolTable& table, std::vector<ex> inputs,
+                        const std::vector<ex>& outputs, const CompileOptions& options);
+
     /// The input symbols, in the order their values are passed.
     const std::vector<ex>& inputs() const { return inputs_; }
     /// Number of inputs.
     std::size_t input_count() const { return inputs_.size(); }
     /// Number of outputs.
     std::size_t output_count() const { return outputs_.size(); }
+    /// The parameter symbols, in the order their values are passed to set_parameters().
+    const std::vector<ex>& parameters() const { return parameters_; }
+    /// Number of parameters.
+    std::size_t parameter_count() const { return parameters_.size(); }
+    /// The current parameter values.
+    std::vector<double> parameter_values() const;
     /// Arithmetic operations and function calls of one evaluation, counted as count_ops counts
     /// a tree: a linear combination of n terms is n - 1 additions plus one multiplication per
-    /// coefficient other than +-1.
+    /// coefficient other than +-1. The prelude (see parameters) is not included.
     std::size_t operation_count() const { return operation_count_; }
-    /// Number of instructions of the tape (a linear combination is one instruction).
+    /// Operations of the prelude, run once per parameter set (0 without parameters).
+    std::size_t prelude_operation_count() const { return prelude_operation_count_; }
+    /// Number of instructions of the tape run at every call (a linear combination is one
+    /// instruction).
     std::size_t instruction_count() const { return tape_.size(); }
+
+    /// Sets the parameter values (parameter_count() of them, in the order of parameters())
+    /// and runs the prelude.
+    /// @throws alembert::ArgumentError if `values` has the wrong size.
+    void set_parameters(std::span<const double> values);
+
+    /// The compiled program in single-assignment form, for code generators: instructions in
+    /// dependency order split into the prelude and the body, the terms of the linear
+    /// combinations, the numbers, and the value of each output. Built from the tape in time
+    /// linear in its length; inputs and parameters keep their order.
+    StraightLineProgram calc_program() const;
     /// Number of doubles a workspace must hold (inputs, numbers and temporaries).
     std::size_t workspace_size() const { return register_count_; }
 
@@ -123,14 +170,23 @@ public:
 private:
     void check_input_size(std::size_t n) const;
 
-    std::vector<ex> inputs_;
-    std::vector<detail::TapeInstruction> tape_;
-    std::vector<detail::TapeTerm> terms_;  // of the linear combinations
-    std::size_t operation_count_ = 0;
+    template <class T>
+    void run_prelude(T* workspace) const;
     template <class T>
     void run(const T* inputs, T* outputs, T* workspace) const;
 
-    std::vector<double> literals_;       // registers [inputs, inputs + literals)
+    std::vector<ex> inputs_;
+    std::vector<ex> parameters_;
+    std::vector<detail::TapeInstruction> prelude_;  // parameter-only: once per parameter set
+    std::vector<detail::TapeInstruction> tape_;     // every call
+    std::vector<detail::TapeTerm> terms_;  // of the linear combinations of both
+    std::size_t operation_count_ = 0;
+    std::size_t prelude_operation_count_ = 0;
+
+    // registers: inputs, parameters, numbers, prelude results, then temporaries; fixed_
+    // holds the values of [inputs, inputs + fixed_.size()): parameters, numbers, prelude
+    std::vector<double> literals_;
+    std::vector<double> fixed_;
     std::vector<std::uint32_t> outputs_;  // register of each output
     std::size_t register_count_ = 0;
     mutable std::vector<double> scratch_;

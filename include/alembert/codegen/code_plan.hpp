@@ -1,0 +1,67 @@
+// SPDX-License-Identifier: MIT
+// What every emitter prints: the compiled programs of the generated functions and their names.
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "alembert/codegen/codegen.hpp"
+#include "alembert/sym/program.hpp"
+
+namespace alembert {
+
+/// A named value of the generated code with its unit and a default (parameters).
+struct CodeSymbol {
+    std::string name;  ///< identifier in the generated code (e.g. "qAp" for qA')
+    std::string unit{};
+    double value = 0;  ///< default value (parameters only)
+};
+
+/// One generated function: its straight-line program and how its inputs are passed.
+/// Inputs are always, in order: t, then the arrays listed in `arrays` (each with
+/// CodePlan::coordinate_count or load_count entries). Outputs go to `results` in order.
+struct CodeFunction {
+    std::string name;                 ///< "mass_forcing", "inverse_dynamics", ...
+    std::string summary;              ///< one line for its comment
+    std::vector<std::string> arrays;  ///< input arrays after t: "q", "qp", "qpp", "u"
+    std::vector<std::string> results; ///< output arrays: {"M", "f"}, {"u"}, {"y"}
+    std::vector<std::size_t> result_sizes;
+    StraightLineProgram program;
+    std::vector<std::string> input_names;      ///< identifier of each program input
+    std::vector<std::string> parameter_names;  ///< identifier of each program parameter
+    bool empty() const { return program.outputs.empty(); }
+};
+
+/// Everything an emitter needs, prepared once per model (plan_code): identifiers for each
+/// symbol (q, q' as qp, q'' as qpp after MotionGenesis; every name made unique and kept clear
+/// of each language's keywords by the emitter), parameters with defaults and units, and the
+/// programs of the mass matrix and forcing, inverse dynamics, outputs and load laws, each
+/// compiled with the constants as parameters so the constant-only work sits in preludes.
+struct CodePlan {
+    std::string name;
+    std::string source;
+    std::string version;
+    std::size_t coordinate_count = 0;
+    std::size_t load_count = 0;
+    std::vector<CodeSymbol> q, qp, qpp;  ///< per coordinate
+    std::vector<CodeSymbol> loads;
+    std::vector<CodeSymbol> parameters;  ///< the parameters the programs read
+    std::vector<CodeSymbol> outputs;     ///< the requested outputs
+    bool symmetric_mass_matrix = false;
+    CodeFunction mass_forcing;      ///< inputs t, q, qp, u; results M (row-major), f
+    CodeFunction inverse_dynamics;  ///< inputs t, q, qp, qpp; result u (empty if not formed)
+    CodeFunction output_function;   ///< inputs t, q, qp, qpp, u; result y
+    CodeFunction load_laws;         ///< inputs t, q, qp; result u (simulation only)
+    bool simulation = false;
+    SimulationSpec simulation_spec{};
+
+    /// The functions with programs, in the order emitters print them.
+    std::vector<const CodeFunction*> functions() const;
+};
+
+/// Prepares the programs and names of `equations` (see generate_code for what is formed and
+/// what is thrown).
+CodePlan plan_code(const SymbolTable& table, const DynamicsEquations& equations,
+                   const CodegenOptions& options);
+
+}  // namespace alembert

@@ -1,0 +1,143 @@
+// SPDX-License-Identifier: MIT
+// Code generation: standalone C, C++, MATLAB/Octave and Python from equations of motion.
+#pragma once
+
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "alembert/eom/equations.hpp"
+#include "alembert/sym/symbol_table.hpp"
+
+namespace alembert {
+
+/// A target language of the code generator.
+enum class Language {
+    c,       ///< C99: NAME.h, NAME.c (and NAME_main.c with a simulation)
+    cpp,     ///< C++17: NAME.hpp, NAME.cpp (and NAME_main.cpp)
+    matlab,  ///< MATLAB/Octave function files NAME_*.m (the right-hand side runs under ode45)
+    python,  ///< Python 3 with NumPy: NAME.py (its rhs runs under scipy.integrate.solve_ivp)
+};
+
+/// The word for a language as the command line spells it: "c", "cpp", "matlab", "python".
+const char* to_string(Language language);
+
+/// The language named `word` ("c", "cpp" or "c++", "matlab" or "octave", "python").
+/// @throws alembert::ArgumentError naming the word and the accepted ones.
+Language parse_language(std::string_view word);
+
+/// Alembert's version, as the generated files name it ("0.1.0").
+const char* generator_version();
+
+/// Equations of motion to generate code from: residuals E_i(q, q', q'', loads, t) = 0, one
+/// per coordinate, linear in the accelerations q'' and in the load measures. Road-map rows
+/// (`residuals_of(rows)`), Kane's residuals (`KaneEquations::residuals`) and Lagrange's all
+/// have this form. From it the generator forms
+///  - the mass matrix and forcing, M(q, t) q'' = f(q, q', loads, t) (A and b of
+///    form_linear_system(residuals, q''), or `mass_forcing` when given);
+///  - forward dynamics, q'' = M^-1 f, by a dense Cholesky solve in the generated code when M
+///    is symmetric (Kane's and Lagrange's M are; checked at random states), by LU with
+///    partial pivoting otherwise;
+///  - inverse dynamics, the load measures from q, q', q'' (the residuals solved for the
+///    loads symbolically, one decoupled block at a time), when there are as many loads as
+///    coordinates.
+struct DynamicsEquations {
+    /// The generalized coordinates q (with q', q'' declared).
+    std::vector<TimeVariable> coordinates{};
+    /// E_i = 0, one per coordinate.
+    std::vector<ex> residuals{};
+    /// The load measures (joint torques, forces): inputs of forward dynamics, outputs of
+    /// inverse dynamics. Unknowns of the table.
+    std::vector<ex> loads{};
+    /// M and f already formed (e.g. `KaneEquations::dynamics`), unknowns the q''; formed from
+    /// the residuals when absent.
+    std::optional<LinearSystem> mass_forcing{};
+};
+
+/// A quantity the generated code computes on request (an output column of a simulation):
+/// any expression of t, q, q', q'', the loads and the constants.
+struct CodegenOutput {
+    std::string name;  ///< an identifier, e.g. "KE" or "p_NoQ_x"
+    ex expression;
+    std::string unit{};  ///< printed in comments and CSV headers, e.g. "J"
+};
+
+/// What the generated simulation program does (Language::c and cpp write a main program with
+/// an adaptive Dormand-Prince RK45 integrator; Python and MATLAB a `simulate` function on
+/// solve_ivp / ode45). Its CSV has a header row naming each column with its unit.
+struct SimulationSpec {
+    double final_time = 10;      ///< [s]
+    double output_step = 0.01;   ///< [s] rows of the CSV, exactly at these times
+    double absolute_tolerance = 1e-9;
+    double relative_tolerance = 1e-9;
+    std::vector<double> initial_q{};    ///< q(0); zeros when empty
+    std::vector<double> initial_qp{};   ///< q'(0); zeros when empty
+    /// The loads during the simulation, one expression of t, q, q' and constants per load
+    /// (a control law, a prescribed torque); zero loads when empty.
+    std::vector<ex> load_laws{};
+};
+
+/// How code is generated.
+struct CodegenOptions {
+    /// Prefix of the generated files and identifiers (an identifier: letters, digits, _).
+    std::string name = "model";
+    /// What the code was generated from (a script path, a model name), named in the header.
+    std::string source = "";
+    /// The constants kept as named parameters, changeable in the generated code without
+    /// regenerating (their arithmetic is done once per parameter set, not per call); the
+    /// others are folded into numbers. Absent: every constant the equations use; empty:
+    /// none. Each parameter needs a value in the table (its default in the code).
+    std::optional<std::vector<ex>> parameters{};
+    /// Units by symbol or output name ("L_A" -> "m", "qA" -> "rad", "T_A" -> "N*m"), shown in
+    /// comments and CSV headers; a rate's unit is its coordinate's per second.
+    std::map<std::string, std::string> units{};
+    /// Sines and cosines of sums of angles from those of shorter sums (CompileOptions::
+    /// expand_angle_sums): a chain's q_i + ... + q_j cost six operations each instead of two
+    /// calls. More operations, less time.
+    bool expand_angle_sums = true;
+    /// Extra outputs computed by an `outputs` function (and written by the simulation).
+    std::vector<CodegenOutput> outputs{};
+    /// Also write a complete simulation program (see SimulationSpec).
+    bool simulation = false;
+    SimulationSpec simulation_spec{};
+};
+
+/// What generate_code wrote and what the generated functions cost.
+struct GeneratedCode {
+    std::vector<std::filesystem::path> files{};  ///< in the order written
+    /// Operations per call (as CompiledExpressions::operation_count counts them) of the mass
+    /// matrix and forcing, of inverse dynamics (0 when not generated) and of the outputs;
+    /// and the operations done once per parameter set (all preludes together).
+    std::size_t mass_forcing_operations = 0;
+    std::size_t inverse_dynamics_operations = 0;
+    std::size_t outputs_operations = 0;
+    std::size_t prelude_operations = 0;
+    bool symmetric_mass_matrix = false;  ///< Cholesky (true) or LU (false) in forward dynamics
+    bool inverse_dynamics = false;       ///< whether inverse dynamics was generated
+};
+
+/// Generates standalone code in `language` for `equations` of the model whose symbols are in
+/// `table`, writing the files into `out_dir` (created if missing; each file written to a
+/// temporary name and renamed, so a reader never sees half a file). Functions, in every
+/// language: default parameters and a context that holds the values computed once per
+/// parameter set; the mass matrix and forcing; forward dynamics (accelerations); inverse
+/// dynamics (loads from q, q', q''); the requested outputs; the right-hand side of
+/// x' = (q', q'') for an integrator; and, with `options.simulation`, a simulation program.
+/// Common subexpressions are computed once and numbers folded (CompiledExpressions), so
+/// generation time is linear in the size of the reduced program.
+///
+/// This is the library call behind `alembert codegen MODEL --lang c|cpp|matlab|python --out DIR`.
+/// @throws alembert::ArgumentError if the name is not an identifier, the output directory
+///         cannot be created or written (naming it and the reason), the counts of the
+///         equations do not fit, a parameter has no value, an expression uses a symbol that is
+///         neither t, a coordinate, a rate, a load nor a constant, or the simulation
+///         specification is malformed; alembert::SolveError if the residuals are not linear
+///         in q'' or in the loads, or the loads cannot be solved for.
+GeneratedCode generate_code(const SymbolTable& table, const DynamicsEquations& equations,
+                            Language language, const std::filesystem::path& out_dir,
+                            const CodegenOptions& options = {});
+
+}  // namespace alembert

@@ -1,0 +1,644 @@
+// SPDX-License-Identifier: MIT
+// The C99 and C++ emitters: one text generator for both, differing in declarations.
+#include <algorithm>
+#include <functional>
+#include <sstream>
+
+#include "alembert/codegen/c_emitter.hpp"
+#include "alembert/codegen/cpp_emitter.hpp"
+
+namespace alembert {
+
+namespace {
+
+using IdMap = std::map<std::string, std::string>;
+
+// what differs between C and C++
+struct Dialect {
+    bool cpp;
+    std::string name;  // the model's name
+
+    std::string math(const std::string& f) const { return cpp ? "std::" + f : f; }
+    // the context's stored values of a function's prelude
+    std::string hoisted_array(const CodeFunction& f) const {
+        return cpp ? "h_" + f.name + "_" : "c->h_" + f.name;
+    }
+    std::string parameter(const std::string& id) const { return cpp ? "p_." + id : "c->p." + id; }
+    std::string function(const std::string& f) const { return cpp ? f : name + "_" + f; }
+    std::string null() const { return cpp ? "nullptr" : "(const double*)0"; }
+    std::string size(const char* what) const {
+        return cpp ? std::string(what) : name + "_" + [&] {
+            std::string s(what);
+            std::transform(s.begin(), s.end(), s.begin(), ::toupper);
+            return s;
+        }();
+    }
+};
+
+std::size_t hoisted_count(const CodeFunction& f) {
+    return f.program.first_temporary - f.program.first_hoisted();
+}
+
+// "double t, const double* q, const double* qp, const double* u, double* M, double* f"
+std::string arguments(const CodeFunction& f) {
+    std::string s = "double t";
+    for (const std::string& a : f.arrays) s += ", const double* " + a;
+    for (const std::string& r : f.results) s += ", double* " + r;
+    return s;
+}
+
+std::string comment_block(const std::vector<std::string>& lines, bool cpp) {
+    std::string s;
+    if (cpp) {
+        for (const std::string& l : lines) s += "// " + l + "\n";
+        return s + "// clang-format off\n";
+    }
+    s = "/* ";
+    for (std::size_t i = 0; i < lines.size(); ++i) s += (i ? "   " : "") + lines[i] + "\n";
+    return s + "   clang-format off */\n";
+}
+
+// the body of a generated function: unpack what the program reads, the program, the stores
+void print_body(std::ostream& os, const CodePlan& plan, const CodeFunction& f, const Dialect& d,
+                const CodePrinter& pr, const ValueSpelling& names) {
+    const StraightLineProgram& p = f.program;
+    const std::string in = "    ";
+    std::vector<bool> read = [&] {
+        std::vector<bool> r(p.input_count, false);
+        auto mark = [&](std::uint32_t v) {
+            if (p.kind(v) == ValueKind::input) r[v] = true;
+        };
+        for (const ProgramInstruction& i : p.body) {
+            if (i.op == ProgramOp::combine)
+                for (std::uint32_t k = i.a; k < i.a + i.b; ++k) mark(p.terms[k].value);
+            else {
+                mark(i.a);
+                if (i.op != ProgramOp::sincos) mark(i.b);
+            }
+        }
+        for (std::uint32_t v : p.outputs) mark(v);
+        return r;
+    }();
+    // arrays (and t) the program does not read
+    if (!read[0]) os << in << "(void)t;\n";
+    std::vector<std::size_t> lengths;
+    std::size_t offset = 1;
+    for (std::size_t a = 0; a < f.arrays.size(); ++a) {
+        // q, qp, qpp have one entry per coordinate, u one per load
+        std::size_t len = f.arrays[a] == "u" ? plan.load_count : plan.coordinate_count;
+        lengths.push_back(len);
+        bool any = false;
+        for (std::size_t k = 0; k < len; ++k) any = any || read[offset + k];
+        if (!any) os << in << "(void)" << f.arrays[a] << ";\n";
+        offset += len;
+    }
+    bool reads_context = false;
+    // parameters and the prelude's values the body reads
+    std::vector<bool> params(p.parameter_count, false);
+    bool hoisted = false;
+    auto mark = [&](std::uint32_t v) {
+        if (p.kind(v) == ValueKind::parameter) params[v - p.input_count] = true;
+        if (p.kind(v) == ValueKind::hoisted) hoisted = true;
+    };
+    for (const ProgramInstruction& i : p.body) {
+        if (i.op == ProgramOp::combine)
+            for (std::uint32_t k = i.a; k < i.a + i.b; ++k) mark(p.terms[k].value);
+        else {
+            mark(i.a);
+            if (i.op != ProgramOp::sincos) mark(i.b);
+        }
+    }
+    for (std::uint32_t v : p.outputs) mark(v);
+    for (std::size_t k = 0; k < params.size(); ++k)
+        if (params[k]) {
+            const std::string& pid = names.parameters[k];
+            os << in << pr.define(pid, d.parameter(pid)) << '\n';
+            reads_context = true;
+        }
+    if (hoisted) {
+        reads_context = true;
+        if (!d.cpp) os << in << "const double* h = " << d.hoisted_array(f) << ";\n";
+    }
+    if (!d.cpp && !reads_context) os << in << "(void)c;\n";
+    offset = 1;
+    for (std::size_t a = 0; a < f.arrays.size(); ++a) {
+        for (std::size_t k = 0; k < lengths[a]; ++k)
+            if (read[offset + k])
+                os << in << pr.define(names.inputs[offset + k], pr.element(f.arrays[a], k))
+                   << '\n';
+        offset += lengths[a];
+    }
+    pr.print(os, p, p.body, names, in);
+    std::size_t k = 0;
+    for (std::size_t r = 0; r < f.results.size(); ++r)
+        for (std::size_t j = 0; j < f.result_sizes[r]; ++j, ++k)
+            os << in << pr.assign(pr.element(f.results[r], j), pr.operand(p, p.outputs[k], names))
+               << '\n';
+}
+
+// the prelude of a function inside init: its parameters, then its values stored
+void print_prelude(std::ostream& os, const CodeFunction& f, const Dialect& d,
+                   const CodePrinter& pr, const ValueSpelling& names) {
+    const StraightLineProgram& p = f.program;
+    if (p.prelude.empty()) return;
+    const std::string in = "        ";
+    os << "    {\n" << in << pr.comment(f.name + ": values of the parameters only") << '\n';
+    std::vector<bool> params(p.parameter_count, false);
+    for (const ProgramInstruction& i : p.prelude) {
+        auto mark = [&](std::uint32_t v) {
+            if (p.kind(v) == ValueKind::parameter) params[v - p.input_count] = true;
+        };
+        if (i.op == ProgramOp::combine)
+            for (std::uint32_t k = i.a; k < i.a + i.b; ++k) mark(p.terms[k].value);
+        else {
+            mark(i.a);
+            if (i.op != ProgramOp::sincos) mark(i.b);
+        }
+    }
+    for (std::size_t k = 0; k < params.size(); ++k)
+        if (params[k])
+            os << in << pr.define(names.parameters[k], d.parameter(names.parameters[k])) << '\n';
+    if (!d.cpp) os << in << "double* h = " << d.hoisted_array(f) << ";\n";
+    pr.print(os, p, p.prelude, names, in);
+    os << "    }\n";
+}
+
+std::string solvers(const CodePlan& plan, const Dialect& d) {
+    std::ostringstream os;
+    const std::string st = d.cpp ? "" : "static ";
+    if (plan.symmetric_mass_matrix) {
+        os << "/* Solves A x = b for a symmetric positive definite A (n x n, row by row) by the\n"
+              "   Cholesky factorization A = L L^T (L overwrites A's lower triangle); returns 0,\n"
+              "   or -1 if A is not positive definite. */\n"
+           << st << "int " << (d.cpp ? "" : d.name + "_") << "cholesky_solve(int n, double* A, "
+              "const double* b, double* x) {\n"
+              "    for (int j = 0; j < n; ++j) {\n"
+              "        double s = A[j * n + j];\n"
+              "        for (int k = 0; k < j; ++k) s -= A[j * n + k] * A[j * n + k];\n"
+              "        if (!(s > 0.0)) return -1;\n"
+              "        const double d = " << d.math("sqrt") << "(s);\n"
+              "        A[j * n + j] = d;\n"
+              "        for (int i = j + 1; i < n; ++i) {\n"
+              "            double r = A[i * n + j];\n"
+              "            for (int k = 0; k < j; ++k) r -= A[i * n + k] * A[j * n + k];\n"
+              "            A[i * n + j] = r / d;\n"
+              "        }\n"
+              "    }\n"
+              "    for (int i = 0; i < n; ++i) { /* L y = b */\n"
+              "        double s = b[i];\n"
+              "        for (int k = 0; k < i; ++k) s -= A[i * n + k] * x[k];\n"
+              "        x[i] = s / A[i * n + i];\n"
+              "    }\n"
+              "    for (int i = n - 1; i >= 0; --i) { /* L^T x = y */\n"
+              "        double s = x[i];\n"
+              "        for (int k = i + 1; k < n; ++k) s -= A[k * n + i] * x[k];\n"
+              "        x[i] = s / A[i * n + i];\n"
+              "    }\n"
+              "    return 0;\n"
+              "}\n";
+    } else {
+        os << "/* Solves A x = b (A n x n, row by row, overwritten) by LU decomposition with\n"
+              "   partial pivoting; returns 0, or -1 if A is singular. */\n"
+           << st << "int " << (d.cpp ? "" : d.name + "_") << "lu_solve(int n, double* A, "
+              "const double* b, double* x) {\n"
+              "    for (int i = 0; i < n; ++i) x[i] = b[i];\n"
+              "    for (int k = 0; k < n; ++k) {\n"
+              "        int p = k;\n"
+              "        for (int i = k + 1; i < n; ++i)\n"
+              "            if (" << d.math("fabs") << "(A[i * n + k]) > " << d.math("fabs")
+           << "(A[p * n + k])) p = i;\n"
+              "        if (!(" << d.math("fabs") << "(A[p * n + k]) > 0.0)) return -1;\n"
+              "        if (p != k) {\n"
+              "            for (int j = 0; j < n; ++j) {\n"
+              "                const double s = A[k * n + j];\n"
+              "                A[k * n + j] = A[p * n + j];\n"
+              "                A[p * n + j] = s;\n"
+              "            }\n"
+              "            const double s = x[k];\n"
+              "            x[k] = x[p];\n"
+              "            x[p] = s;\n"
+              "        }\n"
+              "        for (int i = k + 1; i < n; ++i) {\n"
+              "            const double l = A[i * n + k] / A[k * n + k];\n"
+              "            for (int j = k + 1; j < n; ++j) A[i * n + j] -= l * A[k * n + j];\n"
+              "            x[i] -= l * x[k];\n"
+              "        }\n"
+              "    }\n"
+              "    for (int i = n - 1; i >= 0; --i) {\n"
+              "        double s = x[i];\n"
+              "        for (int j = i + 1; j < n; ++j) s -= A[i * n + j] * x[j];\n"
+              "        x[i] = s / A[i * n + i];\n"
+              "    }\n"
+              "    return 0;\n"
+              "}\n";
+    }
+    return os.str();
+}
+
+// the declarations of the header (C: prototypes; C++: the class's members)
+std::string declarations(const CodePlan& plan, const Dialect& d) {
+    std::ostringstream os;
+    const std::string ind = d.cpp ? "    " : "";
+    const std::string ctx = d.cpp ? "" : "const " + d.name + "_context* c, ";
+    const std::string cnst = d.cpp ? " const" : "";
+    const std::string solve = plan.symmetric_mass_matrix ? "Cholesky" : "LU with partial pivoting";
+    os << ind << "/* Mass matrix M (nq x nq, row by row) and forcing f of M qpp = f. */\n"
+       << ind << "void " << d.function("mass_forcing") << "(" << ctx
+       << arguments(plan.mass_forcing) << ")" << cnst << ";\n"
+       << ind << "/* Forward dynamics: the accelerations qpp = M^-1 f (" << solve << ");\n"
+       << ind << "   returns " << (d.cpp ? "false" : "-1") << " if M is singular. */\n"
+       << ind << (d.cpp ? "bool " : "int ") << d.function("forward_dynamics") << "(" << ctx
+       << "double t, const double* q, const double* qp, const double* u, double* qpp)" << cnst
+       << ";\n";
+    if (!plan.inverse_dynamics.empty())
+        os << ind << "/* Inverse dynamics: the loads u that give the accelerations qpp. */\n"
+           << ind << "void " << d.function("inverse_dynamics") << "(" << ctx
+           << arguments(plan.inverse_dynamics) << ")" << cnst << ";\n";
+    if (!plan.output_function.empty())
+        os << ind << "/* The requested outputs y. */\n"
+           << ind << "void " << d.function("outputs") << "(" << ctx
+           << arguments(plan.output_function) << ")" << cnst << ";\n";
+    if (!plan.load_laws.empty())
+        os << ind << "/* The loads u during a simulation, from t, q and qp. */\n"
+           << ind << "void " << d.function("load_laws") << "(" << ctx
+           << arguments(plan.load_laws) << ")" << cnst << ";\n";
+    os << ind << "/* Right-hand side of x' = (qp, qpp) for x = (q, qp), loads from load_laws;\n"
+       << ind << "   returns " << (d.cpp ? "false" : "-1") << " if M is singular. */\n"
+       << ind << (d.cpp ? "bool " : "int ") << d.function("rhs") << "(" << ctx
+       << "double t, const double* x, double* dx)" << cnst << ";\n";
+    return os.str();
+}
+
+std::string forward_and_rhs(const CodePlan& plan, const Dialect& d) {
+    std::ostringstream os;
+    const std::string owner = d.cpp ? "Model::" : "";
+    const std::string ctx = d.cpp ? "" : "const " + d.name + "_context* c, ";
+    const std::string cnst = d.cpp ? " const" : "";
+    const std::string c_arg = d.cpp ? "" : "c, ";
+    const std::string nq = d.size("nq"), nu = d.size("nu");
+    const std::string solver = (d.cpp ? "" : d.name + "_") +
+                               std::string(plan.symmetric_mass_matrix ? "cholesky_solve" : "lu_solve");
+    os << (d.cpp ? "bool " : "int ") << owner << d.function("forward_dynamics") << "(" << ctx
+       << "double t, const double* q, const double* qp, const double* u, double* qpp)" << cnst
+       << " {\n"
+       << "    double M[" << nq << " * " << nq << "], f[" << nq << "];\n"
+       << "    " << d.function("mass_forcing") << "(" << c_arg << "t, q, qp, u, M, f);\n"
+       << "    return " << solver << "(" << nq << ", M, f, qpp)" << (d.cpp ? " == 0" : "")
+       << ";\n}\n\n";
+    os << (d.cpp ? "bool " : "int ") << owner << d.function("rhs") << "(" << ctx
+       << "double t, const double* x, double* dx)" << cnst << " {\n";
+    std::string u = d.null();
+    if (plan.load_count > 0) {
+        os << "    double u[" << nu << "];\n"
+           << "    " << d.function("load_laws") << "(" << c_arg << "t, x, x + " << nq << ", u);\n";
+        u = "u";
+    }
+    os << "    for (int i = 0; i < " << nq << "; ++i) dx[i] = x[" << nq << " + i];\n"
+       << "    return " << d.function("forward_dynamics") << "(" << c_arg << "t, x, x + " << nq
+       << ", " << u << ", dx + " << nq << ");\n}\n";
+    return os.str();
+}
+
+// ---- the simulation program ---------------------------------------------------------------------
+
+std::string labelled(const std::string& name, const std::string& unit) {
+    return unit.empty() ? name : name + " [" + unit + "]";
+}
+
+// "t [s],qA [rad],...": the CSV columns t, q, q', loads, outputs
+std::string csv_header(const CodePlan& plan) {
+    std::string h = "t [s]";
+    for (const auto* v : {&plan.q, &plan.qp, &plan.loads, &plan.outputs})
+        for (const CodeSymbol& s : *v) h += "," + labelled(s.name, s.unit);
+    return h;
+}
+
+std::string list(const std::vector<double>& values, const CodePrinter& pr) {
+    std::string s;
+    for (double v : values) s += (s.empty() ? "" : ", ") + pr.number(v);
+    return s;
+}
+
+std::string main_program(const CodePlan& plan, const Dialect& d, const CodePrinter& pr) {
+    const SimulationSpec& sim = plan.simulation_spec;
+    const std::string nq = d.size("nq"), nu = d.size("nu"), ny = d.size("ny");
+    const std::string m = d.cpp ? "model." : d.name + "_";
+    const std::string ctx = d.cpp ? "" : "&c, ";
+    const std::string model_arg = d.cpp ? "const " + d.name + "::Model& model" : "const " + d.name + "_context* c";
+    const std::string call_ctx = d.cpp ? "" : "c, ";
+    const std::string nx = d.cpp ? "nx" : "NX";
+    std::ostringstream os;
+    os << "\n";
+    if (d.cpp)
+        os << "#include <algorithm>\n#include <cmath>\n#include <cstdio>\n#include <cstdlib>\n"
+              "#include <cstring>\n\n#include \"" << d.name << ".hpp\"\n\nnamespace {\n\n"
+           << "using namespace " << d.name << ";\nconstexpr int nx = 2 * nq;\n";
+    else
+        os << "#include <math.h>\n#include <stdio.h>\n#include <stdlib.h>\n#include <string.h>\n\n"
+              "#include \"" << d.name << ".h\"\n\n#define NX (2 * " << nq << ")\n";
+    const std::string st = d.cpp ? "" : "static ";
+    const std::string fabs = d.math("fabs"), sqrt = d.math("sqrt"), pow = d.math("pow");
+    os << "\n/* The simulation: final time, output step and error tolerances. */\n"
+       << st << "const double final_time = " << pr.number(sim.final_time) << ";\n"
+       << st << "const double output_step = " << pr.number(sim.output_step) << ";\n"
+       << st << "const double abs_tol = " << pr.number(sim.absolute_tolerance) << ";\n"
+       << st << "const double rel_tol = " << pr.number(sim.relative_tolerance) << ";\n"
+       << "/* Initial values: q, then qp. */\n"
+       << st << "const double x0[" << nx << "] = {" << list(sim.initial_q, pr)
+       << ", " << list(sim.initial_qp, pr) << "};\n\n";
+    os << R"(/* One Dormand-Prince 5(4) step of size h from (t, x) with k1 = f(t, x): the fifth-order
+   solution xn, k7 = f(t + h, xn) (the next step's k1), and the weighted RMS norm of the
+   difference from the embedded fourth-order solution (accept when <= 1).
+   Dormand & Prince, J. Comput. Appl. Math. 6 (1980) 19-26. */
+)" << st << "int step(" << model_arg << ", double t, const double* x, const double* k1, double h,\n"
+       << "                double* xn, double* k7, double* err) {\n"
+       << R"(    double k2[NX], k3[NX], k4[NX], k5[NX], k6[NX], y[NX];
+    int i;
+    for (i = 0; i < NX; ++i) y[i] = x[i] + h * (1.0 / 5.0) * k1[i];
+    if (!RHS(t + h / 5.0, y, k2)) return 0;
+    for (i = 0; i < NX; ++i) y[i] = x[i] + h * (3.0 / 40.0 * k1[i] + 9.0 / 40.0 * k2[i]);
+    if (!RHS(t + 3.0 * h / 10.0, y, k3)) return 0;
+    for (i = 0; i < NX; ++i)
+        y[i] = x[i] + h * (44.0 / 45.0 * k1[i] - 56.0 / 15.0 * k2[i] + 32.0 / 9.0 * k3[i]);
+    if (!RHS(t + 4.0 * h / 5.0, y, k4)) return 0;
+    for (i = 0; i < NX; ++i)
+        y[i] = x[i] + h * (19372.0 / 6561.0 * k1[i] - 25360.0 / 2187.0 * k2[i] +
+                           64448.0 / 6561.0 * k3[i] - 212.0 / 729.0 * k4[i]);
+    if (!RHS(t + 8.0 * h / 9.0, y, k5)) return 0;
+    for (i = 0; i < NX; ++i)
+        y[i] = x[i] + h * (9017.0 / 3168.0 * k1[i] - 355.0 / 33.0 * k2[i] +
+                           46732.0 / 5247.0 * k3[i] + 49.0 / 176.0 * k4[i] -
+                           5103.0 / 18656.0 * k5[i]);
+    if (!RHS(t + h, y, k6)) return 0;
+    for (i = 0; i < NX; ++i)
+        xn[i] = x[i] + h * (35.0 / 384.0 * k1[i] + 500.0 / 1113.0 * k3[i] +
+                            125.0 / 192.0 * k4[i] - 2187.0 / 6784.0 * k5[i] +
+                            11.0 / 84.0 * k6[i]);
+    if (!RHS(t + h, xn, k7)) return 0;
+    double sum = 0.0;
+    for (i = 0; i < NX; ++i) {
+        const double e = h * (71.0 / 57600.0 * k1[i] - 71.0 / 16695.0 * k3[i] +
+                              71.0 / 1920.0 * k4[i] - 17253.0 / 339200.0 * k5[i] +
+                              22.0 / 525.0 * k6[i] - 1.0 / 40.0 * k7[i]);
+        const double scale = abs_tol + rel_tol * FMAX(FABS(x[i]), FABS(xn[i]));
+        sum += (e / scale) * (e / scale);
+    }
+    *err = SQRT(sum / NX);
+    return 1;
+}
+
+/* One CSV row: t, q, qp, the loads and the outputs at (t, x). */
+)" << st << "int write_row(FILE* out, " << model_arg << ", double t, const double* x) {\n";
+    os << "    double u[" << (plan.load_count ? nu : std::string("1")) << "], qpp[" << nq
+       << "], y[" << (plan.outputs.empty() ? std::string("1") : ny) << "];\n"
+       << "    int i;\n";
+    if (plan.load_count)
+        os << "    " << (d.cpp ? "model." : d.name + "_") << "load_laws(" << call_ctx
+           << "t, x, x + " << nq << ", u);\n";
+    else
+        os << "    u[0] = 0.0;\n";
+    os << "    if (!" << (d.cpp ? std::string("(model.forward_dynamics(") : "(" + d.name + "_forward_dynamics(")
+       << call_ctx << "t, x, x + " << nq << ", " << (plan.load_count ? "u" : d.null())
+       << ", qpp)" << (d.cpp ? "" : " == 0") << ")) return 0;\n";
+    if (!plan.outputs.empty())
+        os << "    " << (d.cpp ? "model." : d.name + "_") << "outputs(" << call_ctx << "t, x, x + "
+           << nq << ", qpp, u, y);\n";
+    else
+        os << "    y[0] = 0.0;\n";
+    os << "    fprintf(out, \"%.17g\", t);\n"
+       << "    for (i = 0; i < NX; ++i) fprintf(out, \",%.17g\", x[i]);\n";
+    if (plan.load_count) os << "    for (i = 0; i < " << nu << "; ++i) fprintf(out, \",%.17g\", u[i]);\n";
+    if (!plan.outputs.empty())
+        os << "    for (i = 0; i < " << ny << "; ++i) fprintf(out, \",%.17g\", y[i]);\n";
+    os << "    fprintf(out, \"\\n\");\n    return 1;\n}\n";
+    if (d.cpp) os << "\n}  // namespace\n";
+    os << R"(
+/* Integrates from x0 to the final time by adaptive Dormand-Prince steps, landing exactly on
+   every output time, and writes the CSV to argv[1] (default NAME.csv; "-" for standard
+   output). argv[2], when given, replaces the final time. */
+int main(int argc, char** argv) {
+    const char* path = argc > 1 ? argv[1] : "NAME.csv";
+    const double t_final = argc > 2 ? atof(argv[2]) : final_time;
+    MODEL_DECL
+    double x[NX], k1[NX], xn[NX], k7[NX];
+    int i;
+    for (i = 0; i < NX; ++i) x[i] = x0[i];
+    FILE* out = strcmp(path, "-") == 0 ? stdout : fopen(path, "w");
+    if (!out) {
+        fprintf(stderr, "NAME: cannot open %s for writing\n", path);
+        return 1;
+    }
+    fprintf(out, "HEADER\n");
+    double t = 0.0, h = output_step / 10.0;
+    if (!RHS(t, x, k1) || !write_row(out, MODEL_ARG t, x)) {
+        fprintf(stderr, "NAME: the mass matrix is singular at t = 0\n");
+        return 2;
+    }
+    for (long k = 1;; ++k) {
+        double target = (double)k * output_step;
+        if (target > t_final * (1.0 + 1e-12)) break;
+        if (target > t_final) target = t_final;
+        while (t < target) {
+            const int last = h >= target - t;
+            const double hh = last ? target - t : h;
+            double err = 0.0;
+            if (!step(MODEL_ARG t, x, k1, hh, xn, k7, &err)) {
+                fprintf(stderr, "NAME: the mass matrix is singular near t = %.17g\n", t);
+                return 2;
+            }
+            /* step size control: 0.9 err^(-1/5), between 0.2 and 5 times */
+            double factor = err > 0.0 ? 0.9 * POW(err, -0.2) : 5.0;
+            factor = FMIN(5.0, FMAX(0.2, factor));
+            if (err <= 1.0) {
+                t = last ? target : t + hh;
+                for (i = 0; i < NX; ++i) {
+                    x[i] = xn[i];
+                    k1[i] = k7[i];
+                }
+                h = last ? FMAX(h, hh * factor) : hh * factor;
+            } else {
+                h = hh * factor;
+            }
+            if (h < 1e-14 * FMAX(1.0, FABS(t))) {
+                fprintf(stderr, "NAME: step size too small at t = %.17g\n", t);
+                return 3;
+            }
+        }
+        if (!write_row(out, MODEL_ARG t, x)) return 2;
+    }
+    if (out != stdout) fclose(out);
+    return 0;
+}
+)";
+    std::string text = os.str();
+    auto replace = [&](const std::string& a, const std::string& b) {
+        for (std::size_t at = text.find(a); at != std::string::npos; at = text.find(a, at + b.size()))
+            text.replace(at, a.size(), b);
+    };
+    replace("NX", nx);
+    replace("RHS(", d.cpp ? "model.rhs(" : "!" + d.name + "_rhs(c, ");
+    replace("MODEL_DECL", d.cpp ? "const Model model;"
+                                : d.name + "_context context;\n    const " + d.name +
+                                      "_context* c = &context;\n    " + d.name +
+                                      "_init(&context, 0);");
+    replace("MODEL_ARG ", d.cpp ? "model, " : "c, ");
+    replace("FMAX(", d.math("fmax("));
+    replace("FMIN(", d.math("fmin("));
+    replace("FABS(", fabs + "(");
+    replace("SQRT(", sqrt + "(");
+    replace("POW(", pow + "(");
+    replace("NAME.csv", d.name + ".csv");
+    replace("NAME:", d.name + ":");
+    replace("HEADER", csv_header(plan));
+    (void)ctx;
+    (void)m;
+    return text;
+}
+
+// the sizes, each with a comment listing what it counts
+std::string names_of(const std::vector<CodeSymbol>& v) {
+    std::string s;
+    for (const CodeSymbol& x : v) s += (s.empty() ? "" : ", ") + x.name;
+    return s.empty() ? "none" : s;
+}
+
+std::vector<GeneratedFile> emit_c_family(const CodePlan& plan, const Dialect& d,
+                                         const CodePrinter& pr, const IdMap& id,
+                                         const std::vector<std::string>& head_lines,
+                                         const std::vector<std::string>& source_lines,
+                                         const std::vector<std::string>& main_lines,
+                                         const std::function<ValueSpelling(const CodeFunction&)>& spell) {
+    std::vector<GeneratedFile> files;
+    const std::string ext_h = d.cpp ? ".hpp" : ".h", ext_c = d.cpp ? ".cpp" : ".c";
+    // ---- header --------------------------------------------------------------------------
+    std::ostringstream h;
+    h << comment_block(head_lines, d.cpp);
+    if (d.cpp) {
+        h << "#pragma once\n\nnamespace " << d.name << " {\n\n"
+          << "constexpr int nq = " << plan.coordinate_count << ";  // coordinates: "
+          << names_of(plan.q) << "\n"
+          << "constexpr int nu = " << plan.load_count << ";  // loads: " << names_of(plan.loads)
+          << "\n"
+          << "constexpr int ny = " << plan.outputs.size() << ";  // outputs: "
+          << names_of(plan.outputs) << "\n\n"
+          << "// The model's constants, changeable without generating the code again.\n"
+          << "struct Parameters {\n";
+        for (const CodeSymbol& p : plan.parameters)
+            h << "    double " << id.at(p.name) << " = " << pr.number(p.value) << ";"
+              << (p.unit.empty() ? "" : "  // [" + p.unit + "]") << "\n";
+        h << "};\n\n"
+          << "// The equations of motion for one set of parameters: what depends on the\n"
+          << "// parameters only is computed once, by the constructor and set_parameters.\n"
+          << "class Model {\npublic:\n"
+          << "    explicit Model(const Parameters& p = Parameters());\n"
+          << "    void set_parameters(const Parameters& p);\n"
+          << "    const Parameters& parameters() const { return p_; }\n\n"
+          << declarations(plan, d) << "\nprivate:\n    Parameters p_;\n";
+        for (const CodeFunction* f : plan.functions())
+            if (hoisted_count(*f))
+                h << "    double " << d.hoisted_array(*f) << "[" << hoisted_count(*f) << "];\n";
+        h << "};\n\n}  // namespace " << d.name << "\n";
+    } else {
+        std::string guard = d.name + "_H_";
+        std::transform(guard.begin(), guard.end(), guard.begin(), ::toupper);
+        h << "#ifndef " << guard << "\n#define " << guard << "\n\n"
+          << "#ifdef __cplusplus\nextern \"C\" {\n#endif\n\n"
+          << "#define " << d.size("nq") << " " << plan.coordinate_count << " /* coordinates: "
+          << names_of(plan.q) << " */\n"
+          << "#define " << d.size("nu") << " " << plan.load_count << " /* loads: "
+          << names_of(plan.loads) << " */\n"
+          << "#define " << d.size("ny") << " " << plan.outputs.size() << " /* outputs: "
+          << names_of(plan.outputs) << " */\n\n"
+          << "/* The model's constants, changeable without generating the code again. */\n"
+          << "typedef struct " << d.name << "_parameters {\n";
+        for (const CodeSymbol& p : plan.parameters)
+            h << "    double " << id.at(p.name) << ";"
+              << (p.unit.empty() ? "" : " /* [" + p.unit + "] */") << "\n";
+        if (plan.parameters.empty()) h << "    char none; /* (the model has no parameters) */\n";
+        h << "} " << d.name << "_parameters;\n\n"
+          << "/* The parameters and the values computed from them once, by " << d.name
+          << "_init. */\n"
+          << "typedef struct " << d.name << "_context {\n    " << d.name << "_parameters p;\n";
+        for (const CodeFunction* f : plan.functions())
+            if (hoisted_count(*f))
+                h << "    double h_" << f->name << "[" << hoisted_count(*f) << "];\n";
+        h << "} " << d.name << "_context;\n\n"
+          << "/* Sets p to the model's values of the parameters. */\n"
+          << "void " << d.name << "_default_parameters(" << d.name << "_parameters* p);\n"
+          << "/* Sets the context for the parameters p (the model's values when p is NULL);\n"
+          << "   call it again after changing them. */\n"
+          << "void " << d.name << "_init(" << d.name << "_context* c, const " << d.name
+          << "_parameters* p);\n"
+          << declarations(plan, d)
+          << "\n#ifdef __cplusplus\n}\n#endif\n\n#endif\n";
+    }
+    files.push_back({d.name + ext_h, h.str()});
+
+    // ---- source ----------------------------------------------------------------------------
+    std::ostringstream c;
+    c << comment_block(source_lines, d.cpp) << "\n";
+    c << (d.cpp ? "#include <cmath>\n\n#include \"" : "#include <math.h>\n\n#include \"")
+      << d.name << ext_h << "\"\n\n";
+    if (d.cpp) c << "namespace " << d.name << " {\n\nnamespace {\n\n";
+    c << solvers(plan, d) << "\n";
+    if (d.cpp) {
+        c << "}  // namespace\n\nModel::Model(const Parameters& p) { set_parameters(p); }\n\n"
+          << "void Model::set_parameters(const Parameters& p) {\n    p_ = p;\n";
+    } else {
+        c << "void " << d.name << "_default_parameters(" << d.name << "_parameters* p) {\n";
+        for (const CodeSymbol& p : plan.parameters)
+            c << "    p->" << id.at(p.name) << " = " << pr.number(p.value) << ";"
+              << (p.unit.empty() ? "" : " /* [" + p.unit + "] */") << "\n";
+        if (plan.parameters.empty()) c << "    p->none = 0;\n";
+        c << "}\n\nvoid " << d.name << "_init(" << d.name << "_context* c, const " << d.name
+          << "_parameters* p) {\n"
+          << "    if (p)\n        c->p = *p;\n    else\n        " << d.name
+          << "_default_parameters(&c->p);\n";
+    }
+    for (const CodeFunction* f : plan.functions())
+        print_prelude(c, *f, d, pr, spell(*f));
+    c << "}\n";
+    for (const CodeFunction* f : plan.functions()) {
+        c << "\n" << pr.comment(f->summary) << "\n"
+          << "void " << (d.cpp ? "Model::" : "") << d.function(f->name) << "("
+          << (d.cpp ? "" : "const " + d.name + "_context* c, ") << arguments(*f) << ")"
+          << (d.cpp ? " const" : "") << " {\n";
+        print_body(c, plan, *f, d, pr, spell(*f));
+        c << "}\n";
+    }
+    c << "\n" << forward_and_rhs(plan, d);
+    if (d.cpp) c << "\n}  // namespace " << d.name << "\n";
+    files.push_back({d.name + ext_c, c.str()});
+
+    if (plan.simulation)
+        files.push_back({d.name + "_main" + ext_c,
+                         comment_block(main_lines, d.cpp) + main_program(plan, d, pr)});
+    return files;
+}
+
+}  // namespace
+
+std::vector<GeneratedFile> CEmitter::emit(const CodePlan& plan) const {
+    const Dialect d{false, plan.name};
+    const auto id = identifiers(plan);
+    auto spell = [&](const CodeFunction& f) {
+        return spelling(f, id, [this](std::size_t k) { return printer_.element("h", k); });
+    };
+    return emit_c_family(plan, d, printer_, id, header(plan, "equations of motion (declarations)"),
+                         header(plan, "equations of motion"),
+                         header(plan, "simulation program"), spell);
+}
+
+std::vector<GeneratedFile> CppEmitter::emit(const CodePlan& plan) const {
+    const Dialect d{true, plan.name};
+    const auto id = identifiers(plan);
+    auto spell = [&](const CodeFunction& f) {
+        std::string array = d.hoisted_array(f);
+        return spelling(f, id, [this, array](std::size_t k) { return printer_.element(array, k); });
+    };
+    return emit_c_family(plan, d, printer_, id, header(plan, "equations of motion (declarations)"),
+                         header(plan, "equations of motion"),
+                         header(plan, "simulation program"), spell);
+}
+
+}  // namespace alembert

@@ -1,0 +1,338 @@
+// SPDX-License-Identifier: MIT
+// The programs of the generated functions, compiled once per model, and their names.
+#include "alembert/codegen/code_plan.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <regex>
+#include <set>
+
+#include "alembert/eom/kane.hpp"
+#include "alembert/error.hpp"
+#include "alembert/sym/evaluator.hpp"
+#include "alembert/sym/print.hpp"
+#include "linear_split.hpp"
+
+namespace alembert {
+
+namespace {
+
+constexpr const char* kWho = "generate_code()";
+
+bool is_identifier(const std::string& s) {
+    static const std::regex word("[A-Za-z][A-Za-z0-9_]*");
+    return std::regex_match(s, word);
+}
+
+std::string unit_of(const CodegenOptions& o, const std::string& name) {
+    auto it = o.units.find(name);
+    return it == o.units.end() ? std::string() : it->second;
+}
+
+std::string per_second(const std::string& unit, int power) {
+    if (unit.empty()) return unit;
+    return unit + (power == 1 ? "/s" : "/s^2");
+}
+
+// compiles `outputs` of `inputs` with the parameters; the compiler's messages get our context
+StraightLineProgram compile(const SymbolTable& table, const std::vector<ex>& inputs,
+                            const std::vector<ex>& outputs, const CompileOptions& parameters,
+                            const std::string& what) {
+    try {
+        return CompiledExpressions(table, inputs, outputs, parameters).calc_program();
+    } catch (const ArgumentError& e) {
+        throw ArgumentError(std::string(kWho) + ": " + what + ": " + e.what() +
+                            " (generated functions take t, the coordinates, their rates, the "
+                            "loads and the constants)");
+    }
+}
+
+// the parameters (by program position) that a program reads
+void mark_parameters_read(const StraightLineProgram& p, std::vector<char>& used) {
+    auto mark = [&](std::uint32_t v) {
+        if (p.kind(v) == ValueKind::parameter) used[v - p.input_count] = 1;
+    };
+    for (const auto* code : {&p.prelude, &p.body})
+        for (const ProgramInstruction& in : *code) {
+            if (in.op == ProgramOp::combine) {
+                for (std::uint32_t k = in.a; k < in.a + in.b; ++k) mark(p.terms[k].value);
+            } else {
+                mark(in.a);
+                if (in.op != ProgramOp::sincos) mark(in.b);
+            }
+        }
+    for (std::uint32_t v : p.outputs) mark(v);
+}
+
+// the table's values of the parameters (NaN without one)
+std::vector<double> parameter_values(const SymbolTable& table, const std::vector<ex>& parameters) {
+    std::vector<double> v;
+    for (const ex& c : parameters) v.push_back(table.value(c).value_or(std::nan("")));
+    return v;
+}
+
+// M symmetric at three pseudo-random states (the mass matrices of Kane's and Lagrange's
+// methods are; a road-map's rows need not be)
+bool symmetric_at_random_states(const StraightLineProgram& p, const std::vector<double>& parameters,
+                                std::size_t n) {
+    std::mt19937 rng(20240611);
+    std::uniform_real_distribution<double> draw(-1.5, 1.5);
+    std::vector<double> in(p.input_count), out(p.outputs.size());
+    for (int trial = 0; trial < 3; ++trial) {
+        for (double& x : in) x = draw(rng);
+        evaluate(p, in.data(), parameters.data(), out.data());
+        for (std::size_t i = 0; i < n; ++i)
+            for (std::size_t j = 0; j < i; ++j) {
+                double a = out[i * n + j], b = out[j * n + i];
+                double scale = std::max({1.0, std::fabs(a), std::fabs(b)});
+                if (!(std::fabs(a - b) <= 1e-10 * scale)) return false;
+            }
+    }
+    return true;
+}
+
+// The residuals E(u) = E0 + C u solved for the loads, u = -C^-1 E0: split_linear gives C and
+// E0 in time linear in the expressions' graph. When C is numeric (joint loads enter road-maps
+// and Kane's equations of chains with coefficients +-1) its inverse is exact and the loads are
+// sums of the E0; otherwise the system is solved symbolically, one decoupled block at a time.
+std::vector<ex> solve_for_loads(const SymbolTable& table, const DynamicsEquations& eq) {
+    const auto n = static_cast<unsigned>(eq.loads.size());
+    LinearSystem L = detail::split_linear(table, eq.residuals, eq.loads, kWho);  // C = -A
+    bool numeric = true;
+    for (unsigned i = 0; i < n && numeric; ++i)
+        for (unsigned j = 0; j < n && numeric; ++j) numeric = GiNaC::is_a<GiNaC::numeric>(L.A(i, j));
+    std::vector<ex> u;
+    if (numeric && !L.A.determinant().is_zero()) {
+        // A u = b with E = b - A u
+        GiNaC::matrix Ainv = L.A.inverse();
+        for (unsigned i = 0; i < n; ++i) {
+            ex s = 0;
+            for (unsigned j = 0; j < n; ++j)
+                if (!Ainv(i, j).is_zero()) s += Ainv(i, j) * L.b(j, 0);
+            u.push_back(s);
+        }
+        return u;
+    }
+    GiNaC::matrix X =
+        detail::solve_by_blocks(L.A, L.b, eq.loads, std::string(kWho) + ": inverse dynamics");
+    for (unsigned i = 0; i < n; ++i) u.push_back(X(i, 0));
+    return u;
+}
+
+}  // namespace
+
+std::vector<const CodeFunction*> CodePlan::functions() const {
+    std::vector<const CodeFunction*> out{&mass_forcing};
+    if (!inverse_dynamics.empty()) out.push_back(&inverse_dynamics);
+    if (!output_function.empty()) out.push_back(&output_function);
+    if (!load_laws.empty()) out.push_back(&load_laws);
+    return out;
+}
+
+CodePlan plan_code(const SymbolTable& table, const DynamicsEquations& eq,
+                   const CodegenOptions& options) {
+    CodePlan plan;
+    plan.name = options.name;
+    plan.source = options.source.empty() ? "an Alembert model" : options.source;
+    plan.version = generator_version();
+    if (!is_identifier(options.name))
+        throw ArgumentError(std::string(kWho) + ": the name '" + options.name +
+                            "' is not an identifier; use letters, digits and _ (starting with "
+                            "a letter), e.g. 'triple_pendulum'");
+    const std::size_t n = eq.coordinates.size();
+    if (n == 0)
+        throw ArgumentError(std::string(kWho) + ": no coordinates given; list the generalized "
+                            "coordinates q of the model");
+    if (eq.residuals.size() != n)
+        throw ArgumentError(std::string(kWho) + ": " + std::to_string(eq.residuals.size()) +
+                            " residuals for " + std::to_string(n) +
+                            " coordinates; give one equation of motion per coordinate");
+    plan.coordinate_count = n;
+    plan.load_count = eq.loads.size();
+
+    // ---- names and units --------------------------------------------------------------------
+    std::vector<ex> q, qp, qpp;
+    for (const TimeVariable& v : eq.coordinates) {
+        if (v.order() < 2)
+            throw ArgumentError(std::string(kWho) + ": the coordinate '" + v.name() +
+                                "' has no second derivative; declare it with order 2");
+        q.push_back(v.d(0));
+        qp.push_back(v.d(1));
+        qpp.push_back(v.d(2));
+        std::string unit = unit_of(options, v.name());
+        plan.q.push_back({table.name(v.d(0)), unit});
+        plan.qp.push_back({table.name(v.d(1)), per_second(unit, 1)});
+        plan.qpp.push_back({table.name(v.d(2)), per_second(unit, 2)});
+    }
+    for (const ex& u : eq.loads) {
+        if (!table.owns(u) || table.kind(u) != SymbolKind::unknown)
+            throw ArgumentError(std::string(kWho) + ": the load '" + to_string(u) +
+                                "' is not an unknown of the table; declare it with "
+                                "SymbolTable::add_unknown()");
+        plan.loads.push_back({table.name(u), unit_of(options, table.name(u))});
+    }
+    std::vector<ex> parameters;
+    if (options.parameters) {
+        for (const ex& c : *options.parameters)
+            if (!table.owns(c) || table.kind(c) != SymbolKind::constant)
+                throw ArgumentError(std::string(kWho) + ": the parameter '" + to_string(c) +
+                                    "' is not a constant of the table; list constants only");
+        parameters = *options.parameters;
+    } else {
+        parameters = table.symbols(SymbolKind::constant);
+    }
+    std::vector<std::string> parameter_names;
+    for (const ex& c : parameters) parameter_names.push_back(table.name(c));
+    const CompileOptions compile_options{.parameters = parameters,
+                                         .expand_angle_sums = options.expand_angle_sums};
+    std::vector<std::string> q_names, qp_names, qpp_names, u_names;
+    for (std::size_t i = 0; i < n; ++i) {
+        q_names.push_back(plan.q[i].name);
+        qp_names.push_back(plan.qp[i].name);
+        qpp_names.push_back(plan.qpp[i].name);
+    }
+    for (const CodeSymbol& u : plan.loads) u_names.push_back(u.name);
+    auto input_names = [&](std::initializer_list<const std::vector<std::string>*> arrays) {
+        std::vector<std::string> names{"t"};
+        for (const auto* a : arrays) names.insert(names.end(), a->begin(), a->end());
+        return names;
+    };
+    auto symbols = [&](std::initializer_list<const std::vector<ex>*> arrays) {
+        std::vector<ex> in{table.time()};
+        for (const auto* a : arrays) in.insert(in.end(), a->begin(), a->end());
+        return in;
+    };
+
+    // ---- mass matrix and forcing -------------------------------------------------------------
+    // given, or split from the compiled residuals (linear in q''): E = f - M q''
+    StraightLineProgram mf_program;
+    if (eq.mass_forcing) {
+        const LinearSystem& D = *eq.mass_forcing;
+        if (D.A.rows() != n || D.A.cols() != n || D.b.rows() != n)
+            throw ArgumentError(std::string(kWho) + ": the mass matrix given is " +
+                                std::to_string(D.A.rows()) + " x " + std::to_string(D.A.cols()) +
+                                " for " + std::to_string(n) + " coordinates");
+        for (std::size_t i = 0; i < n; ++i)
+            if (D.unknowns.size() != n || !D.unknowns[i].is_equal(qpp[i]))
+                throw ArgumentError(std::string(kWho) + ": the mass matrix given is not for the "
+                                    "accelerations q'' of the coordinates, in their order (its "
+                                    "unknowns differ at position " + std::to_string(i + 1) +
+                                    "); give M and f of M q'' = f, or leave mass_forcing empty");
+        std::vector<ex> mf;
+        for (unsigned i = 0; i < n; ++i)
+            for (unsigned j = 0; j < n; ++j) mf.push_back(D.A(i, j));
+        for (unsigned i = 0; i < n; ++i) mf.push_back(D.b(i, 0));
+        mf_program = compile(table, symbols({&q, &qp, &eq.loads}), mf, compile_options,
+                             "the mass matrix and forcing");
+    } else {
+        StraightLineProgram E = compile(table, symbols({&q, &qp, &eq.loads, &qpp}),
+                                        eq.residuals, compile_options, "the equations of motion");
+        std::vector<std::size_t> accelerations;
+        for (std::size_t i = 0; i < n; ++i) accelerations.push_back(1 + 2 * n + eq.loads.size() + i);
+        try {
+            mf_program = split_linear(E, accelerations);
+        } catch (const SolveError& e) {
+            throw SolveError(std::string(kWho) + ": the equations are not linear in the "
+                             "accelerations q'' (" + e.what() + ")");
+        }
+    }
+    plan.mass_forcing = {.name = "mass_forcing",
+                         .summary = "mass matrix M (row by row) and forcing f of M q'' = f",
+                         .arrays = {"q", "qp", "u"},
+                         .results = {"M", "f"},
+                         .result_sizes = {n * n, n},
+                         .program = std::move(mf_program),
+                         .input_names = input_names({&q_names, &qp_names, &u_names}),
+                         .parameter_names = parameter_names};
+    plan.symmetric_mass_matrix =
+        symmetric_at_random_states(plan.mass_forcing.program, parameter_values(table, parameters), n);
+
+    // ---- inverse dynamics: the residuals solved for the loads ---------------------------------
+    if (!eq.loads.empty() && eq.loads.size() == n) {
+        std::vector<ex> u = solve_for_loads(table, eq);
+        plan.inverse_dynamics = {
+            .name = "inverse_dynamics",
+            .summary = "loads u that give the accelerations qpp (inverse dynamics)",
+            .arrays = {"q", "qp", "qpp"},
+            .results = {"u"},
+            .result_sizes = {n},
+            .program = compile(table, symbols({&q, &qp, &qpp}), u, compile_options, "inverse dynamics"),
+            .input_names = input_names({&q_names, &qp_names, &qpp_names}),
+            .parameter_names = parameter_names};
+    }
+
+    // ---- requested outputs ---------------------------------------------------------------------
+    if (!options.outputs.empty()) {
+        std::vector<ex> y;
+        std::set<std::string> seen;
+        for (const CodegenOutput& o : options.outputs) {
+            if (!is_identifier(o.name) || !seen.insert(o.name).second)
+                throw ArgumentError(std::string(kWho) + ": the output name '" + o.name +
+                                    "' is not an identifier or is used twice; name each output "
+                                    "once with letters, digits and _");
+            y.push_back(o.expression);
+            plan.outputs.push_back({o.name, o.unit.empty() ? unit_of(options, o.name) : o.unit});
+        }
+        plan.output_function = {
+            .name = "outputs",
+            .summary = "requested outputs y",
+            .arrays = {"q", "qp", "qpp", "u"},
+            .results = {"y"},
+            .result_sizes = {y.size()},
+            .program = compile(table, symbols({&q, &qp, &qpp, &eq.loads}), y, compile_options,
+                               "the outputs"),
+            .input_names = input_names({&q_names, &qp_names, &qpp_names, &u_names}),
+            .parameter_names = parameter_names};
+    }
+
+    // ---- simulation: initial values and load laws -----------------------------------------------
+    plan.simulation = options.simulation;
+    plan.simulation_spec = options.simulation_spec;
+    SimulationSpec& sim = plan.simulation_spec;
+    if (sim.initial_q.empty()) sim.initial_q.assign(n, 0.0);
+    if (sim.initial_qp.empty()) sim.initial_qp.assign(n, 0.0);
+    if (sim.initial_q.size() != n || sim.initial_qp.size() != n)
+        throw ArgumentError(std::string(kWho) + ": the simulation has " +
+                            std::to_string(sim.initial_q.size()) + " initial values of q and " +
+                            std::to_string(sim.initial_qp.size()) + " of q' for " +
+                            std::to_string(n) + " coordinates; give one each (or none)");
+    if (!(sim.final_time > 0) || !(sim.output_step > 0) || !(sim.absolute_tolerance > 0) ||
+        !(sim.relative_tolerance > 0))
+        throw ArgumentError(std::string(kWho) + ": the simulation's final time, output step "
+                            "and tolerances must be positive");
+    if (!sim.load_laws.empty() && sim.load_laws.size() != eq.loads.size())
+        throw ArgumentError(std::string(kWho) + ": " + std::to_string(sim.load_laws.size()) +
+                            " load laws for " + std::to_string(eq.loads.size()) +
+                            " loads; give one per load (or none for zero loads)");
+    if (!eq.loads.empty()) {
+        std::vector<ex> laws = sim.load_laws;
+        if (laws.empty()) laws.assign(eq.loads.size(), ex(0));
+        plan.load_laws = {.name = "load_laws",
+                          .summary = "loads u during a simulation, from t, q and qp",
+                          .arrays = {"q", "qp"},
+                          .results = {"u"},
+                          .result_sizes = {eq.loads.size()},
+                          .program = compile(table, symbols({&q, &qp}), laws, compile_options,
+                                             "the load laws"),
+                          .input_names = input_names({&q_names, &qp_names}),
+                          .parameter_names = parameter_names};
+    }
+
+    // ---- the parameters the programs read, with their defaults ----------------------------------
+    std::vector<char> used(parameters.size(), 0);
+    for (const CodeFunction* f : plan.functions()) mark_parameters_read(f->program, used);
+    for (std::size_t i = 0; i < parameters.size(); ++i) {
+        if (!used[i]) continue;
+        std::optional<double> value = table.value(parameters[i]);
+        if (!value)
+            throw ArgumentError(std::string(kWho) + ": the constant '" + parameter_names[i] +
+                                "' has no value; give it one with SymbolTable::set_value() (it "
+                                "is the parameter's default in the generated code)");
+        plan.parameters.push_back({parameter_names[i], unit_of(options, parameter_names[i]),
+                                   *value});
+    }
+    return plan;
+}
+
+}  // namespace alembert

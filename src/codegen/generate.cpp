@@ -1,0 +1,67 @@
+// SPDX-License-Identifier: MIT
+// generate_code: plan the programs once, print them in one language, write the files.
+#include <algorithm>
+#include <cctype>
+
+#include "alembert/codegen/codegen.hpp"
+#include "alembert/codegen/code_plan.hpp"
+#include "alembert/codegen/emitter.hpp"
+#include "alembert/error.hpp"
+#include "file_writer.hpp"
+
+#ifndef ALEMBERT_VERSION
+#define ALEMBERT_VERSION "unknown"
+#endif
+
+namespace alembert {
+
+const char* to_string(Language language) {
+    switch (language) {
+        case Language::c: return "c";
+        case Language::cpp: return "cpp";
+        case Language::matlab: return "matlab";
+        case Language::python: return "python";
+    }
+    return "?";
+}
+
+Language parse_language(std::string_view word) {
+    std::string w(word);
+    std::transform(w.begin(), w.end(), w.begin(),
+                   [](unsigned char ch) { return static_cast<char>(std::tolower(ch)); });
+    if (w == "c" || w == "c99") return Language::c;
+    if (w == "cpp" || w == "c++" || w == "cxx") return Language::cpp;
+    if (w == "matlab" || w == "octave" || w == "m") return Language::matlab;
+    if (w == "python" || w == "py") return Language::python;
+    throw ArgumentError("parse_language(): unknown language '" + std::string(word) +
+                        "'; use c, cpp, matlab or python");
+}
+
+const char* generator_version() { return ALEMBERT_VERSION; }
+
+GeneratedCode generate_code(const SymbolTable& table, const DynamicsEquations& equations,
+                            Language language, const std::filesystem::path& out_dir,
+                            const CodegenOptions& options) {
+    // the directory first: a bad path fails before any work
+    detail::ensure_directory(out_dir, "generate_code()");
+    CodePlan plan = plan_code(table, equations, options);
+    std::vector<GeneratedFile> files = make_emitter(language)->emit(plan);
+
+    GeneratedCode result;
+    for (const GeneratedFile& f : files) {
+        std::filesystem::path path = out_dir / f.name;
+        detail::write_file_atomically(path, f.text, "generate_code()");
+        result.files.push_back(path);
+    }
+    auto ops = [](const CodeFunction& f) { return f.program.operation_count(f.program.body); };
+    result.mass_forcing_operations = ops(plan.mass_forcing);
+    result.inverse_dynamics_operations = plan.inverse_dynamics.empty() ? 0 : ops(plan.inverse_dynamics);
+    result.outputs_operations = plan.output_function.empty() ? 0 : ops(plan.output_function);
+    for (const CodeFunction* f : plan.functions())
+        result.prelude_operations += f->program.operation_count(f->program.prelude);
+    result.symmetric_mass_matrix = plan.symmetric_mass_matrix;
+    result.inverse_dynamics = !plan.inverse_dynamics.empty();
+    return result;
+}
+
+}  // namespace alembert

@@ -1,0 +1,21 @@
+// SPDX-License-Identifier: MIT
+// Private to codegen: expressions linear in some symbols split into coefficients and the rest,
+// in time linear in the size of their graphs.
+#pragma once
+
+#include <vector>
+
+#include "alembert/eom/equations.hpp"
+
+namespace alembert::detail {
+
+/// Splits residuals E_i linear in `unknowns` x into A x = b (A_ij = -dE_i/dx_j, b_i = E_i at
+/// x = 0), as form_linear_system does, but by one pass over each shared subexpression instead
+/// of a derivative per unknown: subexpressions free of x are kept as they are (shared), named
+/// intermediates are followed into their definitions, sums and products are split term by
+/// term. The cost follows the size of the expressions' graph, not of their trees or of n^2.
+/// @throws alembert::SolveError naming the equation and the unknown if E_i is not linear in it.
+LinearSystem split_linear(const SymbolTable& table, const std::vector<ex>& residuals,
+                          const std::vector<ex>& unknowns, const char* who);
+
+}  // namespace alembert::detail

@@ -1,0 +1,155 @@
+// SPDX-License-Identifier: MIT
+// Small programs, one per target language, that load generated code, read states from
+// standard input and print M, f, forward dynamics, inverse dynamics and outputs per state.
+#pragma once
+
+#include <string>
+
+#include "harness.hpp"
+
+namespace alembert::test {
+
+inline std::string replace_all(std::string s, const std::string& a, const std::string& b) {
+    for (std::size_t at = s.find(a); at != std::string::npos; at = s.find(a, at + b.size()))
+        s.replace(at, a.size(), b);
+    return s;
+}
+
+/// A C99 driver of NAME.h.
+inline std::string c_driver(const std::string& name) {
+    return replace_all(R"(#include <stdio.h>
+#include "NAME.h"
+#define NQ NAME_NQ
+#define NU NAME_NU
+#define NY NAME_NY
+static int read(double* x, int n) {
+    for (int i = 0; i < n; ++i)
+        if (scanf("%lf", &x[i]) != 1) return 0;
+    return 1;
+}
+static void print(const double* x, int n) {
+    for (int i = 0; i < n; ++i) printf("%.17g\n", x[i]);
+}
+int main(void) {
+    NAME_context c;
+    NAME_init(&c, 0);
+    int count = 0;
+    if (scanf("%d", &count) != 1) return 1;
+    for (int k = 0; k < count; ++k) {
+        double t, q[NQ], qp[NQ], qpp[NQ], u[NU + 1], M[NQ * NQ], f[NQ], fd[NQ], id[NQ + 1];
+        double y[NY + 1];
+        if (!read(&t, 1) || !read(q, NQ) || !read(qp, NQ) || !read(qpp, NQ) || !read(u, NU))
+            return 1;
+        NAME_mass_forcing(&c, t, q, qp, u, M, f);
+        if (NAME_forward_dynamics(&c, t, q, qp, u, fd) != 0) return 2;
+        print(M, NQ * NQ);
+        print(f, NQ);
+        print(fd, NQ);
+        NAME_inverse_dynamics(&c, t, q, qp, qpp, id);
+        print(id, NQ);
+#if NY > 0
+        NAME_outputs(&c, t, q, qp, qpp, u, y);
+#endif
+        print(y, NY);
+    }
+    return 0;
+}
+)",
+                       "NAME", name);
+}
+
+/// A C++ driver of NAME.hpp; `setup` may change the parameters p before the model is built.
+inline std::string cpp_driver(const std::string& name, const std::string& setup = "") {
+    return replace_all(replace_all(R"(#include <cstdio>
+#include <iostream>
+#include "NAME.hpp"
+using namespace NAME;
+static bool read(double* x, int n) {
+    for (int i = 0; i < n; ++i)
+        if (!(std::cin >> x[i])) return false;
+    return true;
+}
+static void print(const double* x, int n) {
+    for (int i = 0; i < n; ++i) std::printf("%.17g\n", x[i]);
+}
+int main() {
+    Parameters p;
+    SETUP
+    const Model model(p);
+    int count = 0;
+    if (!(std::cin >> count)) return 1;
+    for (int k = 0; k < count; ++k) {
+        double t, q[nq], qp[nq], qpp[nq], u[nu + 1], M[nq * nq], f[nq], fd[nq], id[nq + 1];
+        double y[ny + 1];
+        if (!read(&t, 1) || !read(q, nq) || !read(qp, nq) || !read(qpp, nq) || !read(u, nu))
+            return 1;
+        model.mass_forcing(t, q, qp, u, M, f);
+        if (!model.forward_dynamics(t, q, qp, u, fd)) return 2;
+        print(M, nq * nq);
+        print(f, nq);
+        print(fd, nq);
+        model.inverse_dynamics(t, q, qp, qpp, id);
+        print(id, nq);
+        if constexpr (ny > 0) model.outputs(t, q, qp, qpp, u, y);
+        print(y, ny);
+    }
+    return 0;
+}
+)",
+                                   "NAME", name),
+                       "SETUP", setup);
+}
+
+/// A Python driver of NAME.py in `dir`.
+inline std::string python_driver(const std::string& name, const std::string& dir) {
+    return replace_all(replace_all(R"(import sys
+sys.path.insert(0, "DIR")
+import numpy as np
+import NAME as m
+
+ctx = m.Context()
+data = sys.stdin.read().split()
+count, values, at = int(data[0]), [float(x) for x in data[1:]], 0
+
+
+def take(k):
+    global at
+    at += k
+    return np.array(values[at - k:at])
+
+
+for _ in range(count):
+    t = take(1)[0]
+    q, qp, qpp, u = take(m.NQ), take(m.NQ), take(m.NQ), take(m.NU)
+    M, f = m.mass_forcing(t, q, qp, u, ctx)
+    out = list(M.ravel()) + list(f) + list(m.forward_dynamics(t, q, qp, u, ctx))
+    out += list(m.inverse_dynamics(t, q, qp, qpp, ctx))
+    if m.NY:
+        out += list(m.outputs(t, q, qp, qpp, u, ctx))
+    print("\n".join(repr(float(x)) for x in out))
+)",
+                                   "NAME", name),
+                       "DIR", dir);
+}
+
+/// An Octave script driving NAME_*.m on the rows of states.txt (t, q, q', q'', u per row).
+inline std::string octave_driver(const std::string& name, std::size_t n, std::size_t m,
+                                 bool outputs) {
+    std::string s = R"(X = load('states.txt');
+ctx = NAME_context();
+for k = 1:size(X, 1)
+    r = X(k, :)';
+    t = r(1); q = r(2:N+1); qp = r(N+2:2*N+1); qpp = r(2*N+2:3*N+1); u = r(3*N+2:3*N+1+U);
+    [M, f] = NAME_mass_forcing(t, q, qp, u, ctx);
+    Mt = M';
+    printf('%.17g\n', [Mt(:); f; NAME_forward_dynamics(t, q, qp, u, ctx); NAME_inverse_dynamics(t, q, qp, qpp, ctx)]);
+)";
+    if (outputs) s += "    printf('%.17g\\n', NAME_outputs(t, q, qp, qpp, u, ctx));\n";
+    s += "end\n";
+    s = replace_all(s, "NAME", name);
+    s = replace_all(s, "N+", std::to_string(n) + "+");
+    s = replace_all(s, "*N", "*" + std::to_string(n));
+    return replace_all(s, "+U", "+" + std::to_string(m));
+}
+
+}  // namespace alembert::test
