@@ -79,13 +79,43 @@ std::string display_name(const std::string& path) { return path == "-" ? "<stdin
 struct RunOptions {
     std::string file;
     bool quiet = false;
+    std::string out = ".";
 };
 
 int run_script(const RunOptions& o) {
     std::string text;
     if (!read_script(o.file, text)) return kUsageError;
     Interpreter interp(std::cout, std::cerr, !o.quiet);
+    interp.set_output_dir(o.out);
     return exit_status(interp.run(text, display_name(o.file)));
+}
+
+// `alembert inverse` and `alembert codegen`: the script builds the model (its simulate,
+// inverse and codegen statements skipped), then one library call does the work
+struct ModelCommandOptions {
+    std::string file;
+    std::string out;
+    std::string motion;
+    double cutoff_hz = 6.0;
+    bool compiled = false;
+    std::string language;
+    std::string name;
+};
+
+int run_model_command(const ModelCommandOptions& o, bool inverse) {
+    std::string text;
+    if (!read_script(o.file, text)) return kUsageError;
+    if (inverse && !std::filesystem::is_regular_file(o.motion)) {
+        std::cerr << "alembert inverse: the motion table '" << o.motion << "' is not a file\n";
+        return kUsageError;
+    }
+    Interpreter interp(std::cout, std::cerr, false);
+    interp.set_model_only(true);
+    interp.set_output_dir(o.out);
+    RunStatus s = interp.run(text, display_name(o.file));
+    if (s != RunStatus::ok) return exit_status(s);
+    return exit_status(inverse ? interp.run_inverse(o.motion, o.cutoff_hz, o.compiled)
+                               : interp.run_codegen(o.language, o.name));
 }
 
 struct RoadmapOptions {
@@ -184,9 +214,9 @@ int main(int argc, char** argv) {
 
     RunOptions run_opts;
     RoadmapOptions roadmap_opts;
-    // The subcommand table. Each row adds one subcommand and the function that carries it out;
-    // layers that come later add theirs here ("inverse": inverse dynamics over a motion,
-    // "codegen": generated code), so main() stays a dispatcher.
+    ModelCommandOptions inverse_opts, codegen_opts;
+    // The subcommand table. Each row adds one subcommand and the function that carries it out,
+    // so main() stays a dispatcher.
     struct Subcommand {
         const char* name;
         const char* help;
@@ -198,6 +228,8 @@ int main(int argc, char** argv) {
          [&](CLI::App& c) {
              c.add_option("FILE", run_opts.file, "the script; '-' reads standard input")->required();
              c.add_flag("-q,--quiet", run_opts.quiet, "print only results, not the statements");
+             c.add_option("--out", run_opts.out,
+                          "directory for the files of simulate, inverse and codegen (default: .)");
          },
          [&] { return run_script(run_opts); }},
         {"roadmap", "Print the MG road-map table of the model in a script",
@@ -206,6 +238,29 @@ int main(int argc, char** argv) {
              c.add_flag("--json", roadmap_opts.json, "print the road-map as JSON");
          },
          [&] { return print_roadmap(roadmap_opts); }},
+        {"inverse", "Inverse dynamics of a script's model over a motion table: DIR/torques.csv and its plot",
+         [&](CLI::App& c) {
+             c.add_option("MODEL", inverse_opts.file, "the script that builds the model")->required();
+             c.add_option("--motion", inverse_opts.motion,
+                          "CSV: a column t [s] and one per coordinate, units in the header (qA [deg])")
+                 ->required();
+             c.add_option("--out", inverse_opts.out, "directory for torques.csv, .png and .svg")->required();
+             c.add_option("--cutoff", inverse_opts.cutoff_hz,
+                          "low-pass Butterworth cutoff in Hz before differentiating (0: no filter; default 6)")
+                 ->check(CLI::NonNegativeNumber);
+             c.add_flag("--compiled", inverse_opts.compiled, "evaluate through compiled C code");
+         },
+         [&] { return run_model_command(inverse_opts, true); }},
+        {"codegen", "Generate C, C++, MATLAB/Octave or Python code for a script's model",
+         [&](CLI::App& c) {
+             c.add_option("MODEL", codegen_opts.file, "the script that builds the model")->required();
+             c.add_option("--lang", codegen_opts.language, "c, cpp, matlab or python")
+                 ->required()
+                 ->check(CLI::IsMember({"c", "cpp", "c++", "matlab", "octave", "python"}));
+             c.add_option("--out", codegen_opts.out, "directory for the generated files")->required();
+             c.add_option("--name", codegen_opts.name, "prefix of the files and functions (default: the script's name)");
+         },
+         [&] { return run_model_command(codegen_opts, false); }},
     };
     std::vector<CLI::App*> commands;
     for (const Subcommand& s : table) {

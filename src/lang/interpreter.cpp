@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: MIT
 // The interpreter: the run loop, names, declarations and the model-building statements.
 #include <algorithm>
+#include <cctype>
 #include <cmath>
+#include <filesystem>
 
 #include "alembert/lang/lexer.hpp"
 #include "alembert/lang/parser.hpp"
@@ -54,9 +56,80 @@ const std::optional<Diagnostic>& Interpreter::last_error() const { return impl_-
 
 const System* Interpreter::system() const { return impl_->sys.get(); }
 
+void Interpreter::set_output_dir(const std::string& dir) { impl_->output_dir = dir.empty() ? "." : dir; }
+
+void Interpreter::set_model_only(bool model_only) { impl_->model_only = model_only; }
+
+namespace {
+
+// runs a command of the public API, reporting a ScriptError or library error as `who: error`
+template <class F>
+RunStatus run_command(Interpreter::Impl& m, const std::string& who, F&& f) {
+    m.transcript.set_muted(false);
+    try {
+        f();
+    } catch (const ScriptError& e) {
+        m.transcript.flush();
+        *m.err << who << ": error: " << e.what() << "\n";
+        if (!e.hint().empty()) *m.err << "hint: " << e.hint() << "\n";
+        return RunStatus::script_error;
+    } catch (const InternalError& e) {
+        *m.err << who << ": internal error: " << e.what() << "\n";
+        return RunStatus::internal_error;
+    } catch (const std::exception& e) {
+        *m.err << who << ": internal error: " << e.what() << "\n";
+        return RunStatus::internal_error;
+    }
+    m.transcript.flush();
+    return RunStatus::ok;
+}
+
+}  // namespace
+
+RunStatus Interpreter::run_inverse(const std::string& motion_csv, double cutoff_hz, bool compiled) {
+    Impl& m = *impl_;
+    return run_command(m, m.script_file, [&] {
+        const System& sys = m.model({1, 1});
+        InverseRequest r;
+        r.loads = sys.symbols().symbols(SymbolKind::unknown);
+        if (r.loads.empty())
+            throw ScriptError({1, 1}, "the model declares no load measures to compute",
+                              "declare the joint torques with 'unknown' and apply them with 'torque'");
+        r.motion_file = motion_csv;
+        r.cutoff_hz = cutoff_hz;
+        r.compiled = compiled;
+        r.dir = m.output_dir;
+        m.run_inverse(r, {1, 1});
+    });
+}
+
+RunStatus Interpreter::run_codegen(const std::string& language, const std::string& name) {
+    Impl& m = *impl_;
+    return run_command(m, m.script_file, [&] {
+        CodegenRequest r;
+        r.language = {language, {1, 1}};
+        r.name = name;
+        r.dir = m.output_dir;
+        m.run_codegen(r, {1, 1});
+    });
+}
+
 RunStatus Interpreter::run(std::string_view source, const std::string& file, int first_line) {
     Impl& m = *impl_;
     m.last_error.reset();
+    m.transcript.set_muted(m.model_only);
+    if (m.script_file.empty()) {
+        namespace fs = std::filesystem;
+        m.script_file = file;
+        std::error_code ec;
+        if (fs::is_regular_file(file, ec)) {
+            m.base_dir = fs::path(file).parent_path().string();
+            std::string stem = fs::path(file).stem().string();
+            bool ok = !stem.empty() && (std::isalpha(static_cast<unsigned char>(stem[0])) || stem[0] == '_');
+            for (char c : stem) ok = ok && (std::isalnum(static_cast<unsigned char>(c)) || c == '_');
+            if (ok) m.script_name = stem;
+        }
+    }
     auto report = [&](Location where, const std::string& message, const std::string& hint) {
         m.transcript.flush();
         Diagnostic d{Severity::error, file, where, message, hint};
@@ -344,6 +417,15 @@ void Interpreter::Impl::execute(const Statement& s) {
     if (k == "kane" || k == "lagrange") return methods(s);
     if (k == "solve") return solve(s);
     if (k == "evaluate") return evaluate_statement(s);
+    if (k == "initial") return set_initial(s);
+    if (k == "input") return set_inputs(s);
+    if (k == "motion") return set_prescribed_motion(s);
+    if (k == "final" || k == "tolerance") return set_times_and_tolerances(s);
+    if (k == "output") return add_outputs(s);
+    if (k == "stop") return add_event(s);
+    if (k == "simulate") return simulate(s);
+    if (k == "inverse") return inverse(s);
+    if (k == "codegen") return codegen(s);
     if (k == "=") return assign(s);
     return show(s);
 }

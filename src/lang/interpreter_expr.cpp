@@ -343,6 +343,23 @@ Value Interpreter::Impl::eval_call(const Expr& e) {
         });
         return scalar_value(r, d);
     }
+    if (f == "minimum_jerk") {
+        want(3, "minimum_jerk(t, t0, t1): 0 before t0, 1 after t1, 10u^3 - 15u^4 + 6u^5 between");
+        Value x = eval(*a[0]);
+        if (x.kind != Kind::scalar) throw ScriptError(a[0]->location, "minimum_jerk() takes time first", "");
+        check_dimension(x.dim, Dimension::time(), "the first argument of minimum_jerk()", a[0]->location);
+        double ends[2];
+        for (std::size_t i = 1; i < 3; ++i) {
+            Value v = eval(*a[i]);
+            if (v.kind != Kind::scalar)
+                throw ScriptError(a[i]->location, "the times of minimum_jerk() must be numbers",
+                                  "write minimum_jerk(t, 0.15, 1.5), times in seconds");
+            check_dimension(v.dim, Dimension::time(), "a time of minimum_jerk()", a[i]->location);
+            ends[i - 1] = guard(a[i]->location, [&] { return model(e.location).symbols().evaluate(v.s); },
+                                "write minimum_jerk(t, 0.15, 1.5): times are numbers or constants with values");
+        }
+        return scalar_value(guarded([&] { return minimum_jerk(x.s, ends[0], ends[1]); }), Dimension::none());
+    }
     if (f == "dot" || f == "cross") {
         want(2, f + "(a>, b>)");
         Value x = eval(*a[0]), y = eval(*a[1]);

@@ -47,6 +47,35 @@ struct ScriptRoadmap {
     std::vector<RoadmapRow> rows{};
 };
 
+/// What the simulation statements have set so far (initial, input, motion, final time,
+/// output step, tolerance, output, stop).
+struct NumberSettings {
+    exmap initial{};                       ///< coordinate or rate -> SI value
+    exmap inputs{};                        ///< load measure -> formula of t, q, q'
+    std::map<std::string, ex> motion{};    ///< coordinate name -> formula of t (SI)
+    SimulationOptions options{};
+    std::vector<OutputSpec> outputs{};
+    std::vector<std::string> output_si_units{};  ///< per output: its SI unit ("" if open)
+    std::vector<EventSpec> events{};
+};
+
+/// Inverse dynamics over a motion: from a `inverse` statement or `alembert inverse`.
+struct InverseRequest {
+    std::vector<ex> loads{};
+    std::string motion_file{};  ///< a motion table; empty: the prescribed motion
+    double cutoff_hz = 6.0;
+    bool compiled = false;
+    std::string dir{};
+};
+
+/// Code generation: from a `codegen` statement or `alembert codegen`.
+struct CodegenRequest {
+    Word language{};
+    std::vector<ex> loads{};  ///< empty: every load measure of the model
+    std::string name{};       ///< empty: the script's name
+    std::string dir{};
+};
+
 struct Interpreter::Impl {
     Impl(std::ostream& out, std::ostream& err, bool echo) : transcript(out, echo), err(&err) {}
 
@@ -63,6 +92,12 @@ struct Interpreter::Impl {
     std::vector<TimeVariable> coordinates{};
     bool coordinates_given = false;
     std::string last_roadmap{};
+    NumberSettings numbers{};
+    std::string output_dir = ".";     ///< where simulate, inverse and codegen write
+    std::string base_dir{};           ///< the script's directory: paths it reads are relative to it
+    std::string script_file{};        ///< as named in diagnostics
+    std::string script_name = "model";  ///< the script's stem, naming the model in messages and files
+    bool model_only = false;          ///< skip simulate, inverse and codegen
 
     // ---- statements (interpreter.cpp, interpreter_equations.cpp) ---------------------------
     void execute(const Statement& s);
@@ -80,6 +115,27 @@ struct Interpreter::Impl {
     void methods(const Statement& s);
     void solve(const Statement& s);
     void evaluate_statement(const Statement& s);
+
+    // ---- numbers (interpreter_numbers.cpp) -------------------------------------------------
+    void set_initial(const Statement& s);
+    void set_inputs(const Statement& s);
+    void set_prescribed_motion(const Statement& s);
+    void set_times_and_tolerances(const Statement& s);
+    void add_outputs(const Statement& s);
+    void add_event(const Statement& s);
+    void simulate(const Statement& s);
+    void inverse(const Statement& s);
+    void codegen(const Statement& s);
+    void run_inverse(const InverseRequest& r, Location where);
+    void run_codegen(const CodegenRequest& r, Location where);
+    ex quantity_expression(const Quantity& q, const Dimension& expected, const std::string& what);
+    bool is_coordinate(const ex& x, int order);
+    std::string output_path(const Statement& s) const;
+    std::string input_path(const std::string& written) const;
+    /// Native code through the codegen layer when `compiled` (else the tape); `why_not` gets
+    /// the reason when it falls back to the tape.
+    static FunctionMaker function_maker(bool compiled, std::string* why_not);
+    std::string evaluator_note(bool compiled, const std::string& why_not) const;
 
     // ---- names and objects -----------------------------------------------------------------
     System& model(Location where);

@@ -232,6 +232,20 @@ Token Lexer::lex_token() {
             advance(1);
             t.kind = TokenKind::punct;
             t.text = std::string(1, p);
+        } else if (c == '"') {
+            advance(1);
+            std::size_t start = pos_;
+            while (pos_ < src_.size() && src_[pos_] != '"' && src_[pos_] != '\n') {
+                std::size_t n = 1;
+                peek_char(pos_, &n);
+                advance(n);
+            }
+            if (pos_ >= src_.size() || src_[pos_] != '"')
+                throw ScriptError(t.location, "the text in quotes is not closed on its line",
+                                  "close it with '\"', e.g. from \"motion.csv\"");
+            t.kind = TokenKind::string;
+            t.text = std::string(src_.substr(start, pos_ - start));
+            advance(1);
         } else if (c == '>') {
             throw ScriptError(t.location, "'>' must follow a name directly, as in Ax> or r>",
                               "vectors are named with a trailing '>' and no space");

@@ -16,7 +16,8 @@ const std::set<std::string, std::less<>>& clause_words() {
         "from", "about", "by", "on", "in", "to", "and", "between", "stiffness", "length",
         "coefficient", "linear", "quadratic", "normal", "along", "configuration", "motion",
         "for", "statics", "rotate", "translate", "speeds", "kinematics", "constraints",
-        "dependent", "auxiliary", "at", "guess", "fixed", "moving", "dcm", "t"};
+        "dependent", "auxiliary", "at", "guess", "fixed", "moving", "dcm", "t", "when", "rising",
+        "falling", "cutoff", "compiled", "rel"};
     return w;
 }
 
@@ -25,7 +26,7 @@ const std::set<std::string, std::less<>>& function_words() {
         "sin", "cos", "tan", "asin", "acos", "atan", "sqrt", "exp", "log", "abs", "dot", "cross",
         "express", "dt", "mag", "unit", "simplify", "expand", "angvel", "angacc", "vel", "acc",
         "pos", "rotation", "mass", "momentum", "angmomentum", "kinetic", "potential",
-        "resultant", "moment", "pi"};
+        "resultant", "moment", "pi", "minimum_jerk"};
     return w;
 }
 
@@ -62,6 +63,7 @@ private:
     void expect_word(std::string_view w, const std::string& context);
     void expect_end(const std::string& context);
     Word name(const std::string& what);
+    Word text(const std::string& what);
     std::vector<Word> name_list(const std::string& what);
     UnitText unit();
     Quantity quantity();
@@ -89,6 +91,7 @@ std::string describe(const Token& t) {
     switch (t.kind) {
         case TokenKind::end: return "the end of the statement";
         case TokenKind::number: return "the number " + t.text;
+        case TokenKind::string: return "the text \"" + t.text + "\"";
         case TokenKind::vector_name: return "the vector " + t.text + ">";
         case TokenKind::zero_vector: return "0>";
         case TokenKind::punct: return "'" + t.text + "'";
@@ -128,6 +131,13 @@ void Parser::expect_end(const std::string& context) {
 Word Parser::name(const std::string& what) {
     if (peek().kind != TokenKind::name) fail_expected(what);
     const Token& t = next();
+    return {t.text, t.location};
+}
+
+Word Parser::text(const std::string& what) {
+    if (peek().kind != TokenKind::string) fail_expected(what + " in double quotes");
+    const Token& t = next();
+    if (t.text.empty()) throw ScriptError(t.location, "the " + what + " is empty", "write a path such as \"out\"");
     return {t.text, t.location};
 }
 
@@ -563,6 +573,62 @@ void Parser::statement_body(Statement& s) {
     } else if (k == "evaluate") {
         s.exprs["value"] = expression();
         if (accept_word("at")) s.bindings["at"] = bindings("a symbol");
+    } else if (k == "initial") {
+        s.bindings["values"] = bindings("a coordinate or its rate (initial qA = 30 deg, qA' = 0)");
+    } else if (k == "input") {
+        s.bindings["values"] = bindings("a load measure (input T_A = -k*qA)");
+    } else if (k == "motion") {
+        s.bindings["values"] = bindings("a coordinate (motion qA = 30*sin(t) deg)");
+    } else if (k == "final") {
+        expect_word("time", "(final time 5 s)");
+        s.quantities["time"] = quantity();
+    } else if (k == "tolerance") {
+        while (!at_end()) {
+            if (accept_word("abs")) s.quantities["abs"] = quantity();
+            else if (accept_word("rel")) s.quantities["rel"] = quantity();
+            else fail_expected("'abs' or 'rel' and a number (tolerance abs 1e-10 rel 1e-10)");
+        }
+        if (s.quantities.empty()) fail_expected("'abs' or 'rel' and a number (tolerance abs 1e-10 rel 1e-10)");
+    } else if (k == "output") {
+        if (at_word("step") && peek(1).kind == TokenKind::number) {
+            next();
+            s.quantities["step"] = quantity();
+        } else {
+            do {
+                Word label{};
+                if (peek().kind == TokenKind::name && peek(1).is("=")) {
+                    label = name("a column name");
+                    next();
+                }
+                s.lists["labels"].push_back(label);
+                s.expr_lists["values"].push_back(expression());
+                s.units.push_back(accept_word("in") ? unit() : UnitText{});
+            } while (accept_punct(","));
+        }
+    } else if (k == "stop") {
+        expect_word("when", "(stop when qA = 0 [rising | falling])");
+        s.exprs["lhs"] = expression();
+        expect_punct("=", "and the value it crosses (stop when qA = 0)");
+        s.quantities["rhs"] = quantity();
+        if (at_word("rising") || at_word("falling")) s.words["direction"] = {peek().text, peek().location}, next();
+    } else if (k == "simulate" || k == "inverse" || k == "codegen") {
+        if (k == "codegen") s.words["language"] = name("a language: c, cpp, matlab or python");
+        while (!at_end()) {
+            if (k == "inverse" && accept_word("for")) lists_of("loads", "a load measure");
+            else if (k == "codegen" && accept_word("for")) lists_of("loads", "a load measure");
+            else if (k == "inverse" && accept_word("from")) {
+                s.words["from"] = text("the motion table's path");
+                if (accept_word("cutoff")) s.quantities["cutoff"] = quantity();
+            } else if (k == "codegen" && accept_word("name")) s.words["name"] = name("an identifier for the files");
+            else if (k != "codegen" && accept_word("compiled")) s.flags["compiled"] = true;
+            else if (accept_word("to")) s.words["to"] = text("the output directory");
+            else fail_expected(k == "simulate" ? "'compiled' or 'to'"
+                               : k == "inverse" ? "'for', 'from', 'compiled' or 'to'"
+                                                : "'for', 'name' or 'to'");
+        }
+        if (k == "inverse" && !s.lists.count("loads"))
+            throw ScriptError(s.location, "inverse dynamics needs the load measures to solve for",
+                              "write inverse for T_A, T_B");
     }
     expect_end("the '" + k + "' statement");
 }
@@ -626,7 +692,8 @@ const std::vector<std::string>& statement_keywords() {
         "unknown", "coordinates", "system", "rotate", "translate", "velocity", "acceleration",
         "angvel", "angacc", "mass", "inertia", "gravity", "force", "torque", "spring", "damper",
         "drag", "friction", "attraction", "constraint", "roadmap", "row", "kane", "lagrange",
-        "solve", "evaluate"};
+        "solve", "evaluate", "initial", "input", "motion", "final", "tolerance", "output", "stop",
+        "simulate", "inverse", "codegen"};
     return k;
 }
 

@@ -8,7 +8,7 @@
 namespace alembert::lang {
 
 void Transcript::statement(const std::string& source) {
-    if (!echo_) return;
+    if (!echo_ || muted_) return;
     std::string out = "> ";
     for (char c : source) {
         out += c;
@@ -18,10 +18,11 @@ void Transcript::statement(const std::string& source) {
 }
 
 void Transcript::comment(const std::string& text) {
-    if (echo_) *out_ << text << "\n";
+    if (echo_ && !muted_) *out_ << text << "\n";
 }
 
 void Transcript::result(const std::string& text) {
+    if (muted_) return;
     *out_ << text;
     if (text.empty() || text.back() != '\n') *out_ << "\n";
 }

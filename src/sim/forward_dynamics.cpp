@@ -174,7 +174,8 @@ void ForwardDynamics::calc_unknowns(double t, const double* q, const double* qd,
 
 ForwardDynamics compile_forward_dynamics(const SymbolTable& table, const LinearSystem& eqs,
                                          const std::vector<TimeVariable>& q,
-                                         const std::vector<ex>& inputs, const std::string& model) {
+                                         const std::vector<ex>& inputs, const std::string& model,
+                                         const FunctionMaker& make) {
     StateLayout layout;
     layout.time = table.time();
     for (const TimeVariable& qi : q) {
@@ -200,7 +201,7 @@ ForwardDynamics compile_forward_dynamics(const SymbolTable& table, const LinearS
     in.insert(in.end(), inputs.begin(), inputs.end());
     NumericFunction f;
     try {
-        f = make_tape_function(table, in, outputs);
+        f = make_numeric_function(table, in, outputs, make);
     } catch (const ArgumentError& e) {
         throw ArgumentError("compile_forward_dynamics('" + model + "'): " + e.what() +
                             "; forward dynamics may depend on t, the coordinates, their rates and "

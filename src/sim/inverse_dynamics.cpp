@@ -107,7 +107,7 @@ void InverseDynamics::calc_loads(double t, const double* q, const double* qd, co
 
 InverseDynamics compile_inverse_dynamics(const SymbolTable& table, const LinearSystem& eqs,
                                          const std::vector<TimeVariable>& q,
-                                         const std::string& model) {
+                                         const std::string& model, const FunctionMaker& make) {
     StateLayout layout;
     layout.time = table.time();
     std::vector<ex> in{layout.time};
@@ -156,7 +156,7 @@ InverseDynamics compile_inverse_dynamics(const SymbolTable& table, const LinearS
     }
     NumericFunction f;
     try {
-        f = make_tape_function(table, in, outputs);
+        f = make_numeric_function(table, in, outputs, make);
     } catch (const ArgumentError& e) {
         throw ArgumentError("compile_inverse_dynamics('" + model + "'): " + e.what() +
                             "; inverse dynamics may depend on t and the coordinates with their "
@@ -167,10 +167,11 @@ InverseDynamics compile_inverse_dynamics(const SymbolTable& table, const LinearS
 }
 
 InverseDynamics compile_inverse_dynamics(const System& sys, const std::vector<TimeVariable>& q,
-                                         const std::vector<ex>& loads, const std::string& model) {
+                                         const std::vector<ex>& loads, const std::string& model,
+                                         const FunctionMaker& make) {
     std::vector<RoadmapRow> rows = plan_roadmap(sys, q, loads, Analysis::dynamics);
     return compile_inverse_dynamics(sys.symbols(), form_linear_system(residuals_of(rows), loads), q,
-                                    model);
+                                    model, make);
 }
 
 }  // namespace alembert

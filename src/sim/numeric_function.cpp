@@ -20,6 +20,18 @@ NumericFunction make_tape_function(const SymbolTable& table, const std::vector<e
     return f;
 }
 
+NumericFunction make_numeric_function(const SymbolTable& table, const std::vector<ex>& inputs,
+                                      const std::vector<ex>& outputs, const FunctionMaker& make) {
+    if (!make) return make_tape_function(table, inputs, outputs);
+    NumericFunction f = make(table, inputs, outputs);
+    if (f.input_count != inputs.size() || f.output_count != outputs.size() || !f.evaluate)
+        throw InternalError("make_numeric_function(): the function maker returned a function of " +
+                            std::to_string(f.input_count) + " inputs and " +
+                            std::to_string(f.output_count) + " outputs for " +
+                            std::to_string(inputs.size()) + " and " + std::to_string(outputs.size()));
+    return f;
+}
+
 NumericFunction make_c_function(void (*fn)(const double* inputs, double* outputs),
                                 std::size_t input_count, std::size_t output_count) {
     ALEMBERT_CHECK_ARG(fn != nullptr,

@@ -39,9 +39,10 @@ std::vector<ex> output_inputs(const StateLayout& layout) {
 }
 
 NumericFunction compile_over_layout(const SymbolTable& table, const StateLayout& layout,
-                                    const std::vector<ex>& expressions, const char* caller) {
+                                    const std::vector<ex>& expressions, const char* caller,
+                                    const FunctionMaker& make) {
     try {
-        return make_tape_function(table, output_inputs(layout), expressions);
+        return make_numeric_function(table, output_inputs(layout), expressions, make);
     } catch (const ArgumentError& e) {
         throw ArgumentError(std::string(caller) + ": " + e.what() +
                             "; an output may use t, the coordinates, their rates, the unknowns "
@@ -77,27 +78,32 @@ struct Evaluator {
 }  // namespace
 
 OutputFunction compile_outputs(const SymbolTable& table, const StateLayout& layout,
-                               const std::vector<OutputSpec>& outputs) {
+                               const std::vector<OutputSpec>& outputs, const FunctionMaker& make) {
     OutputFunction f;
     std::vector<ex> expressions;
     for (const OutputSpec& o : outputs) {
-        Unit unit;
-        try {
-            unit = parse_unit(o.unit);
-        } catch (const ArgumentError& e) {
-            throw ArgumentError("compile_outputs(): output '" + o.name + "': " + e.what());
+        Unit unit{o.unit, o.factor};
+        if (o.factor == 0.0) {
+            try {
+                unit = parse_unit(o.unit);
+            } catch (const ArgumentError& e) {
+                throw ArgumentError("compile_outputs(): output '" + o.name + "': " + e.what());
+            }
         }
+        ALEMBERT_CHECK_ARG(std::isfinite(unit.factor) && unit.factor > 0,
+                           "compile_outputs(): output '" + o.name + "': the unit factor " +
+                               std::to_string(o.factor) + " is not a positive number");
         f.names.push_back(o.name);
         f.units.push_back(unit.name);
         f.factors.push_back(unit.factor);
         expressions.push_back(o.expression);
     }
-    f.function = compile_over_layout(table, layout, expressions, "compile_outputs()");
+    f.function = compile_over_layout(table, layout, expressions, "compile_outputs()", make);
     return f;
 }
 
 EventFunction compile_events(const SymbolTable& table, const StateLayout& layout,
-                             const std::vector<EventSpec>& events) {
+                             const std::vector<EventSpec>& events, const FunctionMaker& make) {
     EventFunction f;
     std::vector<ex> expressions;
     for (const EventSpec& e : events) {
@@ -105,7 +111,7 @@ EventFunction compile_events(const SymbolTable& table, const StateLayout& layout
         f.directions.push_back(e.direction);
         expressions.push_back(e.expression);
     }
-    f.function = compile_over_layout(table, layout, expressions, "compile_events()");
+    f.function = compile_over_layout(table, layout, expressions, "compile_events()", make);
     return f;
 }
 
@@ -294,7 +300,7 @@ SimulationResult run_simulation(const System& sys, const SimulationRequest& requ
     LinearSystem eqs = form_forward_equations(sys, q, request.constraint_forces);
     eqs.A = GiNaC::ex_to<GiNaC::matrix>(eqs.A.subs(loads));
     eqs.b = GiNaC::ex_to<GiNaC::matrix>(eqs.b.subs(loads));
-    ForwardDynamics fd = compile_forward_dynamics(table, eqs, q, {}, request.model);
+    ForwardDynamics fd = compile_forward_dynamics(table, eqs, q, {}, request.model, request.make);
 
     // outputs: the user's, then the checks
     std::vector<OutputSpec> outputs = request.outputs;
@@ -312,10 +318,10 @@ SimulationResult run_simulation(const System& sys, const SimulationRequest& requ
         for (const Constraint& c : sys.constraints())
             outputs.push_back({"drift_" + c.name, c.residual, ""});
     }
-    OutputFunction out = compile_outputs(table, fd.layout(), outputs);
+    OutputFunction out = compile_outputs(table, fd.layout(), outputs, request.make);
     std::vector<EventSpec> event_specs = request.events;
     for (EventSpec& e : event_specs) e.expression = e.expression.subs(loads);
-    EventFunction events = compile_events(table, fd.layout(), event_specs);
+    EventFunction events = compile_events(table, fd.layout(), event_specs, request.make);
 
     // initial values
     std::vector<double> q0(q.size(), 0.0), qd0(q.size(), 0.0);

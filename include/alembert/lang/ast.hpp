@@ -90,6 +90,8 @@ struct Statement {
     std::vector<Declared> declared{};
     std::map<std::string, std::vector<Binding>> bindings{};
     std::map<std::string, bool> flags{};
+    std::map<std::string, Quantity> quantities{};     ///< `final time 5 s`: quantities["time"]
+    std::vector<UnitText> units{};                    ///< `output x in m, y`: one per expr_lists["values"]
 
     bool has_word(const std::string& role) const { return words.count(role) != 0; }
     const Word& word(const std::string& role) const { return words.at(role); }

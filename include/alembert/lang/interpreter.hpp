@@ -54,6 +54,21 @@ public:
     /// @throws ScriptError if there is no model or nothing to plan.
     std::string roadmap_text(bool json);
 
+    /// Where `simulate`, `inverse` and `codegen` write their files (default: the current
+    /// directory); a statement's `to "dir"` is relative to it. Paths a script reads (`from
+    /// "motion.csv"`) are relative to the script's own directory.
+    void set_output_dir(const std::string& dir);
+    /// With `model_only`, run() builds the model and skips `simulate`, `inverse` and `codegen`
+    /// (the `alembert inverse` and `alembert codegen` commands run the script this way).
+    void set_model_only(bool model_only);
+    /// Inverse dynamics of the model over the motion table `motion_csv` (relative to the
+    /// current directory) for every load measure the script declares, written to the output
+    /// directory as torques.csv and its plot: `alembert inverse`. `cutoff_hz` 0 turns the
+    /// filter off; `compiled` evaluates through compiled C code. Errors go to `err`.
+    RunStatus run_inverse(const std::string& motion_csv, double cutoff_hz, bool compiled);
+    /// Code for the model in `language` (c, cpp, matlab, python) written to the output
+    /// directory, named `name` (empty: the script's name): `alembert codegen`.
+    RunStatus run_codegen(const std::string& language, const std::string& name);
     /// The model built so far, or nullptr before `newtonian`.
     const System* system() const;
 

@@ -27,6 +27,7 @@ enum class TokenKind {
     vector_name,  ///< Ax>, r>, w_A_N> (text without the '>')
     zero_vector,  ///< 0>
     number,       ///< 9.81, 1e-3
+    string,       ///< "motion.csv" (text without the quotes; one line, no escapes)
     punct,        ///< ( ) [ ] , = + - * / ^ :
     comment,      ///< a line that holds only a comment (text from '#')
     end,          ///< end of the statement

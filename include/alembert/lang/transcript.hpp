@@ -15,6 +15,8 @@ public:
     Transcript(std::ostream& out, bool echo) : out_(&out), echo_(echo) {}
 
     void set_echo(bool echo) { echo_ = echo; }
+    /// A muted transcript prints nothing (a script run only to build its model).
+    void set_muted(bool muted) { muted_ = muted; }
     bool echo() const { return echo_; }
 
     /// Echoes a statement's source text (nothing when not echoing).
@@ -29,6 +31,7 @@ public:
 private:
     std::ostream* out_;
     bool echo_;
+    bool muted_ = false;
 };
 
 /// A number as transcripts print it: 6 significant digits, no trailing zeros, "-0" as "0".

@@ -93,12 +93,14 @@ private:
 
 /// Compiles the equations `eqs` (A x = b, unknowns including q_i'' of every coordinate in
 /// `q`) to a tape: constants with values are folded (compile again when they change); every
-/// other symbol must be time, a coordinate, its rate, or one of `inputs`.
+/// other symbol must be time, a coordinate, its rate, or one of `inputs`. `make` chooses the
+/// evaluator (empty: the tape; see FunctionMaker).
 /// @throws alembert::ArgumentError if an acceleration is missing from the unknowns or a symbol
 ///         is none of those (named).
 ForwardDynamics compile_forward_dynamics(const SymbolTable& table, const LinearSystem& eqs,
                                          const std::vector<TimeVariable>& q,
-                                         const std::vector<ex>& inputs, const std::string& model);
+                                         const std::vector<ex>& inputs, const std::string& model,
+                                         const FunctionMaker& make = {});
 
 /// The equations of motion of `sys` in coordinates `q` as A x = b for forward dynamics:
 /// Kane's equations with u = q' (A the symmetric mass matrix, x = q''; not simplified, since

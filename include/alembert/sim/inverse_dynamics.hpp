@@ -60,16 +60,18 @@ private:
 
 /// Compiles equations `eqs` that are linear in load measures (eqs.unknowns, e.g. joint
 /// torques; A T = b) as functions of t and the coordinates `q` with their first and second
-/// derivatives; constants with values are folded.
+/// derivatives; constants with values are folded. `make` chooses the evaluator (empty: the
+/// tape; see FunctionMaker).
 /// @throws alembert::ArgumentError naming a symbol that is none of those.
 InverseDynamics compile_inverse_dynamics(const SymbolTable& table, const LinearSystem& eqs,
                                          const std::vector<TimeVariable>& q,
-                                         const std::string& model);
+                                         const std::string& model, const FunctionMaker& make = {});
 
 /// Plans the MG road-map of `sys` for the load measures `loads` (one row per measure, about
 /// the joint where the other unknown forces drop out) and compiles it.
 /// @throws as plan_roadmap and compile_inverse_dynamics above.
 InverseDynamics compile_inverse_dynamics(const System& sys, const std::vector<TimeVariable>& q,
-                                         const std::vector<ex>& loads, const std::string& model);
+                                         const std::vector<ex>& loads, const std::string& model,
+                                         const FunctionMaker& make = {});
 
 }  // namespace alembert

@@ -38,6 +38,17 @@ struct NumericFunction {
 NumericFunction make_tape_function(const SymbolTable& table, const std::vector<ex>& inputs,
                                    const std::vector<ex>& outputs);
 
+/// How the sim layer turns expressions into a NumericFunction: `outputs` as functions of
+/// `inputs` (symbols, in order) with the constants and intermediates of the table. The
+/// default is make_tape_function; a front end that can compile native code (the codegen
+/// layer's NativeExpressions, wired in by the language layer) passes its own.
+using FunctionMaker = std::function<NumericFunction(
+    const SymbolTable& table, const std::vector<ex>& inputs, const std::vector<ex>& outputs)>;
+
+/// `make(table, inputs, outputs)`, or make_tape_function when `make` is empty.
+NumericFunction make_numeric_function(const SymbolTable& table, const std::vector<ex>& inputs,
+                                      const std::vector<ex>& outputs, const FunctionMaker& make);
+
 /// A plain C function (such as one loaded from generated code) with the stated sizes.
 /// @throws alembert::ArgumentError if `fn` is null.
 NumericFunction make_c_function(void (*fn)(const double* inputs, double* outputs),

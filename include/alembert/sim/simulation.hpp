@@ -19,6 +19,9 @@ struct OutputSpec {
     std::string name{};
     ex expression{};
     std::string unit{};
+    /// SI value per unit of `unit` (value_SI = factor * printed). 0: parse_unit(unit) gives it;
+    /// a front end with its own unit system (the language layer) states it and any unit text.
+    double factor = 0.0;
 };
 
 /// Which zero crossings of an event expression stop the run.
@@ -66,7 +69,8 @@ struct OutputFunction {
 /// @throws alembert::ArgumentError naming an output with an unknown unit or a symbol that is
 ///         not in the layout (nor a constant with a value).
 OutputFunction compile_outputs(const SymbolTable& table, const StateLayout& layout,
-                               const std::vector<OutputSpec>& outputs);
+                               const std::vector<OutputSpec>& outputs,
+                               const FunctionMaker& make = {});
 
 /// Event expressions as one NumericFunction over the same inputs as OutputFunction.
 struct EventFunction {
@@ -78,7 +82,7 @@ struct EventFunction {
 /// Compiles `events` over the layout of a forward dynamics.
 /// @throws alembert::ArgumentError as compile_outputs.
 EventFunction compile_events(const SymbolTable& table, const StateLayout& layout,
-                             const std::vector<EventSpec>& events);
+                             const std::vector<EventSpec>& events, const FunctionMaker& make = {});
 
 /// The run-time inputs (load measures such as motor torques, in layout().inputs order) at a
 /// state: a controller, or a prescribed torque history.
@@ -131,6 +135,8 @@ struct SimulationRequest {
     /// conservative (no non-conservative generalized force once the inputs are substituted),
     /// and one "drift_<name>" column per declared constraint (its residual).
     bool checks = true;
+    /// The evaluator of the dynamics, outputs and events (empty: the tape; see FunctionMaker).
+    FunctionMaker make{};
 };
 
 /// Forms the forward dynamics of `sys` (compile_forward_dynamics), substitutes the inputs,
