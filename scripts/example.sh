@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Builds the release preset and runs the main example, the seed's sit-to-stand model, through
-# the alembert command: `alembert run examples/sit_to_stand/model.alb`.
+# the alembert command: `alembert run examples/sit_to_stand/model.alb`. The files it writes
+# (the torques of rising, their plot) go to build/example-output.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -13,4 +14,4 @@ if [[ ! -x $exe ]]; then
   echo "example.sh: $exe was not built" >&2
   exit 1
 fi
-exec "$exe" run examples/sit_to_stand/model.alb "$@"
+exec "$exe" run --out build/example-output examples/sit_to_stand/model.alb "$@"

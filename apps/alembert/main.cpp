@@ -128,6 +128,7 @@ int print_roadmap(const RoadmapOptions& o) {
     if (!read_script(o.file, text)) return kUsageError;
     std::ostringstream discard;  // the transcript is not wanted, only the table
     Interpreter interp(discard, std::cerr, false);
+    interp.set_model_only(true);  // the model only: no simulate, inverse or codegen
     RunStatus s = interp.run(text, display_name(o.file));
     if (s != RunStatus::ok) return exit_status(s);
     try {

@@ -354,7 +354,8 @@ Value Interpreter::Impl::eval_call(const Expr& e) {
             if (v.kind != Kind::scalar)
                 throw ScriptError(a[i]->location, "the times of minimum_jerk() must be numbers",
                                   "write minimum_jerk(t, 0.15, 1.5), times in seconds");
-            check_dimension(v.dim, Dimension::time(), "a time of minimum_jerk()", a[i]->location);
+            if (!v.dim.is_none())  // a bare number is in seconds
+                check_dimension(v.dim, Dimension::time(), "a time of minimum_jerk()", a[i]->location);
             ends[i - 1] = guard(a[i]->location, [&] { return model(e.location).symbols().evaluate(v.s); },
                                 "write minimum_jerk(t, 0.15, 1.5): times are numbers or constants with values");
         }

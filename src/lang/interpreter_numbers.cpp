@@ -351,7 +351,13 @@ void Interpreter::Impl::inverse(const Statement& s) {
             throw ScriptError(w.location, "'" + w.text + "' is listed twice", "list each load once");
         r.loads.push_back(x);
     }
-    if (s.has_word("from")) r.motion_file = input_path(s.word("from").text);
+    if (s.has_word("from")) {
+        r.motion_file = input_path(s.word("from").text);
+        std::error_code ec;
+        if (!std::filesystem::is_regular_file(r.motion_file, ec))
+            throw ScriptError(s.word("from").location, "the motion table '" + s.word("from").text + "' is not a file",
+                              "paths a script reads are relative to the script's directory");
+    }
     if (s.quantities.count("cutoff")) {
         const Quantity& q = s.quantities.at("cutoff");
         double hz = number_of(q, pow(Dimension::time(), -1), "the cutoff frequency", q.value->location);
@@ -472,9 +478,15 @@ void Interpreter::Impl::run_codegen(const CodegenRequest& r, Location where) {
     for (const auto& [name, u] : units)
         if (u.display) opts.units[name] = u.display->text;
         else if (u.dim.known && !u.dim.is_none()) opts.units[name] = si_unit(u.dim);
-    for (std::size_t i = 0; i < numbers.outputs.size(); ++i)
+    for (std::size_t i = 0; i < numbers.outputs.size(); ++i) {
+        // coordinates and rates are columns of the generated simulation already
+        bool state = false;
+        for (const TimeVariable& v : q) state = state || numbers.outputs[i].expression.is_equal(v.symbol()) ||
+                                                numbers.outputs[i].expression.is_equal(v.d(1));
+        if (state) continue;
         opts.outputs.push_back({code_identifier(numbers.outputs[i].name), numbers.outputs[i].expression,
                                 numbers.output_si_units[i]});
+    }
     // the script's simulation settings make the generated simulation program
     opts.simulation = true;
     SimulationSpec& spec = opts.simulation_spec;
@@ -501,10 +513,13 @@ void Interpreter::Impl::run_codegen(const CodegenRequest& r, Location where) {
     const char* language_name[] = {"C", "C++", "MATLAB/Octave", "Python"};
     out << "generated " << language_name[static_cast<int>(language)] << " for '" << opts.name << "': ";
     for (std::size_t i = 0; i < g.files.size(); ++i) out << (i ? ", " : "") << g.files[i].filename().string();
-    out << "\n  mass matrix and forcing: " << g.mass_forcing_operations << " operations per call ("
-        << (g.symmetric_mass_matrix ? "Cholesky" : "LU") << " solve)";
-    if (g.inverse_dynamics) out << "\n  inverse dynamics: " << g.inverse_dynamics_operations << " operations per call";
-    else out << "\n  no inverse dynamics (" << loads.size() << " loads for " << q.size() << " coordinates)";
+    // (operation counts are left out: they shift by a few with GiNaC's term order from run to run)
+    out << "\n  mass matrix and forcing (" << (g.symmetric_mass_matrix ? "Cholesky" : "LU")
+        << " solve for the accelerations)";
+    if (g.inverse_dynamics) out << ", inverse dynamics";
+    else out << "; no inverse dynamics (" << loads.size() << " loads for " << q.size() << " coordinates)";
+    if (!opts.outputs.empty()) out << ", " << opts.outputs.size() << " outputs";
+    out << ", a simulation program";
     transcript.result(out.str());
 }
 

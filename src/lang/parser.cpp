@@ -583,12 +583,14 @@ void Parser::statement_body(Statement& s) {
         expect_word("time", "(final time 5 s)");
         s.quantities["time"] = quantity();
     } else if (k == "tolerance") {
+        if (at_end())
+            throw ScriptError(s.location, "a tolerance statement needs 'abs' or 'rel' and a number",
+                              "write tolerance abs 1e-10 rel 1e-10");
         while (!at_end()) {
             if (accept_word("abs")) s.quantities["abs"] = quantity();
             else if (accept_word("rel")) s.quantities["rel"] = quantity();
             else fail_expected("'abs' or 'rel' and a number (tolerance abs 1e-10 rel 1e-10)");
         }
-        if (s.quantities.empty()) fail_expected("'abs' or 'rel' and a number (tolerance abs 1e-10 rel 1e-10)");
     } else if (k == "output") {
         if (at_word("step") && peek(1).kind == TokenKind::number) {
             next();

@@ -57,5 +57,38 @@ expect roadmap_json 0 "$alembert" roadmap --json "$root/examples/sit_to_stand/mo
 contains roadmap_json "$tmp/out" '"system": ["B", "C"], '
 expect roadmap_error 1 "$alembert" roadmap "$tmp/bad.alb"
 
+# alembert inverse: the sit-to-stand model over the shipped motion table agrees with the
+# example's torques (the same model and data; the last printed digit may differ)
+model="$root/examples/sit_to_stand/model.alb"
+motion="$root/examples/sit_to_stand_inverse/motion.csv"
+expect inverse 0 "$alembert" inverse "$model" --motion "$motion" --out "$tmp/inv"
+contains inverse "$tmp/inv/torques.csv" "t [s],TA [N*m],TB [N*m],TC [N*m]"
+contains inverse "$tmp/out" "inverse dynamics over the motion table motion.csv, t = 0 to 1.5 s: 151 samples"
+if grep -q "^E_T_A\|^> " "$tmp/out"; then echo "FAIL inverse: the model's own transcript printed"; fails=$((fails + 1)); fi
+if ! paste -d, <(tail -n +2 "$tmp/inv/torques.csv") <(tail -n +2 "$root/examples/sit_to_stand_inverse/torques.csv") |
+     awk -F, '{ for (i = 1; i <= 4; ++i) { d = $i - $(i + 4); if (d < 0) d = -d; if (d > 1e-9) bad = 1 } } END { exit bad }'; then
+  echo "FAIL inverse: torques differ from examples/sit_to_stand_inverse/torques.csv"; fails=$((fails + 1))
+fi
+expect inverse_missing_motion 2 "$alembert" inverse "$model" --motion "$tmp/none.csv" --out "$tmp/inv2"
+contains inverse_missing_motion "$tmp/err" "is not a file"
+expect inverse_negative_cutoff 2 "$alembert" inverse "$model" --motion "$motion" --out "$tmp/inv3" --cutoff -1
+expect inverse_without_out 2 "$alembert" inverse "$model" --motion "$motion"
+printf 'newtonian N\nparticle Q\nvariable x'"''"' m\nconstant m = 1 kg\nmass Q = m\ntranslate Q from N_o by x*Nx>\n' >"$tmp/noload.alb"
+expect inverse_no_loads 1 "$alembert" inverse "$tmp/noload.alb" --motion "$motion" --out "$tmp/inv4"
+contains inverse_no_loads "$tmp/err" "declares no load measures"
+
+# alembert codegen
+expect codegen 0 "$alembert" codegen "$model" --lang python --out "$tmp/py" --name sts
+contains codegen "$tmp/out" "generated Python for 'sts': sts.py"
+[[ -f $tmp/py/sts.py ]] || { echo "FAIL codegen: sts.py not written"; fails=$((fails + 1)); }
+expect codegen_language 2 "$alembert" codegen "$model" --lang fortran --out "$tmp/f"
+expect codegen_name 1 "$alembert" codegen "$model" --lang c --out "$tmp/c" --name 2bad
+contains codegen_name "$tmp/err" "'2bad' cannot name generated code"
+
+# run --out: files of simulate go there
+printf 'newtonian N\nparticle Q\nvariable x'"''"' m\nconstant m = 1 kg\nmass Q = m\ntranslate Q from N_o by x*Nx>\ninitial x = 1 m\nfinal time 0.1 s\nsimulate\n' >"$tmp/sim.alb"
+expect run_out 0 "$alembert" run "$tmp/sim.alb" --out "$tmp/simout"
+[[ -f $tmp/simout/simulation.csv ]] || { echo "FAIL run_out: simulation.csv not in --out"; fails=$((fails + 1)); }
+
 (( fails == 0 )) && echo "cli_test: OK"
 exit $(( fails > 0 ))
