@@ -2,6 +2,8 @@
 // Numeric forward dynamics: A x = b evaluated through a NumericFunction, solved with Eigen.
 #include "alembert/sim/forward_dynamics.hpp"
 
+#include <algorithm>
+
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -77,8 +79,11 @@ ForwardDynamics::ForwardDynamics(std::string model, StateLayout layout, NumericF
     A_.resize(static_cast<Eigen::Index>(k), static_cast<Eigen::Index>(k));
     b_.resize(static_cast<Eigen::Index>(k));
     x_.resize(static_cast<Eigen::Index>(k));
-    ldlt_ = Eigen::LDLT<Eigen::MatrixXd>(static_cast<Eigen::Index>(k));
-    lu_ = Eigen::PartialPivLU<Eigen::MatrixXd>(static_cast<Eigen::Index>(k));
+    // decompositions of the right size with their status set (Eigen's preallocating
+    // constructors leave it unset, and copying or moving one then reads it)
+    const auto kk = static_cast<Eigen::Index>(std::max<std::size_t>(k, 1));
+    ldlt_.compute(Eigen::MatrixXd::Identity(kk, kk));
+    lu_.compute(Eigen::MatrixXd::Identity(kk, kk));
 }
 
 void ForwardDynamics::fail(const std::string& what, double t, const double* q, const double* qd,

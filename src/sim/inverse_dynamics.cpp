@@ -53,7 +53,8 @@ InverseDynamics::InverseDynamics(std::string model, StateLayout layout, NumericF
     if (!solved_) {
         A_.resize(static_cast<Eigen::Index>(k), static_cast<Eigen::Index>(k));
         b_.resize(static_cast<Eigen::Index>(k));
-        lu_ = Eigen::PartialPivLU<Eigen::MatrixXd>(static_cast<Eigen::Index>(k));
+        // the right size with its status set (the preallocating constructor leaves it unset)
+        lu_.compute(Eigen::MatrixXd::Identity(static_cast<Eigen::Index>(k), static_cast<Eigen::Index>(k)));
     }
 }
 
