@@ -13,6 +13,7 @@
 #include "alembert/eom/lagrange.hpp"
 #include "alembert/eom/newton_euler.hpp"
 #include "alembert/eom/planner.hpp"
+#include "alembert/eom/tree_dynamics.hpp"
 #include "alembert/error.hpp"
 #include "alembert/sym/evaluator.hpp"
 #include "alembert/sym/print.hpp"
@@ -78,6 +79,25 @@ private:
     CompiledExpressions E_;
 };
 
+// accelerations given explicitly (the articulated-body recursion), evaluated at the state
+class ExplicitMethod {
+public:
+    ExplicitMethod(std::string name, const SymbolTable& st, const std::vector<ex>& accelerations,
+                   const std::vector<ex>& state)
+        : name_(std::move(name)), x_(st, state, accelerations) {}
+    const std::string& name() const { return name_; }
+    Eigen::VectorXd solve(const std::vector<double>& state) const {
+        std::vector<long double> in(state.begin(), state.end());
+        VectorXld x(static_cast<Eigen::Index>(x_.output_count()));
+        x_.evaluate_extended(in.data(), x.data());
+        return x.cast<double>();
+    }
+
+private:
+    std::string name_;
+    CompiledExpressions x_;
+};
+
 }  // namespace
 
 MethodComparison compare_methods(const System& sys, const std::vector<TimeVariable>& q,
@@ -111,8 +131,18 @@ MethodComparison compare_methods(const System& sys, const std::vector<TimeVariab
     methods.emplace_back("Kane", st, form_kane_equations(sys, q), acc, state);
     methods.emplace_back("Lagrange", st, form_lagrange_equations(sys, q), acc, state);
     methods.emplace_back("Newton–Euler", st, ne.equations, ne.unknowns, state);
-    MethodComparison out{{}, states, 0, std::vector<double>(methods.size(), 0.0)};
+    // trees: the road-map rows accumulated from the tip inward, and the articulated-body
+    // accelerations
+    std::vector<ExplicitMethod> explicit_methods;
+    if (explain_not_tree(sys, q).empty()) {
+        TreeEquations tree = form_tree_equations(sys, q);
+        methods.emplace_back("recursive road-map", st, tree.residuals, acc, state);
+        explicit_methods.emplace_back("articulated body", st, tree.accelerations, state);
+    }
+    const std::size_t count = methods.size() + explicit_methods.size();
+    MethodComparison out{{}, states, 0, std::vector<double>(count, 0.0)};
     for (const CompiledMethod& m : methods) out.methods.push_back(m.name());
+    for (const ExplicitMethod& m : explicit_methods) out.methods.push_back(m.name());
 
     std::mt19937 rng(seed);
     std::uniform_real_distribution<double> unit(-1, 1), positive(0.5, 1.5);
@@ -124,8 +154,10 @@ MethodComparison compare_methods(const System& sys, const std::vector<TimeVariab
         for (std::size_t i = 0; i < free_constants; ++i) values.push_back(positive(rng));
         values.push_back(positive(rng));
         Eigen::VectorXd ref = methods[0].solve(values);
-        for (std::size_t m = 1; m < methods.size(); ++m) {
-            Eigen::VectorXd x = methods[m].solve(values);
+        for (std::size_t m = 1; m < count; ++m) {
+            Eigen::VectorXd x = m < methods.size()
+                                    ? methods[m].solve(values)
+                                    : explicit_methods[m - methods.size()].solve(values);
             for (Eigen::Index i = 0; i < ref.size(); ++i)
                 out.differences[m] = std::max(out.differences[m], std::abs(x(i) - ref(i)) /
                                                                       std::max(1.0, std::abs(ref(i))));

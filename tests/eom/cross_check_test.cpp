@@ -15,10 +15,13 @@ namespace {
 
 constexpr double kAgree = 1e-12;
 
-// every method agrees with the road-map, Newton–Euler included
-::testing::AssertionResult all_agree(const MethodComparison& c) {
-    if (c.methods.size() != 4 || c.differences.size() != 4)
-        return ::testing::AssertionFailure() << c.methods.size() << " methods compared, not 4";
+// every method agrees with the road-map, Newton–Euler included, and on trees the recursive
+// road-map rows and the articulated-body accelerations too
+::testing::AssertionResult all_agree(const MethodComparison& c, bool tree = true) {
+    const std::size_t expected = tree ? 6 : 4;
+    if (c.methods.size() != expected || c.differences.size() != expected)
+        return ::testing::AssertionFailure()
+               << c.methods.size() << " methods compared, not " << expected;
     for (std::size_t m = 0; m < c.methods.size(); ++m)
         if (!(c.differences[m] < kAgree))
             return ::testing::AssertionFailure()
@@ -35,7 +38,10 @@ MethodComparison compare(const test::Model& m, int states = 3) {
 TEST(CompareMethods, TriplePendulumAgrees) {
     SampleModel m = make_triple_pendulum();
     MethodComparison c = compare_methods(m.system, m.q, 4);
-    EXPECT_EQ(c.methods.back(), "Newton–Euler");
+    ASSERT_EQ(c.methods.size(), 6u);
+    EXPECT_EQ(c.methods[3], "Newton–Euler");
+    EXPECT_EQ(c.methods[4], "recursive road-map");
+    EXPECT_EQ(c.methods[5], "articulated body");
     EXPECT_TRUE(all_agree(c));
 }
 

@@ -1,0 +1,65 @@
+// SPDX-License-Identifier: MIT
+// Equations of motion of a tree of bodies formed recursively: road-map rows about successive
+// joints (inverse dynamics in O(n)) and the articulated-body accelerations (O(n) forward dynamics).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "alembert/mech/system.hpp"
+
+namespace alembert {
+
+/// One body of a tree and the joint that connects it to its parent.
+struct TreeJoint {
+    const Body* body = nullptr;
+    /// The body it hangs from (nullptr: the Newtonian frame).
+    const Body* parent = nullptr;
+    /// The point the recursion refers the body's motion and loads to: the topmost point of the
+    /// body on the path from its mass centre towards N_o (B_o for a rigid body declared with
+    /// add_rigid_body and located from its parent, the particle itself for a particle).
+    const Point* origin = nullptr;
+    /// Indices into the coordinates of the joint's own coordinates: those that move the body
+    /// relative to its parent (none for a body welded to its parent).
+    std::vector<std::size_t> coordinates{};
+};
+
+/// Equations of motion formed recursively on the tree of bodies (see form_tree_equations).
+struct TreeEquations {
+    /// The bodies, parents before children.
+    std::vector<TreeJoint> joints{};
+    /// One residual per coordinate, in the order of the coordinates: for a coordinate q_r of the
+    /// joint of body B, the road-map row with system S = B and every body beyond it, about B's
+    /// origin O, in the direction of the joint's motion,
+    ///     E_r = F_r - (dw_r . M*^{S/O} + dv_r . F*^S),
+    /// where F*^S and M*^{S/O} (the system's inertia force and moment about O, gravity
+    /// included) are accumulated from the tip inward, each joint's from its children's, and
+    /// dw_r, dv_r are the joint's partial angular velocity and partial velocity of O. F_r is the
+    /// generalized active force of the loads (LoadSelection::loads_only). The rows equal Kane's
+    /// equations with u = q' and are linear in q'' and the loads; each body's kinematics,
+    /// inertia forces and accumulated sums are named intermediates, so their size grows
+    /// linearly in the number of bodies.
+    std::vector<ex> residuals{};
+    /// q'' explicitly, one per coordinate in their order, as functions of t, q, q', the load
+    /// measures and the constants: Featherstone's articulated-body recursion done symbolically
+    /// (articulated inertias and bias forces inward, accelerations outward), every step a named
+    /// intermediate; it needs no mass matrix and no linear solve.
+    std::vector<ex> accelerations{};
+};
+
+/// Why the recursive formation does not apply to `sys` in the coordinates `q`, or "" when it
+/// does. It needs: no constraints; every body and particle hanging from exactly one parent (the
+/// body owning the first point on the path of its origin towards N_o, or N); each coordinate
+/// moving exactly one body relative to its parent (relative coordinates, as joint angles are;
+/// absolute angles tie every body to the coordinates of those below it); each rigid body's
+/// mass centre fixed in its frame. Road-map, Kane's and Lagrange's equations need none of this.
+std::string explain_not_tree(const System& sys, const std::vector<TimeVariable>& q);
+
+/// Forms the tree's residuals and explicit accelerations (TreeEquations); uniform gravity
+/// enters as an acceleration -g of N (exactly the weight of every body). Cost and size grow
+/// linearly in the number of bodies (the planar n-link chain's inverse dynamics is a few dozen
+/// operations per link, its forward dynamics about a hundred).
+/// @throws alembert::ModelError with explain_not_tree's reason if the model is not such a tree.
+TreeEquations form_tree_equations(const System& sys, const std::vector<TimeVariable>& q);
+
+}  // namespace alembert
