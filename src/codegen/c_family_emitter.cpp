@@ -166,6 +166,7 @@ void print_prelude(std::ostream& os, const CodeFunction& f, const Dialect& d,
 std::string solvers(const CodePlan& plan, const Dialect& d) {
     std::ostringstream os;
     const std::string st = d.cpp ? "" : "static ";
+    if (!plan.accelerations.empty()) return os.str();  // forward dynamics solves nothing
     if (plan.symmetric_mass_matrix) {
         os << "/* Solves A x = b for a symmetric positive definite A (n x n, row by row) by the\n"
               "   Cholesky factorization A = L L^T (L overwrites A's lower triangle); returns 0,\n"
@@ -245,9 +246,18 @@ std::string declarations(const CodePlan& plan, const Dialect& d) {
     os << ind << "/* Mass matrix M (nq x nq, row by row) and forcing f of M qpp = f. */\n"
        << ind << "void " << d.function("mass_forcing") << "(" << ctx
        << arguments(plan.mass_forcing) << ")" << cnst << ";\n"
-       << ind << "/* Forward dynamics: the accelerations qpp = M^-1 f (" << solve << ");\n"
-       << ind << "   returns " << (d.cpp ? "false" : "-1") << " if M is singular. */\n"
-       << ind << (d.cpp ? "bool " : "int ") << d.function("forward_dynamics") << "(" << ctx
+       << ind;
+    if (!plan.accelerations.empty())
+        os << "/* The accelerations qpp from the loads u by the articulated-body recursion (no\n"
+           << ind << "   mass matrix, no solve). */\n"
+           << ind << "void " << d.function("accelerations") << "(" << ctx
+           << arguments(plan.accelerations) << ")" << cnst << ";\n"
+           << ind << "/* Forward dynamics: the accelerations qpp (articulated-body recursion);\n"
+           << ind << "   returns " << (d.cpp ? "false" : "-1") << " if one is not finite. */\n";
+    else
+        os << "/* Forward dynamics: the accelerations qpp = M^-1 f (" << solve << ");\n"
+           << ind << "   returns " << (d.cpp ? "false" : "-1") << " if M is singular. */\n";
+    os << ind << (d.cpp ? "bool " : "int ") << d.function("forward_dynamics") << "(" << ctx
        << "double t, const double* q, const double* qp, const double* u, double* qpp)" << cnst
        << ";\n";
     if (!plan.inverse_dynamics.empty())
@@ -280,11 +290,18 @@ std::string forward_and_rhs(const CodePlan& plan, const Dialect& d) {
                                std::string(plan.symmetric_mass_matrix ? "cholesky_solve" : "lu_solve");
     os << (d.cpp ? "bool " : "int ") << owner << d.function("forward_dynamics") << "(" << ctx
        << "double t, const double* q, const double* qp, const double* u, double* qpp)" << cnst
-       << " {\n"
-       << "    double M[" << nq << " * " << nq << "], f[" << nq << "];\n"
-       << "    " << d.function("mass_forcing") << "(" << c_arg << "t, q, qp, u, M, f);\n"
-       << "    return " << solver << "(" << nq << ", M, f, qpp)" << (d.cpp ? " == 0" : "")
-       << ";\n}\n\n";
+       << " {\n";
+    if (!plan.accelerations.empty())
+        os << "    " << d.function("accelerations") << "(" << c_arg << "t, q, qp, u, qpp);\n"
+           << "    for (int i = 0; i < " << nq << "; ++i)\n"
+           << "        if (!(qpp[i] - qpp[i] == 0)) return " << (d.cpp ? "false" : "-1")
+           << ";  /* not finite: a singular articulated inertia */\n"
+           << "    return " << (d.cpp ? "true" : "0") << ";\n}\n\n";
+    else
+        os << "    double M[" << nq << " * " << nq << "], f[" << nq << "];\n"
+           << "    " << d.function("mass_forcing") << "(" << c_arg << "t, q, qp, u, M, f);\n"
+           << "    return " << solver << "(" << nq << ", M, f, qpp)" << (d.cpp ? " == 0" : "")
+           << ";\n}\n\n";
     os << (d.cpp ? "bool " : "int ") << owner << d.function("rhs") << "(" << ctx
        << "double t, const double* x, double* dx)" << cnst << " {\n";
     std::string u = d.null();

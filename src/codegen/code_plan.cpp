@@ -124,6 +124,7 @@ std::vector<ex> solve_for_loads(const SymbolTable& table, const DynamicsEquation
 
 std::vector<const CodeFunction*> CodePlan::functions() const {
     std::vector<const CodeFunction*> out{&mass_forcing};
+    if (!accelerations.empty()) out.push_back(&accelerations);
     if (!inverse_dynamics.empty()) out.push_back(&inverse_dynamics);
     if (!output_function.empty()) out.push_back(&output_function);
     if (!load_laws.empty()) out.push_back(&load_laws);
@@ -247,6 +248,25 @@ CodePlan plan_code(const SymbolTable& table, const DynamicsEquations& eq,
                          .parameter_names = parameter_names};
     plan.symmetric_mass_matrix =
         symmetric_at_random_states(plan.mass_forcing.program, parameter_values(table, parameters), n);
+
+    // ---- explicit accelerations (articulated-body recursion) ----------------------------------
+    if (!eq.accelerations.empty()) {
+        if (eq.accelerations.size() != n)
+            throw ArgumentError(std::string(kWho) + ": " + std::to_string(eq.accelerations.size()) +
+                                " explicit accelerations for " + std::to_string(n) +
+                                " coordinates; give one per coordinate, or none");
+        plan.accelerations = {
+            .name = "accelerations",
+            .summary = "accelerations qpp from the loads u (articulated-body recursion: no mass "
+                       "matrix, no solve)",
+            .arrays = {"q", "qp", "u"},
+            .results = {"qpp"},
+            .result_sizes = {n},
+            .program = compile(table, symbols({&q, &qp, &eq.loads}), eq.accelerations,
+                               compile_options, "the accelerations"),
+            .input_names = input_names({&q_names, &qp_names, &u_names}),
+            .parameter_names = parameter_names};
+    }
 
     // ---- inverse dynamics: the residuals solved for the loads ---------------------------------
     if (!eq.loads.empty() && eq.loads.size() == n) {

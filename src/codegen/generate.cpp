@@ -55,6 +55,7 @@ GeneratedCode generate_code(const SymbolTable& table, const DynamicsEquations& e
     }
     auto ops = [](const CodeFunction& f) { return f.program.operation_count(f.program.body); };
     result.mass_forcing_operations = ops(plan.mass_forcing);
+    result.accelerations_operations = plan.accelerations.empty() ? 0 : ops(plan.accelerations);
     result.inverse_dynamics_operations = plan.inverse_dynamics.empty() ? 0 : ops(plan.inverse_dynamics);
     result.outputs_operations = plan.output_function.empty() ? 0 : ops(plan.output_function);
     for (const CodeFunction* f : plan.functions())

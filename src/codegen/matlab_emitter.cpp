@@ -138,8 +138,13 @@ std::vector<GeneratedFile> MatlabEmitter::emit(const CodePlan& plan) const {
     // ---- forward dynamics and the right-hand side for ode45 --------------------------------------
     {
         std::ostringstream b;
-        b << "[M, f] = " << N << "_mass_forcing(t, q, qp, u, ctx);\n";
-        if (plan.symmetric_mass_matrix)
+        if (!plan.accelerations.empty())
+            b << "qpp = " << N << "_accelerations(t, q, qp, u, ctx);\n";
+        else
+            b << "[M, f] = " << N << "_mass_forcing(t, q, qp, u, ctx);\n";
+        if (!plan.accelerations.empty()) {
+            // nothing to solve
+        } else if (plan.symmetric_mass_matrix)
             b << "[R, failed] = chol(M);  % M = R'*R\n"
               << "if failed\n    error('" << N << ":singular', '" << N
               << "_forward_dynamics: the mass matrix is not positive definite at t = %g', t);\n"
@@ -147,8 +152,10 @@ std::vector<GeneratedFile> MatlabEmitter::emit(const CodePlan& plan) const {
         else
             b << "qpp = M \\ f;\n";
         file(N + "_forward_dynamics", "qpp = " + N + "_forward_dynamics(t, q, qp, u, ctx)",
-             std::string("The accelerations qpp = M^-1 f (") +
-                 (plan.symmetric_mass_matrix ? "Cholesky" : "LU") + ").",
+             plan.accelerations.empty()
+                 ? std::string("The accelerations qpp = M^-1 f (") +
+                       (plan.symmetric_mass_matrix ? "Cholesky" : "LU") + ")."
+                 : std::string("The accelerations qpp (articulated-body recursion)."),
              b.str());
     }
     {

@@ -136,11 +136,17 @@ std::vector<GeneratedFile> PythonEmitter::emit(const CodePlan& plan) const {
 
     // ---- forward dynamics, the right-hand side, the simulation ------------------------------
     const SimulationSpec& sim = plan.simulation_spec;
-    os << "\n\ndef forward_dynamics(t, q, qp, u, ctx):\n"
-       << "    \"\"\"The accelerations qpp = M^-1 f ("
-       << (plan.symmetric_mass_matrix ? "Cholesky" : "LU") << ").\"\"\"\n"
-       << "    M, f = mass_forcing(t, q, qp, u, ctx)\n";
-    if (plan.symmetric_mass_matrix)
+    os << "\n\ndef forward_dynamics(t, q, qp, u, ctx):\n";
+    if (!plan.accelerations.empty())
+        os << "    \"\"\"The accelerations qpp (articulated-body recursion).\"\"\"\n"
+           << "    return accelerations(t, q, qp, u, ctx)\n";
+    else
+        os << "    \"\"\"The accelerations qpp = M^-1 f ("
+           << (plan.symmetric_mass_matrix ? "Cholesky" : "LU") << ").\"\"\"\n"
+           << "    M, f = mass_forcing(t, q, qp, u, ctx)\n";
+    if (!plan.accelerations.empty()) {
+        // nothing to solve
+    } else if (plan.symmetric_mass_matrix)
         os << "    L = np.linalg.cholesky(M)  # M = L L^T; LinAlgError if M is not positive definite\n"
            << "    return np.linalg.solve(L.T, np.linalg.solve(L, f))\n";
     else

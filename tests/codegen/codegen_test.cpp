@@ -39,17 +39,21 @@ std::vector<double> run_generated(const CodegenCase& c, Language lang, const fs:
     return numbers(out);
 }
 
-std::vector<CodegenCase> two_cases() {
+// a road-map, Kane's equations with M given, and the recursive formation (rows and the
+// articulated-body accelerations) of planar and spatial chains (two-axis joints)
+std::vector<CodegenCase> cases() {
     std::vector<CodegenCase> v;
     v.push_back(triple_pendulum_case());
     v.push_back(planar_chain_case(5));
+    v.push_back(tree_chain_case(5, ChainKind::planar));
+    v.push_back(tree_chain_case(3, ChainKind::spatial));
     return v;
 }
 
 }  // namespace
 
 TEST(GenerateCode, CAgreesWithTheEvaluatorAtRandomStates) {
-    for (const CodegenCase& c : two_cases()) {
+    for (const CodegenCase& c : cases()) {
         ScratchDir dir("c-" + c.name);
         std::vector<State> states = random_states(c, 6);
         expect_agreement(c, states, run_generated(c, Language::c, dir.path(), states), 1e-12,
@@ -58,7 +62,7 @@ TEST(GenerateCode, CAgreesWithTheEvaluatorAtRandomStates) {
 }
 
 TEST(GenerateCode, CppAgreesWithTheEvaluatorAtRandomStates) {
-    for (const CodegenCase& c : two_cases()) {
+    for (const CodegenCase& c : cases()) {
         ScratchDir dir("cpp-" + c.name);
         std::vector<State> states = random_states(c, 6, 11);
         expect_agreement(c, states, run_generated(c, Language::cpp, dir.path(), states), 1e-12,

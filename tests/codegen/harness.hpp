@@ -22,6 +22,7 @@
 #include "alembert/eom/kane.hpp"
 #include "alembert/eom/planner.hpp"
 #include "alembert/eom/statics.hpp"
+#include "alembert/eom/tree_dynamics.hpp"
 #include "alembert/mech/sample_models.hpp"
 #include "alembert/sym/evaluator.hpp"
 
@@ -35,6 +36,9 @@ struct CodegenCase {
     DynamicsEquations equations;
     std::vector<CodegenOutput> outputs;
     std::string name;
+    /// The residuals the reference is formed from when they are not `equations.residuals`
+    /// (equations whose q'' sit inside named intermediates: another method's instead).
+    std::vector<ex> reference_residuals{};
 
     const SymbolTable& table() const { return model->system.symbols(); }
     std::size_t n() const { return equations.coordinates.size(); }
@@ -63,6 +67,22 @@ inline CodegenCase planar_chain_case(int n) {
     System& sys = c.model->system;
     KaneEquations k = form_kane_equations(sys, KaneOptions{.coordinates = c.model->q});
     c.equations = {c.model->q, k.residuals, c.model->unknowns, k.dynamics};
+    ex PE = sys.calc_potential_energy(), KE = sys.calc_kinetic_energy(sys.bodies());
+    c.outputs = {{"E", KE + PE, "J"}};
+    return c;
+}
+
+/// An n-link chain (planar or spatial) by the recursive formation: the road-map rows about
+/// successive joints and the articulated-body accelerations; the reference is formed from
+/// Kane's equations, an independent method.
+inline CodegenCase tree_chain_case(int n, ChainKind kind) {
+    CodegenCase c;
+    c.name = std::string(kind == ChainKind::planar ? "tree" : "spatial_tree") + std::to_string(n);
+    c.model = std::make_unique<SampleModel>(make_n_link_pendulum(n, kind));
+    System& sys = c.model->system;
+    TreeEquations tree = form_tree_equations(sys, c.model->q);
+    c.equations = {c.model->q, tree.residuals, c.model->unknowns, std::nullopt, tree.accelerations};
+    c.reference_residuals = form_kane_equations(sys, c.model->q);
     ex PE = sys.calc_potential_energy(), KE = sys.calc_kinetic_energy(sys.bodies());
     c.outputs = {{"E", KE + PE, "J"}};
     return c;
@@ -130,12 +150,13 @@ public:
             for (unsigned i = 0; i < L.b.rows(); ++i) out.push_back(L.b(i, 0));
             return out;
         };
+        const std::vector<ex>& E =
+            c.reference_residuals.empty() ? c.equations.residuals : c.reference_residuals;
         mf_ = CompiledExpressions(T, inputs({&q, &qp, &c.equations.loads}),
-                                  flat(form_linear_system(c.equations.residuals, qpp)));
+                                  flat(form_linear_system(E, qpp)));
         if (m_ == n_)
-            id_ = CompiledExpressions(
-                T, inputs({&q, &qp, &qpp}),
-                flat(form_linear_system(c.equations.residuals, c.equations.loads)));
+            id_ = CompiledExpressions(T, inputs({&q, &qp, &qpp}),
+                                      flat(form_linear_system(E, c.equations.loads)));
         std::vector<ex> y;
         for (const CodegenOutput& o : c.outputs) y.push_back(o.expression);
         y_ = CompiledExpressions(T, inputs({&q, &qp, &qpp, &c.equations.loads}), y);

@@ -31,6 +31,7 @@ TEST(GeneratedPython, AgreesWithTheEvaluatorAtRandomStates) {
     std::vector<CodegenCase> cases;
     cases.push_back(triple_pendulum_case());
     cases.push_back(planar_chain_case(5));
+    cases.push_back(tree_chain_case(3, ChainKind::spatial));
     for (const CodegenCase& c : cases) {
         ScratchDir dir("py-" + c.name);
         CodegenOptions o{.name = c.name};
@@ -79,27 +80,32 @@ TEST(GeneratedPython, SimulationBySolveIvpConservesEnergy) {
 
 TEST(GeneratedMatlab, AgreesWithTheEvaluatorUnderOctave) {
     if (!octave_present()) GTEST_SKIP() << "octave is not installed";
-    CodegenCase c = triple_pendulum_case();
-    ScratchDir dir("m-" + c.name);
-    CodegenOptions o{.name = c.name};
-    o.outputs = c.outputs;
-    generate_code(c.table(), c.equations, Language::matlab, dir.path(), o);
-    std::vector<State> states = random_states(c, 4, 17);
-    std::string rows;
-    for (const State& s : states) {
-        std::ostringstream os;
-        os.precision(17);
-        os << s.t;
-        for (const auto* v : {&s.q, &s.qp, &s.qpp, &s.u})
-            for (double x : *v) os << ' ' << x;
-        rows += os.str() + "\n";
+    std::vector<CodegenCase> cases;
+    cases.push_back(triple_pendulum_case());
+    cases.push_back(tree_chain_case(3, ChainKind::spatial));
+    for (const CodegenCase& c : cases) {
+        ScratchDir dir("m-" + c.name);
+        CodegenOptions o{.name = c.name};
+        o.outputs = c.outputs;
+        generate_code(c.table(), c.equations, Language::matlab, dir.path(), o);
+        std::vector<State> states = random_states(c, 4, 17);
+        std::string rows;
+        for (const State& s : states) {
+            std::ostringstream os;
+            os.precision(17);
+            os << s.t;
+            for (const auto* v : {&s.q, &s.qp, &s.qpp, &s.u})
+                for (double x : *v) os << ' ' << x;
+            rows += os.str() + "\n";
+        }
+        write(dir.path() / "states.txt", rows);
+        write(dir.path() / "driver.m", octave_driver(c.name, c.n(), c.m(), true));
+        std::string out;
+        ASSERT_EQ(run("cd " + dir.path().string() + " && octave --no-gui --quiet driver.m", out),
+                  0)
+            << out;
+        expect_agreement(c, states, numbers(out), 1e-12, "Octave, " + c.name);
     }
-    write(dir.path() / "states.txt", rows);
-    write(dir.path() / "driver.m", octave_driver(c.name, c.n(), c.m(), true));
-    std::string out;
-    ASSERT_EQ(run("cd " + dir.path().string() + " && octave --no-gui --quiet driver.m", out), 0)
-        << out;
-    expect_agreement(c, states, numbers(out), 1e-12, "Octave, " + c.name);
 }
 
 TEST(GeneratedMatlab, FilesAreFunctionsWithQuotedStrings) {

@@ -49,6 +49,7 @@ struct CodePlan {
     std::vector<CodeSymbol> outputs;     ///< the requested outputs
     bool symmetric_mass_matrix = false;
     CodeFunction mass_forcing;      ///< inputs t, q, qp, u; results M (row-major), f
+    CodeFunction accelerations;     ///< inputs t, q, qp, u; result qpp (empty if not given)
     CodeFunction inverse_dynamics;  ///< inputs t, q, qp, qpp; result u (empty if not formed)
     CodeFunction output_function;   ///< inputs t, q, qp, qpp, u; result y
     CodeFunction load_laws;         ///< inputs t, q, qp; result u (simulation only)

@@ -40,7 +40,7 @@ const char* generator_version();
 ///    form_linear_system(residuals, q''), or `mass_forcing` when given);
 ///  - forward dynamics, q'' = M^-1 f, by a dense Cholesky solve in the generated code when M
 ///    is symmetric (Kane's and Lagrange's M are; checked at random states), by LU with
-///    partial pivoting otherwise;
+///    partial pivoting otherwise; or the explicit `accelerations` when given;
 ///  - inverse dynamics, the load measures from q, q', q'' (the residuals solved for the
 ///    loads symbolically, one decoupled block at a time), when there are as many loads as
 ///    coordinates.
@@ -55,6 +55,11 @@ struct DynamicsEquations {
     /// M and f already formed (e.g. `KaneEquations::dynamics`), unknowns the q''; formed from
     /// the residuals when absent.
     std::optional<LinearSystem> mass_forcing{};
+    /// q'' given explicitly, one per coordinate, as functions of t, q, q', the loads and the
+    /// constants (`TreeEquations::accelerations`, the articulated-body recursion); when given,
+    /// forward dynamics evaluates them instead of solving M q'' = f, in time linear in the
+    /// number of bodies. The mass matrix and forcing are still generated from the residuals.
+    std::vector<ex> accelerations{};
 };
 
 /// A quantity the generated code computes on request (an output column of a simulation):
@@ -112,6 +117,7 @@ struct GeneratedCode {
     /// matrix and forcing, of inverse dynamics (0 when not generated) and of the outputs;
     /// and the operations done once per parameter set (all preludes together).
     std::size_t mass_forcing_operations = 0;
+    std::size_t accelerations_operations = 0;  ///< explicit q'' (0 when not given)
     std::size_t inverse_dynamics_operations = 0;
     std::size_t outputs_operations = 0;
     std::size_t prelude_operations = 0;
