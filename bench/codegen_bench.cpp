@@ -8,6 +8,7 @@
 #include <alembert/codegen/code_plan.hpp>
 #include <alembert/codegen/codegen.hpp>
 #include <alembert/eom/kane.hpp>
+#include <alembert/eom/tree_dynamics.hpp>
 #include <alembert/mech/sample_models.hpp>
 
 #include <chrono>
@@ -34,8 +35,14 @@ double seconds_since(Clock::time_point t) {
     return std::chrono::duration<double>(Clock::now() - t).count();
 }
 
-// the chain's Kane equations, formed once per size (formation is eom_formation_bench's
-// subject), generated as C with the constants folded, compiled with cc -O2 and loaded
+// How the equations the generator starts from are formed.
+enum Formation {
+    kane = 0,  // Kane's equations; forward dynamics by M, f and a Cholesky solve
+    tree = 1,  // the recursive road-map rows and the articulated-body accelerations
+};
+
+// the chain's equations, formed once per size (formation is eom_formation_bench's subject),
+// generated as C with the constants folded, compiled with cc -O2 and loaded
 struct Generated {
     using Init = void (*)(void*, const void*);
     using Inverse = void (*)(const void*, double, const double*, const double*, const double*,
@@ -43,11 +50,18 @@ struct Generated {
     using Forward = int (*)(const void*, double, const double*, const double*, const double*,
                             double*);
 
-    explicit Generated(int n) : n(n), model(make_planar_chain(n)) {
-        residuals = form_kane_equations(model.system, model.q);
-        equations = {model.q, residuals, model.unknowns, std::nullopt};
+    Generated(int n, Formation formation) : n(n), model(make_planar_chain(n)) {
+        if (formation == tree) {
+            TreeEquations t = form_tree_equations(model.system, model.q);
+            residuals = t.residuals;
+            equations = {model.q, residuals, model.unknowns, std::nullopt, t.accelerations};
+        } else {
+            residuals = form_kane_equations(model.system, model.q);
+            equations = {model.q, residuals, model.unknowns, std::nullopt};
+        }
         options.name = "chain";
-        options.source = "make_planar_chain(" + std::to_string(n) + "), Kane's equations";
+        options.source = "make_planar_chain(" + std::to_string(n) + "), " +
+                         (formation == tree ? "recursive formation" : "Kane's equations");
         options.parameters = std::vector<ex>{};  // fold the constants: the fastest code
         CodePlan plan = plan_code(model.system.symbols(), equations, options);
         const StraightLineProgram& id = plan.inverse_dynamics.program;
@@ -56,6 +70,11 @@ struct Generated {
         id_calls = id.call_count(id.body);
         mf_ops = mf.operation_count(mf.body);
         mf_calls = mf.call_count(mf.body);
+        if (!plan.accelerations.empty()) {
+            const StraightLineProgram& fd = plan.accelerations.program;
+            fd_ops = fd.operation_count(fd.body);
+            fd_calls = fd.call_count(fd.body);
+        }
 
         dir = fs::temp_directory_path() /
               ("alembert-codegen-bench-" + std::to_string(::getpid()) + "-" + std::to_string(n));
@@ -112,7 +131,7 @@ struct Generated {
     std::vector<ex> residuals;
     DynamicsEquations equations;
     CodegenOptions options;
-    std::size_t id_ops = 0, id_calls = 0, mf_ops = 0, mf_calls = 0;
+    std::size_t id_ops = 0, id_calls = 0, mf_ops = 0, mf_calls = 0, fd_ops = 0, fd_calls = 0;
     double generate_seconds = 0, compile_seconds = 0, max_diff_id = 0, max_diff_fd = 0;
     fs::path dir;
     void* handle = nullptr;
@@ -122,10 +141,11 @@ struct Generated {
     std::vector<double> q, qd, qdd, tau;
 };
 
-Generated& generated(int n) {
-    static std::map<int, std::unique_ptr<Generated>> cache;
-    auto& g = cache[n];
-    if (!g) g = std::make_unique<Generated>(n);
+Generated& generated(const benchmark::State& state) {
+    static std::map<std::pair<int, int>, std::unique_ptr<Generated>> cache;
+    const int n = static_cast<int>(state.range(0)), f = static_cast<int>(state.range(1));
+    auto& g = cache[{n, f}];
+    if (!g) g = std::make_unique<Generated>(n, static_cast<Formation>(f));
     return *g;
 }
 
@@ -136,6 +156,8 @@ void counters(benchmark::State& state, const Generated& g) {
     state.counters["calls_id"] = static_cast<double>(g.id_calls);
     state.counters["ops_mf"] = static_cast<double>(g.mf_ops);
     state.counters["calls_mf"] = static_cast<double>(g.mf_calls);
+    state.counters["ops_fd"] = static_cast<double>(g.fd_ops);  // explicit accelerations
+    state.counters["calls_fd"] = static_cast<double>(g.fd_calls);
     state.counters["ops_rnea_3d"] = 174 * n;   // Featherstone's count for a general 3D chain
     state.counters["ops_planar_rec"] = 45 * n;  // the hand-written recursion, plus n sin/cos
     state.counters["max_diff_id"] = g.max_diff_id;
@@ -143,7 +165,7 @@ void counters(benchmark::State& state, const Generated& g) {
 }
 
 void GeneratedInverseDynamics(benchmark::State& state) {
-    Generated& g = generated(static_cast<int>(state.range(0)));
+    Generated& g = generated(state);
     std::vector<double> u(static_cast<std::size_t>(g.n));
     for (auto _ : state) {
         g.inverse(g.context.data(), 0.0, g.q.data(), g.qd.data(), g.qdd.data(), u.data());
@@ -156,7 +178,7 @@ void GeneratedInverseDynamics(benchmark::State& state) {
 
 void ReferenceInverseDynamics(benchmark::State& state) {
     const int n = static_cast<int>(state.range(0));
-    Generated& g = generated(n);
+    Generated& g = generated(state);
     bench::PlanarChainReference ref(n);
     std::vector<double> u(static_cast<std::size_t>(n));
     for (auto _ : state) {
@@ -168,7 +190,7 @@ void ReferenceInverseDynamics(benchmark::State& state) {
 }
 
 void GeneratedForwardDynamics(benchmark::State& state) {
-    Generated& g = generated(static_cast<int>(state.range(0)));
+    Generated& g = generated(state);
     std::vector<double> a(static_cast<std::size_t>(g.n));
     for (auto _ : state) {
         benchmark::DoNotOptimize(
@@ -180,7 +202,7 @@ void GeneratedForwardDynamics(benchmark::State& state) {
 
 void ReferenceForwardDynamics(benchmark::State& state) {
     const int n = static_cast<int>(state.range(0));
-    Generated& g = generated(n);
+    Generated& g = generated(state);
     bench::PlanarChainReference ref(n);
     std::vector<double> a(static_cast<std::size_t>(n));
     for (auto _ : state) {
@@ -193,7 +215,7 @@ void ReferenceForwardDynamics(benchmark::State& state) {
 
 // generate_code alone (planning, printing, writing C), the equations formed beforehand
 void GenerateC(benchmark::State& state) {
-    Generated& g = generated(static_cast<int>(state.range(0)));
+    Generated& g = generated(state);
     const fs::path dir = g.dir / "again";
     for (auto _ : state) {
         GeneratedCode code = generate_code(g.model.system.symbols(), g.equations, Language::c,
@@ -205,10 +227,12 @@ void GenerateC(benchmark::State& state) {
 
 }  // namespace
 
-BENCHMARK(GeneratedInverseDynamics)->Arg(3)->Arg(7)->Arg(15)->Arg(30);
-BENCHMARK(ReferenceInverseDynamics)->Arg(3)->Arg(7)->Arg(15)->Arg(30);
-BENCHMARK(GeneratedForwardDynamics)->Arg(3)->Arg(7)->Arg(15)->Arg(30);
-BENCHMARK(ReferenceForwardDynamics)->Arg(3)->Arg(7)->Arg(15)->Arg(30);
-BENCHMARK(GenerateC)->Arg(3)->Arg(7)->Arg(15)->Arg(30)->Unit(benchmark::kMillisecond);
+// arguments: links n, formation (0 Kane, 1 recursive); the references use the recursive
+// formation's compiled code only for the shared random state
+BENCHMARK(GeneratedInverseDynamics)->ArgsProduct({{3, 7, 15, 30}, {tree, kane}});
+BENCHMARK(ReferenceInverseDynamics)->ArgsProduct({{3, 7, 15, 30}, {tree}});
+BENCHMARK(GeneratedForwardDynamics)->ArgsProduct({{3, 7, 15, 30}, {tree, kane}});
+BENCHMARK(ReferenceForwardDynamics)->ArgsProduct({{3, 7, 15, 30}, {tree}});
+BENCHMARK(GenerateC)->ArgsProduct({{3, 7, 15, 30}, {tree, kane}})->Unit(benchmark::kMillisecond);
 
 BENCHMARK_MAIN();

@@ -10,6 +10,7 @@
 
 #include "alembert/codegen/codegen.hpp"
 #include "alembert/codegen/native.hpp"
+#include "alembert/eom/tree_dynamics.hpp"
 #include "alembert/lang/parser.hpp"
 #include "interpreter_impl.hpp"
 
@@ -504,7 +505,15 @@ void Interpreter::Impl::run_codegen(const CodegenRequest& r, Location where) {
         auto it = numbers.inputs.find(l);
         spec.load_laws.push_back(it == numbers.inputs.end() ? ex(0) : it->second);
     }
+    // a tree of bodies in relative coordinates: the recursive formation (linear in the number
+    // of bodies, forward dynamics with no solve); otherwise Kane's equations with their M
+    const bool tree = explain_not_tree(sys, q).empty();
     GeneratedCode g = guard(where, [&] {
+        if (tree) {
+            TreeEquations t = form_tree_equations(sys, q);
+            DynamicsEquations eqs{q, t.residuals, loads, std::nullopt, t.accelerations};
+            return generate_code(table, eqs, language, r.dir, opts);
+        }
         KaneEquations k = form_kane_equations(sys, KaneOptions{.coordinates = q});
         DynamicsEquations eqs{q, k.residuals, loads, k.dynamics};
         return generate_code(table, eqs, language, r.dir, opts);
@@ -514,8 +523,12 @@ void Interpreter::Impl::run_codegen(const CodegenRequest& r, Location where) {
     out << "generated " << language_name[static_cast<int>(language)] << " for '" << opts.name << "': ";
     for (std::size_t i = 0; i < g.files.size(); ++i) out << (i ? ", " : "") << g.files[i].filename().string();
     // (operation counts are left out: they shift by a few with GiNaC's term order from run to run)
-    out << "\n  mass matrix and forcing (" << (g.symmetric_mass_matrix ? "Cholesky" : "LU")
-        << " solve for the accelerations)";
+    if (tree)
+        out << "\n  recursive formation: mass matrix and forcing, accelerations by the articulated-body "
+               "recursion (no solve)";
+    else
+        out << "\n  mass matrix and forcing (" << (g.symmetric_mass_matrix ? "Cholesky" : "LU")
+            << " solve for the accelerations)";
     if (g.inverse_dynamics) out << ", inverse dynamics";
     else out << "; no inverse dynamics (" << loads.size() << " loads for " << q.size() << " coordinates)";
     if (!opts.outputs.empty()) out << ", " << opts.outputs.size() << " outputs";
