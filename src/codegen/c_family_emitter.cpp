@@ -6,6 +6,7 @@
 
 #include "alembert/codegen/c_emitter.hpp"
 #include "alembert/codegen/cpp_emitter.hpp"
+#include "symbol_names.hpp"
 
 namespace alembert {
 
@@ -513,11 +514,7 @@ int main(int argc, char** argv) {
 }
 
 // the sizes, each with a comment listing what it counts
-std::string names_of(const std::vector<CodeSymbol>& v) {
-    std::string s;
-    for (const CodeSymbol& x : v) s += (s.empty() ? "" : ", ") + x.name;
-    return s.empty() ? "none" : s;
-}
+using detail::names_of;
 
 std::vector<GeneratedFile> emit_c_family(const CodePlan& plan, const Dialect& d,
                                          const CodePrinter& pr, const IdMap& id,

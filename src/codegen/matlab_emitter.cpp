@@ -8,10 +8,6 @@ namespace alembert {
 
 namespace {
 
-std::string labelled(const CodeSymbol& s) {
-    return s.unit.empty() ? s.name : s.name + " [" + s.unit + "]";
-}
-
 // the text of a MATLAB string literal: quotes doubled (qA' -> qA'')
 std::string matlab_string(const std::string& text) {
     std::string s;
@@ -23,25 +19,6 @@ std::string column_of(const std::vector<double>& v, const CodePrinter& pr) {
     std::string s;
     for (double x : v) s += (s.empty() ? "" : "; ") + pr.number(x);
     return s;
-}
-
-std::vector<bool> parameters_in(const StraightLineProgram& p,
-                                const std::vector<ProgramInstruction>& code, bool outputs) {
-    std::vector<bool> used(p.parameter_count, false);
-    auto mark = [&](std::uint32_t v) {
-        if (p.kind(v) == ValueKind::parameter) used[v - p.input_count] = true;
-    };
-    for (const ProgramInstruction& in : code) {
-        if (in.op == ProgramOp::combine) {
-            for (std::uint32_t k = in.a; k < in.a + in.b; ++k) mark(p.terms[k].value);
-        } else {
-            mark(in.a);
-            if (in.op != ProgramOp::sincos && !is_unary(in.op)) mark(in.b);
-        }
-    }
-    if (outputs)
-        for (std::uint32_t v : p.outputs) mark(v);
-    return used;
 }
 
 }  // namespace
@@ -83,7 +60,7 @@ std::vector<GeneratedFile> MatlabEmitter::emit(const CodePlan& plan) const {
             ValueSpelling names = spell(*f);
             b << "% " << f->name << ": values of the parameters only\n"
               << "h = zeros(1, " << p.first_temporary - p.first_hoisted() << ");\n";
-            std::vector<bool> used = parameters_in(p, p.prelude, false);
+            std::vector<bool> used = parameters_read(p, p.prelude, false);
             for (std::size_t i = 0; i < used.size(); ++i)
                 if (used[i]) b << names.parameters[i] << " = p." << names.parameters[i] << ";\n";
             pr.print(b, p, p.prelude, names, "");
@@ -105,7 +82,7 @@ std::vector<GeneratedFile> MatlabEmitter::emit(const CodePlan& plan) const {
         for (const std::string& a : f->arrays) args += ", " + a;
         std::ostringstream b;
         b << "h = ctx.h_" << f->name << ";\n";
-        std::vector<bool> used = parameters_in(p, p.body, true);
+        std::vector<bool> used = parameters_read(p, p.body, true);
         for (std::size_t i = 0; i < used.size(); ++i)
             if (used[i]) b << names.parameters[i] << " = ctx.p." << names.parameters[i] << ";\n";
         std::vector<bool> read = inputs_read(p);
@@ -172,7 +149,7 @@ std::vector<GeneratedFile> MatlabEmitter::emit(const CodePlan& plan) const {
         const SimulationSpec& sim = plan.simulation_spec;
         std::string head = "t [s]";
         for (const auto* v : {&plan.q, &plan.qp, &plan.loads, &plan.outputs})
-            for (const CodeSymbol& s : *v) head += "," + labelled(s);
+            for (const CodeSymbol& s : *v) head += "," + with_unit(s.name, s.unit);
         std::ostringstream b;
         b << "if nargin < 1\n    path = '" << N << ".csv';\nend\n"
           << "if nargin < 2\n    ctx = " << N << "_context();\nend\n"

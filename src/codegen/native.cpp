@@ -22,7 +22,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-constexpr const char* kWho = "NativeExpressions";
+constexpr const char* kNativeWho = "NativeExpressions";
 
 std::uint64_t fnv1a(const std::string& s, std::uint64_t h = 1469598103934665603ULL) {
     for (unsigned char ch : s) {
@@ -99,7 +99,7 @@ NativeExpressions::NativeExpressions(CompiledExpressions tape, const NativeOptio
     fs::path compiler = detail::find_program(name);
     if (compiler.empty()) {
         status_ = NativeStatus::no_compiler;
-        message_ = std::string(kWho) + ": no C compiler '" + name +
+        message_ = std::string(kNativeWho) + ": no C compiler '" + name +
                    "' found (set $CC or install one, e.g. Debian's gcc); evaluating on the "
                    "interpreted tape";
         return;
@@ -108,7 +108,7 @@ NativeExpressions::NativeExpressions(CompiledExpressions tape, const NativeOptio
     // ---- the cache: one library per source, compiler and flags ---------------------------------
     fs::path dir = options.cache_dir.empty() ? fs::temp_directory_path() / "alembert-native"
                                              : options.cache_dir;
-    detail::ensure_directory(dir, kWho);
+    detail::ensure_directory(dir, kNativeWho);
     std::string key = source_ + "\n" + compiler.string();
     for (const std::string& f : options.flags) key += " " + f;
     const fs::path library = dir / ("alembert_" + hex(fnv1a(key)) + ".so");
@@ -123,7 +123,7 @@ NativeExpressions::NativeExpressions(CompiledExpressions tape, const NativeOptio
                                  "." + std::to_string(counter++);
         const fs::path src = dir / (stem + ".c"), tmp = dir / (stem + ".so"),
                        log = dir / (stem + ".log");
-        detail::write_file_atomically(src, source_, kWho);
+        detail::write_file_atomically(src, source_, kNativeWho);
         std::vector<std::string> argv{compiler.string()};
         argv.insert(argv.end(), options.flags.begin(), options.flags.end());
         for (const char* f : {"-shared", "-fPIC", "-o"}) argv.emplace_back(f);
@@ -133,7 +133,7 @@ NativeExpressions::NativeExpressions(CompiledExpressions tape, const NativeOptio
         int rc = detail::run_program(argv, log);
         if (rc != 0 || !fs::exists(tmp, ec)) {
             status_ = NativeStatus::compile_failed;
-            message_ = std::string(kWho) + ": the C compiler '" + compiler.string() +
+            message_ = std::string(kNativeWho) + ": the C compiler '" + compiler.string() +
                        "' failed (exit status " + std::to_string(rc) + ") on " + src.string() +
                        "; evaluating on the interpreted tape. Its output:" + head_of(log);
             fs::remove(tmp, ec);
@@ -149,7 +149,7 @@ NativeExpressions::NativeExpressions(CompiledExpressions tape, const NativeOptio
     if (!handle) {
         const char* why = ::dlerror();
         status_ = NativeStatus::load_failed;
-        message_ = std::string(kWho) + ": cannot load " + library.string() + " (" +
+        message_ = std::string(kNativeWho) + ": cannot load " + library.string() + " (" +
                    (why ? why : "unknown reason") + "); evaluating on the interpreted tape";
         return;
     }
@@ -159,14 +159,14 @@ NativeExpressions::NativeExpressions(CompiledExpressions tape, const NativeOptio
     if (!prelude || !body) {
         library_.reset();
         status_ = NativeStatus::load_failed;
-        message_ = std::string(kWho) + ": " + library.string() +
+        message_ = std::string(kNativeWho) + ": " + library.string() +
                    " lacks alembert_prelude or alembert_body; evaluating on the interpreted tape";
         return;
     }
     prelude_ = prelude;
     body_ = body;
     status_ = cached ? NativeStatus::cached : NativeStatus::compiled;
-    message_ = std::string(kWho) + ": " + (cached ? "loaded " : "compiled and loaded ") +
+    message_ = std::string(kNativeWho) + ": " + (cached ? "loaded " : "compiled and loaded ") +
                library.string();
     set_parameters(tape_.parameter_values());
 }
@@ -188,9 +188,10 @@ void NativeExpressions::operator()(const double* inputs, double* outputs) const 
 void NativeExpressions::evaluate(std::span<const double> inputs,
                                  std::span<double> outputs) const {
     if (inputs.size() != input_count() || outputs.size() != output_count())
-        throw ArgumentError(std::string(kWho) + "::evaluate(): " + std::to_string(inputs.size()) +
-                            " inputs and room for " + std::to_string(outputs.size()) +
-                            " outputs given, " + std::to_string(input_count()) + " and " +
+        throw ArgumentError(std::string(kNativeWho) + "::evaluate(): " +
+                            std::to_string(inputs.size()) + " inputs and room for " +
+                            std::to_string(outputs.size()) + " outputs given, " +
+                            std::to_string(input_count()) + " and " +
                             std::to_string(output_count()) + " expected");
     (*this)(inputs.data(), outputs.data());
 }

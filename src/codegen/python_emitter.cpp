@@ -4,44 +4,18 @@
 
 #include <sstream>
 
+#include "symbol_names.hpp"
+
 namespace alembert {
 
 namespace {
 
-std::string names_of(const std::vector<CodeSymbol>& v) {
-    std::string s;
-    for (const CodeSymbol& x : v) s += (s.empty() ? "" : ", ") + x.name;
-    return s.empty() ? "none" : s;
-}
-
-std::string labelled(const CodeSymbol& s) {
-    return s.unit.empty() ? s.name : s.name + " [" + s.unit + "]";
-}
+using detail::names_of;
 
 std::string vector_of(const std::vector<double>& v, const CodePrinter& pr) {
     std::string s;
     for (double x : v) s += (s.empty() ? "" : ", ") + pr.number(x);
     return "[" + s + "]";
-}
-
-// the parameters (by program position) that `code` and, with `outputs`, the outputs read
-std::vector<bool> parameters_in(const StraightLineProgram& p,
-                                const std::vector<ProgramInstruction>& code, bool outputs) {
-    std::vector<bool> used(p.parameter_count, false);
-    auto mark = [&](std::uint32_t v) {
-        if (p.kind(v) == ValueKind::parameter) used[v - p.input_count] = true;
-    };
-    for (const ProgramInstruction& in : code) {
-        if (in.op == ProgramOp::combine) {
-            for (std::uint32_t k = in.a; k < in.a + in.b; ++k) mark(p.terms[k].value);
-        } else {
-            mark(in.a);
-            if (in.op != ProgramOp::sincos && !is_unary(in.op)) mark(in.b);
-        }
-    }
-    if (outputs)
-        for (std::uint32_t v : p.outputs) mark(v);
-    return used;
 }
 
 }  // namespace
@@ -88,7 +62,7 @@ std::vector<GeneratedFile> PythonEmitter::emit(const CodePlan& plan) const {
         os << "        # " << f->name << ": values of the parameters only\n"
            << "        h = [0.0] * " << k << "\n";
         ValueSpelling names = spell(*f);
-        std::vector<bool> used = parameters_in(p, p.prelude, false);
+        std::vector<bool> used = parameters_read(p, p.prelude, false);
         for (std::size_t i = 0; i < used.size(); ++i)
             if (used[i])
                 os << "        " << names.parameters[i] << " = p[\"" << names.parameters[i]
@@ -105,7 +79,7 @@ std::vector<GeneratedFile> PythonEmitter::emit(const CodePlan& plan) const {
         for (const std::string& a : f->arrays) os << ", " << a;
         os << ", ctx):\n    \"\"\"The " << f->summary << ".\"\"\"\n"
            << "    h = ctx.h_" << f->name << "\n";
-        std::vector<bool> used = parameters_in(p, p.body, true);
+        std::vector<bool> used = parameters_read(p, p.body, true);
         for (std::size_t i = 0; i < used.size(); ++i)
             if (used[i])
                 os << "    " << names.parameters[i] << " = ctx.p[\"" << names.parameters[i]
@@ -162,7 +136,7 @@ std::vector<GeneratedFile> PythonEmitter::emit(const CodePlan& plan) const {
        << "  # q, then qp\n"
        << "HEADER = \"t [s]";
     for (const auto* v : {&plan.q, &plan.qp, &plan.loads, &plan.outputs})
-        for (const CodeSymbol& s : *v) os << "," << labelled(s);
+        for (const CodeSymbol& s : *v) os << "," << with_unit(s.name, s.unit);
     os << "\"\n\n\n"
        << "def simulate(path=None, ctx=None, final_time=FINAL_TIME, output_step=OUTPUT_STEP,\n"
        << "             x0=X0, rtol=" << pr.number(sim.relative_tolerance)

@@ -11,6 +11,7 @@
 #include "alembert/error.hpp"
 #include "alembert/sym/print.hpp"
 #include "alembert/sym/simplify.hpp"
+#include "expression_lists.hpp"
 
 namespace alembert {
 
@@ -82,6 +83,8 @@ std::vector<ex> form_kane_equations(const System& sys, const std::vector<TimeVar
 namespace {
 
 using GiNaC::is_a;
+using detail::contains;
+using detail::index_of;
 
 const std::string kFn = "form_kane_equations(): ";
 
@@ -99,18 +102,6 @@ std::string to_string_list(const std::vector<ex>& xs) {
     std::string out;
     for (const ex& x : xs) out += (out.empty() ? "'" : ", '") + to_string(x) + "'";
     return out;
-}
-
-bool contains(const std::vector<ex>& xs, const ex& x) {
-    for (const ex& y : xs)
-        if (y.is_equal(x)) return true;
-    return false;
-}
-
-std::size_t index_of(const std::vector<ex>& xs, const ex& x) {
-    for (std::size_t i = 0; i < xs.size(); ++i)
-        if (xs[i].is_equal(x)) return i;
-    return xs.size();
 }
 
 // the symbol must be a time-varying variable of the table; `role` names it in messages

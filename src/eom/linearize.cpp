@@ -7,24 +7,20 @@
 #include "alembert/error.hpp"
 #include "alembert/sym/print.hpp"
 #include "alembert/sym/simplify.hpp"
+#include "expression_lists.hpp"
 
 namespace alembert {
 
 namespace {
 
-const std::string kFn = "linearize(): ";
+using detail::contains;
+using detail::index_of;
 
-std::size_t index_of(const std::vector<ex>& xs, const ex& x) {
-    for (std::size_t i = 0; i < xs.size(); ++i)
-        if (xs[i].is_equal(x)) return i;
-    return xs.size();
-}
-
-bool contains(const std::vector<ex>& xs, const ex& x) { return index_of(xs, x) < xs.size(); }
+const std::string kLinearize = "linearize(): ";
 
 void require_symbol(const ex& x, const std::string& role) {
     if (!GiNaC::is_a<GiNaC::symbol>(x))
-        throw ArgumentError(kFn + role + " '" + to_string(x) + "' is not a symbol");
+        throw ArgumentError(kLinearize + role + " '" + to_string(x) + "' is not a symbol");
 }
 
 const GiNaC::symbol& sym(const ex& x) { return GiNaC::ex_to<GiNaC::symbol>(x); }
@@ -73,18 +69,18 @@ LinearizedEquations linearize(const SymbolTable& table, const FirstOrderEquation
     const std::vector<ex>& x = eqs.states;
     const std::size_t N = x.size();
     if (eqs.rates.size() != N)
-        throw ArgumentError(kFn + std::to_string(N) + " states and " +
+        throw ArgumentError(kLinearize + std::to_string(N) + " states and " +
                             std::to_string(eqs.rates.size()) + " rates; give one rate per state");
     for (std::size_t i = 0; i < N; ++i) {
         require_symbol(x[i], "state");
         require_symbol(eqs.rates[i], "rate");
         if (index_of(x, x[i]) != i)
-            throw ArgumentError(kFn + "state '" + to_string(x[i]) + "' is listed twice");
+            throw ArgumentError(kLinearize + "state '" + to_string(x[i]) + "' is listed twice");
     }
     for (const ex& r : options.inputs) {
         require_symbol(r, "input");
         if (contains(x, r) || contains(eqs.rates, r))
-            throw ArgumentError(kFn + "input '" + to_string(r) +
+            throw ArgumentError(kLinearize + "input '" + to_string(r) +
                                 "' is a state or a rate; inputs are specified functions or "
                                 "load measures");
     }
@@ -99,12 +95,12 @@ LinearizedEquations linearize(const SymbolTable& table, const FirstOrderEquation
         }
     const std::size_t F = free.size();
     if (eqs.residuals.size() != F)
-        throw ArgumentError(kFn + std::to_string(eqs.residuals.size()) + " residuals for " +
+        throw ArgumentError(kLinearize + std::to_string(eqs.residuals.size()) + " residuals for " +
                             std::to_string(F) +
                             " rates that are not states; give one equation per such rate");
     for (const auto& [key, value] : options.operating_point)
         if (contains(free, key))
-            throw ArgumentError(kFn + "the operating point gives a value for the rate '" +
+            throw ArgumentError(kLinearize + "the operating point gives a value for the rate '" +
                                 to_string(key) +
                                 "'; give the states only, the rates follow from the equations");
     const exmap& op = options.operating_point;
@@ -121,7 +117,7 @@ LinearizedEquations linearize(const SymbolTable& table, const FirstOrderEquation
             ex a = E[i].diff(sym(free[j]));
             for (const ex& r : free)
                 if (a.has(r))
-                    throw SolveError(kFn + "equation " + std::to_string(i + 1) +
+                    throw SolveError(kLinearize + "equation " + std::to_string(i + 1) +
                                      " is not linear in the rate '" + to_string(free[j]) +
                                      "' (its coefficient holds '" + to_string(r) + "')");
             M(i, j) = -a.subs(op);
@@ -129,9 +125,9 @@ LinearizedEquations linearize(const SymbolTable& table, const FirstOrderEquation
         b(i, 0) = E[i].subs(free0).subs(op);
     }
     const std::string singular =
-        std::string(kFn) + "the equations cannot be solved for the rates at the operating point "
-                           "(singular mass matrix there); choose another operating point or "
-                           "coordinates";
+        kLinearize +
+        "the equations cannot be solved for the rates at the operating point "
+        "(singular mass matrix there); choose another operating point or coordinates";
     GiNaC::matrix xf0 = detail::solve_by_blocks(M, b, free, singular);
     exmap at_op = op;  // states, inputs and rates at the operating point
     for (unsigned j = 0; j < F; ++j) at_op[free[j]] = xf0(j, 0);

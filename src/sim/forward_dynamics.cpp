@@ -12,6 +12,7 @@
 #include "alembert/eom/planner.hpp"
 #include "alembert/eom/statics.hpp"
 #include "alembert/error.hpp"
+#include "number_text.hpp"
 
 namespace alembert {
 
@@ -19,11 +20,7 @@ namespace {
 
 constexpr double kMinReciprocalCondition = 1e-13;
 
-std::string number(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.6g", v);
-    return buf;
-}
+using detail::number;
 
 }  // namespace
 

@@ -9,16 +9,13 @@
 #include "alembert/eom/planner.hpp"
 #include "alembert/eom/statics.hpp"
 #include "alembert/error.hpp"
+#include "number_text.hpp"
 
 namespace alembert {
 
 namespace {
 
-std::string number(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.6g", v);
-    return buf;
-}
+using detail::number;
 
 std::string printed(const ex& e) {
     std::ostringstream s;

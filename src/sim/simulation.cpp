@@ -14,6 +14,7 @@
 #include "alembert/sim/progress.hpp"
 #include "alembert/sym/print.hpp"
 #include "alembert/sym/simplify.hpp"
+#include "number_text.hpp"
 
 namespace alembert {
 
@@ -22,11 +23,7 @@ namespace {
 namespace odeint = boost::numeric::odeint;
 using State = std::vector<double>;
 
-std::string number(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.6g", v);
-    return buf;
-}
+using detail::number;
 
 // [t, q, q', x, inputs]: the inputs of output and event functions
 std::vector<ex> output_inputs(const StateLayout& layout) {

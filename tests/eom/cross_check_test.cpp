@@ -13,7 +13,7 @@ using namespace alembert;
 
 namespace {
 
-constexpr double kAgree = 1e-12;
+using alembert::test::kAgree;
 
 // every method agrees with the road-map, Newton–Euler included, and on trees the recursive
 // road-map rows and the articulated-body accelerations too

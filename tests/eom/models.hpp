@@ -9,6 +9,9 @@
 
 namespace alembert::test {
 
+/// The relative difference below which two methods' equations agree.
+inline constexpr double kAgree = 1e-12;
+
 /// A model with its coordinates and its unknown load measures (motor torques, forces).
 struct Model {
     System sys;

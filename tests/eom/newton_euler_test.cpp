@@ -18,7 +18,7 @@ using namespace alembert;
 
 namespace {
 
-constexpr double kAgree = 1e-12;
+using alembert::test::kAgree;
 
 // the solved values of `wanted` (a subset of the system's unknowns)
 std::vector<double> pick(const LinearSystem& L, const Eigen::VectorXd& x,

@@ -11,13 +11,14 @@
 #include <string>
 
 #include "alembert/lang/interpreter.hpp"
+#include "support/constants.hpp"
 
 namespace fs = std::filesystem;
 using namespace alembert::lang;
 
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180;
+using alembert::test::kDeg;
 
 std::string example(const std::string& name) {
     std::ifstream in(fs::path(ALEMBERT_SOURCE_DIR) / "examples" / name / "model.alb");

@@ -17,13 +17,14 @@
 #include "alembert/error.hpp"
 #include "alembert/lang/interpreter.hpp"
 #include "alembert/sim/table.hpp"
+#include "support/constants.hpp"
 
 namespace fs = std::filesystem;
 using namespace alembert::lang;
 
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180;
+using alembert::test::kDeg;
 
 // Winter's segment data of the sit-to-stand example (examples/sit_to_stand/model.alb)
 constexpr double g = 9.81, LA = 0.4182, LB = 0.4165, dA = 0.2371, dB = 0.2362, dC = 0.3065;

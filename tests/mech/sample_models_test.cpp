@@ -20,11 +20,7 @@ using GiNaC::pow;
 using GiNaC::sin;
 using alembert::test::same;
 
-// |a - b| within 1e-10 relative to max(1, |b|).
-::testing::AssertionResult near(double a, double b) {
-    if (std::abs(a - b) <= 1e-10 * std::max(1.0, std::abs(b))) return ::testing::AssertionSuccess();
-    return ::testing::AssertionFailure() << a << " != " << b << " (difference " << a - b << ")";
-}
+using alembert::test::near;
 
 // ---- the sit-to-stand triple pendulum --------------------------------------------------------
 

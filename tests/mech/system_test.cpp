@@ -27,11 +27,7 @@ using alembert::test::same;
 // d e / d s for a symbol s of the table.
 ex partial(const ex& e, const ex& s) { return e.diff(ex_to<symbol>(s)); }
 
-// |a - b| within 1e-10 relative to max(1, |b|).
-::testing::AssertionResult near(double a, double b) {
-    if (std::abs(a - b) <= 1e-10 * std::max(1.0, std::abs(b))) return ::testing::AssertionSuccess();
-    return ::testing::AssertionFailure() << a << " != " << b << " (difference " << a - b << ")";
-}
+using alembert::test::near;
 
 // ---- registry ------------------------------------------------------------------------------
 

@@ -9,12 +9,13 @@
 #include <numbers>
 
 #include "alembert/error.hpp"
+#include "support/constants.hpp"
 #include "support/expect.hpp"
 
 namespace alembert {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
+using test::kPi;
 
 // amplitude and lag (in samples) of the filtered sine, measured in the middle of a long record
 void response(double f, double fs, double fc, double& gain, double& lag) {

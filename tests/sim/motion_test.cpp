@@ -12,13 +12,14 @@
 #include <numbers>
 
 #include "alembert/error.hpp"
+#include "support/constants.hpp"
 #include "support/expect.hpp"
 
 namespace alembert {
 namespace {
 
 namespace fs = std::filesystem;
-constexpr double kDeg = std::numbers::pi / 180;
+using test::kDeg;
 
 TEST(PrescribedMotion, MinimumJerkHasTheTextbookValueRateAndAcceleration) {
     SymbolTable s;

@@ -14,12 +14,13 @@
 #include "alembert/mech/sample_models.hpp"
 #include "alembert/sim/inverse_dynamics.hpp"
 #include "alembert/sim/motion.hpp"
+#include "support/constants.hpp"
 #include "support/expect.hpp"
 
 namespace alembert {
 namespace {
 
-constexpr double kPi = std::numbers::pi;
+using test::kPi;
 
 TEST(Simulation, TriplePendulumReleasedFromRestConservesEnergy) {
     // acceptance: zero torques, 5 s at tolerance 1e-12, energy to 1e-9 relative

@@ -12,11 +12,12 @@
 
 #include "alembert/mech/sample_models.hpp"
 #include "alembert/sim/inverse_analysis.hpp"
+#include "support/constants.hpp"
 
 namespace alembert {
 namespace {
 
-constexpr double kDeg = std::numbers::pi / 180;
+using test::kDeg;
 constexpr double kL[3] = {0.4182, 0.4165, 0.4896}, kMass[3] = {6.51, 14.00, 47.46},
                  kD[3] = {0.2371, 0.2362, 0.3065}, kG = 9.81;
 

@@ -1,9 +1,12 @@
 // SPDX-License-Identifier: MIT
-// Test helpers: exception text checks and semantic equality of expressions and vectors.
+// Test helpers: exception text checks, semantic equality of expressions, vectors and columns,
+// numeric agreement.
 #pragma once
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <string>
 
 #include "alembert/sym/print.hpp"
@@ -47,6 +50,21 @@ inline ::testing::AssertionResult same(const Vector& a, const Vector& b, const F
                    << alembert::to_string(ca[i]) << "\n!=\n  " << alembert::to_string(cb[i])
                    << "\n  vectors: " << a << "\n      vs " << b;
     return ::testing::AssertionSuccess();
+}
+
+/// Semantic equality of two columns of measures, component by component.
+inline ::testing::AssertionResult same_col(const Col3& a, const Col3& b) {
+    for (int i = 0; i < 3; ++i) {
+        auto r = same(a[i], b[i]);
+        if (!r) return r << " (component " << i << ")";
+    }
+    return ::testing::AssertionSuccess();
+}
+
+/// |a - b| within 1e-10 relative to max(1, |b|).
+inline ::testing::AssertionResult near(double a, double b) {
+    if (std::abs(a - b) <= 1e-10 * std::max(1.0, std::abs(b))) return ::testing::AssertionSuccess();
+    return ::testing::AssertionFailure() << a << " != " << b << " (difference " << a - b << ")";
 }
 
 }  // namespace alembert::test

@@ -19,7 +19,7 @@ using test::same;
 
 /// Simple rotation matrix written out by hand, as a GiNaC matrix so that products in the
 /// tests use GiNaC's linear algebra rather than the library's.
-matrix rot(Axis a, const ex& q) {
+matrix rot_matrix(Axis a, const ex& q) {
     ex c = cos(q), s = sin(q);
     switch (a) {
         case Axis::x:
@@ -63,8 +63,10 @@ struct Tree {
         A.orient_body_fixed(N, RotationSequence::XYZ, q1, q2, q3);
         B.orient_axis(N, Axis::y, q4);
     }
-    matrix R_NA() const { return rot(Axis::x, q1).mul(rot(Axis::y, q2)).mul(rot(Axis::z, q3)); }
-    matrix R_NB() const { return rot(Axis::y, q4); }
+    matrix R_NA() const {
+        return rot_matrix(Axis::x, q1).mul(rot_matrix(Axis::y, q2)).mul(rot_matrix(Axis::z, q3));
+    }
+    matrix R_NB() const { return rot_matrix(Axis::y, q4); }
     Vector a() const { return a1 * A.x() + a2 * B.y() + a3 * N.z(); }
     Vector b() const { return b1 * B.z() + b2 * A.y() + b3 * N.x(); }
     Vector c() const { return c1 * N.y() + c2 * A.z() + c3 * B.x(); }

@@ -43,13 +43,7 @@ std::array<Col3, 3> hand_unit_vectors(Axis axis, const ex& q) {
     return {Col3{{c, s, 0}}, Col3{{-s, c, 0}}, Col3{{0, 0, 1}}};
 }
 
-::testing::AssertionResult same_col(const Col3& a, const Col3& b) {
-    for (int i = 0; i < 3; ++i) {
-        auto r = same(a[i], b[i]);
-        if (!r) return r << " (component " << i << ")";
-    }
-    return ::testing::AssertionSuccess();
-}
+using test::same_col;
 
 TEST(Rotation, SimpleRotationsAreOrthonormalWithUnitDeterminant) {
     std::mt19937 rng(20240611);

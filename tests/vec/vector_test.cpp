@@ -21,13 +21,7 @@ using GiNaC::cos;
 using GiNaC::sin;
 using test::same;
 
-::testing::AssertionResult same_col(const Col3& a, const Col3& b) {
-    for (int i = 0; i < 3; ++i) {
-        auto r = same(a[i], b[i]);
-        if (!r) return r << " (component " << i << ")";
-    }
-    return ::testing::AssertionSuccess();
-}
+using test::same_col;
 
 /// A is N turned by q about Nz> = Az>: Ax> = c Nx> + s Ny>, Ay> = -s Nx> + c Ny>.
 struct Planar {
