@@ -11,7 +11,9 @@ namespace {
 
 using namespace alembert;
 
-enum class Method { roadmap, kane, lagrange };
+// tree: the recursive rows and the articulated-body accelerations (both formed; the rows are
+// what the counters measure)
+enum class Method { roadmap, kane, lagrange, tree };
 
 std::vector<ex> form(const SampleModel& m, Method method) {
     std::vector<ex> acc;
@@ -24,6 +26,7 @@ std::vector<ex> form(const SampleModel& m, Method method) {
         }
         case Method::kane: return form_kane_equations(m.system, m.q);
         case Method::lagrange: return form_lagrange_equations(m.system, m.q);
+        case Method::tree: return form_tree_equations(m.system, m.q).residuals;
     }
     return {};
 }
@@ -58,6 +61,8 @@ void BM_PlanarLagrange(benchmark::State& s) { run(s, ChainKind::planar, Method::
 void BM_SpatialKane(benchmark::State& s) { run(s, ChainKind::spatial, Method::kane); }
 void BM_SpatialRoadmap(benchmark::State& s) { run(s, ChainKind::spatial, Method::roadmap); }
 void BM_SpatialLagrange(benchmark::State& s) { run(s, ChainKind::spatial, Method::lagrange); }
+void BM_PlanarTree(benchmark::State& s) { run(s, ChainKind::planar, Method::tree); }
+void BM_SpatialTree(benchmark::State& s) { run(s, ChainKind::spatial, Method::tree); }
 
 }  // namespace
 
@@ -67,5 +72,8 @@ BENCHMARK(BM_PlanarLagrange)->Arg(1)->Arg(2)->Arg(4)->Arg(6)->Arg(8)->Unit(bench
 BENCHMARK(BM_SpatialKane)->Arg(1)->Arg(2)->Arg(4)->Arg(6)->Arg(8)->Arg(10)->Arg(12)->Arg(16)->Arg(20)->Arg(30)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SpatialRoadmap)->Arg(1)->Arg(2)->Arg(4)->Arg(6)->Arg(8)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_SpatialLagrange)->Arg(1)->Arg(2)->Arg(4)->Arg(6)->Arg(8)->Unit(benchmark::kMillisecond);
+
+BENCHMARK(BM_PlanarTree)->Arg(4)->Arg(8)->Arg(16)->Arg(30)->Unit(benchmark::kMillisecond);
+BENCHMARK(BM_SpatialTree)->Arg(4)->Arg(8)->Arg(16)->Arg(30)->Unit(benchmark::kMillisecond);
 
 BENCHMARK_MAIN();
