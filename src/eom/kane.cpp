@@ -55,7 +55,6 @@ std::vector<ex> active_forces(const System& sys, const std::vector<TimeVariable>
 std::vector<ex> form_generalized_active_forces(const System& sys,
                                                const std::vector<TimeVariable>& q,
                                                LoadSelection which) {
-    if (which == LoadSelection::loads_only) return active_forces(sys, q, false, true);
     bool all = which == LoadSelection::all;
     return active_forces(sys, q, all, all);
 }

@@ -6,9 +6,9 @@
 #include <array>
 #include <optional>
 
-#include "alembert/eom/kane.hpp"
 #include "alembert/error.hpp"
 #include "alembert/sym/print.hpp"
+#include "alembert/sym/simplify.hpp"
 
 namespace alembert {
 
@@ -83,6 +83,7 @@ struct Node {
     Col3 r{};                      // r^{O/O_P} in P
     Col3 v_rel{}, a_rel{};         // ^P v^O, ^P a^O in P
     Col3 w_rel{}, al_rel{};        // ^P w^B, ^P alpha^B in B
+    Vector w_rel_v{}, v_rel_v{};   // ^P w^B and ^P v^O as formed (frames as declared)
     Col3 c{};                      // r^{Bcm/O} in B
     Mat3 I{};                      // I^{B/Bcm} in B
     ex m = 0;
@@ -180,10 +181,13 @@ Tree extract_tree(const System& sys, const std::vector<TimeVariable>& q) {
         try {
             if (b.frame()) {
                 n.R = b.frame()->rotation_in(FP);
-                n.w_rel = b.frame()->ang_vel_in(FP).components_in(*n.frame);
+                n.w_rel_v = b.frame()->ang_vel_in(FP);
+                n.w_rel = n.w_rel_v.components_in(*n.frame);
                 n.al_rel = b.frame()->ang_acc_in(FP).components_in(*n.frame);
             }
-            n.r = n.joint.origin->pos_from(OP).components_in(FP);
+            const Vector r = n.joint.origin->pos_from(OP);
+            n.r = r.components_in(FP);
+            n.v_rel_v = r.dt_in(FP);
         } catch (const Error& e) {
             t.why_not = "the motion of '" + b.name() + "' relative to its parent cannot be " +
                         "formed (" + e.what() + ")";
@@ -299,6 +303,49 @@ std::vector<std::vector<ex>> named_inverse(std::vector<std::vector<ex>> D, const
     return X;
 }
 
+// The generalized active forces F_r of the loads (gravity is in the base acceleration). For a
+// coordinate of joint J only the bodies beyond J move, all with J's partial angular velocity
+// w_r, so a load on such a body contributes w_r . T (a torque) or (w_r x r^{P/O_J} + v_r) . F
+// (a force at P), with v_r the partial velocity of J's origin. Torques exerted by a body beyond
+// J on another are left out: with their reactions they contribute w_r . T - w_r . T = 0. So a
+// joint's motor torque enters its own row with the coefficient of its axis, and no other
+// row: the load coefficients stay exact numbers.
+std::vector<ex> tree_active_forces(const System& sys, const std::vector<TimeVariable>& q,
+                                   const std::vector<Node>& nodes) {
+    std::vector<ex> F(q.size(), 0);
+    auto node_of = [&](const Body* b) {
+        for (std::size_t k = 0; k < nodes.size(); ++k)
+            if (nodes[k].joint.body == b) return static_cast<int>(k);
+        return -1;
+    };
+    auto beyond = [&](int k, int J) {  // k is J or a descendant of J
+        for (; k >= 0; k = nodes[static_cast<std::size_t>(k)].parent)
+            if (k == J) return true;
+        return false;
+    };
+    for (const Load& l : sys.loads()) {
+        const int on = node_of(l.on), from = l.from ? node_of(l.from) : -1;
+        if (on < 0 || (l.kind == LoadKind::torque && !l.on->frame())) continue;
+        for (int J = on; J >= 0; J = nodes[static_cast<std::size_t>(J)].parent) {
+            const Node& n = nodes[static_cast<std::size_t>(J)];
+            if (l.kind == LoadKind::torque && from >= 0 && beyond(from, J)) continue;
+            if (n.joint.coordinates.empty()) continue;
+            const Vector r = l.kind == LoadKind::force ? l.point->pos_from(*n.joint.origin) : Vector();
+            for (std::size_t j : n.joint.coordinates) {
+                const ex& u = q[j].d(1);
+                const Vector w_r = n.w_rel_v.diff(u);
+                // each term is a few products of one joint's sines and cosines: simplified,
+                // an axis dotted with itself is 1, not sin^2 + cos^2
+                if (l.kind == LoadKind::torque)
+                    F[j] += trig_simplify(dot(w_r, l.vector));
+                else
+                    F[j] += trig_simplify(dot(cross(w_r, r) + n.v_rel_v.diff(u), l.vector));
+            }
+        }
+    }
+    return F;
+}
+
 }  // namespace
 
 std::string explain_not_tree(const System& sys, const std::vector<TimeVariable>& q) {
@@ -380,7 +427,7 @@ TreeEquations form_tree_equations(const System& sys, const std::vector<TimeVaria
                 fk = fk + transpose(X[static_cast<std::size_t>(ch)]) * f[static_cast<std::size_t>(ch)];
             f[k] = name(fk);
         }
-        std::vector<ex> F = form_generalized_active_forces(sys, q, LoadSelection::loads_only);
+        std::vector<ex> F = tree_active_forces(sys, q, nodes);
         for (std::size_t k = 0; k < nb; ++k)
             for (std::size_t i = 0; i < nodes[k].joint.coordinates.size(); ++i) {
                 std::size_t j = nodes[k].joint.coordinates[i];

@@ -122,3 +122,20 @@ TEST(TreeEquations, SizeGrowsLinearlyWithTheChain) {
     EXPECT_LT(rows[2], 50u * 32) << rows[2];
     EXPECT_LT(acc[2], 130u * 32) << acc[2];
 }
+
+// A joint's motor torque (a torque pair between the body and its parent) enters its own rows
+// with the coefficient of its axis and no other row: in the spatial chain's two-axis joints,
+// Tz about the parent's z and Tx about the body's x, the coefficients are exactly 1 and 0 (the
+// pair's two halves cancel in the rows of the joints below, by construction rather than by
+// simplification), so inverse dynamics needs no symbolic solve.
+TEST(TreeEquations, MotorTorquesEnterTheirOwnRowsWithExactCoefficients) {
+    SampleModel m = make_n_link_pendulum(4, ChainKind::spatial);
+    TreeEquations tree = form_tree_equations(m.system, m.q);
+    ASSERT_EQ(m.unknowns.size(), tree.residuals.size());
+    for (std::size_t r = 0; r < tree.residuals.size(); ++r)
+        for (std::size_t u = 0; u < m.unknowns.size(); ++u) {
+            const ex coefficient = tree.residuals[r].diff(GiNaC::ex_to<GiNaC::symbol>(m.unknowns[u]));
+            EXPECT_TRUE(coefficient.is_equal(r == u ? 1 : 0))
+                << "row " << r << ", " << m.unknowns[u] << ": " << coefficient;
+        }
+}

@@ -26,8 +26,6 @@ std::vector<ex> form_kane_equations(const System& sys, const std::vector<TimeVar
 enum class LoadSelection {
     all,              ///< every load and gravity (Kane's F_r; statics: F_r = 0)
     nonconservative,  ///< only loads without a potential (Lagrange's Q_r)
-    loads_only,       ///< every load, gravity left out (recursions that put it in the base
-                      ///< acceleration, alembert::form_tree_equations)
 };
 
 /// The generalized active forces F_r = sum v_r . F + w_r . T with u_r = q_r'.

@@ -35,7 +35,8 @@ struct TreeEquations {
     /// where F*^S and M*^{S/O} (the system's inertia force and moment about O, gravity
     /// included) are accumulated from the tip inward, each joint's from its children's, and
     /// dw_r, dv_r are the joint's partial angular velocity and partial velocity of O. F_r is the
-    /// generalized active force of the loads (LoadSelection::loads_only). The rows equal Kane's
+    /// generalized active force of the loads external to S (gravity is in the inertia terms);
+    /// a joint's motor torque enters its own rows only, with exact number coefficients. The rows equal Kane's
     /// equations with u = q' and are linear in q'' and the loads; each body's kinematics,
     /// inertia forces and accumulated sums are named intermediates, so their size grows
     /// linearly in the number of bodies.
