@@ -115,19 +115,18 @@ std::vector<GeneratedFile> MatlabEmitter::emit(const CodePlan& plan) const {
     // ---- forward dynamics and the right-hand side for ode45 --------------------------------------
     {
         std::ostringstream b;
-        if (!plan.accelerations.empty())
-            b << "qpp = " << N << "_accelerations(t, q, qp, u, ctx);\n";
-        else
-            b << "[M, f] = " << N << "_mass_forcing(t, q, qp, u, ctx);\n";
         if (!plan.accelerations.empty()) {
-            // nothing to solve
-        } else if (plan.symmetric_mass_matrix)
-            b << "[R, failed] = chol(M);  % M = R'*R\n"
-              << "if failed\n    error('" << N << ":singular', '" << N
-              << "_forward_dynamics: the mass matrix is not positive definite at t = %g', t);\n"
-              << "end\nqpp = R \\ (R' \\ f);\n";
-        else
-            b << "qpp = M \\ f;\n";
+            b << "qpp = " << N << "_accelerations(t, q, qp, u, ctx);\n";
+        } else {
+            b << "[M, f] = " << N << "_mass_forcing(t, q, qp, u, ctx);\n";
+            if (plan.symmetric_mass_matrix)
+                b << "[R, failed] = chol(M);  % M = R'*R\n"
+                  << "if failed\n    error('" << N << ":singular', '" << N
+                  << "_forward_dynamics: the mass matrix is not positive definite at t = %g', t);\n"
+                  << "end\nqpp = R \\ (R' \\ f);\n";
+            else
+                b << "qpp = M \\ f;\n";
+        }
         file(N + "_forward_dynamics", "qpp = " + N + "_forward_dynamics(t, q, qp, u, ctx)",
              plan.accelerations.empty()
                  ? std::string("The accelerations qpp = M^-1 f (") +

@@ -111,20 +111,19 @@ std::vector<GeneratedFile> PythonEmitter::emit(const CodePlan& plan) const {
     // ---- forward dynamics, the right-hand side, the simulation ------------------------------
     const SimulationSpec& sim = plan.simulation_spec;
     os << "\n\ndef forward_dynamics(t, q, qp, u, ctx):\n";
-    if (!plan.accelerations.empty())
+    if (!plan.accelerations.empty()) {
         os << "    \"\"\"The accelerations qpp (articulated-body recursion).\"\"\"\n"
            << "    return accelerations(t, q, qp, u, ctx)\n";
-    else
+    } else {
         os << "    \"\"\"The accelerations qpp = M^-1 f ("
            << (plan.symmetric_mass_matrix ? "Cholesky" : "LU") << ").\"\"\"\n"
            << "    M, f = mass_forcing(t, q, qp, u, ctx)\n";
-    if (!plan.accelerations.empty()) {
-        // nothing to solve
-    } else if (plan.symmetric_mass_matrix)
-        os << "    L = np.linalg.cholesky(M)  # M = L L^T; LinAlgError if M is not positive definite\n"
-           << "    return np.linalg.solve(L.T, np.linalg.solve(L, f))\n";
-    else
-        os << "    return np.linalg.solve(M, f)\n";
+        if (plan.symmetric_mass_matrix)
+            os << "    L = np.linalg.cholesky(M)  # M = L L^T; LinAlgError if M is not positive definite\n"
+               << "    return np.linalg.solve(L.T, np.linalg.solve(L, f))\n";
+        else
+            os << "    return np.linalg.solve(M, f)\n";
+    }
     os << "\n\ndef rhs(t, x, ctx):\n"
        << "    \"\"\"x' = [qp, qpp] for x = [q, qp], with the loads of load_laws.\"\"\"\n"
        << "    q, qp = x[:NQ], x[NQ:]\n"

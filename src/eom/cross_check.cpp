@@ -134,10 +134,9 @@ MethodComparison compare_methods(const System& sys, const std::vector<TimeVariab
     // trees: the road-map rows accumulated from the tip inward, and the articulated-body
     // accelerations
     std::vector<ExplicitMethod> explicit_methods;
-    if (explain_not_tree(sys, q).empty()) {
-        TreeEquations tree = form_tree_equations(sys, q);
-        methods.emplace_back("recursive road-map", st, tree.residuals, acc, state);
-        explicit_methods.emplace_back("articulated body", st, tree.accelerations, state);
+    if (std::optional<TreeEquations> tree = form_tree_equations_if_tree(sys, q)) {
+        methods.emplace_back("recursive road-map", st, tree->residuals, acc, state);
+        explicit_methods.emplace_back("articulated body", st, tree->accelerations, state);
     }
     const std::size_t count = methods.size() + explicit_methods.size();
     MethodComparison out{{}, states, 0, std::vector<double>(count, 0.0)};

@@ -94,6 +94,13 @@ struct Tree {
     std::string why_not;
 };
 
+// the index of b's node, or -1
+int node_of(const std::vector<Node>& nodes, const Body* b) {
+    for (std::size_t k = 0; k < nodes.size(); ++k)
+        if (nodes[k].joint.body == b) return static_cast<int>(k);
+    return -1;
+}
+
 const Point* topmost_own_point(const Body& b) {
     const Point* O = &b.cm();
     while (O->located_from() && O->located_from()->owner() == &b) O = O->located_from();
@@ -188,15 +195,13 @@ Tree extract_tree(const System& sys, const std::vector<TimeVariable>& q) {
             const Vector r = n.joint.origin->pos_from(OP);
             n.r = r.components_in(FP);
             n.v_rel_v = r.dt_in(FP);
+            n.v_rel = n.v_rel_v.components_in(FP);
         } catch (const Error& e) {
             t.why_not = "the motion of '" + b.name() + "' relative to its parent cannot be " +
                         "formed (" + e.what() + ")";
             return t;
         }
-        for (int i = 0; i < 3; ++i) {
-            n.v_rel[i] = st.dt(n.r[i]);
-            n.a_rel[i] = st.dt(n.v_rel[i]);
-        }
+        for (int i = 0; i < 3; ++i) n.a_rel[i] = st.dt(n.v_rel[i]);
         for (std::size_t j = 0; j < q.size(); ++j) {
             bool moves = false;
             for (int i = 0; i < 3 && !moves; ++i)
@@ -313,18 +318,13 @@ std::vector<std::vector<ex>> named_inverse(std::vector<std::vector<ex>> D, const
 std::vector<ex> tree_active_forces(const System& sys, const std::vector<TimeVariable>& q,
                                    const std::vector<Node>& nodes) {
     std::vector<ex> F(q.size(), 0);
-    auto node_of = [&](const Body* b) {
-        for (std::size_t k = 0; k < nodes.size(); ++k)
-            if (nodes[k].joint.body == b) return static_cast<int>(k);
-        return -1;
-    };
     auto beyond = [&](int k, int J) {  // k is J or a descendant of J
         for (; k >= 0; k = nodes[static_cast<std::size_t>(k)].parent)
             if (k == J) return true;
         return false;
     };
     for (const Load& l : sys.loads()) {
-        const int on = node_of(l.on), from = l.from ? node_of(l.from) : -1;
+        const int on = node_of(nodes, l.on), from = l.from ? node_of(nodes, l.from) : -1;
         if (on < 0 || (l.kind == LoadKind::torque && !l.on->frame())) continue;
         for (int J = on; J >= 0; J = nodes[static_cast<std::size_t>(J)].parent) {
             const Node& n = nodes[static_cast<std::size_t>(J)];
@@ -346,17 +346,8 @@ std::vector<ex> tree_active_forces(const System& sys, const std::vector<TimeVari
     return F;
 }
 
-}  // namespace
-
-std::string explain_not_tree(const System& sys, const std::vector<TimeVariable>& q) {
-    return extract_tree(sys, q).why_not;
-}
-
-TreeEquations form_tree_equations(const System& sys, const std::vector<TimeVariable>& q) {
-    Tree tree = extract_tree(sys, q);
-    if (!tree.why_not.empty())
-        throw ModelError(std::string(kWho) + ": not a tree the recursion handles: " + tree.why_not +
-                         "; form Kane's, Lagrange's or the road-map's equations instead");
+// The rows and the accelerations of a tree extract_tree found.
+TreeEquations form_on_tree(const System& sys, const std::vector<TimeVariable>& q, Tree& tree) {
     SymbolTable& st = sys.newtonian().symbols();
     const Namer name(st);
     std::vector<Node>& nodes = tree.nodes;
@@ -441,9 +432,9 @@ TreeEquations form_tree_equations(const System& sys, const std::vector<TimeVaria
         // loads on each body about its origin, in its frame (gravity is in the base)
         std::vector<Spatial> fext(nb);
         for (const Load& l : sys.loads()) {
-            std::size_t k = 0;
-            while (k < nb && nodes[k].joint.body != l.on) ++k;
-            if (k == nb) continue;
+            const int on = node_of(nodes, l.on);
+            if (on < 0) continue;
+            const auto k = static_cast<std::size_t>(on);
             const Frame& B = *nodes[k].frame;
             if (l.kind == LoadKind::force) {
                 Col3 F = l.vector.components_in(B);
@@ -525,6 +516,27 @@ TreeEquations form_tree_equations(const System& sys, const std::vector<TimeVaria
     out.residuals = std::move(residuals);
     out.accelerations = std::move(accelerations);
     return out;
+}
+
+}  // namespace
+
+std::string explain_not_tree(const System& sys, const std::vector<TimeVariable>& q) {
+    return extract_tree(sys, q).why_not;
+}
+
+TreeEquations form_tree_equations(const System& sys, const std::vector<TimeVariable>& q) {
+    Tree tree = extract_tree(sys, q);
+    if (!tree.why_not.empty())
+        throw ModelError(std::string(kWho) + ": not a tree the recursion handles: " + tree.why_not +
+                         "; form Kane's, Lagrange's or the road-map's equations instead");
+    return form_on_tree(sys, q, tree);
+}
+
+std::optional<TreeEquations> form_tree_equations_if_tree(const System& sys,
+                                                         const std::vector<TimeVariable>& q) {
+    Tree tree = extract_tree(sys, q);
+    if (!tree.why_not.empty()) return std::nullopt;
+    return form_on_tree(sys, q, tree);
 }
 
 }  // namespace alembert

@@ -507,11 +507,11 @@ void Interpreter::Impl::run_codegen(const CodegenRequest& r, Location where) {
     }
     // a tree of bodies in relative coordinates: the recursive formation (linear in the number
     // of bodies, forward dynamics with no solve); otherwise Kane's equations with their M
-    const bool tree = explain_not_tree(sys, q).empty();
+    bool tree = false;
     GeneratedCode g = guard(where, [&] {
-        if (tree) {
-            TreeEquations t = form_tree_equations(sys, q);
-            DynamicsEquations eqs{q, t.residuals, loads, std::nullopt, t.accelerations};
+        if (std::optional<TreeEquations> t = form_tree_equations_if_tree(sys, q)) {
+            tree = true;
+            DynamicsEquations eqs{q, t->residuals, loads, std::nullopt, t->accelerations};
             return generate_code(table, eqs, language, r.dir, opts);
         }
         KaneEquations k = form_kane_equations(sys, KaneOptions{.coordinates = q});

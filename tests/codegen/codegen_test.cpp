@@ -17,10 +17,7 @@ namespace {
 std::vector<double> run_generated(const CodegenCase& c, Language lang, const fs::path& dir,
                                   const std::vector<State>& states,
                                   const CodegenOptions& extra = {}, const std::string& setup = "") {
-    CodegenOptions o = extra;
-    o.name = c.name;
-    o.outputs = c.outputs;
-    GeneratedCode g = generate_code(c.table(), c.equations, lang, dir, o);
+    GeneratedCode g = generate_case(c, lang, dir, extra);
     EXPECT_TRUE(g.inverse_dynamics);
     std::string out;
     std::string cmd;

@@ -88,6 +88,15 @@ inline CodegenCase tree_chain_case(int n, ChainKind kind) {
     return c;
 }
 
+/// Generates `lang` for the case into `dir`, named after the case and with its outputs (the
+/// other options from `o`).
+inline GeneratedCode generate_case(const CodegenCase& c, Language lang, const fs::path& dir,
+                                   CodegenOptions o = {}) {
+    o.name = c.name;
+    o.outputs = c.outputs;
+    return generate_code(c.table(), c.equations, lang, dir, o);
+}
+
 /// One state: t, q, q', q'' and loads u.
 struct State {
     double t;

@@ -34,9 +34,7 @@ TEST(GeneratedPython, AgreesWithTheEvaluatorAtRandomStates) {
     cases.push_back(tree_chain_case(3, ChainKind::spatial));
     for (const CodegenCase& c : cases) {
         ScratchDir dir("py-" + c.name);
-        CodegenOptions o{.name = c.name};
-        o.outputs = c.outputs;
-        generate_code(c.table(), c.equations, Language::python, dir.path(), o);
+        generate_case(c, Language::python, dir.path());
         std::vector<State> states = random_states(c, 5, 13);
         write(dir.path() / "driver.py", python_driver(c.name, dir.path().string()));
         write(dir.path() / "states.txt", driver_input(states));
@@ -85,9 +83,7 @@ TEST(GeneratedMatlab, AgreesWithTheEvaluatorUnderOctave) {
     cases.push_back(tree_chain_case(3, ChainKind::spatial));
     for (const CodegenCase& c : cases) {
         ScratchDir dir("m-" + c.name);
-        CodegenOptions o{.name = c.name};
-        o.outputs = c.outputs;
-        generate_code(c.table(), c.equations, Language::matlab, dir.path(), o);
+        generate_case(c, Language::matlab, dir.path());
         std::vector<State> states = random_states(c, 4, 17);
         std::string rows;
         for (const State& s : states) {

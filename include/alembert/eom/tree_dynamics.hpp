@@ -3,6 +3,7 @@
 // joints (inverse dynamics in O(n)) and the articulated-body accelerations (O(n) forward dynamics).
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -62,5 +63,10 @@ std::string explain_not_tree(const System& sys, const std::vector<TimeVariable>&
 /// operations per link, its forward dynamics about a hundred).
 /// @throws alembert::ModelError with explain_not_tree's reason if the model is not such a tree.
 TreeEquations form_tree_equations(const System& sys, const std::vector<TimeVariable>& q);
+
+/// The same equations, or nothing where explain_not_tree would give a reason: for callers that
+/// fall back to other methods, with the tree found once.
+std::optional<TreeEquations> form_tree_equations_if_tree(const System& sys,
+                                                         const std::vector<TimeVariable>& q);
 
 }  // namespace alembert
