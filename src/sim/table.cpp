@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <cerrno>
+#include <charconv>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -79,8 +80,23 @@ std::size_t Table::column_index(const std::string& name) const {
     throw ArgumentError("the table has no column '" + name + "'; its columns are: " + list);
 }
 
-void write_csv(const Table& table, const std::string& path) {
+std::string format_csv_number(double v, int digits) {
+    char buf[40];
+    if (digits == 0) {
+        // the shortest text that reads back as the same double
+        auto [end, ec] = std::to_chars(buf, buf + sizeof buf, v);
+        return ec == std::errc{} ? std::string(buf, end) : std::string("nan");
+    }
+    std::snprintf(buf, sizeof buf, "%.*g", digits, v);
+    return buf;
+}
+
+void write_csv(const Table& table, const std::string& path, int digits) {
     namespace fs = std::filesystem;
+    if (digits < 0 || digits > 17)
+        throw ArgumentError("write_csv(): " + std::to_string(digits) +
+                            " significant digits asked for '" + path +
+                            "'; give 1 to 17, or 0 for the shortest exact form");
     const fs::path target(path);
     const fs::path temporary =
         target.parent_path() /
@@ -98,8 +114,10 @@ void write_csv(const Table& table, const std::string& path) {
     std::fputc('\n', f);
     // rows
     for (std::size_t r = 0; r < table.row_count(); ++r) {
-        for (std::size_t c = 0; c < table.columns.size(); ++c)
-            std::fprintf(f, c ? ",%.12g" : "%.12g", table.columns[c][r]);
+        for (std::size_t c = 0; c < table.columns.size(); ++c) {
+            if (c) std::fputc(',', f);
+            std::fputs(format_csv_number(table.columns[c][r], digits).c_str(), f);
+        }
         std::fputc('\n', f);
     }
     const bool ok = std::ferror(f) == 0;
@@ -162,8 +180,9 @@ Table read_csv(const std::string& path) {
             char* end = nullptr;
             errno = 0;
             double v = std::strtod(s, &end);
-            if (cells[c].empty() || end != s + cells[c].size() || errno == ERANGE ||
-                !std::isfinite(v))
+            // ERANGE with a finite result is a subnormal number or an underflow to zero: kept
+            if (cells[c].empty() || end != s + cells[c].size() ||
+                (errno == ERANGE && std::fabs(v) > 1) || !std::isfinite(v))
                 throw ArgumentError(where + "cell " + std::to_string(c + 1) + " ('" +
                                     table.names[c] + "') is '" + cells[c] +
                                     "', not a finite number");

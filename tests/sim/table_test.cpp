@@ -6,7 +6,9 @@
 #include <unistd.h>
 
 #include <filesystem>
+#include <cmath>
 #include <fstream>
+#include <random>
 #include <numbers>
 
 #include "alembert/error.hpp"
@@ -56,6 +58,34 @@ TEST(Table, WritesAHeaderWithUnitsAndReadsItBack) {
     for (const auto& e : fs::directory_iterator(p.parent_path()))
         if (e.path().filename().string().find("round_trip") != std::string::npos) ++files;
     EXPECT_EQ(files, 1);
+}
+
+TEST(Table, CsvNumbersReadBackAsTheSameDoubles) {
+    // doubles of every size and awkward ones: a written table read back is exact
+    Table t;
+    t.add_column("t", "s");
+    t.add_column("x", "m");
+    std::mt19937_64 random(7);
+    std::uniform_real_distribution<double> mantissa(-1, 1);
+    std::uniform_int_distribution<int> exponent(-300, 300);
+    for (int k = 0; k < 2000; ++k) {
+        t.columns[0].push_back(0.01 * k);
+        t.columns[1].push_back(std::ldexp(mantissa(random), exponent(random)));
+    }
+    for (double v : {0.1 + 0.2, std::numbers::pi, 1.0 / 3, -0.0, 5e-324, 1.7976931348623157e308})
+        t.columns[0].push_back(v), t.columns[1].push_back(-v);
+    const fs::path p = scratch("exact.csv");
+    write_csv(t, p);
+    Table back = read_csv(p);
+    ASSERT_EQ(back.row_count(), t.row_count());
+    for (std::size_t c = 0; c < 2; ++c)
+        for (std::size_t r = 0; r < t.row_count(); ++r)
+            ASSERT_EQ(back.columns[c][r], t.columns[c][r]) << "column " << c << ", row " << r;
+    // short values stay short, and fewer digits round when asked for
+    EXPECT_EQ(format_csv_number(0.84), "0.84");
+    EXPECT_EQ(format_csv_number(0.1 + 0.2), "0.30000000000000004");
+    EXPECT_EQ(format_csv_number(std::numbers::pi, 4), "3.142");
+    EXPECT_THROW_MSG(write_csv(t, p, 18), ArgumentError, "give 1 to 17, or 0 for the shortest");
 }
 
 TEST(Table, BadRowsAreReportedWithFileAndLine) {

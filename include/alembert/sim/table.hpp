@@ -39,11 +39,18 @@ struct Table {
 };
 
 /// Writes `table` as CSV: a header row "name [unit]" per column (a name alone when the unit
-/// is empty), then one row per sample with 12 significant digits. The file is written to a
-/// temporary beside `path` and renamed, so readers never see half a file.
+/// is empty), then one row per sample. With `digits` 0 (the default) each number is written
+/// in the shortest form that reads back as the same double (at most 17 significant digits:
+/// 0.84 stays 0.84), so a table written and read again is exact; with `digits` from 1 to 17
+/// numbers are rounded to that many significant digits (printf's %.*g). The file is written
+/// to a temporary beside `path` and renamed, so readers never see half a file.
 /// @throws alembert::ArgumentError naming the path if it cannot be written (directory
-///         missing, no permission).
-void write_csv(const Table& table, const std::string& path);
+///         missing, no permission), or if `digits` is outside 0..17.
+void write_csv(const Table& table, const std::string& path, int digits = 0);
+
+/// `v` as write_csv writes it: the shortest text that reads back as `v` when `digits` is 0,
+/// otherwise rounded to `digits` significant digits.
+std::string format_csv_number(double v, int digits = 0);
 
 /// Reads a CSV table as write_csv writes it: a header row of "name [unit]" cells (the unit
 /// optional), then rows of numbers, separated by commas; blank lines and lines starting with
