@@ -25,7 +25,11 @@ int main(int argc, char** argv) try {
         for (int j = 0; j < 3; ++j)
             table.columns[static_cast<std::size_t>(j) + 1].push_back(q[j] / deg.factor);
     }
-    write_csv(table, path);
+    // 12 significant digits, as a motion-capture export would have: the last bits of the
+    // formula's value depend on the order GiNaC sums its terms in, which is fixed for one
+    // program but may change when the program is rebuilt, and the shipped file is compared
+    // byte for byte with a fresh one
+    write_csv(table, path, 12);
     std::printf("wrote %zu samples at 100 Hz to %s\n", table.row_count(), path);
     return 0;
 } catch (const std::exception& e) {
