@@ -2,6 +2,7 @@
 // Linear systems from residuals, and their symbolic and numeric solution.
 #include "alembert/eom/equations.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -11,6 +12,58 @@
 #include "alembert/sym/simplify.hpp"
 
 namespace alembert {
+
+namespace {
+
+// Why a coefficient matrix (columns: the unknowns) is singular, in the user's names: an
+// unknown in no equation, or two unknowns that enter every equation in the same proportion
+// (the same torque on the same body twice, say), which no set of equations can tell apart.
+// Empty when the dependence is among three or more unknowns.
+template <class Matrix>
+std::string explain_dependent_unknowns(const Matrix& A, const std::vector<ex>& unknowns) {
+    const auto n = A.cols();
+    double scale = 0;
+    for (Eigen::Index j = 0; j < n; ++j) scale = std::max(scale, static_cast<double>(A.col(j).norm()));
+    const double tiny = 1e-12 * std::max(scale, 1e-300);
+    for (Eigen::Index j = 0; j < n; ++j)
+        if (static_cast<double>(A.col(j).norm()) <= tiny)
+            return "; '" + to_string(unknowns[static_cast<std::size_t>(j)]) +
+                   "' appears in no equation: choose equations that hold it";
+    for (Eigen::Index i = 0; i < n; ++i)
+        for (Eigen::Index j = i + 1; j < n; ++j) {
+            const double ni = static_cast<double>(A.col(i).norm()), nj = static_cast<double>(A.col(j).norm());
+            const double c = static_cast<double>(A.col(i).dot(A.col(j))) / (ni * nj);
+            if (std::fabs(c) > 1 - 1e-12)
+                return "; '" + to_string(unknowns[static_cast<std::size_t>(i)]) + "' and '" +
+                       to_string(unknowns[static_cast<std::size_t>(j)]) +
+                       "' enter every equation in the same proportion, so the equations cannot "
+                       "tell them apart (the same load declared twice?): make them one unknown, "
+                       "or give one of them a value";
+        }
+    return "";
+}
+
+// A with every symbol at a fixed pseudo-random value: a generic state, for explanations only
+Eigen::MatrixXd at_generic_state(const GiNaC::matrix& A) {
+    GiNaC::exset symbols;
+    for (unsigned i = 0; i < A.rows(); ++i)
+        for (unsigned j = 0; j < A.cols(); ++j)
+            for (const ex& x : symbols_of(A(i, j))) symbols.insert(x);
+    exmap at;
+    unsigned k = 0;
+    for (const ex& x : symbols) at[x] = 0.37 + 0.61 * std::fmod(0.754877666 * ++k, 1.0);
+    Eigen::MatrixXd out(A.rows(), A.cols());
+    for (unsigned i = 0; i < A.rows(); ++i)
+        for (unsigned j = 0; j < A.cols(); ++j) {
+            ex v = GiNaC::evalf(A(i, j).subs(at));
+            out(i, j) = GiNaC::is_a<GiNaC::numeric>(v) && GiNaC::ex_to<GiNaC::numeric>(v).is_real()
+                            ? GiNaC::ex_to<GiNaC::numeric>(v).to_double()
+                            : std::nan("");
+        }
+    return out;
+}
+
+}  // namespace
 
 LinearSystem form_linear_system(const std::vector<ex>& residuals, const std::vector<ex>& unknowns) {
     if (residuals.size() != unknowns.size())
@@ -51,8 +104,10 @@ std::vector<ex> solve_symbolic(const LinearSystem& sys) {
     try {
         x = sys.A.solve(vars, sys.b, GiNaC::solve_algo::gauss);
     } catch (const std::runtime_error& e) {
+        std::string why = explain_dependent_unknowns(at_generic_state(sys.A), sys.unknowns);
         throw SolveError(std::string("solve_symbolic(): the coefficient matrix is singular (") +
-                         e.what() + "); check that every unknown appears in the equations");
+                         e.what() + ")" +
+                         (why.empty() ? "; check that every unknown appears in the equations" : why));
     }
     std::vector<ex> out;
     for (unsigned i = 0; i < n; ++i) out.push_back(simplify(GiNaC::normal(x(i, 0))));
@@ -91,8 +146,14 @@ Eigen::VectorXd solve_numeric(const SymbolTable& table, const LinearSystem& sys,
     }
     std::string what = "solve_numeric(): the coefficient matrix for unknowns";
     for (const ex& x : sys.unknowns) what += " " + to_string(x);
-    return solve_extended(A, b, what + " at this state",
-                          "; the configuration may be singular (a locked or degenerate pose)");
+    try {
+        return solve_extended(A, b, what + " at this state", "");
+    } catch (const SolveError& e) {
+        // only now, on failure, look for the unknowns behind it
+        std::string why = explain_dependent_unknowns(A, sys.unknowns);
+        throw SolveError(e.what() +
+                         (why.empty() ? "; the configuration may be singular (a locked or degenerate pose)" : why));
+    }
 }
 
 Eigen::VectorXd solve_extended(const MatrixXld& A, const VectorXld& b, const std::string& what,

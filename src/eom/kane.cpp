@@ -60,6 +60,7 @@ std::vector<ex> form_generalized_active_forces(const System& sys,
 }
 
 std::vector<ex> form_kane_equations(const System& sys, const std::vector<TimeVariable>& q) {
+    detail::require_distinct_coordinates(q, "form_kane_equations()");
     const Frame& N = sys.newtonian();
     std::vector<ex> E = active_forces(sys, q, true, true);
     for (const Body* b : sys.bodies()) {

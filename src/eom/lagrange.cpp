@@ -3,10 +3,12 @@
 #include "alembert/eom/lagrange.hpp"
 
 #include "alembert/eom/kane.hpp"
+#include "expression_lists.hpp"
 
 namespace alembert {
 
 std::vector<ex> form_lagrange_equations(const System& sys, const std::vector<TimeVariable>& q) {
+    detail::require_distinct_coordinates(q, "form_lagrange_equations()");
     ex L = sys.calc_kinetic_energy(sys.bodies()) - sys.calc_potential_energy();
     std::vector<ex> Q = form_generalized_active_forces(sys, q, LoadSelection::nonconservative);
     SymbolTable& st = sys.newtonian().symbols();

@@ -47,3 +47,21 @@ TEST(LinearSystem, NumericSolveReportsSingularMatrices) {
     EXPECT_NEAR(v(0), 2.0, 1e-14);
     EXPECT_NEAR(v(1), -1.0, 1e-14);
 }
+
+TEST(LinearSystem, SingularSolvesNameTheUnknownsBehindThem) {
+    SymbolTable s;
+    TimeVariable q = s.add_variable("q");
+    ex I = s.add_constant("I", 0.5), T = s.add_unknown("T"), T2 = s.add_unknown("T2"),
+       F = s.add_unknown("F");
+    // the same torque declared twice: T and T2 enter both equations as T + T2
+    std::vector<ex> E{T + T2 - I * q.d(2), 3 * (T + T2) + GiNaC::sin(q.symbol())};
+    LinearSystem L = form_linear_system(E, {T, T2});
+    EXPECT_THROW_MSG(solve_symbolic(L), SolveError,
+                     "'T' and 'T2' enter every equation in the same proportion");
+    EXPECT_THROW_MSG(solve_numeric(s, L, {{q.symbol(), 0.3}, {q.d(2), 1.0}}), SolveError,
+                     "'T' and 'T2' enter every equation in the same proportion");
+    // an unknown in no equation
+    std::vector<ex> G{T - I * q.d(2), 2 * T + 1};
+    EXPECT_THROW_MSG(solve_symbolic(form_linear_system(G, {T, F})), SolveError,
+                     "'F' appears in no equation");
+}

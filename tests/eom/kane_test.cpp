@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Kane's method against equations derived by hand.
 #include "alembert/eom/kane.hpp"
+#include "alembert/eom/lagrange.hpp"
 
 #include "alembert/error.hpp"
 #include "alembert/mech/sample_models.hpp"
@@ -357,4 +358,18 @@ TEST(Kane, ErrorsNameTheObjectAndTheFix) {
     Q.point().set_pos(p.sys.origin(), z * p.sys.newtonian().z());
     EXPECT_THROW_MSG(form_kane_equations(p.sys, p.options()), ModelError,
                      "the velocity of point 'Q' in 'N' holds 'z''");
+}
+
+TEST(KaneAndLagrange, ACoordinateListedTwiceIsAnArgumentError) {
+    System sys("N");
+    SymbolTable& s = sys.symbols();
+    TimeVariable q = s.add_variable("q");
+    RigidBody& B = sys.add_rigid_body("B");
+    B.body_frame().orient_axis(sys.newtonian(), Axis::z, q);
+    B.cm().set_pos(sys.origin(), s.add_constant("L") * B.body_frame().x());
+    B.set_mass(s.add_constant("m"));
+    EXPECT_THROW_MSG(form_kane_equations(sys, {q, q}), ArgumentError,
+                     "form_kane_equations(): the coordinate 'q' is listed twice");
+    EXPECT_THROW_MSG(form_lagrange_equations(sys, {q, q}), ArgumentError,
+                     "form_lagrange_equations(): the coordinate 'q' is listed twice");
 }
