@@ -1,16 +1,50 @@
 // SPDX-License-Identifier: MIT
-// The registry of statements: complete, its examples parse, and help is driven from it.
+// The registry of statements: complete, its examples parse, and what is driven from it (help,
+// docs/language.md's tables) agrees with it.
 #include <gtest/gtest.h>
 
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
 #include <set>
+#include <sstream>
 #include <string>
 
 #include "alembert/lang/parser.hpp"
 #include "alembert/lang/statements.hpp"
 
+namespace fs = std::filesystem;
 using namespace alembert::lang;
 
 namespace {
+
+fs::path source_path(const std::string& relative) { return fs::path(ALEMBERT_SOURCE_DIR) / relative; }
+
+std::string read_source(const std::string& relative) {
+    std::ifstream in(source_path(relative), std::ios::binary);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+bool updating_generated_files() { return std::getenv("ALEMBERT_UPDATE_GOLDEN") != nullptr; }
+
+// the block of docs/language.md between `<!-- statements: FAMILY ...-->` and its end marker
+struct DocBlock {
+    std::size_t begin = std::string::npos;  // first byte after the opening marker's line
+    std::size_t end = std::string::npos;    // first byte of the closing marker
+};
+
+DocBlock find_doc_block(const std::string& doc, std::string_view family) {
+    DocBlock b;
+    std::string open = "<!-- statements: " + std::string(family) + " -->\n";
+    std::size_t at = doc.find(open);
+    if (at == std::string::npos) return b;
+    b.begin = at + open.size();
+    b.end = doc.find("<!-- end of statements -->", b.begin);
+    if (b.end == std::string::npos) b.begin = std::string::npos;
+    return b;
+}
 
 Statement parse_example(std::string_view example) {
     std::string text(example);
@@ -80,4 +114,33 @@ TEST(Statements, HelpOfOneStatementShowsItsFormsAsPlainTextWithExamples) {
     EXPECT_NE(statement_help("codegen").find("codegen c|cpp|matlab|python"), std::string::npos);
     EXPECT_EQ(statement_help("frobnicate"),
               "'frobnicate' is not a statement; type help for the list of statements\n");
+}
+
+TEST(Statements, DocsLanguageTablesAreGeneratedFromTheRegistry) {
+    const std::string relative = "docs/language.md";
+    std::string doc = read_source(relative);
+    ASSERT_FALSE(doc.empty()) << relative;
+    std::string updated = doc;
+    for (std::string_view family : statement_families()) {
+        DocBlock b = find_doc_block(updated, family);
+        ASSERT_NE(b.begin, std::string::npos)
+            << relative << " has no block '<!-- statements: " << family
+            << " -->' ... '<!-- end of statements -->' for the table of these statements";
+        // a blank line on each side of the table, so Markdown sees it apart from the markers
+        std::string want = "\n" + statement_table_markdown(family) + "\n";
+        std::string have = updated.substr(b.begin, b.end - b.begin);
+        if (have == want) continue;
+        if (updating_generated_files()) {
+            updated.replace(b.begin, b.end - b.begin, want);
+            continue;
+        }
+        ADD_FAILURE() << relative << ": the table of '" << family
+                      << "' statements differs from the registry (src/lang/statements*.cpp, "
+                         "interpreter_equations.cpp, interpreter_numbers.cpp); refresh it with "
+                         "ALEMBERT_UPDATE_GOLDEN=1 ctest -R Statements and review the diff.\nIt "
+                         "should read:\n"
+                      << want << "\nIt reads:\n"
+                      << have;
+    }
+    if (updated != doc) std::ofstream(source_path(relative), std::ios::binary) << updated;
 }
