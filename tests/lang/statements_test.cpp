@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // The registry of statements: complete, its examples parse, and what is driven from it (help,
-// docs/language.md's tables) agrees with it.
+// docs/language.md's tables, the fuzzer's dictionary) agrees with it.
 #include <gtest/gtest.h>
 
 #include <cstdlib>
@@ -143,4 +143,24 @@ TEST(Statements, DocsLanguageTablesAreGeneratedFromTheRegistry) {
                       << have;
     }
     if (updated != doc) std::ofstream(source_path(relative), std::ios::binary) << updated;
+}
+
+TEST(Statements, FuzzDictionaryIsGeneratedFromTheRegistry) {
+    const std::string relative = "tests/fuzz/alembert.dict";
+    std::string want = fuzz_dictionary();
+    if (read_source(relative) == want) return;
+    if (updating_generated_files()) {
+        std::ofstream(source_path(relative), std::ios::binary) << want;
+        return;
+    }
+    ADD_FAILURE() << relative << " differs from fuzz_dictionary() of the statement registry; refresh "
+                  << "it with ALEMBERT_UPDATE_GOLDEN=1 ctest -R Statements and review the diff";
+}
+
+TEST(Statements, FuzzDictionaryHoldsKeywordsClausesAndFunctions) {
+    std::string dict = fuzz_dictionary();
+    EXPECT_NE(dict.find("\"rotate \"\n"), std::string::npos);
+    EXPECT_NE(dict.find("\" stiffness \"\n"), std::string::npos);
+    EXPECT_NE(dict.find("\"minimum_jerk(\"\n"), std::string::npos);
+    EXPECT_NE(dict.find("\"simulate \"\n"), std::string::npos);
 }
