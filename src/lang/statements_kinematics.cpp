@@ -30,7 +30,7 @@ void parse_rotate(StatementParser& p, Statement& s) {
         p.expect_word("by", "and the angle (rotate B from A about z by q)");
         s.expr_lists["angles"].push_back(p.expression());
     } else if (p.at_word("body") || p.at_word("space")) {
-        s.words["kind"] = {p.next().text, p.peek().location};
+        s.words["kind"] = p.take_word();
         s.words["sequence"] = p.name("a rotation sequence such as XYZ or ZXZ");
         p.expect_word("by", "and three angles (rotate B from A body XYZ by q1, q2, q3)");
         s.expr_lists["angles"] = p.expression_list();
@@ -152,7 +152,7 @@ void run_frame_rate(Interpreter::Impl& m, const Statement& s) {
 // ---- constraint --------------------------------------------------------------------------
 
 void parse_constraint(StatementParser& p, Statement& s) {
-    if (p.at_word("configuration") || p.at_word("motion")) s.words["kind"] = {p.next().text, p.peek().location};
+    if (p.at_word("configuration") || p.at_word("motion")) s.words["kind"] = p.take_word();
     else p.fail_expected("'configuration' or 'motion'");
     s.words["name"] = p.name("a name for the constraint");
     p.expect_punct("=", "and the residual (constraint configuration c = expression)");

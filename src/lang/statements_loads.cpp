@@ -148,7 +148,7 @@ void parse_drag(StatementParser& p, Statement& s) {
     s.words["label"] = p.name("a label");
     p.expect_word("on", "(drag air on P linear c)");
     s.words["on"] = p.name("a point");
-    if (p.at_word("linear") || p.at_word("quadratic")) s.words["law"] = {p.next().text, p.peek().location};
+    if (p.at_word("linear") || p.at_word("quadratic")) s.words["law"] = p.take_word();
     else p.fail_expected("'linear' or 'quadratic'");
     s.exprs["coefficient"] = p.expression();
 }
