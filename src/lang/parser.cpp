@@ -56,9 +56,14 @@ struct DepthGuard {
 }  // namespace
 
 void StatementParser::fail_expected(const std::string& what) const {
-    std::string hint;
-    if (!keyword_.empty() && keyword_ != "=")
-        hint = "see docs/language.md for the form of '" + keyword_ + "' statements";
+    // the hint shows the statement's forms, from the registry
+    std::string hint, forms = keyword_.empty() ? std::string() : statement_forms(keyword_, "    ");
+    if (!forms.empty()) {
+        bool one = forms.find('\n') + 1 == forms.size();
+        hint = "'" + keyword_ + "' takes " + (one ? "this form" : "one of these forms") +
+               " (docs/language.md; help " + keyword_ + " in a session):\n" +
+               forms.substr(0, forms.size() - 1);
+    }
     throw ScriptError(peek().location, "expected " + what + ", found " + describe(peek()), hint);
 }
 

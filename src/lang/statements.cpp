@@ -114,6 +114,13 @@ std::string statement_help(std::string_view keyword) {
     return out;
 }
 
+std::string statement_forms(std::string_view keyword, std::string_view indent) {
+    std::string out;
+    if (const StatementSpec* s = find_statement(keyword))
+        for (const StatementForm& f : s->forms) out += std::string(indent) + plain_text(f.grammar) + "\n";
+    return out;
+}
+
 std::string statement_table_markdown(std::string_view family) {
     std::string out = "| statement | example | library call |\n|---|---|---|\n";
     for (const StatementSpec& s : statements()) {

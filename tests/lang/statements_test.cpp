@@ -164,3 +164,23 @@ TEST(Statements, FuzzDictionaryHoldsKeywordsClausesAndFunctions) {
     EXPECT_NE(dict.find("\"minimum_jerk(\"\n"), std::string::npos);
     EXPECT_NE(dict.find("\"simulate \"\n"), std::string::npos);
 }
+
+TEST(Statements, ASyntaxErrorsHintShowsTheStatementsForms) {
+    try {
+        parse_example("translate P to O by r>");
+        ADD_FAILURE();
+    } catch (const ScriptError& e) {
+        EXPECT_EQ(std::string(e.what()), "expected 'from' (translate P from O by r>), found 'to'");
+        EXPECT_EQ(e.hint(),
+                  "'translate' takes this form (docs/language.md; help translate in a session):\n"
+                  "    translate P from O by vector");
+    }
+    try {
+        parse_example("rotate B from A around z by q");
+        ADD_FAILURE();
+    } catch (const ScriptError& e) {
+        EXPECT_EQ(e.hint(), "'rotate' takes one of these forms (docs/language.md; help rotate in a session):\n" +
+                                statement_forms("rotate", "    ").substr(0, statement_forms("rotate", "    ").size() - 1));
+        EXPECT_NE(e.hint().find("\n    rotate B from A dcm matrix"), std::string::npos) << e.hint();
+    }
+}

@@ -60,6 +60,10 @@ const std::vector<std::string>& statement_clause_words();
 /// a newline; a word that is not a statement gets a line saying so.
 std::string statement_help(std::string_view keyword = {});
 
+/// The forms of a statement as plain text (`rotate B from A about [-]axis by angle`), one a
+/// line, each after `indent` and ending in a newline; empty if `keyword` is not a statement.
+std::string statement_forms(std::string_view keyword, std::string_view indent = "  ");
+
 /// The Markdown table of a family's statements, as docs/language.md shows it (from the line
 /// `| statement | example | library call |` to the last row, each line ending in a newline).
 std::string statement_table_markdown(std::string_view family);
