@@ -40,6 +40,38 @@ std::string describe(const Token& t) {
     }
 }
 
+// edits (insertions, deletions, substitutions) that turn a into b
+std::size_t edit_distance(std::string_view a, std::string_view b) {
+    std::vector<std::size_t> row(b.size() + 1);
+    for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+    for (std::size_t i = 1; i <= a.size(); ++i) {
+        std::size_t diagonal = row[0];
+        row[0] = i;
+        for (std::size_t j = 1; j <= b.size(); ++j) {
+            std::size_t up = row[j];
+            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+            diagonal = up;
+        }
+    }
+    return row[b.size()];
+}
+
+// the statement a mistyped word most likely meant (at most two edits away, the first in the
+// registry's order among the nearest), and where to find the others
+std::string unknown_statement_hint(std::string_view word) {
+    std::string_view best;
+    std::size_t best_distance = 3;
+    if (word.size() <= 64)
+        for (const StatementSpec& spec : statements()) {
+            std::size_t d = edit_distance(word, spec.keyword);
+            if (d < best_distance) best = spec.keyword, best_distance = d;
+        }
+    std::string hint = best.empty() ? std::string()
+                                    : "did you mean '" + std::string(best) + "'? ";
+    return hint + "statements start with a word such as body, rotate, kane or solve "
+                  "(docs/language.md; help in a session lists them), or are assignments name = value";
+}
+
 struct DepthGuard {
     int& depth;
     DepthGuard(int& d, Location where) : depth(d) {
@@ -387,9 +419,7 @@ Statement StatementParser::parse() {
     }
     if (first.kind == TokenKind::name && !peek(1).is("(") && !peek(1).is("[") &&
         peek(1).kind == TokenKind::name && !is_clause_word(first.text))
-        throw ScriptError(first.location, "unknown statement '" + first.text + "'",
-                          "statements start with a word such as body, rotate, kane or solve "
-                          "(docs/language.md), or are assignments name = value");
+        throw ScriptError(first.location, "unknown statement '" + first.text + "'", unknown_statement_hint(first.text));
     s.exprs["value"] = expression();
     expect_end("the expression");
     return s;

@@ -184,3 +184,19 @@ TEST(Statements, ASyntaxErrorsHintShowsTheStatementsForms) {
         EXPECT_NE(e.hint().find("\n    rotate B from A dcm matrix"), std::string::npos) << e.hint();
     }
 }
+
+TEST(Statements, AnUnknownStatementsHintNamesTheNearestOne) {
+    try {
+        parse_example("bodie A, B");
+        ADD_FAILURE();
+    } catch (const ScriptError& e) {
+        EXPECT_EQ(std::string(e.what()), "unknown statement 'bodie'");
+        EXPECT_EQ(e.hint().rfind("did you mean 'body'? statements start with", 0), 0u) << e.hint();
+    }
+    try {
+        parse_example("frobnicate A, B");
+        ADD_FAILURE();
+    } catch (const ScriptError& e) {
+        EXPECT_EQ(e.hint().rfind("statements start with", 0), 0u) << e.hint();
+    }
+}
