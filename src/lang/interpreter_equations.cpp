@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// Assignments, printed values, road-maps, Kane's and Lagrange's methods, solving, evaluating.
+// Assignments, printed values, and the statements of road-maps, Kane's and Lagrange's methods,
+// solving and evaluating: their meaning, then their grammar and table (equation_statements()).
 #include <algorithm>
 
 #include "alembert/lang/parser.hpp"

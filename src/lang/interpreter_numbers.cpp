@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The interpreter's numeric statements: simulation settings and outputs, simulate, prescribed
-// motions, inverse dynamics over a motion, and code generation.
+// motions, inverse dynamics over a motion, and code generation: their meaning, then their
+// grammar and table (number_statements()).
 #include <unistd.h>
 
 #include <algorithm>
