@@ -3,7 +3,9 @@
 // No mechanics here: scripts go to alembert::lang::Interpreter.
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
+#include <csignal>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -20,6 +22,7 @@
 #include "alembert/error.hpp"
 #include "alembert/lang/interpreter.hpp"
 #include "alembert/lang/lexer.hpp"
+#include "alembert/lang/statements.hpp"
 
 #ifdef ALEMBERT_HAVE_LIBEDIT
 #include <editline/readline.h>
@@ -144,22 +147,62 @@ int print_roadmap(const RoadmapOptions& o) {
 
 // ---- the interactive session ------------------------------------------------------------
 
-// one line of input, with editing and history on a terminal; false at the end of input
-bool read_line(const char* prompt, bool terminal, std::string& line) {
+// Ctrl-C: while a line is typed, it is dropped and a new prompt shown; while a statement runs,
+// the statement finishes (a second Ctrl-C ends the session)
+volatile std::sig_atomic_t g_interrupted = 0;
+volatile std::sig_atomic_t g_running = 0;
+
+extern "C" void on_interrupt(int) {
+    if (g_running) {
+        if (g_interrupted) {
+            std::signal(SIGINT, SIG_DFL);
+            std::raise(SIGINT);
+        }
+        static const char note[] =
+            "\nalembert: the statement runs to its end; Ctrl-C again ends the session\n";
+        ssize_t ignored = write(STDERR_FILENO, note, sizeof note - 1);
+        (void)ignored;
+    }
+    g_interrupted = 1;
+}
+
+#ifdef ALEMBERT_HAVE_LIBEDIT
+// libedit's source of keys: a Ctrl-C ends the line being typed (it is then dropped)
+int read_key(FILE*) {
+    for (;;) {
+        if (g_interrupted) return '\n';
+        unsigned char c = 0;
+        ssize_t n = read(STDIN_FILENO, &c, 1);
+        if (n == 1) return c;
+        if (n == 0 || errno != EINTR) return -1;
+    }
+}
+#endif
+
+enum class Input { line, cancelled, end };
+
+// one line of input, with editing and history on a terminal
+Input read_line(const char* prompt, bool terminal, std::string& line) {
+    g_interrupted = 0;
 #ifdef ALEMBERT_HAVE_LIBEDIT
     if (terminal) {
         char* got = readline(prompt);
-        if (!got) return false;
+        if (g_interrupted) {
+            std::free(got);
+            return Input::cancelled;
+        }
+        if (!got) return Input::end;
         line = got;
         std::free(got);
         if (!line.empty()) add_history(line.c_str());
-        return true;
+        return Input::line;
     }
 #else
     if (terminal) std::cout << prompt << std::flush;
 #endif
     (void)prompt;
-    return static_cast<bool>(std::getline(std::cin, line));
+    if (!std::getline(std::cin, line)) return Input::end;
+    return g_interrupted ? Input::cancelled : Input::line;
 }
 
 std::string history_path() {
@@ -167,31 +210,82 @@ std::string history_path() {
     return home ? std::string(home) + "/.alembert_history" : std::string();
 }
 
+// a line that speaks to the session rather than the interpreter: help [WORD], quit, exit
+bool session_command(const std::string& line, bool& quit) {
+    std::istringstream words(line);
+    std::string first, topic, extra;
+    words >> first >> topic >> extra;
+    if ((first == "quit" || first == "exit") && topic.empty()) {
+        quit = true;
+        return true;
+    }
+    if (first == "help" && extra.empty()) {
+        std::cout << alembert::lang::statement_help(topic) << std::flush;
+        return true;
+    }
+    return false;
+}
+
+// Runs statements typed or piped in; errors are reported and the session goes on. Piped input
+// that had an error ends with the status of the worst one (1 script error, 3 internal).
 int interactive() {
     bool terminal = isatty(STDIN_FILENO) != 0;
     std::string history = history_path();
+    if (terminal) {
+        struct sigaction sa {};
+        sa.sa_handler = on_interrupt;
+        sa.sa_flags = SA_RESTART;
+        sigemptyset(&sa.sa_mask);
+        sigaction(SIGINT, &sa, nullptr);
+    }
 #ifdef ALEMBERT_HAVE_LIBEDIT
-    if (terminal && !history.empty()) {
-        stifle_history(1000);
-        read_history(history.c_str());
+    if (terminal) {
+        rl_catch_signals = 1;  // libedit restores the terminal and interrupts its read on Ctrl-C
+        rl_getc_function = read_key;
+        if (!history.empty()) {
+            stifle_history(1000);
+            read_history(history.c_str());
+        }
     }
 #endif
     if (terminal)
         std::cout << "alembert " << ALEMBERT_VERSION
-                  << ": type statements (docs/language.md); Ctrl-D ends the session\n";
+                  << ": type statements (docs/language.md), help, or quit; Ctrl-C drops a line\n";
     Interpreter interp(std::cout, std::cerr, false);
     std::string buffer, line;
     int line_number = 1, first_line = 1;
-    while (read_line(buffer.empty() ? "alembert> " : "      ... ", terminal, line)) {
-        if (buffer.empty()) first_line = line_number;
+    int status = kOk;
+    auto run = [&] {
+        g_running = 1;
+        g_interrupted = 0;
+        int s = exit_status(interp.run(buffer, "<stdin>", first_line));
+        g_running = 0;
+        status = std::max(status, s);
+        buffer.clear();
+    };
+    for (;;) {
+        Input got = read_line(buffer.empty() ? "alembert> " : "      ... ", terminal, line);
+        if (got == Input::end) break;
+        if (got == Input::cancelled) {
+            buffer.clear();  // an unfinished statement goes with its line
+            continue;
+        }
+        if (buffer.empty()) {
+            bool quit = false;
+            if (session_command(line, quit)) {
+                ++line_number;
+                if (quit) break;
+                continue;
+            }
+            first_line = line_number;
+        }
         buffer += line + "\n";
         ++line_number;
         // a statement with an open bracket continues on the next line
         if (alembert::lang::statement_is_open(buffer)) continue;
-        interp.run(buffer, "<stdin>", first_line);  // errors are reported; the session goes on
-        buffer.clear();
+        run();
     }
-    if (!buffer.empty()) interp.run(buffer, "<stdin>", first_line);
+    if (!buffer.empty()) run();
 #ifdef ALEMBERT_HAVE_LIBEDIT
     if (terminal && !history.empty()) {
         // written atomically: a temporary file renamed over the history
@@ -200,8 +294,11 @@ int interactive() {
         else std::remove(tmp.c_str());
     }
 #endif
-    if (terminal) std::cout << "\n";
-    return kOk;
+    if (terminal) {
+        std::cout << "\n";
+        return kOk;  // errors were seen as they happened
+    }
+    return status;
 }
 
 }  // namespace

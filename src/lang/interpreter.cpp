@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// The interpreter: the run loop, names, declarations and the model-building statements.
+// The interpreter: the run loop, names and objects of the script, and dispatch to the statements
+// of the registry (statements.hpp).
 #include <algorithm>
 #include <cctype>
 #include <cmath>
@@ -7,11 +8,10 @@
 
 #include "alembert/lang/lexer.hpp"
 #include "alembert/lang/parser.hpp"
+#include "alembert/lang/statements.hpp"
 #include "interpreter_impl.hpp"
 
 namespace alembert::lang {
-
-namespace {
 
 const char* kind_word(NameKind k) {
     switch (k) {
@@ -27,15 +27,6 @@ const char* kind_word(NameKind k) {
 }
 
 std::string at_line(Location l) { return " (line " + std::to_string(l.line) + ")"; }
-
-Axis axis_of(const Word& w) {
-    if (w.text == "x") return Axis::x;
-    if (w.text == "y") return Axis::y;
-    if (w.text == "z") return Axis::z;
-    throw ScriptError(w.location, "'" + w.text + "' is not an axis", "write x, y or z (or -z)");
-}
-
-}  // namespace
 
 std::string monogram_part(const std::string& name) {
     std::string out;
@@ -369,334 +360,14 @@ exmap Interpreter::Impl::bindings(const std::vector<Binding>& list, const std::s
 
 void Interpreter::Impl::execute(const Statement& s) {
     const std::string& k = s.keyword;
-    if (k == "newtonian") {
-        if (sys)
-            throw ScriptError(s.location, "the Newtonian frame is already declared (" +
-                                              sys->newtonian().name() + ")",
-                              "a model has one Newtonian frame; declare other frames with 'frame'");
-        const Word& n = s.word("name");
-        declare_name(n, NameKind::frame);
-        sys = std::make_unique<System>(n.text);
-        names[n.text + "_o"] = {NameKind::point, n.location};
-        return;
+    if (k == "=" || k.empty()) {
+        model(s.location);
+        return k.empty() ? show(s) : assign(s);
     }
-    model(s.location);
-    if (k == "frame" || k == "body" || k == "particle" || k == "point") return declare_objects(s);
-    if (k == "constant" || k == "variable" || k == "specified" || k == "unknown")
-        return declare_symbols(s);
-    if (k == "coordinates") {
-        std::vector<TimeVariable> q;
-        for (const Word& w : s.lists.at("names")) q.push_back(variable(w));
-        coordinates = q;
-        coordinates_given = true;
-        return;
-    }
-    if (k == "system") {
-        const Word& n = s.word("name");
-        BodySet S;
-        for (const Word& w : s.lists.at("bodies")) {
-            const Body* b = &body(w);
-            if (std::find(S.begin(), S.end(), b) != S.end())
-                throw ScriptError(w.location, "'" + w.text + "' is listed twice", "list each body once");
-            S.push_back(b);
-        }
-        declare_name(n, NameKind::system);
-        systems[n.text] = S;
-        return;
-    }
-    if (k == "rotate") return orient(s);
-    if (k == "translate" || k == "velocity" || k == "acceleration" || k == "angvel" || k == "angacc")
-        return set_motion(s);
-    if (k == "mass" || k == "inertia") return set_mass_or_inertia(s);
-    if (k == "gravity" || k == "force" || k == "torque" || k == "spring" || k == "damper" ||
-        k == "drag" || k == "friction" || k == "attraction")
-        return add_load(s);
-    if (k == "constraint") return add_constraint(s);
-    if (k == "roadmap") return roadmap(s);
-    if (k == "row") return row(s);
-    if (k == "kane" || k == "lagrange") return methods(s);
-    if (k == "solve") return solve(s);
-    if (k == "evaluate") return evaluate_statement(s);
-    if (k == "initial") return set_initial(s);
-    if (k == "input") return set_inputs(s);
-    if (k == "motion") return set_prescribed_motion(s);
-    if (k == "final" || k == "tolerance") return set_times_and_tolerances(s);
-    if (k == "output") return add_outputs(s);
-    if (k == "stop") return add_event(s);
-    if (k == "simulate") return simulate(s);
-    if (k == "inverse") return inverse(s);
-    if (k == "codegen") return codegen(s);
-    if (k == "=") return assign(s);
-    return show(s);
-}
-
-void Interpreter::Impl::declare_objects(const Statement& s) {
-    System& m = model(s.location);
-    const std::string& k = s.keyword;
-    const Body* owner = s.has_word("on") ? &body(s.word("on")) : nullptr;
-    for (const Word& w : s.lists.at("names")) {
-        if (k == "frame") {
-            declare_name(w, NameKind::frame);
-            guard(w.location, [&] { m.add_frame(w.text); });
-        } else if (k == "point") {
-            declare_name(w, NameKind::point);
-            guard(w.location, [&] { m.add_point(w.text, owner); });
-        } else if (k == "particle") {
-            declare_name(w, NameKind::particle);
-            guard(w.location, [&] { m.add_particle(w.text); });
-        } else {
-            // the body's frame shares its name; its origin and mass centre are points
-            for (const std::string& p : {w.text + "_o", w.text + "cm"})
-                if (names.count(p))
-                    throw ScriptError(w.location, "body '" + w.text + "' needs the point name '" + p +
-                                                      "', which is already " + kind_word(names[p].kind) +
-                                                      at_line(names[p].declared),
-                                      "choose another name for the body");
-            declare_name(w, NameKind::body);
-            guard(w.location, [&] { m.add_rigid_body(w.text); });
-            names[w.text + "_o"] = {NameKind::point, w.location};
-            names[w.text + "cm"] = {NameKind::point, w.location};
-        }
-    }
-}
-
-void Interpreter::Impl::declare_symbols(const Statement& s) {
-    System& m = model(s.location);
-    SymbolTable& table = m.symbols();
-    const std::string& k = s.keyword;
-    for (const Declared& d : s.declared) {
-        bool timed = k == "variable" || k == "specified";
-        if (d.primes > 0 && !timed)
-            throw ScriptError(d.name.location, "a " + k + " has no derivatives",
-                              "declare '" + d.name.text + "' without primes, or as a variable");
-        if (d.primes > Limits::max_derivative)
-            throw ScriptError(d.name.location, "'" + d.name.text + "' declares " +
-                                                   std::to_string(d.primes) +
-                                                   " derivatives; at most 4 are allowed",
-                              "declare only the derivatives the equations need (q'' for dynamics)");
-        if (d.quantity.value && k != "constant")
-            throw ScriptError(d.quantity.value->location, "only constants take a value when declared",
-                              "give values to " + k + "s in 'solve ... at' or 'evaluate ... at'");
-        SymbolUnits su;
-        std::optional<double> value;
-        if (!d.quantity.unit.empty()) {
-            Unit u = parse_unit(d.quantity.unit);
-            su.dim = u.dimension;
-            su.display = u;
-        }
-        if (d.quantity.value) {
-            Dimension got = Dimension::open();
-            value = number_of(d.quantity, Dimension::open(), "the value of " + d.name.text,
-                              d.name.location, &got);
-        }
-        declare_name(d.name, NameKind::symbol);
-        guard(d.name.location, [&] {
-            if (k == "constant") table.add_constant(d.name.text, value);
-            else if (k == "variable") table.add_variable(d.name.text, d.primes);
-            else if (k == "specified") table.add_specified(d.name.text, d.primes);
-            else table.add_unknown(d.name.text);
-        });
-        for (int i = 1; i <= d.primes; ++i)
-            names[d.name.text + std::string(static_cast<std::size_t>(i), '\'')] = {NameKind::symbol,
-                                                                                   d.name.location};
-        units[d.name.text] = su;
-    }
-}
-
-void Interpreter::Impl::orient(const Statement& s) {
-    const Word& target = s.word("target");
-    const Word& from = s.word("from");
-    Frame& B = frame(target);
-    Frame& A = frame(from);
-    const std::string& kind = s.word("kind").text;
-    auto angle = [&](const ExprPtr& e) { return scalar(*e, Dimension::none(), "the rotation angle"); };
-    static const std::vector<ExprPtr> none;
-    const auto& angles = s.expr_lists.count("angles") ? s.expr_lists.at("angles") : none;
-    Location where = from.location;
-    if (kind == "about") {
-        Axis axis = axis_of(s.word("axis"));
-        ex q = angle(angles.at(0));
-        guard(where, [&] { B.orient_axis(A, axis, q, s.flag("negative") ? Sense::negative : Sense::positive); });
-    } else if (kind == "body" || kind == "space") {
-        const Word& seq = s.word("sequence");
-        RotationSequence rs = guard(seq.location, [&] { return parse_rotation_sequence(seq.text); });
-        if (angles.size() != 3)
-            throw ScriptError(angles.size() > 3 ? angles[3]->location : s.word("sequence").location,
-                              "a " + kind + "-fixed sequence takes 3 angles, not " +
-                                  std::to_string(angles.size()),
-                              "write: rotate " + target.text + " from " + from.text + " " + kind +
-                                  " " + seq.text + " by q1, q2, q3");
-        ex q1 = angle(angles[0]), q2 = angle(angles[1]), q3 = angle(angles[2]);
-        guard(where, [&] {
-            if (kind == "body") B.orient_body_fixed(A, rs, q1, q2, q3);
-            else B.orient_space_fixed(A, rs, q1, q2, q3);
-        });
-    } else {
-        Value v = eval(*s.exprs.at("dcm"));
-        if (v.kind != Value::Kind::matrix)
-            throw ScriptError(s.exprs.at("dcm")->location,
-                              "a direction-cosine matrix must be 3 by 3, written [a, b, c; d, e, f; g, h, i]",
-                              "separate the rows with ';'");
-        check_dimension(v.dim, Dimension::none(), "a direction-cosine matrix", s.exprs.at("dcm")->location);
-        guard(where, [&] { B.orient_dcm(A, v.m); });
-    }
-}
-
-void Interpreter::Impl::set_motion(const Statement& s) {
-    const std::string& k = s.keyword;
-    const Dimension L = Dimension::length(), T = Dimension::time();
-    if (k == "translate") {
-        Point& P = point(s.word("target"));
-        Point& O = point(s.word("from"));
-        Vector r = vector(*s.exprs.at("value"), L, "the position of " + s.word("target").text);
-        guard(s.word("from").location, [&] { P.set_pos(O, r); });
-        return;
-    }
-    if (k == "angvel" || k == "angacc") {
-        Frame& B = frame(s.word("target"));
-        Frame& A = frame(s.word("in"));
-        bool acc = k == "angacc";
-        Vector w = vector(*s.exprs.at("value"), acc ? pow(T, -2) : pow(T, -1),
-                          acc ? "an angular acceleration" : "an angular velocity");
-        guard(s.word("in").location, [&] { acc ? B.set_ang_acc(A, w) : B.set_ang_vel(A, w); });
-        return;
-    }
-    Point& P = point(s.word("target"));
-    Frame& N = frame(s.word("in"));
-    bool acc = k == "acceleration";
-    if (s.has_word("from")) {
-        Point& O = point(s.word("from"));
-        Frame& B = frame(s.word("on"));
-        const std::string& how = s.word("how").text;
-        guard(s.word("from").location, [&] {
-            if (acc) P.set_acc_two_point(N, O, B);
-            else if (how == "fixed") P.set_vel_two_point(N, O, B);
-            else P.set_vel_one_point(N, O, B);
-        });
-        return;
-    }
-    Vector v = vector(*s.exprs.at("value"), acc ? L / pow(T, 2) : L / T,
-                      acc ? "an acceleration" : "a velocity");
-    guard(s.word("in").location, [&] { acc ? P.set_acc(N, v) : P.set_vel(N, v); });
-}
-
-void Interpreter::Impl::set_mass_or_inertia(const Statement& s) {
-    if (s.keyword == "mass") {
-        Body& B = body(s.word("target"));
-        ex m = scalar(*s.exprs.at("value"), Dimension::mass(), "the mass of " + s.word("target").text);
-        guard(s.word("target").location, [&] { B.set_mass(m); });
-        return;
-    }
-    RigidBody& B = rigid_body(s.word("target"));
-    const auto& list = s.expr_lists.at("moments");
-    if (list.size() != 3 && list.size() != 6)
-        throw ScriptError(list.size() > 6 ? list[6]->location : list.back()->location,
-                          "inertia takes 3 moments (Ixx, Iyy, Izz) or 6 (and Ixy, Iyz, Izx), not " +
-                              std::to_string(list.size()),
-                          "write: inertia " + s.word("target").text + " = Ixx, Iyy, Izz");
-    std::vector<ex> I;
-    for (const ExprPtr& e : list) I.push_back(scalar(*e, Dimension{{2, 1, 0}, true}, "a moment of inertia"));
-    while (I.size() < 6) I.push_back(0);
-    const Point& about = s.has_word("about") ? point(s.word("about")) : B.cm();
-    Location where = s.word("target").location;
-    if (s.has_word("in")) {
-        Frame& F = frame(s.word("in"));
-        guard(where, [&] { B.set_inertia(about, inertia_dyadic(F, I[0], I[1], I[2], I[3], I[4], I[5])); });
-    } else {
-        guard(where, [&] { B.set_inertia(about, I[0], I[1], I[2], I[3], I[4], I[5]); });
-    }
-}
-
-void Interpreter::Impl::add_load(const Statement& s) {
-    System& m = model(s.location);
-    const std::string& k = s.keyword;
-    const Dimension L = Dimension::length(), M = Dimension::mass(), T = Dimension::time();
-    if (k == "gravity") {
-        Vector g = vector(*s.exprs.at("value"), L / pow(T, 2), "gravity (an acceleration)");
-        guard(s.location, [&] { m.set_gravity(g); });
-        return;
-    }
-    const Word& label = s.word("label");
-    if (k == "force") {
-        Point& P = point(s.word("on"));
-        Vector F = vector(*s.exprs.at("value"), Dimension::force(), "the force " + label.text);
-        if (s.has_word("from")) {
-            Point& Q = point(s.word("from"));
-            guard(label.location, [&] { m.add_force_pair(P, Q, F, label.text); });
-        } else {
-            guard(label.location, [&] { m.add_force(P, F, label.text); });
-        }
-    } else if (k == "torque") {
-        Body& B = body(s.word("on"));
-        Vector T_ = vector(*s.exprs.at("value"), Dimension::torque(), "the torque " + label.text);
-        if (s.has_word("from")) {
-            Frame& A = frame(s.word("from"));
-            guard(label.location, [&] { m.add_torque_pair(B, A, T_, label.text); });
-        } else {
-            guard(label.location, [&] { m.add_torque(B, T_, label.text); });
-        }
-    } else if (k == "spring" || k == "damper" || k == "attraction") {
-        Point& P = point(s.word("P"));
-        Point& Q = point(s.word("Q"));
-        if (k == "spring") {
-            ex kk = scalar(*s.exprs.at("stiffness"), M / pow(T, 2), "a stiffness");
-            ex L0 = scalar(*s.exprs.at("length"), L, "a natural length");
-            guard(label.location, [&] { m.add_spring(P, Q, kk, L0, label.text); });
-        } else if (k == "damper") {
-            ex c = scalar(*s.exprs.at("coefficient"), M / T, "a damping coefficient");
-            guard(label.location, [&] { m.add_damper(P, Q, c, label.text); });
-        } else {
-            ex G = scalar(*s.exprs.at("constant"), pow(L, 3) / M / pow(T, 2), "a gravitational constant");
-            guard(label.location, [&] { m.add_inverse_square_gravity(P, Q, G, label.text); });
-        }
-    } else if (k == "drag") {
-        Point& P = point(s.word("on"));
-        bool linear = s.word("law").text == "linear";
-        ex c = scalar(*s.exprs.at("coefficient"), linear ? M / T : M / L, "a drag coefficient");
-        guard(label.location, [&] { m.add_drag(P, c, linear ? DragLaw::linear : DragLaw::quadratic, label.text); });
-    } else if (k == "friction") {
-        Point& P = point(s.word("on"));
-        Point& Q = point(s.word("from"));
-        ex mu = scalar(*s.exprs.at("coefficient"), Dimension::none(), "a friction coefficient");
-        ex Fn = scalar(*s.exprs.at("normal"), Dimension::force(), "a normal force");
-        Vector u = vector(*s.exprs.at("along"), Dimension::none(), "a direction");
-        guard(label.location, [&] { m.add_coulomb_friction(P, Q, mu, Fn, u, label.text); });
-    }
-}
-
-void Interpreter::Impl::add_constraint(const Statement& s) {
-    System& m = model(s.location);
-    const Word& n = s.word("name");
-    bool motion = s.word("kind").text == "motion";
-    const Expr& e = *s.exprs.at("value");
-    Value v = eval(e);
-    std::vector<std::string> made;
-    if (v.kind == Value::Kind::vector) {
-        if (!s.has_word("in"))
-            throw ScriptError(e.location, "a vector constraint needs the frame of its measures",
-                              "add 'in N' after the vector");
-        Frame& F = frame(s.word("in"));
-        auto cs = guard(n.location, [&] {
-            return motion ? m.add_motion_constraint(n.text, v.v, F)
-                          : m.add_configuration_constraint(n.text, v.v, F);
-        });
-        for (const Constraint& c : cs) made.push_back(c.name);
-    } else if (v.kind == Value::Kind::scalar) {
-        if (s.has_word("in"))
-            throw ScriptError(s.word("in").location, "'in' is for vector constraints; this one is a scalar",
-                              "remove 'in " + s.word("in").text + "'");
-        guard(n.location, [&] {
-            motion ? m.add_motion_constraint(n.text, v.s) : m.add_configuration_constraint(n.text, v.s);
-        });
-        made.push_back(n.text);
-    } else {
-        throw ScriptError(e.location, "a constraint is a scalar or a vector expression", "");
-    }
-    std::string out;
-    for (const Constraint& c : m.constraints())
-        if (std::find(made.begin(), made.end(), c.name) != made.end())
-            out += c.name + ": 0 = " + to_string(c.residual) + "\n";
-    transcript.result(out);
+    const StatementSpec* spec = find_statement(k);
+    if (!spec) throw InternalError("the statement '" + k + "' is parsed but not registered");
+    if (spec->needs_model) model(s.location);
+    spec->run(*this, s);
 }
 
 }  // namespace alembert::lang

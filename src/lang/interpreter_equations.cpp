@@ -1,9 +1,11 @@
 // SPDX-License-Identifier: MIT
-// Assignments, printed values, road-maps, Kane's and Lagrange's methods, solving, evaluating.
+// Assignments, printed values, and the statements of road-maps, Kane's and Lagrange's methods,
+// solving and evaluating: their meaning, then their grammar and table (equation_statements()).
 #include <algorithm>
 
 #include "alembert/lang/parser.hpp"
 #include "interpreter_impl.hpp"
+#include "statement_parser.hpp"
 
 namespace alembert::lang {
 
@@ -269,6 +271,142 @@ void Interpreter::Impl::evaluate_statement(const Statement& s) {
                      "give every symbol a value after 'at'");
     std::string unit = si_unit(v.dim);
     transcript.result("= " + format_number(x) + (unit.empty() ? "" : " " + unit));
+}
+
+
+// ---- grammar -----------------------------------------------------------------------------
+
+namespace {
+
+void parse_roadmap(StatementParser& p, Statement& s) {
+    s.words["name"] = p.name("a name for the road-map's equations");
+    if (p.accept_word("for")) {
+        s.lists["unknowns"] = p.name_list("an unknown");
+        if (p.accept_word("statics")) s.flags["statics"] = true;
+    }
+}
+
+void parse_row(StatementParser& p, Statement& s) {
+    s.words["name"] = p.name("the road-map the row belongs to");
+    p.expect_word("for", "and the unknown (row E for T_A rotate S about A_o along Nz>)");
+    s.words["variable"] = p.name("the unknown of the row");
+    if (p.accept_word("rotate")) {
+        s.words["motion"] = {"rotate", p.peek().location};
+        s.words["system"] = p.name("a system or body");
+        p.expect_word("about", "and the about point");
+        s.words["about"] = p.name("a point");
+        p.expect_word("along", "and the direction");
+        s.exprs["direction"] = p.expression();
+    } else if (p.accept_word("translate")) {
+        s.words["motion"] = {"translate", p.peek().location};
+        s.words["system"] = p.name("a system or body");
+        p.expect_word("along", "and the direction");
+        s.exprs["direction"] = p.expression();
+    } else if (p.accept_word("constraint")) {
+        s.words["motion"] = {"constraint", p.peek().location};
+        s.words["constraint"] = p.name("a declared constraint");
+    } else {
+        p.fail_expected("'rotate', 'translate' or 'constraint'");
+    }
+    if (p.accept_word("statics")) s.flags["statics"] = true;
+}
+
+// kane and lagrange: a name and the coordinates; Kane's method takes options after them
+void parse_method(StatementParser& p, Statement& s) {
+    const std::string& k = s.keyword;
+    s.words["name"] = p.name("a name for the equations");
+    p.expect_word("for", "and the coordinates (" + k + " K for q1, q2)");
+    s.lists["coordinates"] = p.name_list("a coordinate");
+    while (k == "kane" && !p.at_end()) {
+        if (p.accept_word("speeds")) s.lists["speeds"] = p.name_list("a speed");
+        else if (p.accept_word("kinematics")) s.exprs["kinematics"] = p.expression();
+        else if (p.accept_word("constraints")) s.exprs["constraints"] = p.expression();
+        else if (p.accept_word("dependent")) s.lists["dependent"] = p.name_list("a speed");
+        else if (p.accept_word("auxiliary")) s.lists["auxiliary"] = p.name_list("a speed");
+        else p.fail_expected("'speeds', 'kinematics', 'constraints', 'dependent' or 'auxiliary'");
+    }
+}
+
+void parse_solve(StatementParser& p, Statement& s) {
+    s.words["name"] = p.name("the equations to solve");
+    p.expect_word("for", "and the unknowns (solve E for x, y)");
+    s.lists["unknowns"] = p.name_list("an unknown");
+    while (!p.at_end()) {
+        if (p.accept_word("guess")) s.bindings["guess"] = p.bindings("an unknown");
+        else if (p.accept_word("at")) s.bindings["at"] = p.bindings("a symbol");
+        else p.fail_expected("'at' or 'guess'");
+    }
+}
+
+void parse_evaluate(StatementParser& p, Statement& s) {
+    s.exprs["value"] = p.expression();
+    if (p.accept_word("at")) s.bindings["at"] = p.bindings("a symbol");
+}
+
+}  // namespace
+
+// ---- the statements ----------------------------------------------------------------------
+
+std::vector<StatementSpec> equation_statements() {
+    using M = Interpreter::Impl;
+    const std::string_view equations = "Equations: road-maps, Kane, Lagrange", solving = "Solving";
+    return {
+        {.keyword = "roadmap", .family = equations,
+         .help = "plans MG road-map equations for unknowns, or prints a road-map's table",
+         .forms = {{"`roadmap` *E* `for` *unknowns* [`statics`]",
+                    "roadmap E for T_A, T_B, T_C",
+                    "`plan_roadmap` (over the `coordinates`) + `format_roadmap_table`: prints the table and `E_<unknown>: 0 = ...`"},
+                   {"`roadmap` *E*",
+                    "roadmap E",
+                    "`format_roadmap_table` of the rows of E"}},
+         .clauses = {"for", "statics"}, .parse = parse_roadmap,
+         .run = [](M& m, const Statement& s) { m.roadmap(s); }},
+        {.keyword = "row", .family = equations, .help = "adds a road-map row written by hand",
+         .forms = {{"`row` *E* `for` *x* `rotate` *S* `about` *O* `along` *u* [`statics`]",
+                    "row E for T_A rotate S about A_o along Nz>",
+                    "`form_roadmap_row` (a row written by hand; prints its equation)"},
+                   {"`row` *E* `for` *x* `translate` *S* `along` *u* [`statics`]",
+                    "row E for F translate S along Nx>",
+                    "`form_roadmap_row`"},
+                   {"`row` *E* `for` *x* `constraint` *name* [`statics`]",
+                    "row E for qC'' constraint loop_y",
+                    "`form_constraint_row`"}},
+         .clauses = {"for", "rotate", "translate", "constraint", "about", "along", "statics"},
+         .parse = parse_row, .run = [](M& m, const Statement& s) { m.row(s); }},
+        {.keyword = "kane", .family = equations, .help = "forms Kane's equations of motion",
+         .forms = {{"`kane` *K* `for` *coordinates*",
+                    "kane K for qA, qB",
+                    "`form_kane_equations(sys, q)`; prints `K[1]: 0 = ...`"},
+                   {"`kane` *K* `for` *coordinates* `speeds` *u...* `kinematics` *[...]* [`constraints` *[...]* `dependent` *u...*] [`auxiliary` *u...*]",
+                    "kane K for q, x speeds u1, u2 kinematics [u1 - q', u2 - x']",
+                    "`form_kane_equations(sys, KaneOptions{...})`; K holds the dynamical equations, then the auxiliary ones"}},
+         .clauses = {"for", "speeds", "kinematics", "constraints", "dependent", "auxiliary"},
+         .parse = parse_method, .run = [](M& m, const Statement& s) { m.methods(s); }},
+        {.keyword = "lagrange", .family = equations, .help = "forms Lagrange's equations of motion",
+         .forms = {{"`lagrange` *L* `for` *coordinates*",
+                    "lagrange Lg for qA, qB",
+                    "`form_lagrange_equations`; prints `Lg[1]: 0 = ...`"}},
+         .clauses = {"for"}, .parse = parse_method, .run = [](M& m, const Statement& s) { m.methods(s); }},
+        {.keyword = "solve", .family = solving,
+         .help = "solves equations symbolically, numerically, or for an equilibrium from a guess",
+         .forms = {{"`solve` *E* `for` *x...*",
+                    "solve K for qA'', qB''",
+                    "`form_linear_system` + `solve_symbolic`; prints `qA'' = ...`"},
+                   {"`solve` *E* `for` *x...* `at` *name = value, ...*",
+                    "solve E for T_A, T_B, T_C at qA = 20 deg, qB = -70 deg",
+                    "`form_linear_system` + `solve_numeric` (unset speeds, accelerations: error)"},
+                   {"`solve` *E* `for` *x...* `guess` *name = value, ...* [`at` ...]",
+                    "solve E for q1, q2 guess q1 = 10 deg, q2 = 20 deg",
+                    "`solve_equilibrium` (nonlinear; speeds and accelerations 0)"}},
+         .clauses = {"for", "at", "guess"}, .parse = parse_solve,
+         .run = [](M& m, const Statement& s) { m.solve(s); }},
+        {.keyword = "evaluate", .family = solving, .help = "prints the number an expression takes at given values",
+         .forms = {{"`evaluate` *expr* `at` *name = value, ...*",
+                    "evaluate PE at qA = 0",
+                    "`SymbolTable::evaluate`"}},
+         .clauses = {"at"}, .parse = parse_evaluate,
+         .run = [](M& m, const Statement& s) { m.evaluate_statement(s); }},
+    };
 }
 
 }  // namespace alembert::lang

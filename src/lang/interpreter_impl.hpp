@@ -99,15 +99,11 @@ struct Interpreter::Impl {
     std::string script_name = "model";  ///< the script's stem, naming the model in messages and files
     bool model_only = false;          ///< skip simulate, inverse and codegen
 
-    // ---- statements (interpreter.cpp, interpreter_equations.cpp) ---------------------------
+    // ---- statements ------------------------------------------------------------------------
+    /// Runs one parsed statement: its StatementSpec::run from the registry (statements.hpp),
+    /// or an assignment or a printed expression.
     void execute(const Statement& s);
-    void declare_objects(const Statement& s);
-    void declare_symbols(const Statement& s);
-    void orient(const Statement& s);
-    void set_motion(const Statement& s);
-    void set_mass_or_inertia(const Statement& s);
-    void add_load(const Statement& s);
-    void add_constraint(const Statement& s);
+    // interpreter_equations.cpp
     void assign(const Statement& s);
     void show(const Statement& s);
     void roadmap(const Statement& s);
@@ -177,6 +173,11 @@ struct Interpreter::Impl {
     template <class F>
     auto guard(Location where, F&& f, const std::string& hint = "") -> decltype(f());
 };
+
+/// What a kind of name is, for messages: "a frame", "a rigid body", ...
+const char* kind_word(NameKind k);
+/// " (line N)": where a name was declared, for messages.
+std::string at_line(Location l);
 
 /// A name as monograms print it: A_o -> Ao.
 std::string monogram_part(const std::string& name);

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The interpreter's numeric statements: simulation settings and outputs, simulate, prescribed
-// motions, inverse dynamics over a motion, and code generation.
+// motions, inverse dynamics over a motion, and code generation: their meaning, then their
+// grammar and table (number_statements()).
 #include <unistd.h>
 
 #include <algorithm>
@@ -13,6 +14,7 @@
 #include "alembert/eom/tree_dynamics.hpp"
 #include "alembert/lang/parser.hpp"
 #include "interpreter_impl.hpp"
+#include "statement_parser.hpp"
 
 namespace alembert::lang {
 
@@ -534,6 +536,166 @@ void Interpreter::Impl::run_codegen(const CodegenRequest& r, Location where) {
     if (!opts.outputs.empty()) out << ", " << opts.outputs.size() << " outputs";
     out << ", a simulation program";
     transcript.result(out.str());
+}
+
+
+// ---- grammar -----------------------------------------------------------------------------
+
+namespace {
+
+void parse_initial(StatementParser& p, Statement& s) {
+    s.bindings["values"] = p.bindings("a coordinate or its rate (initial qA = 30 deg, qA' = 0)");
+}
+
+void parse_input(StatementParser& p, Statement& s) {
+    s.bindings["values"] = p.bindings("a load measure (input T_A = -k*qA)");
+}
+
+void parse_motion(StatementParser& p, Statement& s) {
+    s.bindings["values"] = p.bindings("a coordinate (motion qA = 30*sin(t) deg)");
+}
+
+void parse_final(StatementParser& p, Statement& s) {
+    p.expect_word("time", "(final time 5 s)");
+    s.quantities["time"] = p.quantity();
+}
+
+void parse_tolerance(StatementParser& p, Statement& s) {
+    if (p.at_end())
+        throw ScriptError(s.location, "a tolerance statement needs 'abs' or 'rel' and a number",
+                          "write tolerance abs 1e-10 rel 1e-10");
+    while (!p.at_end()) {
+        if (p.accept_word("abs")) s.quantities["abs"] = p.quantity();
+        else if (p.accept_word("rel")) s.quantities["rel"] = p.quantity();
+        else p.fail_expected("'abs' or 'rel' and a number (tolerance abs 1e-10 rel 1e-10)");
+    }
+}
+
+// output step h, or columns: expr [in unit], name = expr [in unit], ...
+void parse_output(StatementParser& p, Statement& s) {
+    if (p.at_word("step") && p.peek(1).kind == TokenKind::number) {
+        p.next();
+        s.quantities["step"] = p.quantity();
+        return;
+    }
+    do {
+        Word label{};
+        if (p.peek().kind == TokenKind::name && p.peek(1).is("=")) {
+            label = p.name("a column name");
+            p.next();
+        }
+        s.lists["labels"].push_back(label);
+        s.expr_lists["values"].push_back(p.expression());
+        s.units.push_back(p.accept_word("in") ? p.unit() : UnitText{});
+    } while (p.accept_punct(","));
+}
+
+void parse_stop(StatementParser& p, Statement& s) {
+    p.expect_word("when", "(stop when qA = 0 [rising | falling])");
+    s.exprs["lhs"] = p.expression();
+    p.expect_punct("=", "and the value it crosses (stop when qA = 0)");
+    s.quantities["rhs"] = p.quantity();
+    if (p.at_word("rising") || p.at_word("falling")) s.words["direction"] = p.take_word();
+}
+
+// simulate, inverse, codegen: their clauses in any order
+void parse_run(StatementParser& p, Statement& s) {
+    const std::string& k = s.keyword;
+    if (k == "codegen") s.words["language"] = p.name("a language: c, cpp, matlab or python");
+    while (!p.at_end()) {
+        if (k == "inverse" && p.accept_word("for")) s.lists["loads"] = p.name_list("a load measure");
+        else if (k == "codegen" && p.accept_word("for")) s.lists["loads"] = p.name_list("a load measure");
+        else if (k == "inverse" && p.accept_word("from")) {
+            s.words["from"] = p.text("the motion table's path");
+            if (p.accept_word("cutoff")) s.quantities["cutoff"] = p.quantity();
+        } else if (k == "codegen" && p.accept_word("name")) s.words["name"] = p.name("an identifier for the files");
+        else if (k != "codegen" && p.accept_word("compiled")) s.flags["compiled"] = true;
+        else if (p.accept_word("to")) s.words["to"] = p.text("the output directory");
+        else p.fail_expected(k == "simulate" ? "'compiled' or 'to'"
+                             : k == "inverse" ? "'for', 'from', 'compiled' or 'to'"
+                                              : "'for', 'name' or 'to'");
+    }
+    if (k == "inverse" && !s.lists.count("loads"))
+        throw ScriptError(s.location, "inverse dynamics needs the load measures to solve for",
+                          "write inverse for T_A, T_B");
+}
+
+}  // namespace
+
+// ---- the statements ----------------------------------------------------------------------
+
+std::vector<StatementSpec> number_statements() {
+    using M = Interpreter::Impl;
+    const std::string_view family = "Simulation, inverse dynamics, code generation";
+    return {
+        {.keyword = "initial", .family = family, .help = "sets initial values of coordinates and rates",
+         .forms = {{"`initial` *q = value, q' = value, ...*",
+                    "initial qA = 20 deg, qA' = 0",
+                    "`SimulationRequest::initial_values` (others 0)"}},
+         .parse = parse_initial, .run = [](M& m, const Statement& s) { m.set_initial(s); }},
+        {.keyword = "input", .family = family,
+         .help = "gives load measures as formulas of time and state for simulate",
+         .forms = {{"`input` *load = formula, ...*",
+                    "input T_A = -k*qA - c*qA'",
+                    "`SimulationRequest::inputs`: a load measure as a formula of t, q, q' and constants (others 0; in a constrained model the others are the constraint forces, solved for)"}},
+         .parse = parse_input, .run = [](M& m, const Statement& s) { m.set_inputs(s); }},
+        {.keyword = "final", .family = family, .help = "sets the final time of simulate and inverse",
+         .forms = {{"`final time` *T*",
+                    "final time 5 s",
+                    "`SimulationOptions::t_final` (default 1 s)"}},
+         .parse = parse_final, .run = [](M& m, const Statement& s) { m.set_times_and_tolerances(s); }},
+        {.keyword = "output", .family = family,
+         .help = "sets the output step, or adds columns to the table simulate writes",
+         .forms = {{"`output step` *h*",
+                    "output step 0.01 s",
+                    "`SimulationOptions::output_step` (default 0.01 s): rows exactly at these times"},
+                   {"`output` *expr* [`in` *unit*], *name* `=` *expr* [`in` *unit*], ...",
+                    "output qA in deg, h = dot(pos(Ccm, N_o), Ny>) in cm",
+                    "`SimulationRequest::outputs` (a name alone names its column; other expressions need `name =`; without `in`, a declared unit or SI)"}},
+         .clauses = {"in"}, .parse = parse_output, .run = [](M& m, const Statement& s) { m.add_outputs(s); }},
+        {.keyword = "tolerance", .family = family, .help = "sets the integrator's tolerances",
+         .forms = {{"`tolerance` [`abs` *a*] [`rel` *r*]",
+                    "tolerance abs 1e-12 rel 1e-12",
+                    "`SimulationOptions::abs_tol`, `rel_tol` (default 1e-8)"}},
+         .clauses = {"rel"}, .parse = parse_tolerance,
+         .run = [](M& m, const Statement& s) { m.set_times_and_tolerances(s); }},
+        {.keyword = "stop", .family = family,
+         .help = "stops simulate where an expression crosses a value",
+         .forms = {{"`stop when` *expr* `=` *value* [`rising`\\|`falling`]",
+                    "stop when dot(pos(Ccm, N_o), Ny>) = 50 cm falling",
+                    "`SimulationRequest::events`: the run stops where expr − value crosses zero"}},
+         .clauses = {"when", "rising", "falling"}, .parse = parse_stop,
+         .run = [](M& m, const Statement& s) { m.add_event(s); }},
+        {.keyword = "simulate", .family = family,
+         .help = "integrates the equations of motion; writes a table and its plots",
+         .forms = {{"`simulate` [`compiled`] [`to` *\"dir\"*]",
+                    "simulate to \"fall\"",
+                    "`run_simulation`, then `write_table_and_plot(..., \"simulation\")`: `simulation.csv`, `.png`, `.svg`; prints a table of about ten rows, the energy check (conservative models: an `energy` column) and the drift of each constraint"}},
+         .clauses = {"compiled", "to"}, .parse = parse_run,
+         .run = [](M& m, const Statement& s) { m.simulate(s); }},
+        {.keyword = "motion", .family = family,
+         .help = "prescribes coordinates as formulas of time, for inverse",
+         .forms = {{"`motion` *q = formula of t, ...*",
+                    "motion qA = (-25 + 20*minimum_jerk(t, 0.15, 1.5)) deg",
+                    "`PrescribedMotion` (q', q'' exact)"}},
+         .parse = parse_motion, .run = [](M& m, const Statement& s) { m.set_prescribed_motion(s); }},
+        {.keyword = "inverse", .family = family,
+         .help = "inverse dynamics over the prescribed motion or a motion table",
+         .forms = {{"`inverse for` *loads* [`to` *\"dir\"*]",
+                    "inverse for T_A, T_B, T_C",
+                    "`compile_inverse_dynamics` + `run_inverse_dynamics` over the prescribed motion, sampled every output step to the final time: `torques.csv`, `.png`, `.svg`"},
+                   {"`inverse for` *loads* `from` *\"file.csv\"* [`cutoff` *f*] [`compiled`] [`to` *\"dir\"*]",
+                    "inverse for T_A, T_B, T_C from \"motion.csv\" cutoff 6 Hz",
+                    "the same over a motion table (columns `t [s]` and one per coordinate, units in the header), filtered at f (default 6 Hz; 0: none) and differentiated"}},
+         .clauses = {"for", "from", "cutoff", "compiled", "to"}, .parse = parse_run,
+         .run = [](M& m, const Statement& s) { m.inverse(s); }},
+        {.keyword = "codegen", .family = family,
+         .help = "generates C, C++, MATLAB or Python code for the model's equations",
+         .forms = {{"`codegen` *c\\|cpp\\|matlab\\|python* [`name` *N*] [`for` *loads*] [`to` *\"dir\"*]",
+                    "codegen c name fall to \"code\"",
+                    "`generate_code` on Kane's equations: functions for M and f, forward and inverse dynamics, the outputs, and a simulation program with the script's settings"}},
+         .clauses = {"for", "to"}, .parse = parse_run, .run = [](M& m, const Statement& s) { m.codegen(s); }},
+    };
 }
 
 }  // namespace alembert::lang

@@ -2,24 +2,16 @@
 // The parser: one statement's tokens to a Statement, expressions by precedence climbing.
 #include "alembert/lang/parser.hpp"
 
-#include "alembert/lang/units.hpp"
-
 #include <algorithm>
 #include <set>
+
+#include "alembert/lang/statements.hpp"
+#include "alembert/lang/units.hpp"
+#include "statement_parser.hpp"
 
 namespace alembert::lang {
 
 namespace {
-
-const std::set<std::string, std::less<>>& clause_words() {
-    static const std::set<std::string, std::less<>> w{
-        "from", "about", "by", "on", "in", "to", "and", "between", "stiffness", "length",
-        "coefficient", "linear", "quadratic", "normal", "along", "configuration", "motion",
-        "for", "statics", "rotate", "translate", "speeds", "kinematics", "constraints",
-        "dependent", "auxiliary", "at", "guess", "fixed", "moving", "dcm", "t", "when", "rising",
-        "falling", "cutoff", "compiled", "rel"};
-    return w;
-}
 
 const std::set<std::string, std::less<>>& function_words() {
     static const std::set<std::string, std::less<>> w{
@@ -30,62 +22,11 @@ const std::set<std::string, std::less<>>& function_words() {
     return w;
 }
 
-// walks the tokens of one statement
-class Parser {
-public:
-    Parser(const std::vector<Token>& tokens, std::string_view source) : t_(tokens), src_(source) {}
-
-    Statement parse();
-
-private:
-    const Token& peek(std::size_t ahead = 0) const {
-        return t_[std::min(i_ + ahead, t_.size() - 1)];
-    }
-    const Token& next() {
-        const Token& t = peek();
-        if (i_ + 1 < t_.size()) ++i_;
-        return t;
-    }
-    bool at_end() const { return peek().kind == TokenKind::end; }
-    bool at_word(std::string_view w) const { return peek().kind == TokenKind::name && peek().text == w; }
-    bool accept_punct(std::string_view p) {
-        if (!peek().is(p)) return false;
-        next();
-        return true;
-    }
-    bool accept_word(std::string_view w) {
-        if (!at_word(w)) return false;
-        next();
-        return true;
-    }
-    [[noreturn]] void fail_expected(const std::string& what) const;
-    void expect_punct(std::string_view p, const std::string& context);
-    void expect_word(std::string_view w, const std::string& context);
-    void expect_end(const std::string& context);
-    Word name(const std::string& what);
-    Word text(const std::string& what);
-    std::vector<Word> name_list(const std::string& what);
-    UnitText unit();
-    Quantity quantity();
-    std::vector<Binding> bindings(const std::string& what);
-    std::vector<Declared> declarations(const std::string& keyword);
-
-    ExprPtr expression();
-    ExprPtr sum();
-    ExprPtr term();
-    ExprPtr unary();
-    ExprPtr power();
-    ExprPtr primary();
-    std::vector<ExprPtr> expression_list(const std::string& context);
-
-    void statement_body(Statement& s);
-
-    const std::vector<Token>& t_;
-    std::string_view src_;
-    std::size_t i_ = 0;
-    int depth_ = 0;
-    std::string keyword_;
-};
+// a word that marks a clause of some statement, or `t` (time): never a unit after a value
+bool is_clause_word(std::string_view w) {
+    const auto& c = statement_clause_words();
+    return w == "t" || std::binary_search(c.begin(), c.end(), w);
+}
 
 std::string describe(const Token& t) {
     switch (t.kind) {
@@ -99,22 +40,74 @@ std::string describe(const Token& t) {
     }
 }
 
-void Parser::fail_expected(const std::string& what) const {
-    std::string hint;
-    if (!keyword_.empty() && keyword_ != "=")
-        hint = "see docs/language.md for the form of '" + keyword_ + "' statements";
+// edits (insertions, deletions, substitutions) that turn a into b
+std::size_t edit_distance(std::string_view a, std::string_view b) {
+    std::vector<std::size_t> row(b.size() + 1);
+    for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+    for (std::size_t i = 1; i <= a.size(); ++i) {
+        std::size_t diagonal = row[0];
+        row[0] = i;
+        for (std::size_t j = 1; j <= b.size(); ++j) {
+            std::size_t up = row[j];
+            row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] == b[j - 1] ? 0 : 1)});
+            diagonal = up;
+        }
+    }
+    return row[b.size()];
+}
+
+// the statement a mistyped word most likely meant (at most two edits away, the first in the
+// registry's order among the nearest), and where to find the others
+std::string unknown_statement_hint(std::string_view word) {
+    std::string_view best;
+    std::size_t best_distance = 3;
+    if (word.size() <= 64)
+        for (const StatementSpec& spec : statements()) {
+            std::size_t d = edit_distance(word, spec.keyword);
+            if (d < best_distance) best = spec.keyword, best_distance = d;
+        }
+    std::string hint = best.empty() ? std::string()
+                                    : "did you mean '" + std::string(best) + "'? ";
+    return hint + "statements start with a word such as body, rotate, kane or solve "
+                  "(docs/language.md; help in a session lists them), or are assignments name = value";
+}
+
+struct DepthGuard {
+    int& depth;
+    DepthGuard(int& d, Location where) : depth(d) {
+        if (++depth > Limits::max_nesting)
+            throw ScriptError(where, "the expression is nested too deeply (more than " +
+                                         std::to_string(Limits::max_nesting) + " levels)",
+                              "name parts of it with assignments");
+    }
+    ~DepthGuard() { --depth; }
+    DepthGuard(const DepthGuard&) = delete;
+    DepthGuard& operator=(const DepthGuard&) = delete;
+};
+
+}  // namespace
+
+void StatementParser::fail_expected(const std::string& what) const {
+    // the hint shows the statement's forms, from the registry
+    std::string hint, forms = keyword_.empty() ? std::string() : statement_forms(keyword_, "    ");
+    if (!forms.empty()) {
+        bool one = forms.find('\n') + 1 == forms.size();
+        hint = "'" + keyword_ + "' takes " + (one ? "this form" : "one of these forms") +
+               " (docs/language.md; help " + keyword_ + " in a session):\n" +
+               forms.substr(0, forms.size() - 1);
+    }
     throw ScriptError(peek().location, "expected " + what + ", found " + describe(peek()), hint);
 }
 
-void Parser::expect_punct(std::string_view p, const std::string& context) {
+void StatementParser::expect_punct(std::string_view p, const std::string& context) {
     if (!accept_punct(p)) fail_expected("'" + std::string(p) + "' " + context);
 }
 
-void Parser::expect_word(std::string_view w, const std::string& context) {
+void StatementParser::expect_word(std::string_view w, const std::string& context) {
     if (!accept_word(w)) fail_expected("'" + std::string(w) + "' " + context);
 }
 
-void Parser::expect_end(const std::string& context) {
+void StatementParser::expect_end(const std::string& context) {
     if (!at_end() && i_ > 0 && t_[i_ - 1].kind == TokenKind::number && peek().kind == TokenKind::name &&
         find_unit(peek().text))
         throw ScriptError(peek().location,
@@ -128,26 +121,26 @@ void Parser::expect_end(const std::string& context) {
     }
 }
 
-Word Parser::name(const std::string& what) {
+Word StatementParser::name(const std::string& what) {
     if (peek().kind != TokenKind::name) fail_expected(what);
     const Token& t = next();
     return {t.text, t.location};
 }
 
-Word Parser::text(const std::string& what) {
+Word StatementParser::text(const std::string& what) {
     if (peek().kind != TokenKind::string) fail_expected(what + " in double quotes");
     const Token& t = next();
     if (t.text.empty()) throw ScriptError(t.location, "the " + what + " is empty", "write a path such as \"out\"");
     return {t.text, t.location};
 }
 
-std::vector<Word> Parser::name_list(const std::string& what) {
+std::vector<Word> StatementParser::name_list(const std::string& what) {
     std::vector<Word> out{name(what)};
     while (accept_punct(",")) out.push_back(name(what));
     return out;
 }
 
-UnitText Parser::unit() {
+UnitText StatementParser::unit() {
     UnitText u;
     u.location = peek().location;
     bool divide = false;
@@ -178,14 +171,14 @@ UnitText Parser::unit() {
     }
 }
 
-Quantity Parser::quantity() {
+Quantity StatementParser::quantity() {
     Quantity q;
     q.value = expression();
-    if (peek().kind == TokenKind::name && !clause_words().count(peek().text)) q.unit = unit();
+    if (peek().kind == TokenKind::name && !is_clause_word(peek().text)) q.unit = unit();
     return q;
 }
 
-std::vector<Binding> Parser::bindings(const std::string& what) {
+std::vector<Binding> StatementParser::bindings(const std::string& what) {
     std::vector<Binding> out;
     do {
         Binding b;
@@ -197,7 +190,7 @@ std::vector<Binding> Parser::bindings(const std::string& what) {
     return out;
 }
 
-std::vector<Declared> Parser::declarations(const std::string& keyword) {
+std::vector<Declared> StatementParser::declarations() {
     std::vector<Declared> out;
     do {
         Declared d;
@@ -211,15 +204,13 @@ std::vector<Declared> Parser::declarations(const std::string& keyword) {
         } else if (peek().kind == TokenKind::name) {
             d.quantity.unit = unit();
         }
-        (void)keyword;
         out.push_back(std::move(d));
     } while (accept_punct(","));
     return out;
 }
 
-std::vector<ExprPtr> Parser::expression_list(const std::string& context) {
+std::vector<ExprPtr> StatementParser::expression_list() {
     std::vector<ExprPtr> out;
-    (void)context;
     out.push_back(expression());
     while (accept_punct(",")) out.push_back(expression());
     return out;
@@ -227,22 +218,9 @@ std::vector<ExprPtr> Parser::expression_list(const std::string& context) {
 
 // ---- expressions -----------------------------------------------------------------------
 
-struct DepthGuard {
-    int& depth;
-    DepthGuard(int& d, Location where) : depth(d) {
-        if (++depth > Limits::max_nesting)
-            throw ScriptError(where, "the expression is nested too deeply (more than " +
-                                         std::to_string(Limits::max_nesting) + " levels)",
-                              "name parts of it with assignments");
-    }
-    ~DepthGuard() { --depth; }
-    DepthGuard(const DepthGuard&) = delete;
-    DepthGuard& operator=(const DepthGuard&) = delete;
-};
+ExprPtr StatementParser::expression() { return sum(); }
 
-ExprPtr Parser::expression() { return sum(); }
-
-ExprPtr Parser::sum() {
+ExprPtr StatementParser::sum() {
     Location where = peek().location;
     ExprPtr first = term();
     if (!peek().is("+") && !peek().is("-")) return first;
@@ -259,7 +237,7 @@ ExprPtr Parser::sum() {
     return node;
 }
 
-ExprPtr Parser::term() {
+ExprPtr StatementParser::term() {
     Location where = peek().location;
     ExprPtr first = unary();
     if (!peek().is("*") && !peek().is("/")) return first;
@@ -276,7 +254,7 @@ ExprPtr Parser::term() {
     return node;
 }
 
-ExprPtr Parser::unary() {
+ExprPtr StatementParser::unary() {
     if (peek().is("-") || peek().is("+")) {
         Location where = peek().location;
         DepthGuard guard(depth_, where);
@@ -292,7 +270,7 @@ ExprPtr Parser::unary() {
     return power();
 }
 
-ExprPtr Parser::power() {
+ExprPtr StatementParser::power() {
     ExprPtr base = primary();
     if (!peek().is("^")) return base;
     Location where = peek().location;
@@ -306,7 +284,7 @@ ExprPtr Parser::power() {
     return node;
 }
 
-ExprPtr Parser::primary() {
+ExprPtr StatementParser::primary() {
     const Token& t = peek();
     auto node = std::make_unique<Expr>();
     node->location = t.location;
@@ -333,7 +311,7 @@ ExprPtr Parser::primary() {
                 DepthGuard guard(depth_, peek().location);
                 next();
                 node->kind = Expr::Kind::call;
-                if (!peek().is(")")) node->args = expression_list("as arguments");
+                if (!peek().is(")")) node->args = expression_list();
                 expect_punct(")", "to close the arguments of " + node->text + "(...)");
                 return node;
             }
@@ -399,243 +377,7 @@ ExprPtr Parser::primary() {
 
 // ---- statements ------------------------------------------------------------------------
 
-void Parser::statement_body(Statement& s) {
-    const std::string& k = s.keyword;
-    auto lists_of = [&](const char* role, const std::string& what) { s.lists[role] = name_list(what); };
-    if (k == "newtonian") {
-        s.words["name"] = name("the name of the Newtonian frame");
-    } else if (k == "frame" || k == "body" || k == "particle" || k == "point") {
-        lists_of("names", "a name for the new " + k);
-        if (k == "point" && accept_word("on")) s.words["on"] = name("the body the points are on");
-    } else if (k == "constant" || k == "variable" || k == "specified" || k == "unknown") {
-        s.declared = declarations(k);
-    } else if (k == "coordinates") {
-        lists_of("names", "a variable");
-    } else if (k == "system") {
-        s.words["name"] = name("a name for the system");
-        expect_punct("=", "after the system's name (system S = A, B, C)");
-        lists_of("bodies", "a body or particle");
-    } else if (k == "rotate") {
-        s.words["target"] = name("the frame or body to orient");
-        expect_word("from", "(rotate B from A ...)");
-        s.words["from"] = name("the frame it is oriented from");
-        if (accept_word("about")) {
-            s.words["kind"] = {"about", peek().location};
-            if (accept_punct("-")) s.flags["negative"] = true;
-            s.words["axis"] = name("an axis: x, y or z");
-            expect_word("by", "and the angle (rotate B from A about z by q)");
-            s.expr_lists["angles"].push_back(expression());
-        } else if (at_word("body") || at_word("space")) {
-            s.words["kind"] = {next().text, peek().location};
-            s.words["sequence"] = name("a rotation sequence such as XYZ or ZXZ");
-            expect_word("by", "and three angles (rotate B from A body XYZ by q1, q2, q3)");
-            s.expr_lists["angles"] = expression_list("angles");
-        } else if (accept_word("dcm")) {
-            s.words["kind"] = {"dcm", peek().location};
-            s.exprs["dcm"] = expression();
-        } else {
-            fail_expected("'about', 'body', 'space' or 'dcm'");
-        }
-    } else if (k == "translate") {
-        s.words["target"] = name("the point to locate");
-        expect_word("from", "(translate P from O by r>)");
-        s.words["from"] = name("the point it is located from");
-        expect_word("by", "and the position vector (translate P from O by r>)");
-        s.exprs["value"] = expression();
-    } else if (k == "velocity" || k == "acceleration" || k == "angvel" || k == "angacc") {
-        s.words["target"] = name(k == "angvel" || k == "angacc" ? "a frame or body" : "a point");
-        expect_word("in", "and the frame (" + k + " P in N = ...)");
-        s.words["in"] = name("a frame");
-        if ((k == "velocity" || k == "acceleration") && accept_word("from")) {
-            s.words["from"] = name("a point fixed on the body");
-            if (accept_word("fixed")) s.words["how"] = {"fixed", peek().location};
-            else if (k == "velocity" && accept_word("moving")) s.words["how"] = {"moving", peek().location};
-            else fail_expected(k == "velocity" ? "'fixed' or 'moving'" : "'fixed'");
-            expect_word("on", "and the body (... fixed on B)");
-            s.words["on"] = name("a frame or body");
-        } else {
-            expect_punct("=", "and the vector (" + k + " P in N = v>)");
-            s.exprs["value"] = expression();
-        }
-    } else if (k == "mass") {
-        s.words["target"] = name("a body or particle");
-        expect_punct("=", "and the mass (mass A = m_A)");
-        s.exprs["value"] = expression();
-    } else if (k == "inertia") {
-        s.words["target"] = name("a rigid body");
-        expect_punct("=", "and the moments (inertia A = Ixx, Iyy, Izz)");
-        s.expr_lists["moments"] = expression_list("moments");
-        if (accept_word("about")) s.words["about"] = name("a point");
-        if (accept_word("in")) s.words["in"] = name("a frame");
-    } else if (k == "gravity") {
-        s.exprs["value"] = expression();
-    } else if (k == "force" || k == "torque") {
-        s.words["label"] = name("a label for the " + k);
-        expect_word("on", "and what it acts on (" + k + " F on P = ...)");
-        s.words["on"] = name(k == "force" ? "a point" : "a body");
-        if (accept_word("from")) s.words["from"] = name(k == "force" ? "a point" : "a frame or body");
-        expect_punct("=", "and the " + k + " vector");
-        s.exprs["value"] = expression();
-    } else if (k == "spring" || k == "damper" || k == "attraction") {
-        s.words["label"] = name("a label");
-        expect_word("between", "(" + k + " label between P and Q ...)");
-        s.words["P"] = name("a point");
-        expect_word("and", "between the two points");
-        s.words["Q"] = name("a point");
-        if (k == "spring") {
-            expect_word("stiffness", "(spring k1 between P and Q stiffness k length L0)");
-            s.exprs["stiffness"] = expression();
-            expect_word("length", "and the natural length");
-            s.exprs["length"] = expression();
-        } else if (k == "damper") {
-            expect_word("coefficient", "(damper c1 between P and Q coefficient c)");
-            s.exprs["coefficient"] = expression();
-        } else {
-            expect_word("constant", "(attraction G1 between P and Q constant G)");
-            s.exprs["constant"] = expression();
-        }
-    } else if (k == "drag") {
-        s.words["label"] = name("a label");
-        expect_word("on", "(drag air on P linear c)");
-        s.words["on"] = name("a point");
-        if (at_word("linear") || at_word("quadratic")) s.words["law"] = {next().text, peek().location};
-        else fail_expected("'linear' or 'quadratic'");
-        s.exprs["coefficient"] = expression();
-    } else if (k == "friction") {
-        s.words["label"] = name("a label");
-        expect_word("on", "(friction f on P from Q coefficient mu normal Fn along u>)");
-        s.words["on"] = name("a point");
-        expect_word("from", "and the point it slides on");
-        s.words["from"] = name("a point");
-        expect_word("coefficient", "and the friction coefficient");
-        s.exprs["coefficient"] = expression();
-        expect_word("normal", "and the normal force");
-        s.exprs["normal"] = expression();
-        expect_word("along", "and the sliding direction");
-        s.exprs["along"] = expression();
-    } else if (k == "constraint") {
-        if (at_word("configuration") || at_word("motion")) s.words["kind"] = {next().text, peek().location};
-        else fail_expected("'configuration' or 'motion'");
-        s.words["name"] = name("a name for the constraint");
-        expect_punct("=", "and the residual (constraint configuration c = expression)");
-        s.exprs["value"] = expression();
-        if (accept_word("in")) s.words["in"] = name("a frame");
-    } else if (k == "roadmap") {
-        s.words["name"] = name("a name for the road-map's equations");
-        if (accept_word("for")) {
-            lists_of("unknowns", "an unknown");
-            if (accept_word("statics")) s.flags["statics"] = true;
-        }
-    } else if (k == "row") {
-        s.words["name"] = name("the road-map the row belongs to");
-        expect_word("for", "and the unknown (row E for T_A rotate S about A_o along Nz>)");
-        s.words["variable"] = name("the unknown of the row");
-        if (accept_word("rotate")) {
-            s.words["motion"] = {"rotate", peek().location};
-            s.words["system"] = name("a system or body");
-            expect_word("about", "and the about point");
-            s.words["about"] = name("a point");
-            expect_word("along", "and the direction");
-            s.exprs["direction"] = expression();
-        } else if (accept_word("translate")) {
-            s.words["motion"] = {"translate", peek().location};
-            s.words["system"] = name("a system or body");
-            expect_word("along", "and the direction");
-            s.exprs["direction"] = expression();
-        } else if (accept_word("constraint")) {
-            s.words["motion"] = {"constraint", peek().location};
-            s.words["constraint"] = name("a declared constraint");
-        } else {
-            fail_expected("'rotate', 'translate' or 'constraint'");
-        }
-        if (accept_word("statics")) s.flags["statics"] = true;
-    } else if (k == "kane" || k == "lagrange") {
-        s.words["name"] = name("a name for the equations");
-        expect_word("for", "and the coordinates (" + k + " K for q1, q2)");
-        lists_of("coordinates", "a coordinate");
-        while (k == "kane" && !at_end()) {
-            if (accept_word("speeds")) lists_of("speeds", "a speed");
-            else if (accept_word("kinematics")) s.exprs["kinematics"] = expression();
-            else if (accept_word("constraints")) s.exprs["constraints"] = expression();
-            else if (accept_word("dependent")) lists_of("dependent", "a speed");
-            else if (accept_word("auxiliary")) lists_of("auxiliary", "a speed");
-            else fail_expected("'speeds', 'kinematics', 'constraints', 'dependent' or 'auxiliary'");
-        }
-    } else if (k == "solve") {
-        s.words["name"] = name("the equations to solve");
-        expect_word("for", "and the unknowns (solve E for x, y)");
-        lists_of("unknowns", "an unknown");
-        while (!at_end()) {
-            if (accept_word("guess")) s.bindings["guess"] = bindings("an unknown");
-            else if (accept_word("at")) s.bindings["at"] = bindings("a symbol");
-            else fail_expected("'at' or 'guess'");
-        }
-    } else if (k == "evaluate") {
-        s.exprs["value"] = expression();
-        if (accept_word("at")) s.bindings["at"] = bindings("a symbol");
-    } else if (k == "initial") {
-        s.bindings["values"] = bindings("a coordinate or its rate (initial qA = 30 deg, qA' = 0)");
-    } else if (k == "input") {
-        s.bindings["values"] = bindings("a load measure (input T_A = -k*qA)");
-    } else if (k == "motion") {
-        s.bindings["values"] = bindings("a coordinate (motion qA = 30*sin(t) deg)");
-    } else if (k == "final") {
-        expect_word("time", "(final time 5 s)");
-        s.quantities["time"] = quantity();
-    } else if (k == "tolerance") {
-        if (at_end())
-            throw ScriptError(s.location, "a tolerance statement needs 'abs' or 'rel' and a number",
-                              "write tolerance abs 1e-10 rel 1e-10");
-        while (!at_end()) {
-            if (accept_word("abs")) s.quantities["abs"] = quantity();
-            else if (accept_word("rel")) s.quantities["rel"] = quantity();
-            else fail_expected("'abs' or 'rel' and a number (tolerance abs 1e-10 rel 1e-10)");
-        }
-    } else if (k == "output") {
-        if (at_word("step") && peek(1).kind == TokenKind::number) {
-            next();
-            s.quantities["step"] = quantity();
-        } else {
-            do {
-                Word label{};
-                if (peek().kind == TokenKind::name && peek(1).is("=")) {
-                    label = name("a column name");
-                    next();
-                }
-                s.lists["labels"].push_back(label);
-                s.expr_lists["values"].push_back(expression());
-                s.units.push_back(accept_word("in") ? unit() : UnitText{});
-            } while (accept_punct(","));
-        }
-    } else if (k == "stop") {
-        expect_word("when", "(stop when qA = 0 [rising | falling])");
-        s.exprs["lhs"] = expression();
-        expect_punct("=", "and the value it crosses (stop when qA = 0)");
-        s.quantities["rhs"] = quantity();
-        if (at_word("rising") || at_word("falling")) s.words["direction"] = {peek().text, peek().location}, next();
-    } else if (k == "simulate" || k == "inverse" || k == "codegen") {
-        if (k == "codegen") s.words["language"] = name("a language: c, cpp, matlab or python");
-        while (!at_end()) {
-            if (k == "inverse" && accept_word("for")) lists_of("loads", "a load measure");
-            else if (k == "codegen" && accept_word("for")) lists_of("loads", "a load measure");
-            else if (k == "inverse" && accept_word("from")) {
-                s.words["from"] = text("the motion table's path");
-                if (accept_word("cutoff")) s.quantities["cutoff"] = quantity();
-            } else if (k == "codegen" && accept_word("name")) s.words["name"] = name("an identifier for the files");
-            else if (k != "codegen" && accept_word("compiled")) s.flags["compiled"] = true;
-            else if (accept_word("to")) s.words["to"] = text("the output directory");
-            else fail_expected(k == "simulate" ? "'compiled' or 'to'"
-                               : k == "inverse" ? "'for', 'from', 'compiled' or 'to'"
-                                                : "'for', 'name' or 'to'");
-        }
-        if (k == "inverse" && !s.lists.count("loads"))
-            throw ScriptError(s.location, "inverse dynamics needs the load measures to solve for",
-                              "write inverse for T_A, T_B");
-    }
-    expect_end("the '" + k + "' statement");
-}
-
-Statement Parser::parse() {
+Statement StatementParser::parse() {
     Statement s;
     const Token& first = peek();
     s.location = first.location;
@@ -655,15 +397,14 @@ Statement Parser::parse() {
         s.source = first.text;
         return s;
     }
-    const auto& kw = statement_keywords();
-    bool keyword = first.kind == TokenKind::name &&
-                   std::find(kw.begin(), kw.end(), first.text) != kw.end() &&
-                   !peek(1).is("(") && !peek(1).is("=");
-    if (keyword) {
+    // a statement word starts its statement, unless a call or an assignment uses the word
+    const StatementSpec* spec = first.kind == TokenKind::name ? find_statement(first.text) : nullptr;
+    if (spec && !peek(1).is("(") && !peek(1).is("=")) {
         s.keyword = first.text;
         keyword_ = s.keyword;
         next();
-        statement_body(s);
+        spec->parse(*this, s);
+        expect_end("the '" + s.keyword + "' statement");
         return s;
     }
     if ((first.kind == TokenKind::name || first.kind == TokenKind::vector_name) && peek(1).is("=")) {
@@ -677,38 +418,35 @@ Statement Parser::parse() {
         return s;
     }
     if (first.kind == TokenKind::name && !peek(1).is("(") && !peek(1).is("[") &&
-        peek(1).kind == TokenKind::name && clause_words().count(first.text) == 0)
-        throw ScriptError(first.location, "unknown statement '" + first.text + "'",
-                          "statements start with a word such as body, rotate, kane or solve "
-                          "(docs/language.md), or are assignments name = value");
+        peek(1).kind == TokenKind::name && !is_clause_word(first.text))
+        throw ScriptError(first.location, "unknown statement '" + first.text + "'", unknown_statement_hint(first.text));
     s.exprs["value"] = expression();
     expect_end("the expression");
     return s;
 }
 
-}  // namespace
-
 const std::vector<std::string>& statement_keywords() {
-    static const std::vector<std::string> k{
-        "newtonian", "frame", "body", "particle", "point", "constant", "variable", "specified",
-        "unknown", "coordinates", "system", "rotate", "translate", "velocity", "acceleration",
-        "angvel", "angacc", "mass", "inertia", "gravity", "force", "torque", "spring", "damper",
-        "drag", "friction", "attraction", "constraint", "roadmap", "row", "kane", "lagrange",
-        "solve", "evaluate", "initial", "input", "motion", "final", "tolerance", "output", "stop",
-        "simulate", "inverse", "codegen"};
+    static const std::vector<std::string> k = [] {
+        std::vector<std::string> out;
+        for (const StatementSpec& spec : statements()) out.emplace_back(spec.keyword);
+        return out;
+    }();
     return k;
 }
 
+const std::vector<std::string>& function_names() {
+    static const std::vector<std::string> f(function_words().begin(), function_words().end());
+    return f;
+}
+
 bool is_reserved(std::string_view name) {
-    const auto& kw = statement_keywords();
-    return std::find(kw.begin(), kw.end(), name) != kw.end() || clause_words().count(name) != 0 ||
-           function_words().count(name) != 0;
+    return find_statement(name) != nullptr || is_clause_word(name) || function_words().count(name) != 0;
 }
 
 Statement parse_statement(const std::vector<Token>& tokens, std::string_view source) {
     if (tokens.empty() || tokens.back().kind != TokenKind::end)
         throw ScriptError({}, "internal: a statement must end with an end token");
-    return Parser(tokens, source).parse();
+    return StatementParser(tokens, source).parse();
 }
 
 }  // namespace alembert::lang

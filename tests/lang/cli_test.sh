@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # The alembert command end to end: exit statuses (0 success, 1 script error, 2 usage error),
-# standard input, the road-map command and the interactive session going on after an error.
+# standard input, the road-map command and the interactive session (going on after an error,
+# its exit status, help, quit and exit).
 # Usage: cli_test.sh ALEMBERT SOURCE_DIR
 set -uo pipefail
 alembert=$1
@@ -45,11 +46,33 @@ contains stdin "$tmp/out" "> z = 1 + 1"
 expect quiet 0 bash -c "printf 'newtonian N\nz = 1 + 1\n' | '$alembert' run --quiet -"
 if grep -q "^> " "$tmp/out"; then echo "FAIL quiet: statements echoed"; fails=$((fails + 1)); fi
 
-# the interactive session reports an error and goes on; a bracket continues the statement
-expect session 0 bash -c "printf 'newtonian N\nz = nope\nZ = [1,\n 2]\nw = 5\n' | '$alembert'"
+# the interactive session reports an error and goes on; a bracket continues the statement;
+# piped input that had an error ends with status 1
+expect session 1 bash -c "printf 'newtonian N\nz = nope\nZ = [1,\n 2]\nw = 5\n' | '$alembert'"
 contains session "$tmp/err" "<stdin>:2:5: error: 'nope' is not declared"
 contains session "$tmp/out" "Z[2]: 0 = 2"
 contains session "$tmp/out" "w = 5"
+expect session_ok 0 bash -c "printf 'newtonian N\nw = 5\n' | '$alembert'"
+contains session_ok "$tmp/out" "w = 5"
+
+# quit and exit end the session (status 0 when nothing failed); later lines do not run
+for word in quit exit; do
+  expect "session_$word" 0 bash -c "printf 'newtonian N\nw = 5\n$word\nv = 6\n' | '$alembert'"
+  contains "session_$word" "$tmp/out" "w = 5"
+  if grep -q "v = 6" "$tmp/out"; then echo "FAIL session_$word: ran past '$word'"; fails=$((fails + 1)); fi
+done
+expect session_quit_after_error 1 bash -c "printf 'newtonian N\nz = nope\nquit\n' | '$alembert'"
+
+# help lists every statement of docs/language.md's tables; help WORD shows its forms
+expect session_help 0 bash -c "printf 'help\nhelp rotate\nhelp nope\n' | '$alembert'"
+keywords=$(sed -n '/<!-- statements:/,/<!-- end of statements -->/s/^| `\([a-z]*\)[` ].*/\1/p' "$root/docs/language.md" | sort -u)
+[[ $(wc -w <<<"$keywords") -ge 44 ]] || { echo "FAIL session_help: statements not found in docs/language.md"; fails=$((fails + 1)); }
+for k in $keywords; do
+  grep -qE "^  $k +[^ ]" "$tmp/out" || { echo "FAIL session_help: '$k' not listed by help"; fails=$((fails + 1)); }
+done
+contains session_help "$tmp/out" "  rotate B from A about [-]axis by angle"
+contains session_help "$tmp/out" "      e.g. rotate B from A about z by qB"
+contains session_help "$tmp/out" "'nope' is not a statement; type help for the list of statements"
 
 expect roadmap 0 "$alembert" roadmap "$root/examples/sit_to_stand/model.alb"
 contains roadmap "$tmp/out" "| T_A      | rotate           | Nz>       | {A, B, C} |"

@@ -10,8 +10,12 @@
 
 namespace alembert::lang {
 
-/// The statement words of the language, in the order docs/language.md lists them.
+/// The statement words of the language, in the order docs/language.md lists them (the
+/// keywords of statements(), statements.hpp).
 const std::vector<std::string>& statement_keywords();
+
+/// The names of the functions expressions may call (`sin`, `dot`, `vel`, ...), sorted.
+const std::vector<std::string>& function_names();
 
 /// True if `name` is reserved (a statement word, a clause word or a function name), so it
 /// cannot name a model object.

@@ -1,0 +1,215 @@
+// SPDX-License-Identifier: MIT
+// The declaration statements: the Newtonian frame, frames, bodies, particles, points, symbols,
+// coordinates and systems. Each statement's grammar, meaning and help, and their table.
+#include <algorithm>
+
+#include "interpreter_impl.hpp"
+#include "statement_parser.hpp"
+
+namespace alembert::lang {
+
+namespace {
+
+// ---- grammar -----------------------------------------------------------------------------
+
+void parse_newtonian(StatementParser& p, Statement& s) {
+    s.words["name"] = p.name("the name of the Newtonian frame");
+}
+
+// frame, body, particle, point: a list of new names (a point may be on a body)
+void parse_objects(StatementParser& p, Statement& s) {
+    s.lists["names"] = p.name_list("a name for the new " + s.keyword);
+    if (s.keyword == "point" && p.accept_word("on")) s.words["on"] = p.name("the body the points are on");
+}
+
+// constant, variable, specified, unknown: names with primes, values and units
+void parse_symbols(StatementParser& p, Statement& s) { s.declared = p.declarations(); }
+
+void parse_coordinates(StatementParser& p, Statement& s) { s.lists["names"] = p.name_list("a variable"); }
+
+void parse_system(StatementParser& p, Statement& s) {
+    s.words["name"] = p.name("a name for the system");
+    p.expect_punct("=", "after the system's name (system S = A, B, C)");
+    s.lists["bodies"] = p.name_list("a body or particle");
+}
+
+// ---- meaning -----------------------------------------------------------------------------
+
+void run_newtonian(Interpreter::Impl& m, const Statement& s) {
+    if (m.sys)
+        throw ScriptError(s.location, "the Newtonian frame is already declared (" +
+                                          m.sys->newtonian().name() + ")",
+                          "a model has one Newtonian frame; declare other frames with 'frame'");
+    const Word& n = s.word("name");
+    m.declare_name(n, NameKind::frame);
+    m.sys = std::make_unique<System>(n.text);
+    m.names[n.text + "_o"] = {NameKind::point, n.location};
+}
+
+void run_objects(Interpreter::Impl& m, const Statement& s) {
+    System& sys = m.model(s.location);
+    const std::string& k = s.keyword;
+    const Body* owner = s.has_word("on") ? &m.body(s.word("on")) : nullptr;
+    for (const Word& w : s.lists.at("names")) {
+        if (k == "frame") {
+            m.declare_name(w, NameKind::frame);
+            m.guard(w.location, [&] { sys.add_frame(w.text); });
+        } else if (k == "point") {
+            m.declare_name(w, NameKind::point);
+            m.guard(w.location, [&] { sys.add_point(w.text, owner); });
+        } else if (k == "particle") {
+            m.declare_name(w, NameKind::particle);
+            m.guard(w.location, [&] { sys.add_particle(w.text); });
+        } else {
+            // the body's frame shares its name; its origin and mass centre are points
+            for (const std::string& p : {w.text + "_o", w.text + "cm"})
+                if (m.names.count(p))
+                    throw ScriptError(w.location, "body '" + w.text + "' needs the point name '" + p +
+                                                      "', which is already " + kind_word(m.names[p].kind) +
+                                                      at_line(m.names[p].declared),
+                                      "choose another name for the body");
+            m.declare_name(w, NameKind::body);
+            m.guard(w.location, [&] { sys.add_rigid_body(w.text); });
+            m.names[w.text + "_o"] = {NameKind::point, w.location};
+            m.names[w.text + "cm"] = {NameKind::point, w.location};
+        }
+    }
+}
+
+void run_symbols(Interpreter::Impl& m, const Statement& s) {
+    System& sys = m.model(s.location);
+    SymbolTable& table = sys.symbols();
+    const std::string& k = s.keyword;
+    for (const Declared& d : s.declared) {
+        bool timed = k == "variable" || k == "specified";
+        if (d.primes > 0 && !timed)
+            throw ScriptError(d.name.location, "a " + k + " has no derivatives",
+                              "declare '" + d.name.text + "' without primes, or as a variable");
+        if (d.primes > Limits::max_derivative)
+            throw ScriptError(d.name.location, "'" + d.name.text + "' declares " +
+                                                   std::to_string(d.primes) +
+                                                   " derivatives; at most 4 are allowed",
+                              "declare only the derivatives the equations need (q'' for dynamics)");
+        if (d.quantity.value && k != "constant")
+            throw ScriptError(d.quantity.value->location, "only constants take a value when declared",
+                              "give values to " + k + "s in 'solve ... at' or 'evaluate ... at'");
+        SymbolUnits su;
+        std::optional<double> value;
+        if (!d.quantity.unit.empty()) {
+            Unit u = parse_unit(d.quantity.unit);
+            su.dim = u.dimension;
+            su.display = u;
+        }
+        if (d.quantity.value) {
+            Dimension got = Dimension::open();
+            value = m.number_of(d.quantity, Dimension::open(), "the value of " + d.name.text,
+                                d.name.location, &got);
+        }
+        m.declare_name(d.name, NameKind::symbol);
+        m.guard(d.name.location, [&] {
+            if (k == "constant") table.add_constant(d.name.text, value);
+            else if (k == "variable") table.add_variable(d.name.text, d.primes);
+            else if (k == "specified") table.add_specified(d.name.text, d.primes);
+            else table.add_unknown(d.name.text);
+        });
+        for (int i = 1; i <= d.primes; ++i)
+            m.names[d.name.text + std::string(static_cast<std::size_t>(i), '\'')] = {NameKind::symbol,
+                                                                                     d.name.location};
+        m.units[d.name.text] = su;
+    }
+}
+
+void run_coordinates(Interpreter::Impl& m, const Statement& s) {
+    std::vector<TimeVariable> q;
+    for (const Word& w : s.lists.at("names")) q.push_back(m.variable(w));
+    m.coordinates = q;
+    m.coordinates_given = true;
+}
+
+void run_system(Interpreter::Impl& m, const Statement& s) {
+    const Word& n = s.word("name");
+    BodySet S;
+    for (const Word& w : s.lists.at("bodies")) {
+        const Body* b = &m.body(w);
+        if (std::find(S.begin(), S.end(), b) != S.end())
+            throw ScriptError(w.location, "'" + w.text + "' is listed twice", "list each body once");
+        S.push_back(b);
+    }
+    m.declare_name(n, NameKind::system);
+    m.systems[n.text] = S;
+}
+
+}  // namespace
+
+// ---- the statements ----------------------------------------------------------------------
+
+std::vector<StatementSpec> declaration_statements() {
+    const std::string_view family = "Declarations";
+    return {
+        {.keyword = "newtonian", .family = family,
+         .help = "names the Newtonian (ground) frame; it comes first",
+         .forms = {{"`newtonian` *N*",
+                    "newtonian N",
+                    "`System(\"N\")` (must come first)"}},
+         .parse = parse_newtonian, .run = run_newtonian, .needs_model = false},
+        {.keyword = "frame", .family = family, .help = "declares reference frames",
+         .forms = {{"`frame` *names*",
+                    "frame Y, L",
+                    "`System::add_frame`"}},
+         .parse = parse_objects, .run = run_objects},
+        {.keyword = "body", .family = family,
+         .help = "declares rigid bodies, each with its frame, its origin B_o and mass centre Bcm",
+         .forms = {{"`body` *names*",
+                    "body A, B, C",
+                    "`System::add_rigid_body` (frame A, points `A_o`, `Acm`)"}},
+         .parse = parse_objects, .run = run_objects},
+        {.keyword = "particle", .family = family, .help = "declares particles (point masses)",
+         .forms = {{"`particle` *names*",
+                    "particle Q",
+                    "`System::add_particle` (point Q)"}},
+         .parse = parse_objects, .run = run_objects},
+        {.keyword = "point", .family = family, .help = "declares points, on a body if given",
+         .forms = {{"`point` *names* [`on` *body*]",
+                    "point B_P on B",
+                    "`System::add_point` (on a body: forces there act on it)"}},
+         .clauses = {"on"}, .parse = parse_objects, .run = run_objects},
+        {.keyword = "constant", .family = family,
+         .help = "declares constants, with a value and a unit if given",
+         .forms = {{"`constant` *name* [`=` *value*] [*unit*], ...",
+                    "constant g = 9.81 m/s^2, k N/m, c",
+                    "`SymbolTable::add_constant`"}},
+         .parse = parse_symbols, .run = run_symbols},
+        {.keyword = "variable", .family = family,
+         .help = "declares functions of time (coordinates, speeds) and their derivatives",
+         .forms = {{"`variable` *name*`''` [*unit*], ...",
+                    "variable qA'', x'' m, u1'",
+                    "`SymbolTable::add_variable(name, primes)`"}},
+         .parse = parse_symbols, .run = run_symbols},
+        {.keyword = "specified", .family = family,
+         .help = "declares given functions of time and their derivatives",
+         .forms = {{"`specified` *name*`''` [*unit*], ...",
+                    "specified F' N",
+                    "`SymbolTable::add_specified`"}},
+         .parse = parse_symbols, .run = run_symbols},
+        {.keyword = "unknown", .family = family,
+         .help = "declares unknowns: load measures and values to solve for",
+         .forms = {{"`unknown` *name* [*unit*], ...",
+                    "unknown T_A N*m, F_x N",
+                    "`SymbolTable::add_unknown`"}},
+         .parse = parse_symbols, .run = run_symbols},
+        {.keyword = "coordinates", .family = family,
+         .help = "sets the coordinates road-maps plan with",
+         .forms = {{"`coordinates` *variables*",
+                    "coordinates qA, qB, qC",
+                    "the coordinates road-maps plan with (default: every variable)"}},
+         .parse = parse_coordinates, .run = run_coordinates},
+        {.keyword = "system", .family = family,
+         .help = "names a set of bodies (a road-map row's system, mass(S), kinetic(S), ...)",
+         .forms = {{"`system` *S* `=` *bodies*",
+                    "system S = A, B, C",
+                    "`System::bodies({...})`, the system S of a road-map row"}},
+         .parse = parse_system, .run = run_system},
+    };
+}
+
+}  // namespace alembert::lang
