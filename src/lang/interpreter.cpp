@@ -344,6 +344,14 @@ double Interpreter::Impl::number_of(const Quantity& q, const Dimension& expected
     return x;
 }
 
+void Interpreter::Impl::require_each_once(const std::vector<Word>& list, const std::string& what) {
+    for (std::size_t i = 0; i < list.size(); ++i)
+        for (std::size_t j = 0; j < i; ++j)
+            if (list[j].text == list[i].text)
+                throw ScriptError(list[i].location, "'" + list[i].text + "' is listed twice",
+                                  "list each " + what + " once");
+}
+
 exmap Interpreter::Impl::bindings(const std::vector<Binding>& list, const std::string& purpose) {
     exmap out;
     for (const Binding& b : list) {

@@ -99,13 +99,9 @@ void Interpreter::Impl::roadmap(const Statement& s) {
         return;
     }
     if (names.count(n.text) && !roadmaps.count(n.text)) declare_name(n, NameKind::value);
+    require_each_once(s.lists.at("unknowns"), "unknown");
     std::vector<ex> unknowns;
-    for (const Word& w : s.lists.at("unknowns")) {
-        ex x = symbol(w, "an unknown, coordinate or acceleration");
-        if (std::find(unknowns.begin(), unknowns.end(), x) != unknowns.end())
-            throw ScriptError(w.location, "'" + w.text + "' is listed twice", "list each unknown once");
-        unknowns.push_back(x);
-    }
+    for (const Word& w : s.lists.at("unknowns")) unknowns.push_back(symbol(w, "an unknown, coordinate or acceleration"));
     std::vector<TimeVariable> q = default_coordinates();
     Analysis analysis = s.flag("statics") ? Analysis::statics : Analysis::dynamics;
     std::vector<RoadmapRow> rows = guard(n.location, [&] { return plan_roadmap(m, q, unknowns, analysis); });
@@ -157,6 +153,7 @@ void Interpreter::Impl::methods(const Statement& s) {
     if (it != names.end() && it->second.kind != NameKind::value)
         throw ScriptError(n.location, "'" + n.text + "' is already declared and cannot name equations",
                           "choose another name");
+    require_each_once(s.lists.at("coordinates"), "coordinate");
     std::vector<TimeVariable> q;
     for (const Word& w : s.lists.at("coordinates")) q.push_back(variable(w));
     std::vector<ex> eqs;
@@ -199,12 +196,11 @@ void Interpreter::Impl::solve(const Statement& s) {
         throw ScriptError(n.location, "'" + n.text + "' is not a list of equations", "");
     }
     const std::vector<ex>& eqs = it->second.a;
+    require_each_once(s.lists.at("unknowns"), "unknown");
     std::vector<ex> xs;
     std::vector<std::string> printed;
     for (const Word& w : s.lists.at("unknowns")) {
         ex x = symbol(w, "a symbol to solve for");
-        if (std::find(xs.begin(), xs.end(), x) != xs.end())
-            throw ScriptError(w.location, "'" + w.text + "' is listed twice", "list each unknown once");
         bool appears = std::any_of(eqs.begin(), eqs.end(), [&](const ex& e) { return table.depends_on(e, x); });
         if (!appears)
             throw ScriptError(w.location, "'" + w.text + "' does not appear in the equations " + n.text,

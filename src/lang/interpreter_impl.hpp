@@ -136,6 +136,9 @@ struct Interpreter::Impl {
     // ---- names and objects -----------------------------------------------------------------
     System& model(Location where);
     void declare_name(const Word& w, NameKind kind);
+    /// Throws at the second of two equal names in a list ("'q' is listed twice"), with the
+    /// hint "list each <what> once".
+    static void require_each_once(const std::vector<Word>& list, const std::string& what);
     [[noreturn]] void undeclared(const Word& w, const std::string& wanted) const;
     Frame& frame(const Word& w);
     Point& point(const Word& w);

@@ -129,11 +129,9 @@ void run_coordinates(Interpreter::Impl& m, const Statement& s) {
 void run_system(Interpreter::Impl& m, const Statement& s) {
     const Word& n = s.word("name");
     BodySet S;
+    Interpreter::Impl::require_each_once(s.lists.at("bodies"), "body");
     for (const Word& w : s.lists.at("bodies")) {
-        const Body* b = &m.body(w);
-        if (std::find(S.begin(), S.end(), b) != S.end())
-            throw ScriptError(w.location, "'" + w.text + "' is listed twice", "list each body once");
-        S.push_back(b);
+        S.push_back(&m.body(w));
     }
     m.declare_name(n, NameKind::system);
     m.systems[n.text] = S;

@@ -3,6 +3,7 @@
 // constraints: each statement's grammar, meaning and help, and their tables.
 #include <algorithm>
 
+#include "alembert/mech/model_checks.hpp"
 #include "interpreter_impl.hpp"
 #include "statement_parser.hpp"
 
@@ -77,7 +78,10 @@ void run_rotate(Interpreter::Impl& m, const Statement& s) {
                               "a direction-cosine matrix must be 3 by 3, written [a, b, c; d, e, f; g, h, i]",
                               "separate the rows with ';'");
         m.check_dimension(v.dim, Dimension::none(), "a direction-cosine matrix", s.exprs.at("dcm")->location);
-        m.guard(where, [&] { B.orient_dcm(A, v.m); });
+        m.guard(where, [&] {
+            check_direction_cosines(m.model(where).symbols(), v.m, target.text, from.text);
+            B.orient_dcm(A, v.m);
+        });
     }
 }
 

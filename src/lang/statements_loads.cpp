@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The statements of mass and loads: masses, inertias, gravity, forces, torques, springs,
 // dampers, drag, friction and attraction. Each statement's grammar, meaning and help.
+#include "alembert/mech/model_checks.hpp"
 #include "interpreter_impl.hpp"
 #include "statement_parser.hpp"
 
@@ -19,7 +20,10 @@ void parse_mass(StatementParser& p, Statement& s) {
 void run_mass(Interpreter::Impl& m, const Statement& s) {
     Body& B = m.body(s.word("target"));
     ex mass = m.scalar(*s.exprs.at("value"), Dimension::mass(), "the mass of " + s.word("target").text);
-    m.guard(s.word("target").location, [&] { B.set_mass(mass); });
+    m.guard(s.word("target").location, [&] {
+        check_mass(m.model(s.location).symbols(), mass, s.word("target").text);
+        B.set_mass(mass);
+    });
 }
 
 void parse_inertia(StatementParser& p, Statement& s) {
@@ -43,6 +47,13 @@ void run_inertia(Interpreter::Impl& m, const Statement& s) {
     while (I.size() < 6) I.push_back(0);
     const Point& about = s.has_word("about") ? m.point(s.word("about")) : B.cm();
     Location where = s.word("target").location;
+    // the moments and products as a matrix, about `about` in the frame they are given in
+    Mat3 J;
+    J(0, 0) = I[0], J(1, 1) = I[1], J(2, 2) = I[2];
+    J(0, 1) = J(1, 0) = I[3];
+    J(1, 2) = J(2, 1) = I[4];
+    J(2, 0) = J(0, 2) = I[5];
+    m.guard(where, [&] { check_inertia_matrix(m.model(s.location).symbols(), J, B.name()); });
     if (s.has_word("in")) {
         Frame& F = m.frame(s.word("in"));
         m.guard(where, [&] { B.set_inertia(about, inertia_dyadic(F, I[0], I[1], I[2], I[3], I[4], I[5])); });

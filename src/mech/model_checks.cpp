@@ -134,7 +134,10 @@ void check_inertia_matrix(const SymbolTable& st, const Mat3& I, const std::strin
                          "(principal moments " + moments +
                          "); moments of inertia are sums of m r^2: check the signs of the "
                          "moments and the size of the products of inertia");
-    if (p(0) + p(1) < p(2) - tol)
+    // a moment written as 0 is the planar convention (inertia A = 0, 0, I_A: only the moment
+    // about the plane's normal matters), not a claim about the body: no triangle check then
+    const bool planar = I(0, 0).is_zero() || I(1, 1).is_zero() || I(2, 2).is_zero();
+    if (!planar && p(0) + p(1) < p(2) - tol)
         throw ModelError("the inertia of '" + body + "' is not physical: its principal "
                          "moments " + moments + " break the triangle inequality I1 + I2 >= I3 "
                          "that every mass distribution satisfies; check the moments (a thin "

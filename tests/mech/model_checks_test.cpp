@@ -61,6 +61,10 @@ TEST(ModelChecks, InertiasMustBeThoseOfSomeMassDistribution) {
     EXPECT_NO_THROW(check_inertia_matrix(st, inertia_matrix(0, 1, 1), "rod"));
     EXPECT_NO_THROW(check_inertia_matrix(st, inertia_matrix(1, 1, 2), "disk"));
     EXPECT_NO_THROW(check_inertia_matrix(st, inertia_matrix(2, 3, 4, 0.5, -0.2, 0.1), "box"));
+    // the planar convention: only the moment about the plane's normal is given
+    EXPECT_NO_THROW(check_inertia_matrix(st, inertia_matrix(0, 0, 1), "planar"));
+    EXPECT_THROW_MSG(check_inertia_matrix(st, inertia_matrix(0, 0, -1), "planar"), ModelError,
+                     "negative principal moment");
     EXPECT_THROW_MSG(check_inertia_matrix(st, inertia_matrix(1, -2, 1), "A"), ModelError,
                      "the inertia of 'A' has a negative principal moment");
     EXPECT_THROW_MSG(check_inertia_matrix(st, inertia_matrix(1, 1, 3), "A"), ModelError,

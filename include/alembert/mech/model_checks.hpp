@@ -29,8 +29,10 @@ void check_mass(const SymbolTable& st, const ex& mass, const std::string& body);
 /// Checks that an inertia matrix (moments on the diagonal, products of inertia as matrix
 /// elements off it, about any point) is physical: symmetric positive semidefinite, with
 /// principal moments that satisfy the triangle inequality I1 + I2 >= I3 (every mass
-/// distribution does, since I1 + I2 - I3 = 2 sum m z^2 in principal axes). Skipped when an
-/// entry holds a constant without a value or a time-varying symbol.
+/// distribution does, since I1 + I2 - I3 = 2 sum m z^2 in principal axes). A moment written
+/// as exactly 0 is read as the planar convention (`0, 0, I_A`: only the moment about the
+/// plane's normal matters) and turns the triangle check off. Skipped when an entry holds a
+/// constant without a value or a time-varying symbol.
 /// @throws alembert::ModelError naming `body`, the principal moments, and what is wrong.
 void check_inertia_matrix(const SymbolTable& st, const Mat3& I, const std::string& body);
 
