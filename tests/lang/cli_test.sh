@@ -62,7 +62,7 @@ expect roadmap_error 1 "$alembert" roadmap "$tmp/bad.alb"
 model="$root/examples/sit_to_stand/model.alb"
 motion="$root/examples/sit_to_stand_inverse/motion.csv"
 expect inverse 0 "$alembert" inverse "$model" --motion "$motion" --out "$tmp/inv"
-contains inverse "$tmp/inv/torques.csv" "t [s],TA [N*m],TB [N*m],TC [N*m]"
+contains inverse "$tmp/inv/torques.csv" "t [s],T_A [N*m],T_B [N*m],T_C [N*m]"
 contains inverse "$tmp/out" "inverse dynamics over the motion table motion.csv, t = 0 to 1.5 s: 151 samples"
 if grep -q "^E_T_A\|^> " "$tmp/out"; then echo "FAIL inverse: the model's own transcript printed"; fails=$((fails + 1)); fi
 if ! paste -d, <(tail -n +2 "$tmp/inv/torques.csv") <(tail -n +2 "$root/examples/sit_to_stand_inverse/torques.csv") |

@@ -154,7 +154,7 @@ TEST(Inverse, APrescribedMotionNeedsTheStaticHoldingTorquesWhereItIsAtRest) {
           "final time 1.5 s\noutput step 0.01 s\ninverse for T_A, T_B, T_C\n");
     alembert::Table t = alembert::read_csv((dir.path / "torques.csv").string());
     ASSERT_EQ(t.row_count(), 151u);
-    EXPECT_EQ(t.names, (std::vector<std::string>{"t", "TA", "TB", "TC"}));
+    EXPECT_EQ(t.names, (std::vector<std::string>{"t", "T_A", "T_B", "T_C"}));
     EXPECT_EQ(t.units[1], "N*m");
     auto seat = holding(-25 * kDeg, 105 * kDeg, -130 * kDeg), stand = holding(-5 * kDeg, 10 * kDeg, -10 * kDeg);
     for (int j = 0; j < 3; ++j) {
