@@ -165,6 +165,22 @@ TEST(Inverse, APrescribedMotionNeedsTheStaticHoldingTorquesWhereItIsAtRest) {
     EXPECT_NE(r.out.str().find("inverse dynamics over the prescribed motion"), std::string::npos);
 }
 
+TEST(Inverse, ForcesGoToForcesCsvUnderTheirOwnNames) {
+    // a 2 kg particle moved as x = A sin(w t) needs F_x = m x'' = -m A w^2 sin(w t)
+    TempDir dir;
+    Script r(dir.path);
+    r.run("newtonian N\nparticle Q\nvariable x'' m\nconstant m = 2 kg, A = 0.1 m, w = 3 rad/s\n"
+          "unknown F_x N\nmass Q = m\ntranslate Q from N_o by x*Nx>\nforce push on Q = F_x*Nx>\n"
+          "motion x = A*sin(w*t)\nfinal time 1 s\noutput step 0.1 s\ninverse for F_x\n");
+    EXPECT_FALSE(fs::exists(dir.path / "torques.csv"));
+    alembert::Table t = alembert::read_csv((dir.path / "forces.csv").string());
+    EXPECT_EQ(t.names, (std::vector<std::string>{"t", "F_x"}));
+    EXPECT_EQ(t.units[1], "N");
+    for (std::size_t k = 0; k < t.row_count(); ++k)
+        EXPECT_NEAR(t.columns[1][k], -2 * 0.1 * 9 * std::sin(3 * t.columns[0][k]), 1e-10);  // 12 digits in the CSV
+    EXPECT_NE(r.out.str().find("wrote forces.csv"), std::string::npos) << r.out.str();
+}
+
 TEST(Inverse, SampledMotionDataReproduceTheFormulaTorquesAwayFromTheEnds) {
     // the shipped 100 Hz table of the same motion, filtered at 6 Hz and differentiated: within
     // 3 % of each torque's peak on [0.2, 1.3] s (the tolerance of the sim layer's own check)
