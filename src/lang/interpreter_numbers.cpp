@@ -356,7 +356,9 @@ void Interpreter::Impl::simulate(const Statement& s) {
             for (double e : col) change = std::max(change, std::abs(e - col.front()));
             out << "\nenergy: " << format_number(col.front()) << " J at the start; ";
             if (change == 0) out << "unchanged";
-            else if (scale > 0) out << "its largest change is below " << bound_of(change / scale) << " of its largest value";
+            // a relative bound of 1e0 or more says nothing (an energy that stays near zero): in J
+            else if (scale > 0 && change / scale < 0.1) out << "its largest change is below " << bound_of(change / scale) << " of its largest value";
+            else out << "its largest change is below " << bound_of(change) << " J";
         } else if (res.table.names[c].rfind("drift_", 0) == 0) {
             double worst = 0;
             for (double e : col) worst = std::max(worst, std::abs(e));

@@ -145,6 +145,28 @@ TEST(Simulate, AMotorLawActsAsTheScriptWritesIt) {
     EXPECT_THROW(t.column_index("energy"), alembert::ArgumentError);
 }
 
+TEST(Simulate, AConstraintsDriftIsReportedInTheUnitOfItsResidual) {
+    // a pendulum as a particle held on the circle x^2 + y^2 = L^2 by a rod force F
+    TempDir dir;
+    Script r(dir.path);
+    r.run("newtonian N\nparticle P\nconstant L = 0.5 m, m = 1 kg, g = 9.81 m/s^2\n"
+          "variable x'' m, y'' m\nunknown F N\nmass P = m\ntranslate P from N_o by x*Nx> + y*Ny>\n"
+          "gravity -g*Ny>\nforce rod on P = F*(x*Nx> + y*Ny>)/L\n"
+          "constraint configuration circle = x^2 + y^2 - L^2\n"
+          "initial x = 0.5 m, y = 0 m\ntolerance abs 1e-12 rel 1e-12\nfinal time 1 s\n"
+          "output step 0.1 s\nsimulate\n");
+    alembert::Table t = alembert::read_csv((dir.path / "simulation.csv").string());
+    const std::size_t c = t.column_index("drift_circle");
+    EXPECT_EQ(t.units[c], "m^2");
+    for (double v : t.columns[c]) EXPECT_LT(std::abs(v), 1e-8);
+    EXPECT_NE(r.out.str().find("constraint circle: largest residual below 1e-"), std::string::npos) << r.out.str();
+    EXPECT_NE(r.out.str().find(" m^2\n"), std::string::npos) << r.out.str();
+    // its energy stays near zero: the change is stated in J, not as "below 1e1 of its largest value"
+    EXPECT_NE(r.out.str().find("energy: 0 J at the start; its largest change is below 1e-"), std::string::npos)
+        << r.out.str();
+    EXPECT_EQ(r.out.str().find("of its largest value"), std::string::npos) << r.out.str();
+}
+
 TEST(Inverse, APrescribedMotionNeedsTheStaticHoldingTorquesWhereItIsAtRest) {
     TempDir dir;
     Script r(dir.path);
