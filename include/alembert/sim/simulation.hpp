@@ -116,15 +116,18 @@ struct SimulationResult {
 /// dense output: outputs are interpolated exactly at the requested times (fourth-order dense
 /// output), events are checked at every accepted step and located by bisection on the dense
 /// output to 1e-12 s (a sign change inside one step is found; two crossings inside one step
-/// cancel). `inputs` gives the run-time inputs (empty: all zero).
+/// cancel). `inputs` gives the run-time inputs (empty: all zero). `check_row`, if given, sees
+/// each output row as it is written (the table so far and the row's index) and stops the run
+/// by throwing (run_simulation's constraint drift check).
 /// @throws alembert::ArgumentError for bad options or state sizes (named), or more output
 ///         rows than options.max_output_rows (checked up front: calc_output_row_count);
 ///         alembert::SolveError naming the model and the time if the dynamics fail (singular
-///         mass matrix) or the step count exceeds options.max_steps.
+///         mass matrix) or the step count exceeds options.max_steps; what check_row throws.
 SimulationResult simulate(const ForwardDynamics& fd, const std::vector<double>& q0,
                           const std::vector<double>& qd0, const SimulationOptions& options,
                           const OutputFunction& outputs, const EventFunction& events = {},
-                          const InputFunction& inputs = {});
+                          const InputFunction& inputs = {},
+                          const std::function<void(const Table&, std::size_t)>& check_row = {});
 
 /// The number of output rows `options` asks for from t_initial to t_final (output_times, or
 /// one every output_step with t_final included), computed without listing them.
