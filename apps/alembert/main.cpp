@@ -101,6 +101,7 @@ struct ModelCommandOptions {
     std::string motion;
     double cutoff_hz = 6.0;
     bool compiled = false;
+    std::string unitless;
     std::string language;
     std::string name;
 };
@@ -117,7 +118,7 @@ int run_model_command(const ModelCommandOptions& o, bool inverse) {
     interp.set_output_dir(o.out);
     RunStatus s = interp.run(text, display_name(o.file));
     if (s != RunStatus::ok) return exit_status(s);
-    return exit_status(inverse ? interp.run_inverse(o.motion, o.cutoff_hz, o.compiled)
+    return exit_status(inverse ? interp.run_inverse(o.motion, o.cutoff_hz, o.compiled, o.unitless)
                                : interp.run_codegen(o.language, o.name));
 }
 
@@ -347,6 +348,8 @@ int main(int argc, char** argv) {
                           "low-pass Butterworth cutoff in Hz before differentiating (0: no filter; default 6)")
                  ->check(CLI::NonNegativeNumber);
              c.add_flag("--compiled", inverse_opts.compiled, "evaluate through compiled C code");
+             c.add_option("--unitless", inverse_opts.unitless,
+                          "read coordinate columns without a unit in the header in this unit (deg, rad, m, mm)");
          },
          [&] { return run_model_command(inverse_opts, true); }},
         {"codegen", "Generate C, C++, MATLAB/Octave or Python code for a script's model",

@@ -77,7 +77,8 @@ RunStatus run_command(Interpreter::Impl& m, const std::string& who, F&& f) {
 
 }  // namespace
 
-RunStatus Interpreter::run_inverse(const std::string& motion_csv, double cutoff_hz, bool compiled) {
+RunStatus Interpreter::run_inverse(const std::string& motion_csv, double cutoff_hz, bool compiled,
+                                  const std::string& unitless_unit) {
     Impl& m = *impl_;
     return run_command(m, m.script_file, [&] {
         const System& sys = m.model({1, 1});
@@ -88,6 +89,7 @@ RunStatus Interpreter::run_inverse(const std::string& motion_csv, double cutoff_
                               "declare the joint torques with 'unknown' and apply them with 'torque'");
         r.motion_file = motion_csv;
         r.cutoff_hz = cutoff_hz;
+        r.unitless_unit = unitless_unit;
         r.compiled = compiled;
         r.dir = m.output_dir;
         m.run_inverse(r, {1, 1});

@@ -64,6 +64,7 @@ struct InverseRequest {
     std::vector<ex> loads{};
     std::string motion_file{};  ///< a motion table; empty: the prescribed motion
     double cutoff_hz = 6.0;
+    std::string unitless_unit{};  ///< how to read coordinate columns without a unit ("": refuse non-SI)
     bool compiled = false;
     std::string dir{};
 };

@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <functional>
 #include <sstream>
 
 #include "alembert/codegen/codegen.hpp"
@@ -76,6 +77,30 @@ std::string file_list(const PlotResult& plot, const std::string& csv) {
     std::string out = fs::path(csv).filename().string();
     for (const std::string& f : plot.files) out += ", " + fs::path(f).filename().string();
     return out;
+}
+
+// the dimension of a constraint's residual from the dimensions of its symbols (open where a
+// symbol has none or a power is not an integer)
+Dimension residual_dimension_of(const ex& e, const std::function<Dimension(const std::string&)>& of_symbol) {
+    if (GiNaC::is_a<GiNaC::numeric>(e)) return Dimension::none();
+    if (GiNaC::is_a<GiNaC::symbol>(e)) return of_symbol(GiNaC::ex_to<GiNaC::symbol>(e).get_name());
+    if (GiNaC::is_a<GiNaC::function>(e)) return Dimension::none();  // sin, cos, ...: of angles
+    if (GiNaC::is_a<GiNaC::add>(e)) {
+        for (const ex& term : e) {
+            Dimension d = residual_dimension_of(term, of_symbol);
+            if (d.known) return d;
+        }
+        return Dimension::open();
+    }
+    if (GiNaC::is_a<GiNaC::mul>(e)) {
+        Dimension d = Dimension::none();
+        for (const ex& factor : e) d = d * residual_dimension_of(factor, of_symbol);
+        return d;
+    }
+    if (GiNaC::is_a<GiNaC::power>(e) && GiNaC::is_a<GiNaC::numeric>(e.op(1)) &&
+        GiNaC::ex_to<GiNaC::numeric>(e.op(1)).is_integer())
+        return pow(residual_dimension_of(e.op(0), of_symbol), GiNaC::ex_to<GiNaC::numeric>(e.op(1)).to_int());
+    return Dimension::open();
 }
 
 }  // namespace
@@ -300,6 +325,12 @@ void Interpreter::Impl::simulate(const Statement& s) {
             }
     r.events = numbers.events;
     r.options = numbers.options;
+    // the unit of each constraint's residual, for its drift column and messages
+    for (const Constraint& c : sys.constraints()) {
+        Dimension d = residual_dimension_of(table.expand_intermediates(c.residual),
+                                            [&](const std::string& n) { return symbol_dimension(n); });
+        if (d.known && !d.is_none()) r.constraint_units[c.name] = si_unit(d);
+    }
     r.options.progress = isatty(STDERR_FILENO) != 0;
     std::string why_not;
     r.make = function_maker(s.flag("compiled"), &why_not);
@@ -327,13 +358,16 @@ void Interpreter::Impl::simulate(const Statement& s) {
             for (double e : col) change = std::max(change, std::abs(e - col.front()));
             out << "\nenergy: " << format_number(col.front()) << " J at the start; ";
             if (change == 0) out << "unchanged";
-            else if (scale > 0) out << "its largest change is below " << bound_of(change / scale) << " of its largest value";
+            // a relative bound of 1e0 or more says nothing (an energy that stays near zero): in J
+            else if (scale > 0 && change / scale < 0.1) out << "its largest change is below " << bound_of(change / scale) << " of its largest value";
+            else out << "its largest change is below " << bound_of(change) << " J";
         } else if (res.table.names[c].rfind("drift_", 0) == 0) {
             double worst = 0;
             for (double e : col) worst = std::max(worst, std::abs(e));
+            const std::string unit = res.table.units[c].empty() ? "" : " " + res.table.units[c];
             out << "\nconstraint " << res.table.names[c].substr(6) << ": ";
             if (worst == 0) out << "residual 0 throughout";
-            else out << "largest residual below " << bound_of(worst);
+            else out << "largest residual below " << bound_of(worst) << unit;
         }
     }
     transcript.result(out.str());
@@ -383,6 +417,17 @@ void Interpreter::Impl::run_inverse(const InverseRequest& r, Location where) {
                                "list as many load measures as the model has coordinates, one acting at each joint");
     InverseAnalysisOptions opts;
     opts.filter.cutoff_hz = r.cutoff_hz;
+    opts.filter.unitless_unit = r.unitless_unit;
+    // the units the coordinates are declared in, against which a motion table's columns are read
+    for (const TimeVariable& v : q) {
+        std::optional<Unit> u = display_unit(v.name());
+        opts.filter.declared_units.push_back(u ? u->text : "");
+    }
+    for (const Constraint& c : sys.constraints()) {
+        Dimension d = residual_dimension_of(table.expand_intermediates(c.residual),
+                                            [&](const std::string& n) { return symbol_dimension(n); });
+        if (d.known && !d.is_none()) opts.constraint_units[c.name] = si_unit(d);
+    }
     for (const ex& x : r.loads) {
         std::optional<Unit> u = display_unit(table.name(x));
         std::string text = u ? u->text : "";
@@ -409,6 +454,7 @@ void Interpreter::Impl::run_inverse(const InverseRequest& r, Location where) {
             formulas.push_back(it->second);
         }
         const SimulationOptions& o = numbers.options;
+        guard(where, [&] { return calc_output_row_count(o, "inverse dynamics of '" + script_name + "': "); });
         std::vector<double> times;
         const auto steps = static_cast<std::size_t>(std::floor((o.t_final - o.t_initial) / o.output_step + 1e-9));
         for (std::size_t k = 0; k <= steps; ++k) times.push_back(o.t_initial + static_cast<double>(k) * o.output_step);

@@ -22,6 +22,39 @@ constexpr double kMinReciprocalCondition = 1e-13;
 
 using detail::number;
 
+// the smallest over the largest magnitude of an LU factorization's pivots (0 if one vanishes)
+double pivot_ratio(const Eigen::MatrixXd& lu) {
+    if (lu.rows() == 0) return 1;
+    const Eigen::VectorXd pivots = lu.diagonal().cwiseAbs();
+    const double largest = pivots.maxCoeff();
+    return largest > 0 ? pivots.minCoeff() / largest : 0;
+}
+
+// the unknowns a singular A leaves undetermined: the largest entries of its null direction
+// (the right singular vector of the smallest singular value), as "; q1'' and q3'' are not
+// determined apart (null direction 0.707 q1'' - 0.707 q3'')"
+std::string undetermined_unknowns(const Eigen::MatrixXd& A, const std::vector<ex>& unknowns) {
+    if (A.rows() == 0) return "";
+    Eigen::JacobiSVD<Eigen::MatrixXd> svd(A, Eigen::ComputeFullV);
+    const Eigen::VectorXd v = svd.matrixV().col(A.cols() - 1);
+    const double largest = v.cwiseAbs().maxCoeff();
+    const double sign = v(static_cast<Eigen::Index>(0)) < 0 && std::abs(v(0)) >= 0.1 * largest ? -1 : 1;
+    std::string names, direction;
+    std::size_t count = 0;
+    for (Eigen::Index i = 0; i < v.size(); ++i) {
+        if (std::abs(v(i)) < 0.1 * largest) continue;
+        std::ostringstream u;
+        u << unknowns[static_cast<std::size_t>(i)];
+        const double c = sign * v(i);
+        names += (names.empty() ? "" : ", ") + u.str();
+        direction += (direction.empty() ? (c < 0 ? "-" : "") : (c < 0 ? " - " : " + ")) +
+                     number(std::abs(c)) + " " + u.str();
+        ++count;
+    }
+    if (count == 1) return "; " + names + " is not determined (it has no inertia there)";
+    return "; " + names + " are not determined apart (null direction " + direction + ")";
+}
+
 }  // namespace
 
 namespace detail {
@@ -134,7 +167,12 @@ void ForwardDynamics::solve(double t, const double* q, const double* qd,
     last_ldlt_ = false;
     if (symmetric) {
         ldlt_.compute(A_);
-        if (ldlt_.info() == Eigen::Success && ldlt_.isPositive()) {
+        // an exactly zero pivot is not an error to Eigen's LDLT (its solve skips it, giving
+        // a least-squares answer), so pivots small against the largest are refused here
+        const Eigen::VectorXd& d = ldlt_.vectorD();
+        const bool pivots_positive =
+            K == 0 || d.minCoeff() > kMinReciprocalCondition * d.cwiseAbs().maxCoeff();
+        if (ldlt_.info() == Eigen::Success && ldlt_.isPositive() && pivots_positive) {
             rcond = ldlt_.rcond();
             if (rcond > kMinReciprocalCondition) {
                 x_ = ldlt_.solve(b_);
@@ -144,11 +182,14 @@ void ForwardDynamics::solve(double t, const double* q, const double* qd,
     }
     if (!last_ldlt_) {
         lu_.compute(A_);
-        rcond = lu_.rcond();
+        // Eigen's estimate can miss a matrix singular up to rounding (its solve then gives
+        // finite nonsense), so the ratio of the smallest to the largest pivot bounds it too
+        rcond = std::min(lu_.rcond(), pivot_ratio(lu_.matrixLU()));
         if (!(rcond > kMinReciprocalCondition))
             fail(std::string(symmetric ? "the mass matrix" : "the matrix of the equations") +
                      " is singular or ill-conditioned (reciprocal condition estimate " +
-                     number(rcond) + ")",
+                     number(rcond) + ", below " + number(kMinReciprocalCondition) + ")" +
+                     undetermined_unknowns(A_, layout_.unknowns),
                  t, q, qd, inputs);
         x_ = lu_.solve(b_);
     }

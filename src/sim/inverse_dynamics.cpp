@@ -2,6 +2,7 @@
 // Numeric inverse dynamics: solved load measures compiled directly, else A T = b solved by LU.
 #include "alembert/sim/inverse_dynamics.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -71,7 +72,16 @@ void InverseDynamics::fail(const std::string& what, double t, const double* q,
 
 void InverseDynamics::calc_loads(double t, const double* q, const double* qd, const double* qdd,
                                  double* loads) const {
+    double rcond = 1;
+    const std::string problem = try_calc_loads(t, q, qd, qdd, loads, &rcond);
+    if (!problem.empty()) fail(problem, t, q, qd);
+}
+
+std::string InverseDynamics::try_calc_loads(double t, const double* q, const double* qd,
+                                            const double* qdd, double* loads,
+                                            double* rcond) const {
     const std::size_t n = coordinate_count(), k = load_count();
+    *rcond = 1;
     // gather [t, q, q', q''] and evaluate
     double* in = in_.data();
     in[0] = t;
@@ -80,9 +90,12 @@ void InverseDynamics::calc_loads(double t, const double* q, const double* qd, co
     if (solved_) {
         function_.evaluate(in, loads);
         for (std::size_t i = 0; i < k; ++i)
-            if (!std::isfinite(loads[i]))
-                fail(printed(layout_.unknowns[i]) + " is " + number(loads[i]), t, q, qd);
-        return;
+            if (!std::isfinite(loads[i])) {
+                *rcond = 0;
+                return printed(layout_.unknowns[i]) + " is " + number(loads[i]) +
+                       " (its coefficient in its equation vanishes)";
+            }
+        return "";
     }
     // unsolved form: A T = b by LU with a condition check
     function_.evaluate(in, out_.data());
@@ -91,16 +104,45 @@ void InverseDynamics::calc_loads(double t, const double* q, const double* qd, co
         for (Eigen::Index c = 0; c < K; ++c) A_(r, c) = out_[static_cast<std::size_t>(r * K + c)];
         b_(r) = out_[static_cast<std::size_t>(K * K + r)];
     }
-    if (!A_.allFinite() || !b_.allFinite()) fail("the equations are not finite", t, q, qd);
+    if (!A_.allFinite() || !b_.allFinite()) {
+        *rcond = 0;
+        return "the equations are not finite";
+    }
     lu_.compute(A_);
-    const double rcond = lu_.rcond();
-    if (!(rcond > 1e-13))
-        fail(
-            "the equations are singular or ill-conditioned in the load measures (reciprocal "
-            "condition estimate " +
-                number(rcond) + ")",
-            t, q, qd);
+    // Eigen's estimate can miss a matrix singular up to rounding, so the pivots bound it too
+    const Eigen::VectorXd pivots = lu_.matrixLU().diagonal().cwiseAbs();
+    *rcond = std::min(lu_.rcond(), pivots.maxCoeff() > 0 ? pivots.minCoeff() / pivots.maxCoeff() : 0.0);
+    if (!(*rcond >= kMinReciprocalCondition))
+        return "the equations are singular or nearly singular in the load measures (reciprocal "
+               "condition estimate " +
+               number(*rcond) + ", below " + number(kMinReciprocalCondition) + ")";
     Eigen::Map<Eigen::VectorXd>(loads, K) = lu_.solve(b_);
+    for (std::size_t i = 0; i < k; ++i)
+        if (!std::isfinite(loads[i])) return printed(layout_.unknowns[i]) + " is " + number(loads[i]);
+    return "";
+}
+
+void InverseDynamics::set_constraints(std::vector<std::string> names, NumericFunction residuals) {
+    ALEMBERT_CHECK_ARG(residuals.input_count == function_.input_count &&
+                           residuals.output_count == names.size() && residuals.evaluate,
+                       "InverseDynamics('" + model_ + "')::set_constraints(): the function takes " +
+                           std::to_string(residuals.input_count) + " inputs and gives " +
+                           std::to_string(residuals.output_count) + " outputs; it needs " +
+                           std::to_string(function_.input_count) + " inputs [t, q, q', q''] and " +
+                           "one output per name (" + std::to_string(names.size()) + ")");
+    constraint_names_ = std::move(names);
+    constraints_ = std::move(residuals);
+}
+
+void InverseDynamics::calc_constraint_residuals(double t, const double* q, const double* qd,
+                                                const double* qdd, double* residuals) const {
+    if (constraint_names_.empty()) return;
+    const std::size_t n = coordinate_count();
+    double* in = in_.data();
+    in[0] = t;
+    for (std::size_t i = 0; i < n; ++i)
+        in[1 + i] = q[i], in[1 + n + i] = qd[i], in[1 + 2 * n + i] = qdd[i];
+    constraints_.evaluate(in, residuals);
 }
 
 InverseDynamics compile_inverse_dynamics(const SymbolTable& table, const LinearSystem& eqs,
@@ -168,8 +210,27 @@ InverseDynamics compile_inverse_dynamics(const System& sys, const std::vector<Ti
                                          const std::vector<ex>& loads, const std::string& model,
                                          const FunctionMaker& make) {
     std::vector<RoadmapRow> rows = plan_roadmap(sys, q, loads, Analysis::dynamics);
-    return compile_inverse_dynamics(sys.symbols(), form_linear_system(residuals_of(rows), loads), q,
-                                    model, make);
+    InverseDynamics id = compile_inverse_dynamics(
+        sys.symbols(), form_linear_system(residuals_of(rows), loads), q, model, make);
+    // the constraints a motion must satisfy
+    if (sys.constraints().empty()) return id;
+    const SymbolTable& table = sys.symbols();
+    std::vector<ex> in{table.time()}, residuals;
+    const StateLayout& layout = id.layout();
+    in.insert(in.end(), layout.coordinates.begin(), layout.coordinates.end());
+    in.insert(in.end(), layout.rates.begin(), layout.rates.end());
+    in.insert(in.end(), layout.accelerations.begin(), layout.accelerations.end());
+    std::vector<std::string> names;
+    for (const Constraint& c : sys.constraints()) {
+        names.push_back(std::string("the ") + to_string(c.kind) + " constraint '" + c.name + "'");
+        residuals.push_back(table.expand_intermediates(c.residual));
+    }
+    try {
+        id.set_constraints(std::move(names), make_numeric_function(table, in, residuals, {}));
+    } catch (const ArgumentError&) {
+        // a residual holding a symbol without a value cannot be checked numerically
+    }
+    return id;
 }
 
 }  // namespace alembert

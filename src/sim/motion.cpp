@@ -34,6 +34,53 @@ std::string where(const Table& table, const std::string& source, std::size_t row
            ": ";
 }
 
+// the unit the model declares coordinate i in, or no unit when it does not say (or says in
+// a unit this reader does not know)
+Unit declared_unit(const MotionFilterOptions& options, std::size_t i) {
+    if (i >= options.declared_units.size() || options.declared_units[i].empty()) return {};
+    try {
+        return parse_unit(options.declared_units[i]);
+    } catch (const ArgumentError&) {
+        return {};
+    }
+}
+
+// "an angle", "a length"
+std::string with_article(const std::string& quantity) {
+    return (quantity.front() == 'a' ? "an " : "a ") + quantity;
+}
+
+// the unit a coordinate column is read in: its own, checked against the coordinate's
+// declared quantity; or, without one, the assumed unit or SI where that cannot mislead
+Unit checked_column_unit(const Unit& column, const Unit& declared, const Unit& assumed,
+                         const std::string& source, const std::string& name) {
+    if (!column.quantity.empty()) {
+        const bool fits = declared.quantity.empty()
+                              ? column.quantity == "angle" || column.quantity == "length"
+                              : column.quantity == declared.quantity;
+        if (fits) return column;
+        const std::string expected =
+            declared.quantity.empty() ? "an angle or a length" : with_article(declared.quantity);
+        throw ArgumentError(
+            source + ": column '" + name + " [" + column.name + "]' is " +
+            with_article(column.quantity) + ", but the coordinate '" + name + "' is " + expected +
+            (declared.quantity.empty() ? "" : " (declared in " + declared.name + ")") +
+            "; give the column a unit of " + expected + " (" +
+            (declared.quantity == "length" ? "m, mm" : declared.quantity == "angle" ? "deg, rad" : "deg, rad, m, mm") +
+            ")");
+    }
+    if (!assumed.quantity.empty() &&
+        (declared.quantity.empty() || assumed.quantity == declared.quantity))
+        return assumed;
+    if (declared.quantity.empty() || declared.factor == 1.0) return Unit{"", 1.0, ""};
+    throw ArgumentError(source + ": column '" + name + "' has no unit, but the coordinate '" +
+                        name + "' is declared in " + declared.name + "; it is not read as " +
+                        (declared.quantity == "angle" ? "rad" : "m") +
+                        " silently: write the unit in the header ('" + name + " [" +
+                        declared.name + "]'), or say how to read columns without a unit "
+                        "(alembert inverse --unitless " + declared.name + ")");
+}
+
 }  // namespace
 
 MotionSamples differentiate_motion(const Table& table, const std::string& source,
@@ -44,8 +91,13 @@ MotionSamples differentiate_motion(const Table& table, const std::string& source
                                       " samples; differentiating it needs at least 4");
     // the time column, in seconds
     std::size_t tc = table.names.size();
-    for (std::size_t c = 0; c < table.names.size(); ++c)
-        if (table.names[c] == "t" || table.names[c] == "time") tc = c;
+    for (std::size_t c = 0; c < table.names.size(); ++c) {
+        if (table.names[c] != "t" && table.names[c] != "time") continue;
+        ALEMBERT_CHECK_ARG(tc == table.names.size(),
+                           source + ": two time columns, '" + table.names[tc] + "' and '" +
+                               table.names[c] + "'; keep one of them");
+        tc = c;
+    }
     std::string found;
     for (const std::string& n : table.names) found += (found.empty() ? "" : ", ") + n;
     ALEMBERT_CHECK_ARG(
@@ -56,6 +108,22 @@ MotionSamples differentiate_motion(const Table& table, const std::string& source
         tu = parse_unit(table.units[tc]);
     } catch (const ArgumentError& e) {
         throw ArgumentError(source + ": column '" + table.names[tc] + "': " + e.what());
+    }
+    ALEMBERT_CHECK_ARG(tu.quantity.empty() || tu.quantity == "time",
+                       source + ": the time column '" + table.names[tc] + " [" + tu.name +
+                           "]' is in a unit of " + tu.quantity + "; give it a time unit (s or ms)");
+    ALEMBERT_CHECK_ARG(options.declared_units.empty() ||
+                           options.declared_units.size() == coordinates.size(),
+                       source + ": " + std::to_string(options.declared_units.size()) +
+                           " declared units for " + std::to_string(coordinates.size()) +
+                           " coordinates; give one per coordinate (\"\" if not stated)");
+    Unit assumed;
+    if (!options.unitless_unit.empty()) {
+        try {
+            assumed = parse_unit(options.unitless_unit);
+        } catch (const ArgumentError& e) {
+            throw ArgumentError(source + ": the unit for columns without one: " + e.what());
+        }
     }
     MotionSamples m;
     m.coordinates = coordinates;
@@ -77,7 +145,8 @@ MotionSamples differentiate_motion(const Table& table, const std::string& source
     }
 
     // per coordinate: SI, filter, differentiate
-    for (const std::string& name : coordinates) {
+    for (std::size_t i = 0; i < coordinates.size(); ++i) {
+        const std::string& name = coordinates[i];
         std::size_t c = table.names.size();
         for (std::size_t k = 0; k < table.names.size(); ++k)
             if (table.names[k] == name) c = k;
@@ -90,6 +159,8 @@ MotionSamples differentiate_motion(const Table& table, const std::string& source
         } catch (const ArgumentError& e) {
             throw ArgumentError(source + ": column '" + name + "': " + e.what());
         }
+        const Unit declared = declared_unit(options, i);
+        u = checked_column_unit(u, declared, assumed, source, name);
         std::vector<double> q;
         for (double v : table.columns[c]) q.push_back(u.factor * v);
         if (options.cutoff_hz > 0) q = filter_lowpass(q, 1.0 / h, options.cutoff_hz);

@@ -72,6 +72,77 @@ struct Evaluator {
     }
 };
 
+std::string residual_unit(const SimulationRequest& request, const std::string& constraint,
+                          const char* per_time = "") {
+    auto it = request.constraint_units.find(constraint);
+    const std::string unit = it == request.constraint_units.end() ? "" : it->second;
+    if (*per_time == 0) return unit.empty() ? "" : " " + unit;
+    return " " + (unit.empty() ? std::string("1") : unit) + per_time;
+}
+
+// the declared constraints hold at the initial state: configuration residuals and their
+// rates, motion residuals, each within the tolerance
+void check_initial_constraints(const System& sys, const ForwardDynamics& fd,
+                               const SimulationRequest& request, const std::vector<double>& q0,
+                               const std::vector<double>& qd0) {
+    if (sys.constraints().empty()) return;
+    const SymbolTable& table = sys.symbols();
+    const StateLayout& layout = fd.layout();
+    const auto& t = GiNaC::ex_to<GiNaC::symbol>(table.time());
+    std::vector<ex> residuals;
+    std::vector<std::string> what, units;
+    for (const Constraint& c : sys.constraints()) {
+        const ex r = table.expand_intermediates(c.residual);
+        residuals.push_back(r);
+        what.push_back(std::string("the ") + to_string(c.kind) + " constraint '" + c.name + "'");
+        units.push_back(residual_unit(request, c.name));
+        if (c.kind != ConstraintKind::configuration) continue;
+        // its rate: sum_i dr/dq_i q_i' + dr/dt
+        ex rate = r.diff(t);
+        for (std::size_t i = 0; i < layout.coordinates.size(); ++i)
+            rate += r.diff(GiNaC::ex_to<GiNaC::symbol>(layout.coordinates[i])) * layout.rates[i];
+        residuals.push_back(rate);
+        what.push_back("the rate of the configuration constraint '" + c.name + "'");
+        units.push_back(residual_unit(request, c.name, "/s"));
+    }
+    NumericFunction f = compile_over_layout(table, layout, residuals, "run_simulation()", {});
+    std::vector<double> in(f.input_count, 0.0), out(f.output_count);
+    in[0] = request.options.t_initial;
+    std::copy(q0.begin(), q0.end(), in.begin() + 1);
+    std::copy(qd0.begin(), qd0.end(), in.begin() + 1 + static_cast<std::ptrdiff_t>(q0.size()));
+    f.evaluate(in.data(), out.data());
+    const double tol = request.options.constraint_tolerance;
+    for (std::size_t j = 0; j < out.size(); ++j)
+        if (!(std::abs(out[j]) <= tol))
+            throw ArgumentError(
+                "run_simulation('" + request.model + "'): the initial state violates " + what[j] +
+                ": its residual is " + number(out[j]) + units[j] + " at t = " +
+                number(request.options.t_initial) + " s, beyond the tolerance " + number(tol) +
+                units[j] + " (SimulationOptions::constraint_tolerance); the initial values are not moved "
+                "onto the constraint silently: give initial coordinates and rates that satisfy "
+                "it (solve the constraint for the dependent coordinates, e.g. with a statics "
+                "road-map)");
+}
+
+// the drift columns of output row r stay within the tolerance
+void check_constraint_drift(const System& sys, const SimulationRequest& request,
+                            const Table& table, std::size_t r) {
+    const double tol = request.options.constraint_tolerance;
+    for (const Constraint& c : sys.constraints()) {
+        const double v = table.columns[table.column_index("drift_" + c.name)][r];
+        if (std::abs(v) <= tol) continue;
+        throw SolveError(
+            "run_simulation('" + request.model + "'): the residual of the constraint '" + c.name +
+            "' grew to " + number(v) + residual_unit(request, c.name) + " at t = " +
+            number(table.columns[0][r]) + " s, beyond the tolerance " + number(tol) +
+            residual_unit(request, c.name) +
+            " (SimulationOptions::constraint_tolerance): the integration drifts off the "
+            "constraint, so the run stops here; tighten the error tolerances (tolerance abs "
+            "1e-10 rel 1e-10), shorten the run, or check that the constraint forces are among "
+            "the unknowns");
+    }
+}
+
 }  // namespace
 
 OutputFunction compile_outputs(const SymbolTable& table, const StateLayout& layout,
@@ -112,10 +183,42 @@ EventFunction compile_events(const SymbolTable& table, const StateLayout& layout
     return f;
 }
 
+double calc_output_row_count(const SimulationOptions& options, const std::string& who) {
+    const double t0 = options.t_initial, tf = options.t_final;
+    double rows = static_cast<double>(options.output_times.size());
+    if (options.output_times.empty()) {
+        ALEMBERT_CHECK_ARG(options.output_step > 0, who + "the output step must be positive, not " +
+                                                        number(options.output_step));
+        // one every step from t_initial, and t_final when the last step falls short of it
+        const double count = std::floor((tf - t0) / options.output_step + 1e-9);
+        const bool short_of_end =
+            t0 + count * options.output_step < tf - 1e-12 * std::max(1.0, std::abs(tf));
+        rows = count + 1 + (short_of_end ? 1 : 0);
+    }
+    const auto limit = static_cast<double>(options.max_output_rows);
+    if (rows > limit) {
+        char count[32];
+        std::snprintf(count, sizeof count, "%.0f", rows);
+        const std::string asking =
+            options.output_times.empty()
+                ? "the output step " + number(options.output_step) + " s from t = " + number(t0) +
+                      " to " + number(tf) + " s asks for "
+                : "the output times ask for ";
+        throw ArgumentError(
+            who + asking + count + " rows, more than the limit of " +
+            std::to_string(options.max_output_rows) +
+            " rows (SimulationOptions::max_output_rows), which keeps a run from filling the "
+            "memory; choose a larger output step, or raise the limit for a run that needs "
+            "every row");
+    }
+    return rows;
+}
+
 SimulationResult simulate(const ForwardDynamics& fd, const std::vector<double>& q0,
                           const std::vector<double>& qd0, const SimulationOptions& options,
                           const OutputFunction& outputs, const EventFunction& events,
-                          const InputFunction& inputs) {
+                          const InputFunction& inputs,
+                          const std::function<void(const Table&, std::size_t)>& check_row) {
     const std::size_t n = fd.coordinate_count();
     const std::string who = "simulate('" + fd.model() + "'): ";
     const double t0 = options.t_initial, tf = options.t_final;
@@ -135,10 +238,9 @@ SimulationResult simulate(const ForwardDynamics& fd, const std::vector<double>& 
                            "them with this model's layout()");
 
     // the output times
+    calc_output_row_count(options, who);
     std::vector<double> times = options.output_times;
     if (times.empty()) {
-        ALEMBERT_CHECK_ARG(options.output_step > 0, who + "the output step must be positive, not " +
-                                                        number(options.output_step));
         const auto count =
             static_cast<std::size_t>(std::floor((tf - t0) / options.output_step + 1e-9));
         for (std::size_t k = 0; k <= count; ++k)
@@ -163,6 +265,7 @@ SimulationResult simulate(const ForwardDynamics& fd, const std::vector<double>& 
         table.columns[0].push_back(t);
         for (std::size_t c = 0; c < out.size(); ++c)
             table.columns[c + 1].push_back(out[c] / outputs.factors[c]);
+        if (check_row) check_row(table, table.row_count() - 1);
     };
     auto event_values = [&](double t, const State& x, std::vector<double>& values) {
         if (!values.empty()) events.function.evaluate(at.gather(t, x), values.data());
@@ -312,8 +415,11 @@ SimulationResult run_simulation(const System& sys, const SimulationRequest& requ
             outputs.push_back({"energy",
                                sys.calc_kinetic_energy(sys.bodies()) + sys.calc_potential_energy(),
                                "J"});
-        for (const Constraint& c : sys.constraints())
-            outputs.push_back({"drift_" + c.name, c.residual, ""});
+        for (const Constraint& c : sys.constraints()) {
+            auto unit = request.constraint_units.find(c.name);
+            outputs.push_back({"drift_" + c.name, c.residual,
+                               unit == request.constraint_units.end() ? "" : unit->second, 1.0});
+        }
     }
     OutputFunction out = compile_outputs(table, fd.layout(), outputs, request.make);
     std::vector<EventSpec> event_specs = request.events;
@@ -331,7 +437,12 @@ SimulationResult run_simulation(const System& sys, const SimulationRequest& requ
         ALEMBERT_CHECK_ARG(found, who + "an initial value is given for '" + to_string(symbol) +
                                       "', which is neither a coordinate nor a coordinate's rate");
     }
-    return simulate(fd, q0, qd0, request.options, out, events);
+    check_initial_constraints(sys, fd, request, q0, qd0);
+    // the run stops at the first output row where a constraint has drifted too far
+    std::function<void(const Table&, std::size_t)> check_row;
+    if (request.checks && !sys.constraints().empty())
+        check_row = [&](const Table& t, std::size_t r) { check_constraint_drift(sys, request, t, r); };
+    return simulate(fd, q0, qd0, request.options, out, events, {}, check_row);
 }
 
 PlotResult write_table_and_plot(const Table& table, const std::string& dir, const std::string& name,

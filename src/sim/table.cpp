@@ -21,18 +21,51 @@ namespace alembert {
 
 namespace {
 
-const std::vector<std::pair<std::string, double>>& unit_table() {
+struct KnownUnit {
+    const char* name;
+    double factor;
+    const char* quantity;
+};
+
+const std::vector<KnownUnit>& unit_table() {
     constexpr double deg = std::numbers::pi / 180;
-    static const std::vector<std::pair<std::string, double>> units = {
-        {"", 1},         {"1", 1},         {"s", 1},       {"ms", 1e-3},
-        {"min", 60},     {"rad", 1},       {"deg", deg},   {"rev", 2 * std::numbers::pi},
-        {"m", 1},        {"cm", 1e-2},     {"mm", 1e-3},   {"km", 1e3},
-        {"kg", 1},       {"g", 1e-3},      {"N", 1},       {"kN", 1e3},
-        {"N m", 1},      {"N*m", 1},       {"N.m", 1},     {"Nm", 1},
-        {"N\u00b7m", 1}, {"J", 1},         {"kJ", 1e3},    {"W", 1},
-        {"Hz", 1},       {"rad/s", 1},     {"deg/s", deg}, {"rpm", 2 * std::numbers::pi / 60},
-        {"rad/s^2", 1},  {"deg/s^2", deg}, {"m/s", 1},     {"km/h", 1 / 3.6},
-        {"m/s^2", 1},    {"N m/kg", 1},    {"N/kg", 1},    {"kg m^2", 1}};
+    static const std::vector<KnownUnit> units = {
+        {"", 1, ""},
+        {"1", 1, ""},
+        {"s", 1, "time"},
+        {"ms", 1e-3, "time"},
+        {"min", 60, "time"},
+        {"rad", 1, "angle"},
+        {"deg", deg, "angle"},
+        {"rev", 2 * std::numbers::pi, "angle"},
+        {"m", 1, "length"},
+        {"cm", 1e-2, "length"},
+        {"mm", 1e-3, "length"},
+        {"km", 1e3, "length"},
+        {"kg", 1, "mass"},
+        {"g", 1e-3, "mass"},
+        {"N", 1, "force"},
+        {"kN", 1e3, "force"},
+        {"N m", 1, "torque"},
+        {"N*m", 1, "torque"},
+        {"N.m", 1, "torque"},
+        {"Nm", 1, "torque"},
+        {"N\u00b7m", 1, "torque"},
+        {"J", 1, "energy"},
+        {"kJ", 1e3, "energy"},
+        {"W", 1, "power"},
+        {"Hz", 1, "frequency"},
+        {"rad/s", 1, "angular velocity"},
+        {"deg/s", deg, "angular velocity"},
+        {"rpm", 2 * std::numbers::pi / 60, "angular velocity"},
+        {"rad/s^2", 1, "angular acceleration"},
+        {"deg/s^2", deg, "angular acceleration"},
+        {"m/s", 1, "velocity"},
+        {"km/h", 1 / 3.6, "velocity"},
+        {"m/s^2", 1, "acceleration"},
+        {"N m/kg", 1, "torque per mass"},
+        {"N/kg", 1, "force per mass"},
+        {"kg m^2", 1, "moment of inertia"}};
     return units;
 }
 
@@ -53,15 +86,22 @@ std::vector<std::string> split(const std::string& line) {
     return cells;
 }
 
+// the first lines of an OpenSim .mot/.sto file: "version=1", "nRows=...", "endheader"
+bool looks_like_opensim_header(const std::string& line) {
+    for (const char* key : {"version=", "nRows=", "nColumns=", "inDegrees=", "DataType="})
+        if (line.rfind(key, 0) == 0) return true;
+    return line == "endheader";
+}
+
 }  // namespace
 
 Unit parse_unit(const std::string& name) {
     const std::string n = trim(name);
-    for (const auto& [known, factor] : unit_table())
-        if (known == n) return Unit{n, factor};
+    for (const KnownUnit& known : unit_table())
+        if (known.name == n) return Unit{n, known.factor, known.quantity};
     std::string list;
-    for (const auto& [known, factor] : unit_table())
-        if (!known.empty()) list += (list.empty() ? "" : ", ") + known;
+    for (const KnownUnit& known : unit_table())
+        if (*known.name) list += (list.empty() ? "" : ", ") + std::string(known.name);
     throw ArgumentError("unknown unit '" + n + "'; use one of: " + list);
 }
 
@@ -142,6 +182,15 @@ Table read_csv(const std::string& path) {
     bool have_header = false;
     while (std::getline(in, line)) {
         ++line_no;
+        // a UTF-8 byte-order mark (spreadsheets write one) is not part of the first cell
+        if (line_no == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0) line.erase(0, 3);
+        // an OpenSim motion or storage file: its header ends with a line "endheader"
+        if (table.lines.empty() && looks_like_opensim_header(trim(line)))
+            throw ArgumentError(path + ":" + std::to_string(line_no) + ": '" + trim(line) +
+                                "': this looks like an OpenSim .mot/.sto file; reading it is "
+                                "not supported yet: export the coordinates as CSV with a "
+                                "header row such as 't [s],q1 [deg]' (the OpenSim header up "
+                                "to 'endheader' removed, columns separated by commas)");
         const std::string where = path + ":" + std::to_string(line_no) + ": ";
         const std::string t = trim(line);
         if (t.empty() || t[0] == '#') continue;
@@ -163,9 +212,12 @@ Table read_csv(const std::string& path) {
                     throw ArgumentError(where +
                                         "a header cell has no column name; the first "
                                         "row must name every column");
-                for (const std::string& n : table.names)
-                    if (n == name)
-                        throw ArgumentError(where + "column '" + name + "' appears twice");
+                for (std::size_t c = 0; c < table.names.size(); ++c)
+                    if (table.names[c] == name)
+                        throw ArgumentError(where + "column '" + name + "' appears twice (cells " +
+                                            std::to_string(c + 1) + " and " +
+                                            std::to_string(table.names.size() + 1) +
+                                            "); name each column once");
                 table.add_column(name, unit);
             }
             have_header = true;

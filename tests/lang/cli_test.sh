@@ -85,7 +85,7 @@ expect roadmap_error 1 "$alembert" roadmap "$tmp/bad.alb"
 model="$root/examples/sit_to_stand/model.alb"
 motion="$root/examples/sit_to_stand_inverse/motion.csv"
 expect inverse 0 "$alembert" inverse "$model" --motion "$motion" --out "$tmp/inv"
-contains inverse "$tmp/inv/torques.csv" "t [s],TA [N*m],TB [N*m],TC [N*m]"
+contains inverse "$tmp/inv/torques.csv" "t [s],T_A [N*m],T_B [N*m],T_C [N*m]"
 contains inverse "$tmp/out" "inverse dynamics over the motion table motion.csv, t = 0 to 1.5 s: 151 samples"
 if grep -q "^E_T_A\|^> " "$tmp/out"; then echo "FAIL inverse: the model's own transcript printed"; fails=$((fails + 1)); fi
 if ! paste -d, <(tail -n +2 "$tmp/inv/torques.csv") <(tail -n +2 "$root/examples/sit_to_stand_inverse/torques.csv") |
@@ -99,6 +99,15 @@ expect inverse_without_out 2 "$alembert" inverse "$model" --motion "$motion"
 printf 'newtonian N\nparticle Q\nvariable x'"''"' m\nconstant m = 1 kg\nmass Q = m\ntranslate Q from N_o by x*Nx>\n' >"$tmp/noload.alb"
 expect inverse_no_loads 1 "$alembert" inverse "$tmp/noload.alb" --motion "$motion" --out "$tmp/inv4"
 contains inverse_no_loads "$tmp/err" "declares no load measures"
+# a column without a unit for a coordinate declared in degrees: refused unless --unitless says how
+degrees="$root/tests/lang/scripts/inverse_motion_no_unit.alb"
+bare="$root/tests/lang/scripts/data/motion_no_unit.csv"
+expect inverse_no_unit 1 "$alembert" inverse "$degrees" --motion "$bare" --out "$tmp/inv5"
+contains inverse_no_unit "$tmp/err" "column 'q' has no unit, but the coordinate 'q' is declared in deg"
+expect inverse_unitless_deg 0 "$alembert" inverse "$degrees" --motion "$bare" --out "$tmp/inv5" --unitless deg
+contains inverse_unitless_deg "$tmp/inv5/torques.csv" "t [s],T_A [N*m]"
+expect inverse_unitless_length 1 "$alembert" inverse "$degrees" --motion "$bare" --out "$tmp/inv6" --unitless mm
+contains inverse_unitless_length "$tmp/err" "column 'q' has no unit"
 
 # alembert codegen
 expect codegen 0 "$alembert" codegen "$model" --lang python --out "$tmp/py" --name sts

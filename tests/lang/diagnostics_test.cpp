@@ -84,6 +84,13 @@ TEST(Diagnostics, CorpusHasAtLeastFortyScriptsAndEachIsListed) {
 }
 
 TEST(Diagnostics, EachMalformedScriptGivesItsMessageAtItsLineAndColumn) {
+    // run from the scripts' directory, so the data files they read (data/*.csv) are found
+    // and named in messages by the same relative paths on every machine
+    struct InScriptsDirectory {
+        fs::path before = fs::current_path();
+        InScriptsDirectory() { fs::current_path(kScripts); }
+        ~InScriptsDirectory() { fs::current_path(before); }
+    } in_scripts;
     for (const Expected& e : manifest()) {
         SCOPED_TRACE(e.script);
         Outcome o = run(read_bytes(kScripts / e.script), e.script);

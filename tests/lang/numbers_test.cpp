@@ -145,6 +145,28 @@ TEST(Simulate, AMotorLawActsAsTheScriptWritesIt) {
     EXPECT_THROW(t.column_index("energy"), alembert::ArgumentError);
 }
 
+TEST(Simulate, AConstraintsDriftIsReportedInTheUnitOfItsResidual) {
+    // a pendulum as a particle held on the circle x^2 + y^2 = L^2 by a rod force F
+    TempDir dir;
+    Script r(dir.path);
+    r.run("newtonian N\nparticle P\nconstant L = 0.5 m, m = 1 kg, g = 9.81 m/s^2\n"
+          "variable x'' m, y'' m\nunknown F N\nmass P = m\ntranslate P from N_o by x*Nx> + y*Ny>\n"
+          "gravity -g*Ny>\nforce rod on P = F*(x*Nx> + y*Ny>)/L\n"
+          "constraint configuration circle = x^2 + y^2 - L^2\n"
+          "initial x = 0.5 m, y = 0 m\ntolerance abs 1e-12 rel 1e-12\nfinal time 1 s\n"
+          "output step 0.1 s\nsimulate\n");
+    alembert::Table t = alembert::read_csv((dir.path / "simulation.csv").string());
+    const std::size_t c = t.column_index("drift_circle");
+    EXPECT_EQ(t.units[c], "m^2");
+    for (double v : t.columns[c]) EXPECT_LT(std::abs(v), 1e-8);
+    EXPECT_NE(r.out.str().find("constraint circle: largest residual below 1e-"), std::string::npos) << r.out.str();
+    EXPECT_NE(r.out.str().find(" m^2\n"), std::string::npos) << r.out.str();
+    // its energy stays near zero: the change is stated in J, not as "below 1e1 of its largest value"
+    EXPECT_NE(r.out.str().find("energy: 0 J at the start; its largest change is below 1e-"), std::string::npos)
+        << r.out.str();
+    EXPECT_EQ(r.out.str().find("of its largest value"), std::string::npos) << r.out.str();
+}
+
 TEST(Inverse, APrescribedMotionNeedsTheStaticHoldingTorquesWhereItIsAtRest) {
     TempDir dir;
     Script r(dir.path);
@@ -154,7 +176,7 @@ TEST(Inverse, APrescribedMotionNeedsTheStaticHoldingTorquesWhereItIsAtRest) {
           "final time 1.5 s\noutput step 0.01 s\ninverse for T_A, T_B, T_C\n");
     alembert::Table t = alembert::read_csv((dir.path / "torques.csv").string());
     ASSERT_EQ(t.row_count(), 151u);
-    EXPECT_EQ(t.names, (std::vector<std::string>{"t", "TA", "TB", "TC"}));
+    EXPECT_EQ(t.names, (std::vector<std::string>{"t", "T_A", "T_B", "T_C"}));
     EXPECT_EQ(t.units[1], "N*m");
     auto seat = holding(-25 * kDeg, 105 * kDeg, -130 * kDeg), stand = holding(-5 * kDeg, 10 * kDeg, -10 * kDeg);
     for (int j = 0; j < 3; ++j) {
@@ -163,6 +185,22 @@ TEST(Inverse, APrescribedMotionNeedsTheStaticHoldingTorquesWhereItIsAtRest) {
     }
     EXPECT_TRUE(fs::exists(dir.path / "torques.png"));
     EXPECT_NE(r.out.str().find("inverse dynamics over the prescribed motion"), std::string::npos);
+}
+
+TEST(Inverse, ForcesGoToForcesCsvUnderTheirOwnNames) {
+    // a 2 kg particle moved as x = A sin(w t) needs F_x = m x'' = -m A w^2 sin(w t)
+    TempDir dir;
+    Script r(dir.path);
+    r.run("newtonian N\nparticle Q\nvariable x'' m\nconstant m = 2 kg, A = 0.1 m, w = 3 rad/s\n"
+          "unknown F_x N\nmass Q = m\ntranslate Q from N_o by x*Nx>\nforce push on Q = F_x*Nx>\n"
+          "motion x = A*sin(w*t)\nfinal time 1 s\noutput step 0.1 s\ninverse for F_x\n");
+    EXPECT_FALSE(fs::exists(dir.path / "torques.csv"));
+    alembert::Table t = alembert::read_csv((dir.path / "forces.csv").string());
+    EXPECT_EQ(t.names, (std::vector<std::string>{"t", "F_x"}));
+    EXPECT_EQ(t.units[1], "N");
+    for (std::size_t k = 0; k < t.row_count(); ++k)
+        EXPECT_NEAR(t.columns[1][k], -2 * 0.1 * 9 * std::sin(3 * t.columns[0][k]), 1e-10);  // 12 digits in the CSV
+    EXPECT_NE(r.out.str().find("wrote forces.csv"), std::string::npos) << r.out.str();
 }
 
 TEST(Inverse, SampledMotionDataReproduceTheFormulaTorquesAwayFromTheEnds) {

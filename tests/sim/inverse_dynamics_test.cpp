@@ -9,6 +9,7 @@
 #include <random>
 
 #include "alembert/error.hpp"
+#include "alembert/sim/inverse_analysis.hpp"
 #include "alembert/mech/sample_models.hpp"
 #include "planar_chain_reference.hpp"
 #include "support/expect.hpp"
@@ -94,6 +95,43 @@ TEST(InverseDynamics, CoupledLoadMeasuresAreSolvedAtRunTime) {
     id.calc_loads(0, q, zero, zero, loads);
     const double holding = (potential(qA + h) - potential(qA - h)) / (2 * h);
     EXPECT_NEAR(loads[0], holding, 1e-6);
+}
+
+TEST(InverseDynamics, AMotionOffTheClosedLoopIsRefusedNamingTheConstraint) {
+    // the four-bar's loop closes at the analytic pose; the same motion with the rocker turned
+    // by 0.1 rad leaves the pin apart by about L_C * 0.1 = 8 cm
+    SampleModel fb = make_four_bar();
+    InverseDynamics id = compile_inverse_dynamics(fb.system, fb.q, fb.unknowns, "four_bar");
+    ASSERT_EQ(id.constraint_names().size(), 2u);
+    const double LN = 1, LA = 0.4, LB = 1.2, LC = 0.8, qA = 1.1;
+    const double ax = LA * std::cos(qA), ay = LA * std::sin(qA);
+    const double dx = LN - ax, dy = -ay, dd = std::hypot(dx, dy);
+    const double along = (LB * LB - LC * LC + dd * dd) / (2 * dd), h = std::sqrt(LB * LB - along * along);
+    const double px = ax + along * dx / dd - h * dy / dd, py = ay + along * dy / dd + h * dx / dd;
+    MotionSamples m;
+    m.coordinates = {"qA", "qB", "qC"};
+    m.t = {0, 0.1, 0.2};
+    m.q = {{qA, qA, qA}, {0, 0, 0}, {0, 0, 0}};
+    m.q[1].assign(3, std::atan2(py - ay, px - ax) - qA);
+    m.q[2].assign(3, std::atan2(py, px - LN));
+    m.qd.assign(3, std::vector<double>(3, 0.0));
+    m.qdd = m.qd;
+    EXPECT_EQ(calc_inverse_dynamics(id, m).row_count(), 3u);
+    m.q[2][1] += 0.1;
+    InverseAnalysisOptions o;
+    o.constraint_units = {{"loop_x", "m"}, {"loop_y", "m"}};
+    EXPECT_THROW_MSG(calc_inverse_dynamics(id, m, o), ArgumentError,
+                     "calc_inverse_dynamics('four_bar'): the motion violates the configuration "
+                     "constraint 'loop_x' at 1 of 3 samples: t = 0.1 s (sample 2); its largest "
+                     "residual is ");
+    EXPECT_THROW_MSG(calc_inverse_dynamics(id, m, o), ArgumentError, " m at t = 0.1 s, beyond the tolerance 1e-06 m");
+}
+
+TEST(InverseDynamics, TheFileIsNamedForWhatItHolds) {
+    EXPECT_EQ(inverse_dynamics_file_stem({"N m", "N*m"}), "torques");
+    EXPECT_EQ(inverse_dynamics_file_stem({"N", "kN"}), "forces");
+    EXPECT_EQ(inverse_dynamics_file_stem({"N*m", "N", "N"}), "loads");
+    EXPECT_EQ(inverse_dynamics_file_stem({"", ""}), "torques");
 }
 
 TEST(InverseDynamics, AMissingConstantValueIsNamed) {

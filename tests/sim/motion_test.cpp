@@ -75,6 +75,54 @@ TEST(ReadMotion, ConvertsDegreesFiltersAndDifferentiates) {
     fs::remove(p);
 }
 
+Table one_coordinate(const std::string& name, const std::string& unit,
+                     const std::string& time_unit = "s") {
+    Table t;
+    t.add_column("t", time_unit);
+    t.add_column(name, unit);
+    t.columns = {{0, 0.01, 0.02, 0.03, 0.04}, {10, 10, 10, 10, 10}};
+    return t;
+}
+
+TEST(ReadMotion, AColumnInAUnitOfAnotherQuantityIsRefused) {
+    MotionFilterOptions deg{.cutoff_hz = 0, .declared_units = {"deg"}};
+    EXPECT_THROW_MSG(differentiate_motion(one_coordinate("q1", "m"), "m.csv", {"q1"}, deg),
+                     ArgumentError,
+                     "m.csv: column 'q1 [m]' is a length, but the coordinate 'q1' is an angle "
+                     "(declared in deg); give the column a unit of an angle (deg, rad)");
+    MotionFilterOptions metres{.cutoff_hz = 0, .declared_units = {"m"}};
+    EXPECT_THROW_MSG(differentiate_motion(one_coordinate("x", "deg"), "m.csv", {"x"}, metres),
+                     ArgumentError, "column 'x [deg]' is an angle, but the coordinate 'x' is a length");
+    // a coordinate of no stated unit still takes only angles and lengths
+    EXPECT_THROW_MSG(differentiate_motion(one_coordinate("q", "N"), "m.csv", {"q"}, {.cutoff_hz = 0}),
+                     ArgumentError, "column 'q [N]' is a force, but the coordinate 'q' is an angle or a length");
+    EXPECT_THROW_MSG(differentiate_motion(one_coordinate("q", "deg", "deg"), "m.csv", {"q"}, deg),
+                     ArgumentError, "m.csv: the time column 't [deg]' is in a unit of angle");
+}
+
+TEST(ReadMotion, AColumnWithoutAUnitIsNeverReadAsRadiansForACoordinateInDegrees) {
+    MotionFilterOptions deg{.cutoff_hz = 0, .declared_units = {"deg"}};
+    EXPECT_THROW_MSG(differentiate_motion(one_coordinate("q1", ""), "m.csv", {"q1"}, deg),
+                     ArgumentError,
+                     "m.csv: column 'q1' has no unit, but the coordinate 'q1' is declared in deg");
+    // an explicit setting says how to read it
+    deg.unitless_unit = "deg";
+    MotionSamples m = differentiate_motion(one_coordinate("q1", ""), "m.csv", {"q1"}, deg);
+    EXPECT_NEAR(m.q[0][0], 10 * kDeg, 1e-15);
+    // a coordinate declared in SI, or not declared, reads a bare column in SI
+    MotionFilterOptions rad{.cutoff_hz = 0, .declared_units = {"rad"}};
+    EXPECT_EQ(differentiate_motion(one_coordinate("q1", ""), "m.csv", {"q1"}, rad).q[0][0], 10);
+    EXPECT_EQ(differentiate_motion(one_coordinate("q1", ""), "m.csv", {"q1"}, {.cutoff_hz = 0}).q[0][0], 10);
+}
+
+TEST(ReadMotion, TwoTimeColumnsAreRefused) {
+    Table t = one_coordinate("q", "rad");
+    t.add_column("time", "s");
+    t.columns[2] = t.columns[0];
+    EXPECT_THROW_MSG(differentiate_motion(t, "m.csv", {"q"}), ArgumentError,
+                     "m.csv: two time columns, 't' and 'time'; keep one of them");
+}
+
 TEST(ReadMotion, UnevenTimesAreReportedWithTheLine) {
     Table t;
     t.add_column("t", "s");

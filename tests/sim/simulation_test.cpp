@@ -154,6 +154,38 @@ TEST(Simulation, AClosedLoopReportsItsConstraintDrift) {
     EXPECT_GT(std::abs(t.columns[1].back() - t.columns[1].front()), 1.0);  // it moved
 }
 
+TEST(Simulation, AnInitialStateOffTheLoopIsRefusedNotMovedOntoIt) {
+    // the four-bar at qA = 1 with the coupler and rocker at zero: the pin is apart by metres
+    SampleModel fb = make_four_bar();
+    SimulationRequest r;
+    r.model = "four_bar";
+    r.coordinates = fb.q;
+    r.constraint_forces = {fb.unknowns[1], fb.unknowns[2]};
+    r.initial_values = {{fb.q[0].symbol(), 1.0}};
+    r.constraint_units = {{"loop_x", "m"}};
+    // loop_x = x(B_tip) - x(C_tip) = LA cos 1 + LB cos 1 - LN - LC = 1.6 cos 1 - 1.8
+    EXPECT_THROW_MSG(run_simulation(fb.system, r), ArgumentError,
+                     "run_simulation('four_bar'): the initial state violates the configuration "
+                     "constraint 'loop_x': its residual is -0.935516 m at t = 0 s, beyond the "
+                     "tolerance 1e-06 m");
+}
+
+TEST(Simulation, TooManyOutputRowsAreRefusedBeforeTheRun) {
+    SampleModel rod = make_planar_chain(1);
+    SimulationRequest r;
+    r.model = "rod";
+    r.coordinates = rod.q;
+    r.options = {.t_final = 10, .output_step = 1e-9};
+    EXPECT_THROW_MSG(run_simulation(rod.system, r), ArgumentError,
+                     "simulate('rod'): the output step 1e-09 s from t = 0 to 10 s asks for "
+                     "10000000001 rows, more than the limit of 1000000 rows "
+                     "(SimulationOptions::max_output_rows)");
+    r.options = {.t_final = 1, .output_step = 0.001, .max_output_rows = 500};
+    EXPECT_THROW_MSG(run_simulation(rod.system, r), ArgumentError, "asks for 1001 rows");
+    r.options.max_output_rows = 1001;
+    EXPECT_EQ(run_simulation(rod.system, r).table.row_count(), 1001u);
+}
+
 TEST(Simulation, BadRequestsAreNamed) {
     SampleModel rod = make_planar_chain(1);
     SimulationRequest r;

@@ -101,7 +101,7 @@ TEST_F(SitToStand, FilteredSampledDataReproduceTheExactTorquesAwayFromTheEnds) {
     fs::remove(csv);
     Table from_data = calc_inverse_dynamics(id, sampled);
     Table exact = calc_inverse_dynamics(id, motion.sample(sampled.t));
-    ASSERT_EQ(from_data.names, (std::vector<std::string>{"t", "TA", "TB", "TC"}));
+    ASSERT_EQ(from_data.names, (std::vector<std::string>{"t", "T_A", "T_B", "T_C"}));
     for (std::size_t j = 1; j <= 3; ++j) {
         double peak = 0, worst = 0;
         for (double v : exact.columns[j]) peak = std::max(peak, std::abs(v));

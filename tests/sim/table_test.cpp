@@ -105,6 +105,34 @@ TEST(Table, BadRowsAreReportedWithFileAndLine) {
     EXPECT_THROW_MSG(read_csv(scratch("missing.csv")), ArgumentError, "cannot open");
 }
 
+TEST(Table, AByteOrderMarkIsNotPartOfTheFirstColumnsName) {
+    const fs::path p = scratch("bom.csv");
+    write_text(p, "\xEF\xBB\xBFt [s],F_x [N]\n0,1\n0.01,2\n");
+    Table t = read_csv(p);
+    ASSERT_EQ(t.names, (std::vector<std::string>{"t", "F_x"}));  // underscores kept
+    EXPECT_EQ(t.units[0], "s");
+    EXPECT_EQ(t.row_count(), 2u);
+}
+
+TEST(Table, AnOpenSimMotionFileIsNamedNotMisread) {
+    const fs::path p = scratch("walk.mot");
+    write_text(p, "Coordinates\nversion=1\nnRows=2\nnColumns=2\ninDegrees=yes\nendheader\n"
+                  "time\tknee_angle_r\n0\t1\n0.01\t2\n");
+    EXPECT_THROW_MSG(read_csv(p), ArgumentError,
+                     p.string() + ":2: 'version=1': this looks like an OpenSim .mot/.sto file");
+    write_text(p, "endheader\ntime,q\n0,1\n");
+    EXPECT_THROW_MSG(read_csv(p), ArgumentError, "this looks like an OpenSim .mot/.sto file");
+}
+
+TEST(Unit, KnowsTheQuantityItMeasures) {
+    EXPECT_EQ(parse_unit("deg").quantity, "angle");
+    EXPECT_EQ(parse_unit("mm").quantity, "length");
+    EXPECT_EQ(parse_unit("ms").quantity, "time");
+    EXPECT_EQ(parse_unit("kN").quantity, "force");
+    EXPECT_EQ(parse_unit("N*m").quantity, "torque");
+    EXPECT_EQ(parse_unit("").quantity, "");
+}
+
 TEST(Table, AnUnwritablePathIsAnArgumentError) {
     Table t;
     t.add_column("t", "s");

@@ -64,8 +64,11 @@ public:
     /// Inverse dynamics of the model over the motion table `motion_csv` (relative to the
     /// current directory) for every load measure the script declares, written to the output
     /// directory as torques.csv and its plot: `alembert inverse`. `cutoff_hz` 0 turns the
-    /// filter off; `compiled` evaluates through compiled C code. Errors go to `err`.
-    RunStatus run_inverse(const std::string& motion_csv, double cutoff_hz, bool compiled);
+    /// filter off; `compiled` evaluates through compiled C code; `unitless_unit` (deg, rad,
+    /// m, mm; empty: none) is how to read coordinate columns without a unit in the header
+    /// (MotionFilterOptions::unitless_unit). Errors go to `err`.
+    RunStatus run_inverse(const std::string& motion_csv, double cutoff_hz, bool compiled,
+                          const std::string& unitless_unit = "");
     /// Code for the model in `language` (c, cpp, matlab, python) written to the output
     /// directory, named `name` (empty: the script's name): `alembert codegen`.
     RunStatus run_codegen(const std::string& language, const std::string& name);

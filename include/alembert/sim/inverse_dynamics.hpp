@@ -38,11 +38,34 @@ public:
     /// Printed names of the load measures ("T_A").
     std::vector<std::string> load_names() const;
 
+    /// Below this reciprocal condition estimate of A (unsolved form) the load measures are
+    /// taken as not determined by the motion: A is singular or nearly singular.
+    static constexpr double kMinReciprocalCondition = 1e-12;
+
     /// The load measures (k values, in layout().unknowns order) at (t, q, q', q'').
     /// @throws alembert::SolveError naming the model and the state if a value is not finite or
-    ///         (unsolved form) A is singular or ill-conditioned.
+    ///         (unsolved form) A's reciprocal condition estimate is below
+    ///         kMinReciprocalCondition.
     void calc_loads(double t, const double* q, const double* qd, const double* qdd,
                     double* loads) const;
+
+    /// As calc_loads, but a state where the loads are not determined is returned, not thrown:
+    /// the empty string when `loads` holds finite values, else what is wrong ("the equations
+    /// are singular ... (reciprocal condition estimate 3e-17)", "T_A is inf"). `rcond`
+    /// receives A's reciprocal condition estimate (1 for the solved form).
+    std::string try_calc_loads(double t, const double* q, const double* qd, const double* qdd,
+                               double* loads, double* rcond) const;
+
+    /// The model's constraints a motion must satisfy: `residuals` evaluates their residuals
+    /// (configuration and motion constraints, SI) over the same inputs [t, q, q', q''], one
+    /// output per name in `names` ("the configuration constraint 'loop_x'").
+    /// @throws alembert::ArgumentError if the sizes do not match.
+    void set_constraints(std::vector<std::string> names, NumericFunction residuals);
+    /// Names of the constraints set by set_constraints (empty: none).
+    const std::vector<std::string>& constraint_names() const { return constraint_names_; }
+    /// The constraint residuals (constraint_names().size() values, SI) at (t, q, q', q'').
+    void calc_constraint_residuals(double t, const double* q, const double* qd, const double* qdd,
+                                   double* residuals) const;
 
 private:
     [[noreturn]] void fail(const std::string& what, double t, const double* q,
@@ -56,6 +79,8 @@ private:
     mutable Eigen::MatrixXd A_;
     mutable Eigen::VectorXd b_;
     mutable Eigen::PartialPivLU<Eigen::MatrixXd> lu_;
+    std::vector<std::string> constraint_names_;
+    NumericFunction constraints_;
 };
 
 /// Compiles equations `eqs` that are linear in load measures (eqs.unknowns, e.g. joint
@@ -68,7 +93,8 @@ InverseDynamics compile_inverse_dynamics(const SymbolTable& table, const LinearS
                                          const std::string& model, const FunctionMaker& make = {});
 
 /// Plans the MG road-map of `sys` for the load measures `loads` (one row per measure, about
-/// the joint where the other unknown forces drop out) and compiles it.
+/// the joint where the other unknown forces drop out) and compiles it, with the residuals of
+/// the model's constraints (set_constraints) so a motion can be checked against them.
 /// @throws as plan_roadmap and compile_inverse_dynamics above.
 InverseDynamics compile_inverse_dynamics(const System& sys, const std::vector<TimeVariable>& q,
                                          const std::vector<ex>& loads, const std::string& model,

@@ -19,23 +19,36 @@ struct MotionSamples {
     std::vector<std::vector<double>> q{}, qd{}, qdd{};  ///< [coordinate][sample]
 };
 
-/// How sampled data become q, q', q''.
+/// How sampled data are read and become q, q', q''.
 struct MotionFilterOptions {
     /// Cutoff of the zero-lag low-pass Butterworth filter (filter_lowpass), in Hz; 0 turns
     /// filtering off (differences of the raw samples). 6 Hz is a common choice for
     /// whole-body movements sampled at 50-200 Hz (Winter 2009, sec. 3.4.4).
     double cutoff_hz = 6.0;
+    /// The unit each coordinate is declared in by the model ("deg", "rad", "m", "mm"; in the
+    /// order of the coordinates), so a column is checked against it: its unit must measure the
+    /// same quantity (an angle column for an angle), and a column without a unit is refused
+    /// for a coordinate declared in a unit other than SI (deg, mm). Empty, or "" for a
+    /// coordinate: not stated, any angle or length unit is accepted and no unit means SI.
+    std::vector<std::string> declared_units{};
+    /// How to read coordinate columns whose header gives no unit ("deg", "rad", "m", ...):
+    /// the columns of the quantity this unit measures are read in it. Empty: such a column is
+    /// read in SI (rad, m) unless its coordinate is declared in another unit (then refused).
+    std::string unitless_unit{};
 };
 
-/// q, q', q'' from a motion table: the column "t" (or "time"; unit s or ms, default s) and
-/// one column per coordinate named as the coordinate ("qA [deg]": rad, deg, m, mm, ...;
-/// no unit means SI). Each coordinate is filtered (options.cutoff_hz), then differentiated
-/// once and twice by central differences (alembert::differentiate, differentiate_twice).
-/// Columns that are not coordinates are ignored.
-/// `source` names the data in messages (the file's path).
+/// q, q', q'' from a motion table: the column "t" (or "time"; a time unit, s or ms, default
+/// s) and one column per coordinate named as the coordinate ("qA [deg]": rad, deg, m, mm,
+/// ...; see MotionFilterOptions for columns without a unit). Each coordinate is filtered
+/// (options.cutoff_hz), then differentiated once and twice by central differences
+/// (alembert::differentiate, differentiate_twice). Columns that are not coordinates are
+/// ignored. `source` names the data in messages (the file's path).
 /// @throws alembert::ArgumentError "source:line: ..." if the times are not increasing or not
-///         uniformly spaced (to 1e-6 of the step), naming the row; if a coordinate column is
-///         missing (listing those found) or has an unknown unit; if fewer than 4 samples.
+///         uniformly spaced (to 1e-6 of the step), naming the row; if there are two time
+///         columns; if a coordinate column is missing (listing those found), has an unknown
+///         unit or one of another quantity than its coordinate's (a length for an angle), or
+///         has no unit while its coordinate is declared in a unit other than SI and
+///         options.unitless_unit does not say how to read it; if fewer than 4 samples.
 MotionSamples differentiate_motion(const Table& table, const std::string& source,
                                    const std::vector<std::string>& coordinates,
                                    const MotionFilterOptions& options = {});

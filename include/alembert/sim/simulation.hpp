@@ -3,6 +3,7 @@
 #pragma once
 
 #include <functional>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -50,6 +51,15 @@ struct SimulationOptions {
     double initial_step = 0.0;
     /// Stop with SolveError after this many steps (a stiff or singular model).
     std::size_t max_steps = 50'000'000;
+    /// Refuse (ArgumentError, before integrating) a run whose output times would make more
+    /// rows than this: a tiny output step over a long run would otherwise fill the memory.
+    /// Raise it for long runs that need every row; a row takes 8 bytes per column.
+    std::size_t max_output_rows = 1'000'000;
+    /// Largest residual (SI: m, rad, m/s, ...) a declared constraint may have at the initial
+    /// state (configuration residuals, their rates, motion residuals) and in the drift columns
+    /// during the run; beyond it run_simulation refuses the initial values or stops with the
+    /// time and the residual.
+    double constraint_tolerance = 1e-6;
     /// Progress line on a terminal for runs longer than a second.
     bool progress = true;
 };
@@ -106,14 +116,24 @@ struct SimulationResult {
 /// dense output: outputs are interpolated exactly at the requested times (fourth-order dense
 /// output), events are checked at every accepted step and located by bisection on the dense
 /// output to 1e-12 s (a sign change inside one step is found; two crossings inside one step
-/// cancel). `inputs` gives the run-time inputs (empty: all zero).
-/// @throws alembert::ArgumentError for bad options or state sizes (named);
+/// cancel). `inputs` gives the run-time inputs (empty: all zero). `check_row`, if given, sees
+/// each output row as it is written (the table so far and the row's index) and stops the run
+/// by throwing (run_simulation's constraint drift check).
+/// @throws alembert::ArgumentError for bad options or state sizes (named), or more output
+///         rows than options.max_output_rows (checked up front: calc_output_row_count);
 ///         alembert::SolveError naming the model and the time if the dynamics fail (singular
-///         mass matrix) or the step count exceeds options.max_steps.
+///         mass matrix) or the step count exceeds options.max_steps; what check_row throws.
 SimulationResult simulate(const ForwardDynamics& fd, const std::vector<double>& q0,
                           const std::vector<double>& qd0, const SimulationOptions& options,
                           const OutputFunction& outputs, const EventFunction& events = {},
-                          const InputFunction& inputs = {});
+                          const InputFunction& inputs = {},
+                          const std::function<void(const Table&, std::size_t)>& check_row = {});
+
+/// The number of output rows `options` asks for from t_initial to t_final (output_times, or
+/// one every output_step with t_final included), computed without listing them.
+/// @throws alembert::ArgumentError naming `who`, the step, the span and the limit if it
+///         exceeds options.max_output_rows (or the output step is not positive).
+double calc_output_row_count(const SimulationOptions& options, const std::string& who);
 
 /// Everything a script's simulation statements state, for run_simulation.
 struct SimulationRequest {
@@ -137,11 +157,21 @@ struct SimulationRequest {
     bool checks = true;
     /// The evaluator of the dynamics, outputs and events (empty: the tape; see FunctionMaker).
     FunctionMaker make{};
+    /// The SI unit of each constraint's residual by constraint name ("m" for a loop closed by
+    /// positions), for the drift columns' headers and messages; a constraint not listed has
+    /// its residual printed without a unit.
+    std::map<std::string, std::string> constraint_units{};
 };
 
 /// Forms the forward dynamics of `sys` (compile_forward_dynamics), substitutes the inputs,
-/// compiles outputs, checks and events, and simulates.
-/// @throws as compile_forward_dynamics, compile_outputs and simulate.
+/// compiles outputs, checks and events, and simulates. The declared constraints must hold at
+/// the initial state (their residuals, the rates of configuration residuals, within
+/// options.constraint_tolerance): the initial values are not moved onto them silently; and
+/// their drift columns must stay within the same tolerance during the run.
+/// @throws as compile_forward_dynamics, compile_outputs and simulate; alembert::ArgumentError
+///         naming the constraint and its residual (with its unit) if the initial state
+///         violates it; alembert::SolveError naming the constraint, the time and the residual
+///         if its drift grows beyond the tolerance.
 SimulationResult run_simulation(const System& sys, const SimulationRequest& request);
 
 /// Writes `table` to `dir`/`name`.csv (atomically) and plots it to `dir`/`name`.png and .svg

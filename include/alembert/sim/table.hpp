@@ -8,10 +8,12 @@
 namespace alembert {
 
 /// A unit for printing or reading a column: its name as written ("deg", "N m") and the factor
-/// that turns a value in it into SI (value_SI = factor * value; deg: pi/180).
+/// that turns a value in it into SI (value_SI = factor * value; deg: pi/180), and the
+/// quantity it measures ("angle", "length", "time", "force", "torque", ...; "" for no unit).
 struct Unit {
     std::string name{};
     double factor = 1.0;
+    std::string quantity{};
 };
 
 /// The unit of this name. Known: "" and "1" (no unit), s, ms, min, rad, deg, rev, m, cm, mm,
