@@ -83,6 +83,7 @@ struct RunOptions {
     std::string file;
     bool quiet = false;
     std::string out = ".";
+    int digits = 6;
 };
 
 int run_script(const RunOptions& o) {
@@ -90,6 +91,7 @@ int run_script(const RunOptions& o) {
     if (!read_script(o.file, text)) return kUsageError;
     Interpreter interp(std::cout, std::cerr, !o.quiet);
     interp.set_output_dir(o.out);
+    interp.set_digits(o.digits);
     return exit_status(interp.run(text, display_name(o.file)));
 }
 
@@ -329,6 +331,10 @@ int main(int argc, char** argv) {
              c.add_flag("-q,--quiet", run_opts.quiet, "print only results, not the statements");
              c.add_option("--out", run_opts.out,
                           "directory for the files of simulate, inverse and codegen (default: .)");
+             c.add_option("--digits", run_opts.digits,
+                          "significant digits of printed numbers, 1 to 17 (default: 6; a script's "
+                          "digits statement changes it; CSV files always read back exactly)")
+                 ->check(CLI::Range(1, 17));
          },
          [&] { return run_script(run_opts); }},
         {"roadmap", "Print the MG road-map table of the model in a script",

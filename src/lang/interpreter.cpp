@@ -43,6 +43,8 @@ Interpreter::~Interpreter() = default;
 
 void Interpreter::set_echo(bool echo) { impl_->transcript.set_echo(echo); }
 
+void Interpreter::set_digits(int digits) { impl_->transcript.set_digits(digits); }
+
 const std::optional<Diagnostic>& Interpreter::last_error() const { return impl_->last_error; }
 
 const System* Interpreter::system() const { return impl_->sys.get(); }
@@ -317,8 +319,8 @@ std::optional<Unit> Interpreter::Impl::display_unit(const std::string& printed) 
 
 std::string Interpreter::Impl::format_value(const std::string& printed, double si) const {
     std::optional<Unit> u = display_unit(printed);
-    if (!u) return printed + " = " + format_number(si);
-    return printed + " = " + format_number(si / u->scale) + " " + u->text;
+    if (!u) return printed + " = " + transcript.number(si);
+    return printed + " = " + transcript.number(si / u->scale) + " " + u->text;
 }
 
 double Interpreter::Impl::number_of(const Quantity& q, const Dimension& expected,

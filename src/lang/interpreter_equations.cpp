@@ -266,7 +266,7 @@ void Interpreter::Impl::evaluate_statement(const Statement& s) {
     double x = guard(e.location, [&] { return m.symbols().evaluate(v.s, at); },
                      "give every symbol a value after 'at'");
     std::string unit = si_unit(v.dim);
-    transcript.result("= " + format_number(x) + (unit.empty() ? "" : " " + unit));
+    transcript.result("= " + transcript.number(x) + (unit.empty() ? "" : " " + unit));
 }
 
 
@@ -339,6 +339,19 @@ void parse_evaluate(StatementParser& p, Statement& s) {
     if (p.accept_word("at")) s.bindings["at"] = p.bindings("a symbol");
 }
 
+void parse_digits(StatementParser& p, Statement& s) { s.quantities["digits"] = p.quantity(); }
+
+// digits N: the significant digits of the numbers printed from here on
+void run_digits(Interpreter::Impl& m, const Statement& s) {
+    const Quantity& q = s.quantities.at("digits");
+    double n = m.number_of(q, Dimension::none(), "the number of digits", q.value->location);
+    if (!(n >= 1 && n <= 17) || n != std::floor(n))
+        throw ScriptError(q.value->location,
+                          "digits takes a whole number from 1 to 17, not " + format_number(n),
+                          "write digits 12 (17 prints every number exactly, as it reads back)");
+    m.transcript.set_digits(static_cast<int>(n));
+}
+
 }  // namespace
 
 // ---- the statements ----------------------------------------------------------------------
@@ -396,6 +409,12 @@ std::vector<StatementSpec> equation_statements() {
                     "`solve_equilibrium` (nonlinear; speeds and accelerations 0)"}},
          .clauses = {"for", "at", "guess"}, .parse = parse_solve,
          .run = [](M& m, const Statement& s) { m.solve(s); }},
+        {.keyword = "digits", .family = solving,
+         .help = "sets the significant digits of the numbers printed from here on (6 at the start)",
+         .forms = {{"`digits` *n*",
+                    "digits 12",
+                    "`Transcript::set_digits` (1 to 17; `alembert run --digits N` sets the start value)"}},
+         .parse = parse_digits, .run = run_digits, .needs_model = false},
         {.keyword = "evaluate", .family = solving, .help = "prints the number an expression takes at given values",
          .forms = {{"`evaluate` *expr* `at` *name = value, ...*",
                     "evaluate PE at qA = 0",

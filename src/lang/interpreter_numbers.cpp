@@ -46,7 +46,7 @@ std::string bound_of(double x) {
 }
 
 // a table as transcripts print it: at most `max_rows` rows spread evenly, the last included
-std::string format_table(const Table& t, std::size_t max_rows = 11) {
+std::string format_table(const Table& t, int digits, std::size_t max_rows = 11) {
     const std::size_t rows = t.row_count(), cols = t.names.size();
     std::vector<std::size_t> picked;
     if (rows <= max_rows) {
@@ -59,7 +59,7 @@ std::string format_table(const Table& t, std::size_t max_rows = 11) {
     std::vector<std::size_t> width(cols, 0);
     for (std::size_t c = 0; c < cols; ++c) {
         cells[0][c] = t.names[c] + (t.units[c].empty() ? "" : " [" + t.units[c] + "]");
-        for (std::size_t k = 0; k < picked.size(); ++k) cells[k + 1][c] = format_number(t.columns[c][picked[k]]);
+        for (std::size_t k = 0; k < picked.size(); ++k) cells[k + 1][c] = format_number(t.columns[c][picked[k]], digits);
         for (const auto& row : cells) width[c] = std::max(width[c], row[c].size());
     }
     std::ostringstream out;
@@ -340,14 +340,14 @@ void Interpreter::Impl::simulate(const Statement& s) {
     const std::string dir = output_path(s);
     PlotResult plot = guard(s.location, [&] { return write_table_and_plot(res.table, dir, "simulation"); });
     std::ostringstream out;
-    out << "simulated t = " << format_number(r.options.t_initial) << " to " << format_number(res.t_end) << " s";
+    out << "simulated t = " << transcript.number(r.options.t_initial) << " to " << transcript.number(res.t_end) << " s";
     if (!res.stopped_by.empty()) out << ", stopped when " << res.stopped_by;
     out << ": " << res.table.row_count() << " rows";
     std::string note = evaluator_note(s.flag("compiled"), why_not);
     if (!note.empty()) out << ", " << note;
     out << "\nwrote " << file_list(plot, "simulation.csv");
     if (!plot.drawn) out << " (no plot: " << plot.message << ")";
-    out << "\n" << format_table(res.table);
+    out << "\n" << format_table(res.table, transcript.digits());
     // the checks users rely on
     for (std::size_t c = 0; c < res.table.names.size(); ++c) {
         const std::vector<double>& col = res.table.columns[c];
@@ -356,7 +356,7 @@ void Interpreter::Impl::simulate(const Statement& s) {
             double scale = 0, change = 0;
             for (double e : col) scale = std::max(scale, std::abs(e));
             for (double e : col) change = std::max(change, std::abs(e - col.front()));
-            out << "\nenergy: " << format_number(col.front()) << " J at the start; ";
+            out << "\nenergy: " << transcript.number(col.front()) << " J at the start; ";
             if (change == 0) out << "unchanged";
             // a relative bound of 1e0 or more says nothing (an energy that stays near zero): in J
             else if (scale > 0 && change / scale < 0.1) out << "its largest change is below " << bound_of(change / scale) << " of its largest value";
@@ -467,8 +467,8 @@ void Interpreter::Impl::run_inverse(const InverseRequest& r, Location where) {
     }
     const Table& t = rep.loads;
     std::ostringstream out;
-    out << "inverse dynamics over " << span << ", t = " << format_number(t.columns[0].front()) << " to "
-        << format_number(t.columns[0].back()) << " s: " << t.row_count() << " samples";
+    out << "inverse dynamics over " << span << ", t = " << transcript.number(t.columns[0].front()) << " to "
+        << transcript.number(t.columns[0].back()) << " s: " << t.row_count() << " samples";
     std::string note = evaluator_note(r.compiled, why_not);
     if (!note.empty()) out << ", " << note;
     out << "\nwrote " << file_list(rep.plot, rep.csv);
@@ -477,12 +477,12 @@ void Interpreter::Impl::run_inverse(const InverseRequest& r, Location where) {
         const std::vector<double>& col = t.columns[c];
         auto hi = std::max_element(col.begin(), col.end()), lo = std::min_element(col.begin(), col.end());
         const std::string unit = t.units[c].empty() ? "" : " " + t.units[c];
-        out << "\n" << t.names[c] << ": largest " << format_number(*hi) << unit << " at t = "
-            << format_number(t.columns[0][static_cast<std::size_t>(hi - col.begin())]) << " s, smallest "
-            << format_number(*lo) << unit << " at t = "
-            << format_number(t.columns[0][static_cast<std::size_t>(lo - col.begin())]) << " s";
+        out << "\n" << t.names[c] << ": largest " << transcript.number(*hi) << unit << " at t = "
+            << transcript.number(t.columns[0][static_cast<std::size_t>(hi - col.begin())]) << " s, smallest "
+            << transcript.number(*lo) << unit << " at t = "
+            << transcript.number(t.columns[0][static_cast<std::size_t>(lo - col.begin())]) << " s";
     }
-    out << "\n" << format_table(t);
+    out << "\n" << format_table(t, transcript.digits());
     transcript.result(out.str());
 }
 

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include "alembert/error.hpp"
+
 namespace alembert::lang {
 
 void Transcript::statement(const std::string& source) {
@@ -27,10 +29,20 @@ void Transcript::result(const std::string& text) {
     if (text.empty() || text.back() != '\n') *out_ << "\n";
 }
 
-std::string format_number(double x) {
+void Transcript::set_digits(int digits) {
+    if (digits < 1 || digits > 17)
+        throw ArgumentError("Transcript::set_digits(): " + std::to_string(digits) +
+                            " significant digits; give a whole number from 1 to 17 (17 prints "
+                            "every double exactly)");
+    digits_ = digits;
+}
+
+std::string Transcript::number(double x) const { return format_number(x, digits_); }
+
+std::string format_number(double x, int digits) {
     if (std::fabs(x) < 5e-13) x = 0;  // round-off around zero prints as 0
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.6g", x);
+    char buf[40];
+    std::snprintf(buf, sizeof buf, "%.*g", digits, x);
     return buf;
 }
 

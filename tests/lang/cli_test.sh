@@ -27,6 +27,11 @@ contains() {  # contains NAME FILE TEXT
 
 expect version 0 "$alembert" --version
 contains version "$tmp/out" "alembert 0."
+printf 'newtonian N\nconstant a = 2\nevaluate sqrt(a)\n' >"$tmp/digits.alb"
+expect digits 0 "$alembert" run --digits 12 "$tmp/digits.alb"
+contains digits "$tmp/out" "= 1.41421356237"
+expect digits_range 2 "$alembert" run --digits 18 "$tmp/digits.alb"
+contains digits_range "$tmp/err" "--digits"
 expect help 0 "$alembert" --help
 contains help "$tmp/out" "roadmap"
 expect bad_option 2 "$alembert" --frobnicate

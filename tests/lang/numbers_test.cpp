@@ -4,7 +4,9 @@
 // torques where the motion is at rest; generated code simulates as Alembert does.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <array>
+#include <cctype>
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
@@ -249,4 +251,48 @@ TEST(Codegen, TheStatementWritesCodeWhoseSimulationProgramFollowsAlembertsSimula
     const std::size_t qa = gen.column_index("qA");
     for (std::size_t k = 0; k <= 40; k += 5)
         EXPECT_NEAR(gen.columns[qa][k], ours.columns[ours.column_index("qA")][k] * kDeg, 1e-6) << "row " << k;
+}
+
+TEST(Digits, SolvePrintsTheDigitsAskedForAndSeventeenReadBackAsTheHoldingTorque) {
+    TempDir dir;
+    Script s(dir.path);
+    const std::string at =
+        " at qA = 20 deg, qB = -70 deg, qC = 60 deg, qA' = 0, qB' = 0, qC' = 0, qA'' = 0, "
+        "qB'' = 0, qC'' = 0\n";
+    const std::string solve = "solve E for T_A, T_B, T_C";
+    s.run(sit_to_stand_model() + "roadmap E for T_A, T_B, T_C\n" + solve + at + "digits 12\n" +
+          solve + at + "digits 17\n" + solve + at);
+    // the three answers, in order, as printed: "T_A = <number> N*m"
+    std::vector<std::string> printed;
+    std::istringstream lines(s.out.str());
+    for (std::string line; std::getline(lines, line);)
+        if (line.rfind("T_A = ", 0) == 0) printed.push_back(line.substr(6, line.find(' ', 6) - 6));
+    ASSERT_EQ(printed.size(), 3u) << s.out.str();
+    auto significant = [](const std::string& t) {
+        std::string d;
+        for (char c : t) if (std::isdigit(static_cast<unsigned char>(c))) d += c;
+        return d.size() - std::min(d.find_first_not_of('0'), d.size());
+    };
+    EXPECT_EQ(significant(printed[0]), 6u) << printed[0];
+    EXPECT_EQ(significant(printed[1]), 12u) << printed[1];
+    EXPECT_GE(significant(printed[2]), 16u) << printed[2];
+    // each agrees with the hand statics to the digits it shows
+    const double T_A = holding(20 * kDeg, -70 * kDeg, 60 * kDeg)[0];
+    EXPECT_NEAR(std::stod(printed[0]), T_A, 1e-5 * std::fabs(T_A));
+    EXPECT_NEAR(std::stod(printed[1]), T_A, 1e-11 * std::fabs(T_A));
+    EXPECT_NEAR(std::stod(printed[2]), T_A, 1e-13 * std::fabs(T_A));
+}
+
+TEST(Digits, OnlyWholeNumbersFromOneToSeventeen) {
+    for (const char* bad : {"digits 0", "digits 18", "digits 2.5", "digits 6 m"}) {
+        std::ostringstream out, err;
+        Interpreter interp(out, err, false);
+        EXPECT_EQ(interp.run(std::string(bad) + "\n", "t.alb"), RunStatus::script_error) << bad;
+    }
+    std::ostringstream out, err;
+    Interpreter interp(out, err, false);
+    EXPECT_THROW(interp.set_digits(18), alembert::ArgumentError);
+    interp.set_digits(3);
+    ASSERT_EQ(interp.run("newtonian N\nconstant a = 2\nevaluate sqrt(a)\n", "t.alb"), RunStatus::ok);
+    EXPECT_EQ(out.str(), "= 1.41\n");
 }

@@ -40,6 +40,10 @@ public:
 
     /// Echo statements (batch transcripts) or not (--quiet, interactive sessions).
     void set_echo(bool echo);
+    /// Significant digits of printed numbers, 1 to 17 (6 by default; the `digits` statement
+    /// changes it from where it stands). CSV files always hold numbers that read back exactly.
+    /// @throws alembert::ArgumentError if `digits` is outside 1..17.
+    void set_digits(int digits);
 
     /// Runs the statements of `source` (named `file` in diagnostics, its first line numbered
     /// `first_line`) until the end or the first error, which is printed to `err`.

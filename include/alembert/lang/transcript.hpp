@@ -28,13 +28,27 @@ public:
     /// Flushes the stream.
     void flush() { out_->flush(); }
 
+    /// Significant digits of the numbers the transcript prints (the `digits` statement,
+    /// `alembert run --digits N`): 1 to 17, 6 by default.
+    /// @throws alembert::ArgumentError if `digits` is outside 1..17.
+    void set_digits(int digits);
+    int digits() const { return digits_; }
+    /// `x` as this transcript prints numbers: format_number(x, digits()).
+    std::string number(double x) const;
+
 private:
     std::ostream* out_;
     bool echo_;
     bool muted_ = false;
+    int digits_ = kDefaultDigits;
+
+public:
+    static constexpr int kDefaultDigits = 6;
 };
 
-/// A number as transcripts print it: 6 significant digits, no trailing zeros, "-0" as "0".
-std::string format_number(double x);
+/// A number as transcripts print it: `digits` significant digits (printf's %.*g: no trailing
+/// zeros), round-off below 5e-13 in size and "-0" as "0". With 17 digits every double prints
+/// so that it reads back exactly.
+std::string format_number(double x, int digits = Transcript::kDefaultDigits);
 
 }  // namespace alembert::lang
