@@ -545,8 +545,18 @@ KaneEquations form_kane_equations(const System& sys, const KaneOptions& o) {
             Ft += Csa * F[si];
             Fst += Csa * Fs[si];
         }
-        out.auxiliary_equations.push_back(maybe_simplify(
-            substitute(st, substitute(st, Ft + Fst, elim), aux0), o.simplify));
+        ex Ea = maybe_simplify(substitute(st, substitute(st, Ft + Fst, elim), aux0), o.simplify);
+        // an auxiliary motion that moves no loaded point and no mass brings out nothing
+        if (equal(Ea, 0))
+            throw ModelError(
+                std::string(kFn) + "auxiliary speed '" + name_of(st, o.auxiliary_speeds[a]) +
+                "' gives the equation 0 = 0: with the motion constraints solved it moves no "
+                "point a load acts on and no mass. Add it to the velocity of the point the "
+                "constraint force acts on (Point::set_vel) or to an angular velocity "
+                "(Frame::set_ang_vel), or write it into the constraint that force enforces as "
+                "its violation, e.g. dot(v_NP - v_NQ, Nx>) - " +
+                name_of(st, o.auxiliary_speeds[a]));
+        out.auxiliary_equations.push_back(Ea);
     }
 
     // ---- mass-matrix form M u' = f

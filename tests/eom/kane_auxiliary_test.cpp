@@ -322,3 +322,17 @@ TEST(KaneAuxiliary, BoxOnTheGroundNormalForceIsItsWeightAndTheMomentBalances) {
     // resting, unpushed: each corner carries half the weight
     EXPECT_TRUE(same(F[0].subs(exmap{{P, 0}, {mu, 0}}), mass * g / 2));
 }
+
+TEST(KaneAuxiliary, AnAuxiliarySpeedThatMovesNothingIsAModelError) {
+    // a particle on a line; ua is listed but appears in no velocity and no constraint
+    System sys;
+    SymbolTable& s = sys.symbols();
+    TimeVariable x = s.add_variable("x"), ua = s.add_variable("ua", 1);
+    Particle& P = sys.add_particle("P");
+    P.set_mass(s.add_constant("m"));
+    P.point().set_pos(sys.origin(), x * sys.newtonian().x());
+    sys.add_force(P.point(), s.add_unknown("Fn") * sys.newtonian().y(), "normal");
+    EXPECT_THROW_MSG(
+        form_kane_equations(sys, KaneOptions{.coordinates = {x}, .auxiliary_speeds = {ua}}),
+        ModelError, "auxiliary speed 'ua' gives the equation 0 = 0");
+}

@@ -136,8 +136,9 @@ struct KaneEquations {
 /// @throws alembert::ArgumentError if the lists do not fit together (kinematic equations
 ///         without speeds or one count off, a dependent speed that is not a speed or appears
 ///         in no constraint, a speed that is also a coordinate rate or auxiliary, ...);
-///         alembert::ModelError if a speed has no declared derivative or a velocity holds the
-///         rate of a variable that is neither a speed nor a listed coordinate;
+///         alembert::ModelError if a speed has no declared derivative, a velocity holds the
+///         rate of a variable that is neither a speed nor a listed coordinate, or an auxiliary
+///         speed's equation is 0 = 0 (its motion moves no loaded point and no mass);
 ///         alembert::SolveError if the kinematic equations are not linear in q' or cannot be
 ///         solved for it, if a motion constraint is not linear in the speeds, or if the
 ///         constraints cannot be solved for the dependent speeds (singular coefficients).
