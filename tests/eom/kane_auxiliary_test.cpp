@@ -24,8 +24,7 @@ namespace {
 ::testing::AssertionResult holds_none_of(const ex& e, const std::vector<ex>& xs) {
     for (const ex& x : xs)
         if (e.has(x))
-            return ::testing::AssertionFailure()
-                   << to_string(e) << "\n  holds " << to_string(x);
+            return ::testing::AssertionFailure() << to_string(e) << "\n  holds " << to_string(x);
     return ::testing::AssertionSuccess();
 }
 
@@ -52,10 +51,22 @@ struct RollingVehicle {
         q1 = s.add_variable("q1", 1), q2 = s.add_variable("q2", 1), q3 = s.add_variable("q3", 1);
         u1 = s.add_variable("u1", 1), u2 = s.add_variable("u2", 1), u3 = s.add_variable("u3", 1);
         u4 = s.add_variable("u4", 1), u5 = s.add_variable("u5", 1);
-        for (auto [x, n] : {std::pair{&theta, "theta"}, {&R, "R"}, {&M, "M"}, {&g, "g"},
-                            {&e, "e"}, {&f, "f"}, {&a, "a"}, {&b, "b"}, {&mA, "mA"},
-                            {&mB, "mB"}, {&IA, "IA"}, {&IA22, "IA22"}, {&IA33, "IA33"},
-                            {&IA23, "IA23"}, {&J, "J"}, {&K, "K"}})
+        for (auto [x, n] : {std::pair{&theta, "theta"},
+                            {&R, "R"},
+                            {&M, "M"},
+                            {&g, "g"},
+                            {&e, "e"},
+                            {&f, "f"},
+                            {&a, "a"},
+                            {&b, "b"},
+                            {&mA, "mA"},
+                            {&mB, "mB"},
+                            {&IA, "IA"},
+                            {&IA22, "IA22"},
+                            {&IA33, "IA33"},
+                            {&IA23, "IA23"},
+                            {&J, "J"},
+                            {&K, "K"}})
             *x = s.add_constant(n);
         Q1 = s.add_unknown("Q1"), Q2 = s.add_unknown("Q2"), Q3 = s.add_unknown("Q3");
 
@@ -106,13 +117,13 @@ struct RollingVehicle {
 
     KaneOptions options() const {
         const Frame& F = sys.newtonian();
-        return {.coordinates = {q1, q2, q3},
-                .speeds = {u1, u2, u4, u5},
-                .kinematic_equations = {u1 - q1.d(1), u4 - q2.d(1), u5 - q3.d(1)},
-                .motion_constraints = {dot(B_hat->vel_in(F), A->y()),
-                                       dot(C_hat->vel_in(F), A->y())},
-                .dependent_speeds = {u4, u5},
-                .auxiliary_speeds = {u3}};
+        return {
+            .coordinates = {q1, q2, q3},
+            .speeds = {u1, u2, u4, u5},
+            .kinematic_equations = {u1 - q1.d(1), u4 - q2.d(1), u5 - q3.d(1)},
+            .motion_constraints = {dot(B_hat->vel_in(F), A->y()), dot(C_hat->vel_in(F), A->y())},
+            .dependent_speeds = {u4, u5},
+            .auxiliary_speeds = {u3}};
     }
 };
 
@@ -140,17 +151,16 @@ TEST(KaneAuxiliary, RollingVehicleWithNonCentralInertiaGivesKaneAndLevinsonsEqua
         EXPECT_TRUE(same(k.auxiliary_constraint_coefficients(1, 0), -1));
 
         // generalized inertia forces, Kane & Levinson 1985, exercise 8.12 (as PyDy has them)
-        EXPECT_TRUE(same(k.inertia_forces[0],
-                         -(v.IA + 2 * v.J * v.b * v.b / (v.R * v.R) + 2 * v.K +
-                           v.mA * v.a * v.a + 2 * v.mB * v.b * v.b) * u1d -
-                             v.mA * v.a * u1 * u2));
+        EXPECT_TRUE(same(k.inertia_forces[0], -(v.IA + 2 * v.J * v.b * v.b / (v.R * v.R) + 2 * v.K +
+                                                v.mA * v.a * v.a + 2 * v.mB * v.b * v.b) *
+                                                      u1d -
+                                                  v.mA * v.a * u1 * u2));
         EXPECT_TRUE(same(k.inertia_forces[1],
-                         -(v.mA + 2 * v.mB + 2 * v.J / (v.R * v.R)) * u2d +
-                             v.mA * v.a * u1 * u1));
+                         -(v.mA + 2 * v.mB + 2 * v.J / (v.R * v.R)) * u2d + v.mA * v.a * u1 * u1));
         // generalized active forces by hand: Az>.Fx> = -sin(theta) cos(q1),
         // Ay>.Fx> = -sin(theta) sin(q1); partial velocities of S*: e Az>, Ay>; of Q: f Az>, Ay>
-        EXPECT_TRUE(same(k.active_forces[0],
-                         v.M * v.g * v.e * sin(v.theta) * cos(q1) + v.f * v.Q3));
+        EXPECT_TRUE(
+            same(k.active_forces[0], v.M * v.g * v.e * sin(v.theta) * cos(q1) + v.f * v.Q3));
         EXPECT_TRUE(same(k.active_forces[1], v.M * v.g * sin(v.theta) * sin(q1) + v.Q2));
 
         // the auxiliary (third) equation, by hand. In the auxiliary motion A pitches about
@@ -163,8 +173,8 @@ TEST(KaneAuxiliary, RollingVehicleWithNonCentralInertiaGivesKaneAndLevinsonsEqua
         // -J (u4' + u5') = -2 J u2'/R.
         const ex& E3 = k.auxiliary_equations[0];
         EXPECT_TRUE(same(E3, v.M * v.g * v.e * cos(v.theta) - v.f * v.Q1 - v.R * v.Q2));
-        EXPECT_TRUE(holds_none_of(E3, {v.u3, v.u3.d(1), u1, u2, u1d, u2d, v.u4, v.u5,
-                                       v.u4.d(1), v.u5.d(1)}));
+        EXPECT_TRUE(holds_none_of(
+            E3, {v.u3, v.u3.d(1), u1, u2, u1d, u2d, v.u4, v.u5, v.u4.d(1), v.u5.d(1)}));
         for (const ex& r : k.residuals) EXPECT_TRUE(holds_none_of(r, {v.u3, v.u3.d(1)}));
     }
 }
@@ -183,8 +193,7 @@ LoopState loop_state(double qA, double wA, int branch) {
     const double LN = 1.0, LA = 0.4, LB = 1.2, LC = 0.8;
     double ax = LA * std::cos(qA), ay = LA * std::sin(qA);
     double dx = LN - ax, dy = -ay, d = std::hypot(dx, dy);
-    double along = (LB * LB - LC * LC + d * d) / (2 * d),
-           h = std::sqrt(LB * LB - along * along);
+    double along = (LB * LB - LC * LC + d * d) / (2 * d), h = std::sqrt(LB * LB - along * along);
     double px = ax + along * dx / d - branch * h * dy / d,
            py = ay + along * dy / d + branch * h * dx / d;
     double thB = std::atan2(py - ay, px - ax), qC = std::atan2(py, px - LN);
@@ -240,8 +249,8 @@ TEST(KaneAuxiliary, FourBarPinForceMatchesARoadmapAndNewtonEulerAtRandomStates) 
     for (int trial = 0; trial < 6; ++trial) {
         int branch = trial % 2 == 0 ? 1 : -1;
         LoopState x = loop_state(angle(rng), rate(rng), branch);
-        exmap at{{qA, x.qA},       {qB, x.qB},       {qC, x.qC},     {qA.d(1), x.wA},
-                 {qB.d(1), x.wB},  {qC.d(1), x.wC},  {T, torque(rng)}};
+        exmap at{{qA, x.qA},      {qB, x.qB},      {qC, x.qC},      {qA.d(1), x.wA},
+                 {qB.d(1), x.wB}, {qC.d(1), x.wC}, {T, torque(rng)}};
         SCOPED_TRACE("qA = " + std::to_string(x.qA) + ", branch " + std::to_string(branch));
         // Kane: the pin force does no work in the linkage's motion (its coefficients in the
         // dynamical equation vanish, by trigonometric identities), the crank's acceleration
@@ -305,8 +314,8 @@ TEST(KaneAuxiliary, BoxOnTheGroundNormalForceIsItsWeightAndTheMomentBalances) {
     sys.add_force(back, N1 * N.y() - mu * N1 * N.x(), "back contact");
     sys.add_force(front, N2 * N.y() - mu * N2 * N.x(), "front contact");
     sys.add_force(pushed, P * N.x(), "push");
-    KaneEquations k = form_kane_equations(
-        sys, KaneOptions{.coordinates = {x}, .auxiliary_speeds = {uy, wz}});
+    KaneEquations k =
+        form_kane_equations(sys, KaneOptions{.coordinates = {x}, .auxiliary_speeds = {uy, wz}});
     ASSERT_EQ(k.auxiliary_equations.size(), 2u);
     EXPECT_TRUE(same(k.residuals[0], P - mu * (N1 + N2) - mass * x.d(2)));
     EXPECT_TRUE(same(k.auxiliary_equations[0], N1 + N2 - mass * g));
