@@ -344,7 +344,7 @@ KaneEquations form_kane_equations(const System& sys, const KaneOptions& o) {
     exmap kmap_aux0 = kmap;  // q' -> k, auxiliary speeds -> 0
     for (const auto& kv : aux0) kmap_aux0[kv.first] = kv.second;
 
-    // ---- motion constraints solved for the dependent speeds
+    // ---- motion constraints solved for the dependent speeds, auxiliary speeds present
     const std::size_t m = o.motion_constraints.size();
     if (o.dependent_speeds.size() != m)
         throw ArgumentError(std::string(kFn) + std::to_string(m) + " motion constraints and " +
@@ -366,35 +366,42 @@ KaneEquations form_kane_equations(const System& sys, const KaneOptions& o) {
     for (const ex& s : o.dependent_speeds) dep_rates.push_back(Ud[index_of(U, s)]);
     out.independent_speeds = ind;
     out.dependent_speeds = o.dependent_speeds;
-    exmap depmap;  // u_s -> sum A_sr u_r + B_s
+    const std::size_t na = o.auxiliary_speeds.size();
+    exmap depmap;  // u_s -> sum A_sr u_r + B_s (auxiliary speeds zero)
     out.constraint_coefficients = GiNaC::matrix(static_cast<unsigned>(m),
                                                 static_cast<unsigned>(ind.size()));
+    out.auxiliary_constraint_coefficients =
+        GiNaC::matrix(static_cast<unsigned>(m), static_cast<unsigned>(na));
     if (m > 0) {
+        // the speeds and auxiliary speeds a constraint may hold (Kane 1985, sec. 5.7: the
+        // auxiliary motion must leave every listed constraint satisfied)
+        std::vector<ex> UA = U;
+        UA.insert(UA.end(), o.auxiliary_speeds.begin(), o.auxiliary_speeds.end());
         std::vector<ex> C;
         for (std::size_t i = 0; i < m; ++i) {
-            ex c = substitute(st, st.expand_intermediates(o.motion_constraints[i]), kmap_aux0);
+            ex c = substitute(st, st.expand_intermediates(o.motion_constraints[i]), kmap);
             for (const ex& s : symbols_of(c))
                 if (st.owns(s) && st.kind(s) == SymbolKind::variable &&
-                    st.derivative_order(s) >= 1 && !contains(U, s))
+                    st.derivative_order(s) >= 1 && !contains(UA, s))
                     throw ArgumentError(std::string(kFn) + "motion constraint " +
                                         std::to_string(i + 1) + " holds '" + st.name(s) +
-                                        "'; motion constraints relate the speeds (and q, t) "
-                                        "only: no accelerations, no rates of unlisted "
-                                        "coordinates");
+                                        "'; motion constraints relate the speeds and auxiliary "
+                                        "speeds (and q, t) only: no accelerations, no rates of "
+                                        "unlisted coordinates");
             C.push_back(c);
         }
         GiNaC::matrix A, b;
-        linear_form(st, C, U, "motion constraint",
+        linear_form(st, C, UA, "motion constraint",
                     "write each constraint as a sum of speeds times functions of q and t", A, b);
-        // split into dependent and independent columns: A_dep u_dep = b - A_ind u_ind
+        // split into dependent and other columns: A_dep u_dep = b - A_ind u_ind - A_aux u~
         GiNaC::matrix Adep(static_cast<unsigned>(m), static_cast<unsigned>(m)),
             rhs(static_cast<unsigned>(m), 1);
         for (unsigned i = 0; i < m; ++i) {
             ex r = b(i, 0);
-            for (std::size_t j = 0; j < U.size(); ++j) {
-                std::size_t s = index_of(o.dependent_speeds, U[j]);
+            for (std::size_t j = 0; j < UA.size(); ++j) {
+                std::size_t s = index_of(o.dependent_speeds, UA[j]);
                 if (s < m) Adep(i, static_cast<unsigned>(s)) = A(i, static_cast<unsigned>(j));
-                else r -= A(i, static_cast<unsigned>(j)) * U[j];
+                else r -= A(i, static_cast<unsigned>(j)) * UA[j];
             }
             rhs(i, 0) = r;
         }
@@ -412,12 +419,17 @@ KaneEquations form_kane_equations(const System& sys, const KaneOptions& o) {
             std::string(kFn) +
                 "the motion constraints cannot be solved for the dependent speeds; name other "
                 "dependent speeds (their coefficient matrix must be invertible)");
+        // u_s = sum A_sr u_r + sum C_sa u~_a + B_s; the motion itself has u~ = 0
         for (unsigned s = 0; s < m; ++s) {
-            depmap[o.dependent_speeds[s]] = X(s, 0);
-            out.dependent_speed_values.push_back(X(s, 0));
+            ex value = na == 0 ? X(s, 0) : maybe_simplify(X(s, 0).subs(aux0), o.simplify);
+            depmap[o.dependent_speeds[s]] = value;
+            out.dependent_speed_values.push_back(value);
             for (unsigned r = 0; r < ind.size(); ++r)
                 out.constraint_coefficients(s, r) =
                     simplify(X(s, 0).diff(GiNaC::ex_to<GiNaC::symbol>(ind[r])));
+            for (unsigned a = 0; a < na; ++a)
+                out.auxiliary_constraint_coefficients(s, a) = simplify(
+                    X(s, 0).diff(GiNaC::ex_to<GiNaC::symbol>(o.auxiliary_speeds[a])));
         }
     }
 
@@ -522,9 +534,30 @@ KaneEquations form_kane_equations(const System& sys, const KaneOptions& o) {
         out.inertia_forces.push_back(Fst);
         out.residuals.push_back(o.simplify ? collect_in(Ft + Fst, ind_rates) : Ft + Fst);
     }
-    for (std::size_t a = 0; a < o.auxiliary_speeds.size(); ++a)
-        out.auxiliary_equations.push_back(
-            maybe_simplify(substitute(st, F[p + a] + Fs[p + a], elim), o.simplify));
+
+    // ---- auxiliary equations: F~_a = F_a + sum_s F_s C_sa, likewise F~_a*, at u~ = u~' = 0
+    for (std::size_t a = 0; a < na; ++a) {
+        ex Ft = F[p + a], Fst = Fs[p + a];
+        for (std::size_t s = 0; s < m; ++s) {
+            std::size_t si = index_of(U, o.dependent_speeds[s]);
+            const ex& Csa = out.auxiliary_constraint_coefficients(static_cast<unsigned>(s),
+                                                                  static_cast<unsigned>(a));
+            Ft += Csa * F[si];
+            Fst += Csa * Fs[si];
+        }
+        ex Ea = maybe_simplify(substitute(st, substitute(st, Ft + Fst, elim), aux0), o.simplify);
+        // an auxiliary motion that moves no loaded point and no mass brings out nothing
+        if (equal(Ea, 0))
+            throw ModelError(
+                std::string(kFn) + "auxiliary speed '" + name_of(st, o.auxiliary_speeds[a]) +
+                "' gives the equation 0 = 0: with the motion constraints solved it moves no "
+                "point a load acts on and no mass. Add it to the velocity of the point the "
+                "constraint force acts on (Point::set_vel) or to an angular velocity "
+                "(Frame::set_ang_vel), or write it into the constraint that force enforces as "
+                "its violation, e.g. dot(v_NP - v_NQ, Nx>) - " +
+                name_of(st, o.auxiliary_speeds[a]));
+        out.auxiliary_equations.push_back(Ea);
+    }
 
     // ---- mass-matrix form M u' = f
     out.dynamics = form_linear_system(out.residuals, ind_rates);

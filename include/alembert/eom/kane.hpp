@@ -54,15 +54,19 @@ struct KaneOptions {
     /// Motion constraints: residuals (= 0) linear in the speeds (Kane 1985, sec. 2.13), such as
     /// rolling without slip, dot(v_NP, Nx>) for the contact point P of a rolling body. The
     /// time derivative of a configuration constraint (holding q') may be given too: q' is
-    /// replaced by its expression in the speeds first. Auxiliary speeds are set to zero in them.
+    /// replaced by its expression in the speeds first. They may hold auxiliary speeds, and
+    /// are solved with them present: the auxiliary motion keeps every listed constraint.
     std::vector<ex> motion_constraints{};
     /// The speeds the motion constraints are solved for, one per constraint (a subset of
     /// `speeds`, or of the q_r' when `speeds` is empty).
     std::vector<ex> dependent_speeds{};
-    /// Auxiliary speeds (Kane 1985, sec. 5.7): symbols added to velocities with
-    /// Point::set_vel (or to angular velocities with Frame::set_ang_vel) along the directions
-    /// of constraint forces, which are added as loads with unknown measures. They are zero
-    /// in the motion; their equations F_a + F_a* = 0 give the constraint forces.
+    /// Auxiliary speeds u~_a (Kane 1985, sec. 5.7): symbols that open the constraint whose
+    /// force is wanted, either added to velocities with Point::set_vel (or to angular
+    /// velocities with Frame::set_ang_vel) along the force, or written into that constraint
+    /// as its violation (a pin opened: dot(v_NP - v_NQ, Nx>) - ux). Every other motion
+    /// constraint must hold in the auxiliary motion, so the constraints are solved with the
+    /// u~_a present. The constraint forces are added as loads with unknown measures. The
+    /// u~_a are zero in the motion; their equations F~_a + F~_a* = 0 give the forces.
     std::vector<ex> auxiliary_speeds{};
     /// Simplify the results (alembert::simplify; the residuals collected in the u').
     bool simplify = true;
@@ -78,7 +82,10 @@ struct KaneOptions {
 ///  - constrained forces (Kane 1985, eqs. 6.1.2, 6.1.3):
 ///       F~_r = F_r + sum_s F_s A_sr,   F~_r* = F_r* + sum_s F_s* A_sr,
 ///    with u_s and u_s' replaced by their expressions in the independent speeds;
-///  - the dynamical equations F~_r + F~_r* = 0, in mass-matrix form M(q, t) u' = f(q, u, t).
+///  - the dynamical equations F~_r + F~_r* = 0, in mass-matrix form M(q, t) u' = f(q, u, t);
+///  - with auxiliary speeds u~_a, the constraints solved with them present,
+///       u_s = sum_r A_sr u_r + sum_a C_sa u~_a + B_s,
+///    and F~_a = F_a + sum_s F_s C_sa, F~_a* = F_a* + sum_s F_s* C_sa at u~ = u~' = 0.
 /// Accelerations are ^N d/dt of those velocities (accelerations set with Point::set_acc or
 /// Frame::set_ang_acc are not used); R* = -m ^N a^{cm}, T* = -(I . alpha + w x I . w).
 struct KaneEquations {
@@ -93,12 +100,16 @@ struct KaneEquations {
     /// q_i' = k_i(q, u_r, t), i = 1..n: the kinematic equations solved for q', the dependent
     /// speeds replaced (the q_i' themselves when u = q' and q_i' is independent).
     std::vector<ex> coordinate_rates{};
-    /// u_s = sum_r A_sr u_r + B_s(q, t), s = 1..m: the motion constraints solved.
+    /// u_s = sum_r A_sr u_r + B_s(q, t), s = 1..m: the motion constraints solved (at zero
+    /// auxiliary speeds).
     std::vector<ex> dependent_speed_values{};
     /// u_s' in terms of q, u_r, u_r' and t (the time derivative of the line above).
     std::vector<ex> dependent_speed_rates{};
     /// A_sr = d u_s / d u_r (m x (p - m)), the coefficients of Kane's elimination.
     GiNaC::matrix constraint_coefficients{};
+    /// C_sa = d u_s / d u~_a (m x number of auxiliary speeds): how the dependent speeds follow
+    /// an auxiliary speed so that the motion constraints keep holding.
+    GiNaC::matrix auxiliary_constraint_coefficients{};
     /// F_r for every speed u_1..u_p, before elimination (dependent speeds still in them).
     std::vector<ex> unconstrained_active_forces{};
     /// F_r* for every speed u_1..u_p, before elimination.
@@ -113,9 +124,10 @@ struct KaneEquations {
     LinearSystem dynamics{};
     /// The auxiliary speeds, as given.
     std::vector<ex> auxiliary_speeds{};
-    /// F_a + F_a* (= 0) at zero auxiliary speeds, one per auxiliary speed, with the dependent
-    /// speeds replaced; linear in the constraint-force measures, which they determine (they
-    /// may hold u_r', to be replaced by the solution of the dynamical equations).
+    /// F~_a + F~_a* (= 0), one per auxiliary speed: F~_a = F_a + sum_s F_s C_sa and likewise
+    /// F~_a*, with u~ = u~' = 0 and the dependent speeds replaced; linear in the
+    /// constraint-force measures, which they determine (they may hold u_r', to be replaced
+    /// by the solution of the dynamical equations). They hold no u~ and no u~'.
     std::vector<ex> auxiliary_equations{};
 };
 
@@ -124,8 +136,9 @@ struct KaneEquations {
 /// @throws alembert::ArgumentError if the lists do not fit together (kinematic equations
 ///         without speeds or one count off, a dependent speed that is not a speed or appears
 ///         in no constraint, a speed that is also a coordinate rate or auxiliary, ...);
-///         alembert::ModelError if a speed has no declared derivative or a velocity holds the
-///         rate of a variable that is neither a speed nor a listed coordinate;
+///         alembert::ModelError if a speed has no declared derivative, a velocity holds the
+///         rate of a variable that is neither a speed nor a listed coordinate, or an auxiliary
+///         speed's equation is 0 = 0 (its motion moves no loaded point and no mass);
 ///         alembert::SolveError if the kinematic equations are not linear in q' or cannot be
 ///         solved for it, if a motion constraint is not linear in the speeds, or if the
 ///         constraints cannot be solved for the dependent speeds (singular coefficients).
