@@ -133,6 +133,9 @@ std::vector<Token> Lexer::next_statement() {
         out.push_back(Token{TokenKind::end, "", 0, here(), pos_, pos_});
         return out;
     }
+    // the end of the statement is reported just after its last token, on the same line
+    Location after_last{};
+    std::size_t after_last_pos = pos_;
     for (;;) {
         skip_space_and_comments();
         if (pos_ >= src_.size()) {
@@ -150,13 +153,15 @@ std::vector<Token> Lexer::next_statement() {
             break;
         }
         out.push_back(lex_token());
+        after_last = here(), after_last_pos = pos_;
         if (out.size() > Limits::max_statement_tokens)
             throw ScriptError(out.back().location, "the statement is too long (more than " +
                                                        std::to_string(Limits::max_statement_tokens) +
                                                        " tokens)",
                               "split it into several statements");
     }
-    out.push_back(Token{TokenKind::end, "", 0, here(), pos_, pos_});
+    if (out.empty()) after_last = here(), after_last_pos = pos_;
+    out.push_back(Token{TokenKind::end, "", 0, after_last, after_last_pos, after_last_pos});
     return out;
 }
 

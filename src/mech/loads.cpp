@@ -43,7 +43,20 @@ void System::add_force_pair(const Point& P, const Point& Q, const Vector& F,
     add_pair(P, Q, F, label);
 }
 
+namespace {
+
+// a particle does not turn: a torque on it would do no work and enter no equation
+void require_turning_body(const Body& B, const std::string& label, const char* fn) {
+    if (!B.frame())
+        throw ModelError(std::string(fn) + ": the torque '" + label + "' acts on '" + B.name() +
+                         "', a particle: a particle does not turn, so a torque on it does "
+                         "nothing; apply it to a rigid body, or apply a force at the particle");
+}
+
+}  // namespace
+
 Load System::add_torque(const Body& B, const Vector& T, const std::string& label) {
+    require_turning_body(B, label, "System::add_torque()");
     loads_.push_back(Load{.kind = LoadKind::torque, .label = label, .point = nullptr,
                           .vector = T, .on = &B, .from = nullptr});
     return loads_.back();
@@ -51,6 +64,7 @@ Load System::add_torque(const Body& B, const Vector& T, const std::string& label
 
 void System::add_torque_pair(const Body& B, const Frame& A, const Vector& T,
                              const std::string& label) {
+    require_turning_body(B, label, "System::add_torque_pair()");
     const Body* from = body_of(A);
     if (from == &B)
         throw ModelError("System::add_torque_pair(): the torque '" + label + "' acts on '" +

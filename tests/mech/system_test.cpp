@@ -605,3 +605,15 @@ TEST_F(SystemDoublePendulum, EnergyRateEqualsThePowerOfNonConservativeLoads) {
 
 }  // namespace
 }  // namespace alembert
+
+TEST(System, ATorqueOnAParticleIsAnErrorNamingIt) {
+    using namespace alembert;
+    System sys("N");
+    Particle& P = sys.add_particle("P");
+    const Frame& N = sys.newtonian();
+    EXPECT_THROW_MSG(sys.add_torque(P, N.z(), "T"), ModelError,
+                     "the torque 'T' acts on 'P', a particle: a particle does not turn");
+    EXPECT_THROW_MSG(sys.add_torque_pair(P, N, N.z(), "T2"), ModelError,
+                     "the torque 'T2' acts on 'P', a particle");
+    EXPECT_TRUE(sys.loads().empty());
+}
