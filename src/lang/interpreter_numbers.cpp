@@ -223,10 +223,19 @@ void Interpreter::Impl::set_times_and_tolerances(const Statement& s) {
         numbers.options.abs_tol = positive("abs", Dimension::open(), "the absolute tolerance");
     if (s.quantities.count("rel"))
         numbers.options.rel_tol = positive("rel", Dimension::open(), "the relative tolerance");
+    if (s.quantities.count("limit")) {
+        const Quantity& q = s.quantities.at("limit");
+        double n = number_of(q, Dimension::none(), "the row limit", q.value->location);
+        if (!(n >= 1 && n <= 1e12) || n != std::floor(n))
+            throw ScriptError(q.value->location,
+                              "the row limit must be a whole number from 1 to 1e12, not " + format_number(n),
+                              "write output limit 5000000");
+        numbers.options.max_output_rows = static_cast<std::size_t>(n);
+    }
 }
 
 void Interpreter::Impl::add_outputs(const Statement& s) {
-    if (s.quantities.count("step")) return set_times_and_tolerances(s);
+    if (s.quantities.count("step") || s.quantities.count("limit")) return set_times_and_tolerances(s);
     const auto& labels = s.lists.at("labels");
     const auto& exprs = s.expr_lists.at("values");
     for (std::size_t i = 0; i < exprs.size(); ++i) {
@@ -624,6 +633,11 @@ void parse_output(StatementParser& p, Statement& s) {
         s.quantities["step"] = p.quantity();
         return;
     }
+    if (p.at_word("limit") && p.peek(1).kind == TokenKind::number) {
+        p.next();
+        s.quantities["limit"] = p.quantity();
+        return;
+    }
     do {
         Word label{};
         if (p.peek().kind == TokenKind::name && p.peek(1).is("=")) {
@@ -695,6 +709,9 @@ std::vector<StatementSpec> number_statements() {
          .forms = {{"`output step` *h*",
                     "output step 0.01 s",
                     "`SimulationOptions::output_step` (default 0.01 s): rows exactly at these times"},
+                   {"`output limit` *n*",
+                    "output limit 5000000",
+                    "`SimulationOptions::max_output_rows` (default 1000000): `simulate` and `inverse` refuse, before they start, a run that would write more rows"},
                    {"`output` *expr* [`in` *unit*], *name* `=` *expr* [`in` *unit*], ...",
                     "output qA in deg, h = dot(pos(Ccm, N_o), Ny>) in cm",
                     "`SimulationRequest::outputs` (a name alone names its column; other expressions need `name =`; without `in`, a declared unit or SI)"}},

@@ -207,9 +207,9 @@ double calc_output_row_count(const SimulationOptions& options, const std::string
         throw ArgumentError(
             who + asking + count + " rows, more than the limit of " +
             std::to_string(options.max_output_rows) +
-            " rows (SimulationOptions::max_output_rows), which keeps a run from filling the "
-            "memory; choose a larger output step, or raise the limit for a run that needs "
-            "every row");
+            " rows (SimulationOptions::max_output_rows; in a script, output limit N), which "
+            "keeps a run from filling the memory; choose a larger output step, or raise the "
+            "limit for a run that needs every row");
     }
     return rows;
 }

@@ -179,7 +179,7 @@ TEST(Simulation, TooManyOutputRowsAreRefusedBeforeTheRun) {
     EXPECT_THROW_MSG(run_simulation(rod.system, r), ArgumentError,
                      "simulate('rod'): the output step 1e-09 s from t = 0 to 10 s asks for "
                      "10000000001 rows, more than the limit of 1000000 rows "
-                     "(SimulationOptions::max_output_rows)");
+                     "(SimulationOptions::max_output_rows; in a script, output limit N)");
     r.options = {.t_final = 1, .output_step = 0.001, .max_output_rows = 500};
     EXPECT_THROW_MSG(run_simulation(rod.system, r), ArgumentError, "asks for 1001 rows");
     r.options.max_output_rows = 1001;
