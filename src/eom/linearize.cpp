@@ -166,4 +166,34 @@ LinearizedEquations linearize(const SymbolTable& table, const FirstOrderEquation
     return out;
 }
 
+SecondOrderLinearization linearize_second_order(const SymbolTable& table,
+                                                const std::vector<ex>& residuals,
+                                                const std::vector<TimeVariable>& q,
+                                                const LinearizeOptions& options) {
+    // the first-order linearization checks the lists and gives q0'' (its rates q0', q0'')
+    LinearizeOptions first = options;
+    first.simplify = false;
+    const LinearizedEquations lin = linearize(table, to_first_order(residuals, q), first);
+    const unsigned n = static_cast<unsigned>(q.size());
+    const unsigned R = static_cast<unsigned>(options.inputs.size());
+    exmap at_op = options.operating_point;
+    for (unsigned i = 0; i < n; ++i) at_op[q[i].d(2)] = lin.operating_rates[n + i];
+    auto tidy = [&](const ex& e) { return options.simplify ? simplify(GiNaC::normal(e)) : e; };
+    SecondOrderLinearization out;
+    out.inputs = options.inputs;
+    out.M = out.C = out.K = GiNaC::matrix(n, n);
+    out.H = GiNaC::matrix(n, R);
+    for (unsigned i = 0; i < n; ++i) {
+        out.coordinates.push_back(q[i].symbol());
+        const ex E = table.expand_intermediates(residuals[i]);
+        for (unsigned j = 0; j < n; ++j) {
+            out.M(i, j) = tidy(-E.diff(sym(q[j].d(2))).subs(at_op));
+            out.C(i, j) = tidy(-E.diff(sym(q[j].d(1))).subs(at_op));
+            out.K(i, j) = tidy(-E.diff(sym(q[j].symbol())).subs(at_op));
+        }
+        for (unsigned k = 0; k < R; ++k) out.H(i, k) = tidy(E.diff(sym(options.inputs[k])).subs(at_op));
+    }
+    return out;
+}
+
 }  // namespace alembert

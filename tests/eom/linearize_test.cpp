@@ -362,3 +362,26 @@ TEST(RollingDisk, UprightRollingIsStableAboveTheClassicalSpinRate) {
         }
     }
 }
+
+TEST(Linearize, SecondOrderFormOfThePendulumMatchesHandDerivation) {
+    // m L^2 th'' + m g L sin(th) = F L: about th = 0, M = m L^2, C = 0, K = m g L, H = L;
+    // about th = pi (inverted) K = -m g L, the unstable direction
+    SimplePendulum p;
+    std::vector<ex> E = form_kane_equations(p.sys, {p.th});
+    SecondOrderLinearization down = linearize_second_order(
+        p.sys.symbols(), E, {p.th}, {.operating_point = {{p.th, 0}, {p.th.d(1), 0}}, .inputs = {p.F}});
+    ASSERT_EQ(down.M.rows(), 1u);
+    EXPECT_TRUE(same(down.M(0, 0), p.mass * pow(p.L, 2)));
+    EXPECT_TRUE(same(down.C(0, 0), 0));
+    EXPECT_TRUE(same(down.K(0, 0), p.mass * p.g * p.L));
+    EXPECT_TRUE(same(down.H(0, 0), p.L));
+    SecondOrderLinearization up = linearize_second_order(
+        p.sys.symbols(), E, {p.th},
+        {.operating_point = {{p.th, GiNaC::Pi}, {p.th.d(1), 0}, {p.F, 0}}, .inputs = {p.F}});
+    EXPECT_TRUE(same(up.K(0, 0), -p.mass * p.g * p.L));
+    // away from equilibrium (horizontal, th = pi/2, th0'' = -g/L): K = m g L cos(pi/2) = 0
+    SecondOrderLinearization side = linearize_second_order(
+        p.sys.symbols(), E, {p.th}, {.operating_point = {{p.th, GiNaC::Pi / 2}, {p.F, 0}}});
+    EXPECT_TRUE(same(side.K(0, 0), 0));
+    EXPECT_TRUE(same(side.M(0, 0), p.mass * pow(p.L, 2)));
+}
