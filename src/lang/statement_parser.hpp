@@ -95,5 +95,6 @@ std::vector<StatementSpec> load_statements();         // statements_loads.cpp
 std::vector<StatementSpec> constraint_statements();   // statements_kinematics.cpp
 std::vector<StatementSpec> equation_statements();     // interpreter_equations.cpp
 std::vector<StatementSpec> number_statements();       // interpreter_numbers.cpp
+std::vector<StatementSpec> linearize_statements();    // statements_linearize.cpp
 
 }  // namespace alembert::lang

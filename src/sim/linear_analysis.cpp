@@ -32,24 +32,53 @@ EigenAnalysis calc_eigen(const Eigen::MatrixXd& A) {
     EigenAnalysis out;
     const Eigen::Index n = A.rows();
     if (n == 0) return out;
-    Eigen::EigenSolver<Eigen::MatrixXd> solver(A, true);
-    if (solver.info() != Eigen::Success)
-        throw SolveError("calc_eigen(): the eigenvalue iteration did not converge");
+    // ---- deflation: a state with a zero row or column gives the exact eigenvalue 0 (expand
+    // det(lambda 1 - A) along it) and leaves the eigenvalues of the other states
+    std::vector<Eigen::Index> kept(static_cast<std::size_t>(n));
+    std::iota(kept.begin(), kept.end(), Eigen::Index{0});
+    std::vector<std::complex<double>> values;
+    for (bool removed = true; removed;) {
+        removed = false;
+        for (std::size_t a = 0; a < kept.size(); ++a) {
+            bool zero_row = true, zero_col = true;
+            for (Eigen::Index j : kept) {
+                zero_row = zero_row && A(kept[a], j) == 0;
+                zero_col = zero_col && A(j, kept[a]) == 0;
+            }
+            if (zero_row || zero_col) {
+                values.emplace_back(0.0, 0.0);
+                kept.erase(kept.begin() + static_cast<std::ptrdiff_t>(a));
+                removed = true;
+                break;
+            }
+        }
+    }
+    if (!kept.empty()) {
+        const Eigen::Index m = static_cast<Eigen::Index>(kept.size());
+        Eigen::MatrixXd R(m, m);
+        for (Eigen::Index i = 0; i < m; ++i)
+            for (Eigen::Index j = 0; j < m; ++j)
+                R(i, j) = A(kept[static_cast<std::size_t>(i)], kept[static_cast<std::size_t>(j)]);
+        Eigen::EigenSolver<Eigen::MatrixXd> solver(R, false);
+        if (solver.info() != Eigen::Success)
+            throw SolveError("calc_eigen(): the eigenvalue iteration did not converge");
+        for (Eigen::Index i = 0; i < m; ++i) values.push_back(solver.eigenvalues()(i));
+    }
     // ---- order: real part descending, then imaginary part descending
-    std::vector<Eigen::Index> order(static_cast<std::size_t>(n));
-    std::iota(order.begin(), order.end(), Eigen::Index{0});
-    const Eigen::VectorXcd ev = solver.eigenvalues();
     const double tie = 1e-12 * std::max(1.0, A.cwiseAbs().maxCoeff());
-    std::stable_sort(order.begin(), order.end(), [&](Eigen::Index a, Eigen::Index b) {
-        if (std::abs(ev(a).real() - ev(b).real()) > tie) return ev(a).real() > ev(b).real();
-        return ev(a).imag() > ev(b).imag();
+    std::stable_sort(values.begin(), values.end(), [&](const auto& a, const auto& b) {
+        if (std::abs(a.real() - b.real()) > tie) return a.real() > b.real();
+        return a.imag() > b.imag();
     });
+    // ---- eigenvectors: the null direction of A - lambda 1 (its last right singular vector),
+    // unit length, largest component real and positive
+    const Eigen::MatrixXcd Ac = A.cast<std::complex<double>>();
     out.vectors.resize(n, n);
     for (Eigen::Index k = 0; k < n; ++k) {
-        const Eigen::Index j = order[static_cast<std::size_t>(k)];
-        out.values.push_back(ev(j));
-        // ---- unit length, largest component real and positive
-        Eigen::VectorXcd v = solver.eigenvectors().col(j);
+        const std::complex<double> l = values[static_cast<std::size_t>(k)];
+        Eigen::JacobiSVD<Eigen::MatrixXcd> svd(Ac - l * Eigen::MatrixXcd::Identity(n, n),
+                                               Eigen::ComputeFullV);
+        Eigen::VectorXcd v = svd.matrixV().col(n - 1);
         Eigen::Index big = 0;
         for (Eigen::Index i = 1; i < n; ++i)
             if (std::abs(v(i)) > std::abs(v(big)) * (1 + 1e-9)) big = i;
@@ -59,6 +88,7 @@ EigenAnalysis calc_eigen(const Eigen::MatrixXd& A) {
         v(big) = std::abs(v(big));
         out.vectors.col(k) = v;
     }
+    out.values = std::move(values);
     return out;
 }
 

@@ -14,7 +14,10 @@ namespace alembert {
 /// The eigenvalues and eigenvectors of a real square matrix, in a fixed order: real part
 /// descending, then imaginary part descending (a conjugate pair: + before -). Each eigenvector
 /// (a column of `vectors`) has unit length and its largest component real and positive, so
-/// the same matrix gives the same printout.
+/// the same matrix gives the same printout. States with an exactly zero row or column in A
+/// (ignorable coordinates, constant speeds) are taken out first with the exact eigenvalue 0,
+/// so a chain of them does not blur zero into round-off; each eigenvector is the null
+/// direction of A - lambda 1 (a repeated eigenvalue repeats its vector).
 struct EigenAnalysis {
     std::vector<std::complex<double>> values{};
     Eigen::MatrixXcd vectors{};
@@ -30,9 +33,10 @@ enum class Stability {
     unstable,               ///< some real part above tol
 };
 
-/// The tolerance within which a real part counts as zero for A: 1e-6 max(1, |A|_max). Zero
-/// eigenvalues of multiplicity k come out of floating point with errors near eps^(1/k) |A|,
-/// so a tighter bound would call an ignorable coordinate's double zero unstable.
+/// The tolerance within which a real part counts as zero for A: 1e-6 max(1, |A|_max). A
+/// repeated eigenvalue of multiplicity k comes out of floating point with errors near
+/// eps^(1/k) |A| (1.5e-8 |A| for a double one), so a tighter bound would call a marginal
+/// system unstable.
 double zero_real_part_tolerance(const Eigen::MatrixXd& A);
 
 /// The verdict for eigenvalues with the tolerance above.
