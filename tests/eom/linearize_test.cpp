@@ -385,3 +385,22 @@ TEST(Linearize, SecondOrderFormOfThePendulumMatchesHandDerivation) {
     EXPECT_TRUE(same(side.K(0, 0), 0));
     EXPECT_TRUE(same(side.M(0, 0), p.mass * pow(p.L, 2)));
 }
+
+TEST(Linearize, CoulombFrictionLinearizesAwayFromRestAndIsRefusedAtRest) {
+    // m x'' = F - mu m g csgn(x'): at x' = 1 the friction force is constant, so A = [[0, 1],
+    // [0, 0]] and B = [[0], [1/m]]; at x' = 0 it switches and has no derivative
+    System sys;
+    SymbolTable& s = sys.symbols();
+    TimeVariable x = s.add_variable("x");
+    ex mass = s.add_constant("m"), mu = s.add_constant("mu"), g = s.add_constant("g");
+    ex F = s.add_unknown("F");
+    std::vector<ex> E = {F - mu * mass * g * GiNaC::csgn(x.d(1)) - mass * x.d(2)};
+    FirstOrderEquations f = to_first_order(E, {x});
+    LinearizedEquations lin =
+        linearize(s, f, {.operating_point = {{x, 0}, {x.d(1), 1}, {F, 0}}, .inputs = {F}});
+    EXPECT_TRUE(same(lin.A(1, 1), 0));
+    EXPECT_TRUE(same(lin.B(1, 0), 1 / mass));
+    EXPECT_TRUE(same(lin.operating_rates[1], -mu * g));
+    EXPECT_THROW_MSG(linearize(s, f, {.operating_point = {{x, 0}, {x.d(1), 0}}, .inputs = {F}}),
+                     SolveError, "a sign function (Coulomb friction, a one-sided contact) switches there");
+}
