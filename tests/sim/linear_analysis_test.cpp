@@ -44,6 +44,26 @@ TEST(LinearAnalysis, EigenvaluesOfAnOscillatorAreOrderedAndVectorsNormalised) {
     EXPECT_THROW_MSG(calc_eigen(Eigen::MatrixXd::Zero(2, 3)), ArgumentError, "2 x 3");
 }
 
+TEST(LinearAnalysis, IgnorableStatesGiveExactZerosWithoutBlurringTheRest) {
+    // a chain y' = q, q' = u, with u in an oscillator u'' = -9 u (states u, v = u'): a zero
+    // eigenvalue of multiplicity 3 in a Jordan chain (y, q, and the oscillator's feed) would
+    // come out of floating point near eps^(1/3) = 6e-6; the states y (zero column) and q (then
+    // a zero column) are taken out exactly, leaving +-3i
+    Eigen::Matrix4d A;  // states (y, q, u, v)
+    A << 0, 1, 0, 0,
+         0, 0, 1, 0,
+         0, 0, 0, 1,
+         0, 0, -9, 0;
+    EigenAnalysis e = calc_eigen(A);
+    ASSERT_EQ(e.values.size(), 4u);
+    int zeros = 0;
+    for (const cd& l : e.values) zeros += (l == cd(0, 0)) ? 1 : 0;
+    EXPECT_EQ(zeros, 2);
+    EXPECT_NEAR(e.values[0].imag(), 3, 1e-14);
+    EXPECT_NEAR(e.values[3].imag(), -3, 1e-14);
+    EXPECT_EQ(classify_stability(e.values, zero_real_part_tolerance(A)), Stability::marginal);
+}
+
 TEST(LinearAnalysis, AckermannGainOfTheDoubleIntegratorMatchesHandDerivation) {
     // x'' = r with r = -k1 x - k2 x': s^2 + k2 s + k1 = (s + 1)(s + 2) gives k = (2, 3)
     Eigen::Matrix2d A;
