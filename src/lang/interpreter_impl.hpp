@@ -107,6 +107,7 @@ struct Interpreter::Impl {
     std::string base_dir{};           ///< the script's directory: paths it reads are relative to it
     std::string script_file{};        ///< as named in diagnostics
     std::string script_name = "model";  ///< the script's stem, naming the model in messages and files
+    std::vector<std::string> including{};  ///< the files `include` is running, outermost first
     bool model_only = false;          ///< skip simulate, inverse and codegen
 
     // ---- statements ------------------------------------------------------------------------
