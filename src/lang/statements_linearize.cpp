@@ -164,11 +164,20 @@ void run_linearize(Interpreter::Impl& m, const Statement& s) {
     out << "\nstates (" << linearize_name_list(table, lin.states) << ")"
         << (o.inputs.empty() ? "" : ", inputs (" + linearize_name_list(table, o.inputs) + ")")
         << ": d/dt dx = A dx" << (o.inputs.empty() ? "" : " + B dr") << "\n";
+    // the rates at the operating point: of coordinates only (a steady motion), or of speeds too
+    std::vector<ex> speeds;
+    if (fe.kane) speeds = fe.kane->independent_speeds;
+    else
+        for (const TimeVariable& q : fe.coordinates) speeds.push_back(q.d(1));
     std::string rates;
+    bool accelerating = false;
     for (std::size_t i = 0; i < lin.states.size(); ++i)
-        if (!lin.operating_rates[i].is_zero())
+        if (!lin.operating_rates[i].is_zero()) {
             rates += (rates.empty() ? "" : ", ") + table.name(f.rates[i]) + " = " + to_string(lin.operating_rates[i]);
-    if (!rates.empty()) out << "a steady motion: " << rates << "\n";
+            accelerating = accelerating || linearize_contains(speeds, lin.states[i]);
+        }
+    if (!rates.empty())
+        out << (accelerating ? "not an equilibrium or a steady motion: " : "a steady motion: ") << rates << "\n";
     out << "A =\n" << linearize_matrix_text(lin.A);
     if (!o.inputs.empty()) out << "B =\n" << linearize_matrix_text(lin.B);
 
