@@ -27,8 +27,9 @@ EigenAnalysis calc_eigen(const Eigen::MatrixXd& A) {
         throw ArgumentError("calc_eigen(): the matrix is " + std::to_string(A.rows()) + " x " +
                             std::to_string(A.cols()) + "; eigenvalues need a square matrix");
     if (!A.allFinite())
-        throw ArgumentError("calc_eigen(): the matrix holds a number that is not finite; check "
-                            "the operating point and the constants' values");
+        throw ArgumentError(
+            "calc_eigen(): the matrix holds a number that is not finite; check "
+            "the operating point and the constants' values");
     EigenAnalysis out;
     const Eigen::Index n = A.rows();
     if (n == 0) return out;
@@ -126,7 +127,8 @@ Eigen::RowVectorXd place_poles(const Eigen::MatrixXd& A, const Eigen::VectorXd& 
         });
         if (conj != same)
             throw ArgumentError("place_poles(): the complex pole " + std::to_string(p.real()) +
-                                (p.imag() < 0 ? " - " : " + ") + std::to_string(std::abs(p.imag())) +
+                                (p.imag() < 0 ? " - " : " + ") +
+                                std::to_string(std::abs(p.imag())) +
                                 "i has no conjugate; give complex poles in conjugate pairs");
     }
     std::vector<std::complex<double>> c{1.0};  // coefficients, highest power first
@@ -152,10 +154,10 @@ Eigen::RowVectorXd place_poles(const Eigen::MatrixXd& A, const Eigen::VectorXd& 
     Eigen::FullPivLU<Eigen::MatrixXd> lu(C);
     const double rcond = lu.rcond();
     if (!lu.isInvertible() || !(rcond > 1e-12))
-        throw SolveError("place_poles(): the input cannot steer every state (the controllability "
-                         "matrix [b, A b, ...] is singular: reciprocal condition " +
-                         std::to_string(rcond) +
-                         "); choose an input that reaches every state, or fewer states");
+        throw SolveError(
+            "place_poles(): the input cannot steer every state (the controllability "
+            "matrix [b, A b, ...] is singular: reciprocal condition " +
+            std::to_string(rcond) + "); choose an input that reaches every state, or fewer states");
     const Eigen::RowVectorXd last_row_of_inverse = lu.inverse().row(n - 1);
     return last_row_of_inverse * phi;
 }
@@ -173,8 +175,10 @@ std::vector<StabilityChange> find_stability_changes(
         const double goal = 1e-12 * (std::abs(lo) + std::abs(hi) + 1);
         for (int it = 0; it < 200 && hi - lo > goal; ++it) {
             const double mid = lo + (hi - lo) / 2;
-            if (is_unstable_at(A_of, mid) == unstable[i]) lo = mid;
-            else hi = mid;
+            if (is_unstable_at(A_of, mid) == unstable[i])
+                lo = mid;
+            else
+                hi = mid;
         }
         out.push_back({lo + (hi - lo) / 2, unstable[i + 1]});
     }

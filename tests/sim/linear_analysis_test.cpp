@@ -30,7 +30,10 @@ TEST(LinearAnalysis, EigenvaluesOfAnOscillatorAreOrderedAndVectorsNormalised) {
     EXPECT_NEAR(e.vectors(0, 0).imag(), -1 / std::sqrt(5.0), 1e-14);
     // A v = lambda v for each
     for (int k = 0; k < 2; ++k)
-        EXPECT_LT((A.cast<cd>() * e.vectors.col(k) - e.values[static_cast<std::size_t>(k)] * e.vectors.col(k)).norm(), 1e-13);
+        EXPECT_LT((A.cast<cd>() * e.vectors.col(k) -
+                   e.values[static_cast<std::size_t>(k)] * e.vectors.col(k))
+                      .norm(),
+                  1e-13);
     EXPECT_EQ(classify_stability(e.values, zero_real_part_tolerance(A)), Stability::marginal);
     // an inverted pendulum x'' = 9 x: +3, -3, unstable; with damping x'' = -x - 2 x': double -1
     A << 0, 1, 9, 0;
@@ -50,10 +53,7 @@ TEST(LinearAnalysis, IgnorableStatesGiveExactZerosWithoutBlurringTheRest) {
     // come out of floating point near eps^(1/3) = 6e-6; the states y (zero column) and q (then
     // a zero column) are taken out exactly, leaving +-3i
     Eigen::Matrix4d A;  // states (y, q, u, v)
-    A << 0, 1, 0, 0,
-         0, 0, 1, 0,
-         0, 0, 0, 1,
-         0, 0, -9, 0;
+    A << 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, -9, 0;
     EigenAnalysis e = calc_eigen(A);
     ASSERT_EQ(e.values.size(), 4u);
     int zeros = 0;

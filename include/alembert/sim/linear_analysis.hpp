@@ -4,7 +4,6 @@
 #pragma once
 
 #include <Eigen/Dense>
-
 #include <complex>
 #include <functional>
 #include <vector>
@@ -55,7 +54,7 @@ Eigen::RowVectorXd place_poles(const Eigen::MatrixXd& A, const Eigen::VectorXd& 
 /// A change of stability along a parameter p: between two samples of a sweep, refined by
 /// bisection on "the largest real part is above the tolerance" to within 1e-12 (|p| + 1).
 struct StabilityChange {
-    double at = 0;              ///< the parameter value where it changes
+    double at = 0;                  ///< the parameter value where it changes
     bool becomes_unstable = false;  ///< true: stable or marginal below, unstable above
 };
 
