@@ -168,4 +168,20 @@ TEST(LinearizeStatement, ErrorsNameTheEquationsStatesAndTheFix) {
     EXPECT_NE(r.fails("linearize K2 at th = 0").find("'k' has no value"), std::string::npos);
 }
 
+TEST(LinearizeStatement, LagrangeEquationsLinearizeLikeKanesAndChosenSpeedsHaveNoSecondOrderForm) {
+    // Lagrange's equations of the cart-pendulum give the same eigenvalues as Kane's
+    Dir d;
+    ScriptRun r(d.path);
+    std::string out = r.ok("digits 12\n" + cart_model() + "lagrange Lg for x, th\nlinearize Lg at th = 0\n");
+    EXPECT_NEAR(number_after(out, "lambda1 = "), std::sqrt(1.1 * 9.81 / 0.5), 1e-10);
+    // the rolling disk's equations have chosen speeds: no M, C, K form
+    ScriptRun disk(d.path);
+    std::string model = read_example("rolling_disk");
+    disk.ok(model.substr(0, model.find("# Upright rolling")));
+    std::string err = disk.fails("linearize K at q2 = 0 second order");
+    EXPECT_NE(err.find("the second-order form needs equations in the coordinates' second derivatives; K has chosen speeds"),
+              std::string::npos) << err;
+    EXPECT_NE(err.find(":1:23:"), std::string::npos) << err;  // at 'second'
+}
+
 }  // namespace linearize_lang_test
