@@ -47,6 +47,7 @@
 #include "alembert/sim/forward_dynamics.hpp"
 #include "alembert/sim/inverse_analysis.hpp"
 #include "alembert/sim/inverse_dynamics.hpp"
+#include "alembert/sim/linear_analysis.hpp"
 #include "alembert/sim/motion.hpp"
 #include "alembert/sim/numeric_function.hpp"
 #include "alembert/sim/plot.hpp"

@@ -25,6 +25,36 @@ void require_symbol(const ex& x, const std::string& role) {
 
 const GiNaC::symbol& sym(const ex& x) { return GiNaC::ex_to<GiNaC::symbol>(x); }
 
+// The derivatives of sign functions (csgn, step: Coulomb friction, one-sided contacts) that
+// differentiation leaves as D[0](csgn)(v): 0 where v is a nonzero number; where v is 0 the
+// equations have no derivative, which is an error at the operating point.
+struct SignDerivatives : GiNaC::map_function {
+    ex operator()(const ex& e) override {
+        if (GiNaC::is_a<GiNaC::fderivative>(e)) {
+            const auto& f = GiNaC::ex_to<GiNaC::fderivative>(e);
+            if (f.get_serial() == GiNaC::csgn_SERIAL::serial ||
+                f.get_serial() == GiNaC::step_SERIAL::serial) {
+                const ex v = GiNaC::evalf(e.op(0));
+                if (GiNaC::is_a<GiNaC::numeric>(v)) {
+                    if (v.is_zero())
+                        throw SolveError(kLinearize + "the equations have no derivative at the "
+                                         "operating point: a sign function (Coulomb friction, "
+                                         "a one-sided contact) switches there, at " +
+                                         to_string(e.op(0)) +
+                                         " = 0; linearize about a point where it is nonzero");
+                    return 0;
+                }
+            }
+        }
+        return e.map(*this);
+    }
+};
+
+ex with_sign_derivatives(const ex& e) {
+    SignDerivatives f;
+    return f(e);
+}
+
 }  // namespace
 
 FirstOrderEquations to_first_order(const KaneEquations& kane) {
@@ -136,9 +166,11 @@ LinearizedEquations linearize(const SymbolTable& table, const FirstOrderEquation
     const std::size_t R = options.inputs.size();
     GiNaC::matrix J(static_cast<unsigned>(F), static_cast<unsigned>(N + R));
     for (unsigned i = 0; i < F; ++i) {
-        for (unsigned j = 0; j < N; ++j) J(i, j) = E[i].diff(sym(x[j])).subs(at_op);
+        for (unsigned j = 0; j < N; ++j)
+            J(i, j) = with_sign_derivatives(E[i].diff(sym(x[j])).subs(at_op));
         for (unsigned k = 0; k < R; ++k)
-            J(i, static_cast<unsigned>(N) + k) = E[i].diff(sym(options.inputs[k])).subs(at_op);
+            J(i, static_cast<unsigned>(N) + k) =
+                with_sign_derivatives(E[i].diff(sym(options.inputs[k])).subs(at_op));
     }
     GiNaC::matrix AB = detail::solve_by_blocks(M, J, free, singular);
 
@@ -162,6 +194,37 @@ LinearizedEquations linearize(const SymbolTable& table, const FirstOrderEquation
         for (unsigned j = 0; j < N; ++j) out.A(i, j) = tidy(AB(f, j));
         for (unsigned k = 0; k < R; ++k) out.B(i, k) = tidy(AB(f, static_cast<unsigned>(N) + k));
         out.operating_rates[i] = tidy(xf0(f, 0));
+    }
+    return out;
+}
+
+SecondOrderLinearization linearize_second_order(const SymbolTable& table,
+                                                const std::vector<ex>& residuals,
+                                                const std::vector<TimeVariable>& q,
+                                                const LinearizeOptions& options) {
+    // the first-order linearization checks the lists and gives q0'' (its rates q0', q0'')
+    LinearizeOptions first = options;
+    first.simplify = false;
+    const LinearizedEquations lin = linearize(table, to_first_order(residuals, q), first);
+    const unsigned n = static_cast<unsigned>(q.size());
+    const unsigned R = static_cast<unsigned>(options.inputs.size());
+    exmap at_op = options.operating_point;
+    for (unsigned i = 0; i < n; ++i) at_op[q[i].d(2)] = lin.operating_rates[n + i];
+    auto tidy = [&](const ex& e) { return options.simplify ? simplify(GiNaC::normal(e)) : e; };
+    SecondOrderLinearization out;
+    out.inputs = options.inputs;
+    out.M = out.C = out.K = GiNaC::matrix(n, n);
+    out.H = GiNaC::matrix(n, R);
+    for (unsigned i = 0; i < n; ++i) {
+        out.coordinates.push_back(q[i].symbol());
+        const ex E = table.expand_intermediates(residuals[i]);
+        for (unsigned j = 0; j < n; ++j) {
+            out.M(i, j) = tidy(-with_sign_derivatives(E.diff(sym(q[j].d(2))).subs(at_op)));
+            out.C(i, j) = tidy(-with_sign_derivatives(E.diff(sym(q[j].d(1))).subs(at_op)));
+            out.K(i, j) = tidy(-with_sign_derivatives(E.diff(sym(q[j].symbol())).subs(at_op)));
+        }
+        for (unsigned k = 0; k < R; ++k)
+            out.H(i, k) = tidy(with_sign_derivatives(E.diff(sym(options.inputs[k])).subs(at_op)));
     }
     return out;
 }

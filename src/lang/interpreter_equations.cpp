@@ -157,6 +157,7 @@ void Interpreter::Impl::methods(const Statement& s) {
     std::vector<TimeVariable> q;
     for (const Word& w : s.lists.at("coordinates")) q.push_back(variable(w));
     std::vector<ex> eqs;
+    FormedEquations formed_here{.coordinates = q};
     if (s.keyword == "lagrange") {
         eqs = guard(n.location, [&] { return form_lagrange_equations(m, q); });
     } else if (s.lists.size() == 1 && s.exprs.empty()) {
@@ -178,9 +179,12 @@ void Interpreter::Impl::methods(const Statement& s) {
         KaneEquations k = guard(n.location, [&] { return form_kane_equations(m, o); });
         eqs = k.residuals;
         eqs.insert(eqs.end(), k.auxiliary_equations.begin(), k.auxiliary_equations.end());
+        formed_here.kane = std::move(k);
     }
     names[n.text] = {NameKind::value, n.location};
     values[n.text] = array_value(eqs);
+    formed_here.residuals = eqs;
+    formed[n.text] = std::move(formed_here);
     print_equations(n.text, eqs);
 }
 

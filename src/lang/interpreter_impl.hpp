@@ -59,6 +59,14 @@ struct NumberSettings {
     std::vector<EventSpec> events{};
 };
 
+/// Equations of motion formed by `kane` or `lagrange`, kept for `linearize`: Kane's with
+/// chosen speeds whole, or second-order residuals with their coordinates.
+struct FormedEquations {
+    std::vector<ex> residuals{};  ///< what the name holds (to detect a later reassignment)
+    std::vector<TimeVariable> coordinates{};
+    std::optional<KaneEquations> kane{};  ///< set for Kane's equations with chosen speeds
+};
+
 /// Inverse dynamics over a motion: from a `inverse` statement or `alembert inverse`.
 struct InverseRequest {
     std::vector<ex> loads{};
@@ -90,6 +98,7 @@ struct Interpreter::Impl {
     std::map<std::string, Value> values{};  // scalars and arrays by name, vectors by "name>"
     std::map<std::string, BodySet> systems{};
     std::map<std::string, ScriptRoadmap> roadmaps{};
+    std::map<std::string, FormedEquations> formed{};  ///< by name, from kane and lagrange
     std::vector<TimeVariable> coordinates{};
     bool coordinates_given = false;
     std::string last_roadmap{};
@@ -98,6 +107,7 @@ struct Interpreter::Impl {
     std::string base_dir{};           ///< the script's directory: paths it reads are relative to it
     std::string script_file{};        ///< as named in diagnostics
     std::string script_name = "model";  ///< the script's stem, naming the model in messages and files
+    std::vector<std::string> including{};  ///< the files `include` is running, outermost first
     bool model_only = false;          ///< skip simulate, inverse and codegen
 
     // ---- statements ------------------------------------------------------------------------

@@ -89,11 +89,13 @@ private:
 
 // The families of statements, each defined in its own file; statements.cpp lists them in the
 // order of docs/language.md.
+std::vector<StatementSpec> include_statements();      // statements_include.cpp
 std::vector<StatementSpec> declaration_statements();  // statements_declarations.cpp
 std::vector<StatementSpec> kinematics_statements();   // statements_kinematics.cpp
 std::vector<StatementSpec> load_statements();         // statements_loads.cpp
 std::vector<StatementSpec> constraint_statements();   // statements_kinematics.cpp
 std::vector<StatementSpec> equation_statements();     // interpreter_equations.cpp
 std::vector<StatementSpec> number_statements();       // interpreter_numbers.cpp
+std::vector<StatementSpec> linearize_statements();    // statements_linearize.cpp
 
 }  // namespace alembert::lang

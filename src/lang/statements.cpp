@@ -52,8 +52,9 @@ const std::vector<StatementSpec>& statements() {
     static const std::vector<StatementSpec> all = [] {
         std::vector<StatementSpec> out;
         using Family = std::vector<StatementSpec> (*)();
-        for (Family family : {declaration_statements, kinematics_statements, load_statements,
-                              constraint_statements, equation_statements, number_statements})
+        for (Family family : {include_statements, declaration_statements, kinematics_statements, load_statements,
+                              constraint_statements, equation_statements, linearize_statements,
+                              number_statements})
             for (StatementSpec& s : family()) out.push_back(std::move(s));
         return out;
     }();

@@ -362,3 +362,45 @@ TEST(RollingDisk, UprightRollingIsStableAboveTheClassicalSpinRate) {
         }
     }
 }
+
+TEST(Linearize, SecondOrderFormOfThePendulumMatchesHandDerivation) {
+    // m L^2 th'' + m g L sin(th) = F L: about th = 0, M = m L^2, C = 0, K = m g L, H = L;
+    // about th = pi (inverted) K = -m g L, the unstable direction
+    SimplePendulum p;
+    std::vector<ex> E = form_kane_equations(p.sys, {p.th});
+    SecondOrderLinearization down = linearize_second_order(
+        p.sys.symbols(), E, {p.th}, {.operating_point = {{p.th, 0}, {p.th.d(1), 0}}, .inputs = {p.F}});
+    ASSERT_EQ(down.M.rows(), 1u);
+    EXPECT_TRUE(same(down.M(0, 0), p.mass * pow(p.L, 2)));
+    EXPECT_TRUE(same(down.C(0, 0), 0));
+    EXPECT_TRUE(same(down.K(0, 0), p.mass * p.g * p.L));
+    EXPECT_TRUE(same(down.H(0, 0), p.L));
+    SecondOrderLinearization up = linearize_second_order(
+        p.sys.symbols(), E, {p.th},
+        {.operating_point = {{p.th, GiNaC::Pi}, {p.th.d(1), 0}, {p.F, 0}}, .inputs = {p.F}});
+    EXPECT_TRUE(same(up.K(0, 0), -p.mass * p.g * p.L));
+    // away from equilibrium (horizontal, th = pi/2, th0'' = -g/L): K = m g L cos(pi/2) = 0
+    SecondOrderLinearization side = linearize_second_order(
+        p.sys.symbols(), E, {p.th}, {.operating_point = {{p.th, GiNaC::Pi / 2}, {p.F, 0}}});
+    EXPECT_TRUE(same(side.K(0, 0), 0));
+    EXPECT_TRUE(same(side.M(0, 0), p.mass * pow(p.L, 2)));
+}
+
+TEST(Linearize, CoulombFrictionLinearizesAwayFromRestAndIsRefusedAtRest) {
+    // m x'' = F - mu m g csgn(x'): at x' = 1 the friction force is constant, so A = [[0, 1],
+    // [0, 0]] and B = [[0], [1/m]]; at x' = 0 it switches and has no derivative
+    System sys;
+    SymbolTable& s = sys.symbols();
+    TimeVariable x = s.add_variable("x");
+    ex mass = s.add_constant("m"), mu = s.add_constant("mu"), g = s.add_constant("g");
+    ex F = s.add_unknown("F");
+    std::vector<ex> E = {F - mu * mass * g * GiNaC::csgn(x.d(1)) - mass * x.d(2)};
+    FirstOrderEquations f = to_first_order(E, {x});
+    LinearizedEquations lin =
+        linearize(s, f, {.operating_point = {{x, 0}, {x.d(1), 1}, {F, 0}}, .inputs = {F}});
+    EXPECT_TRUE(same(lin.A(1, 1), 0));
+    EXPECT_TRUE(same(lin.B(1, 0), 1 / mass));
+    EXPECT_TRUE(same(lin.operating_rates[1], -mu * g));
+    EXPECT_THROW_MSG(linearize(s, f, {.operating_point = {{x, 0}, {x.d(1), 0}}, .inputs = {F}}),
+                     SolveError, "a sign function (Coulomb friction, a one-sided contact) switches there");
+}

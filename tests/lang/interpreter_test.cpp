@@ -250,6 +250,9 @@ TEST(Language, EveryStatementRunsAndTheHandCheckableResultsHold) {
     EXPECT_NE(out.find("roll: 0 = -L*q' + x'\n"), std::string::npos);
     EXPECT_NE(out.find("c1: 0 = -L*sin(q) + y\n"), std::string::npos);
     EXPECT_NE(out.find("| T        | rotate           | Nz>       | {B}      |"), std::string::npos);
+    // linearized quadratic drag c_q |v| v at v = (1, 1) m/s: d/dy' of its x-component is
+    // c_q x' y'/|v| = c_q/sqrt(2), divided by the mass
+    EXPECT_NE(out.find("-0.5*cq*sqrt(2)/m]"), std::string::npos) << out;
     // potential energy at Q = (3, 4) m, R = (1, 0) m: m g y - G m^2 / |r|
     const double m = 2, g = 9.81, G0 = 6.674e-11, r = std::hypot(3.0 - 1.0, 4.0);
     std::string last = out.substr(out.rfind("= "));

@@ -69,4 +69,23 @@ struct LinearizedEquations {
 LinearizedEquations linearize(const SymbolTable& table, const FirstOrderEquations& equations,
                               const LinearizeOptions& options = {});
 
+/// Linearized second-order equations M dq'' + C dq' + K dq = H dr about an operating point
+/// (q0, q0', r0) with accelerations q0'' there. With residuals E(q, q', q'', r) = 0 written
+/// applied - inertial: M = -dE/dq'', C = -dE/dq', K = -dE/dq and H = dE/dr, all at
+/// (q0, q0', q0'', r0). M is the mass matrix, C holds damping and gyroscopic terms, K
+/// stiffness (negative along an unstable direction: an inverted pendulum's -m g L).
+struct SecondOrderLinearization {
+    std::vector<ex> coordinates{};  ///< q
+    std::vector<ex> inputs{};       ///< r
+    GiNaC::matrix M{}, C{}, K{}, H{};
+};
+
+/// Linearizes second-order equations (one per coordinate, linear in q'', as to_first_order
+/// takes them) about `options.operating_point`; q0'' follows from the equations there.
+/// @throws alembert::ArgumentError, alembert::SolveError as to_first_order and linearize do.
+SecondOrderLinearization linearize_second_order(const SymbolTable& table,
+                                                const std::vector<ex>& residuals,
+                                                const std::vector<TimeVariable>& q,
+                                                const LinearizeOptions& options = {});
+
 }  // namespace alembert

@@ -1,0 +1,130 @@
+// SPDX-License-Identifier: MIT
+// Eigenvalues and stability verdicts, Ackermann's pole placement and stability changes along a
+// parameter, against cases worked by hand.
+#include "alembert/sim/linear_analysis.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "alembert/error.hpp"
+#include "support/expect.hpp"
+
+namespace alembert {
+namespace {
+
+using cd = std::complex<double>;
+
+TEST(LinearAnalysis, EigenvaluesOfAnOscillatorAreOrderedAndVectorsNormalised) {
+    // x'' = -4 x: lambda = +-2i, +2i first; its eigenvector (1, 2i)/sqrt(5) scaled so the
+    // largest component (2i) becomes real positive: (-i, 2)/sqrt(5)
+    Eigen::Matrix2d A;
+    A << 0, 1, -4, 0;
+    EigenAnalysis e = calc_eigen(A);
+    ASSERT_EQ(e.values.size(), 2u);
+    EXPECT_NEAR(e.values[0].real(), 0, 1e-14);
+    EXPECT_NEAR(e.values[0].imag(), 2, 1e-14);
+    EXPECT_NEAR(e.values[1].imag(), -2, 1e-14);
+    EXPECT_NEAR(e.vectors(1, 0).real(), 2 / std::sqrt(5.0), 1e-14);
+    EXPECT_NEAR(e.vectors(1, 0).imag(), 0, 1e-14);
+    EXPECT_NEAR(e.vectors(0, 0).imag(), -1 / std::sqrt(5.0), 1e-14);
+    // A v = lambda v for each
+    for (int k = 0; k < 2; ++k)
+        EXPECT_LT((A.cast<cd>() * e.vectors.col(k) -
+                   e.values[static_cast<std::size_t>(k)] * e.vectors.col(k))
+                      .norm(),
+                  1e-13);
+    EXPECT_EQ(classify_stability(e.values, zero_real_part_tolerance(A)), Stability::marginal);
+    // an inverted pendulum x'' = 9 x: +3, -3, unstable; with damping x'' = -x - 2 x': double -1
+    A << 0, 1, 9, 0;
+    e = calc_eigen(A);
+    EXPECT_NEAR(e.values[0].real(), 3, 1e-13);
+    EXPECT_NEAR(e.values[1].real(), -3, 1e-13);
+    EXPECT_EQ(classify_stability(e.values, zero_real_part_tolerance(A)), Stability::unstable);
+    A << 0, 1, -1, -2;
+    EXPECT_EQ(classify_stability(calc_eigen(A).values, zero_real_part_tolerance(A)),
+              Stability::asymptotically_stable);
+    EXPECT_THROW_MSG(calc_eigen(Eigen::MatrixXd::Zero(2, 3)), ArgumentError, "2 x 3");
+}
+
+TEST(LinearAnalysis, IgnorableStatesGiveExactZerosWithoutBlurringTheRest) {
+    // a chain y' = q, q' = u, with u in an oscillator u'' = -9 u (states u, v = u'): a zero
+    // eigenvalue of multiplicity 3 in a Jordan chain (y, q, and the oscillator's feed) would
+    // come out of floating point near eps^(1/3) = 6e-6; the states y (zero column) and q (then
+    // a zero column) are taken out exactly, leaving +-3i
+    Eigen::Matrix4d A;  // states (y, q, u, v)
+    A << 0, 1, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1, 0, 0, -9, 0;
+    EigenAnalysis e = calc_eigen(A);
+    ASSERT_EQ(e.values.size(), 4u);
+    int zeros = 0;
+    for (const cd& l : e.values) zeros += (l == cd(0, 0)) ? 1 : 0;
+    EXPECT_EQ(zeros, 2);
+    EXPECT_NEAR(e.values[0].imag(), 3, 1e-14);
+    EXPECT_NEAR(e.values[3].imag(), -3, 1e-14);
+    EXPECT_EQ(classify_stability(e.values, zero_real_part_tolerance(A)), Stability::marginal);
+}
+
+TEST(LinearAnalysis, AckermannGainOfTheDoubleIntegratorMatchesHandDerivation) {
+    // x'' = r with r = -k1 x - k2 x': s^2 + k2 s + k1 = (s + 1)(s + 2) gives k = (2, 3)
+    Eigen::Matrix2d A;
+    A << 0, 1, 0, 0;
+    Eigen::Vector2d b(0, 1);
+    Eigen::RowVectorXd k = place_poles(A, b, {-1.0, -2.0});
+    EXPECT_NEAR(k(0), 2, 1e-12);
+    EXPECT_NEAR(k(1), 3, 1e-12);
+    // poles -1 +- 2i: s^2 + 2 s + 5, k = (5, 2)
+    k = place_poles(A, b, {cd(-1, 2), cd(-1, -2)});
+    EXPECT_NEAR(k(0), 5, 1e-12);
+    EXPECT_NEAR(k(1), 2, 1e-12);
+    EXPECT_THROW_MSG(place_poles(A, b, {cd(-1, 2), -1.0}), ArgumentError, "has no conjugate");
+    EXPECT_THROW_MSG(place_poles(A, b, {-1.0}), ArgumentError, "1 poles for 2 states");
+    // a force on the position alone cannot steer the velocity of x'' = 0 with x' = r
+    EXPECT_THROW_MSG(place_poles(A, Eigen::Vector2d(1, 0), {-1.0, -2.0}), SolveError,
+                     "cannot steer every state");
+}
+
+TEST(LinearAnalysis, PlacedPolesAreTheClosedLoopEigenvaluesOfACartPendulum) {
+    // point-mass pendulum (m, l) on a cart (M), x = (x, th, x', th'), force F on the cart:
+    // x'' = (F - m g th)/M, th'' = ((M + m) g th - F)/(M l)
+    const double M = 1.5, m = 0.3, l = 0.6, g = 9.81;
+    Eigen::Matrix4d A;
+    A << 0, 0, 1, 0, 0, 0, 0, 1, 0, -m * g / M, 0, 0, 0, (M + m) * g / (M * l), 0, 0;
+    Eigen::Vector4d b(0, 0, 1 / M, -1 / (M * l));
+    std::vector<cd> poles = {cd(-2, 1), cd(-2, -1), -3.0, -4.0};
+    Eigen::RowVectorXd k = place_poles(A, b, poles);
+    EigenAnalysis e = calc_eigen(A - b * k);
+    // sorted: -2 + i, -2 - i, -3, -4
+    for (std::size_t i = 0; i < 4; ++i) {
+        EXPECT_NEAR(e.values[i].real(), poles[i].real(), 1e-9) << i;
+        EXPECT_NEAR(e.values[i].imag(), poles[i].imag(), 1e-9) << i;
+    }
+}
+
+TEST(LinearAnalysis, StabilityChangesAreFoundByBisection) {
+    // A(p) = diag(p - 1, -1): unstable above p = 1
+    auto linear = [](double p) {
+        Eigen::MatrixXd A(2, 2);
+        A << p - 1, 0, 0, -1;
+        return A;
+    };
+    std::vector<double> grid;
+    for (int i = 0; i <= 6; ++i) grid.push_back(0.3 * i);
+    std::vector<StabilityChange> c = find_stability_changes(linear, grid);
+    ASSERT_EQ(c.size(), 1u);
+    EXPECT_TRUE(c[0].becomes_unstable);
+    EXPECT_NEAR(c[0].at, 1.0, 1e-6);  // the tolerance band of the verdict: 1e-6
+    // x'' = (1 - p) x: lambda = +-sqrt(1 - p), unstable below p = 1 and marginal above; the
+    // real part vanishes like sqrt, so the band 1e-6 moves the boundary by only 1e-12
+    auto spring = [](double p) {
+        Eigen::MatrixXd A(2, 2);
+        A << 0, 1, 1 - p, 0;
+        return A;
+    };
+    c = find_stability_changes(spring, grid);
+    ASSERT_EQ(c.size(), 1u);
+    EXPECT_FALSE(c[0].becomes_unstable);
+    EXPECT_NEAR(c[0].at, 1.0, 1e-10);
+}
+
+}  // namespace
+}  // namespace alembert
