@@ -13,6 +13,14 @@
     errors.textContent += message + "\n";
   }
   window.addEventListener("error", function (e) { fail("script error: " + e.message); });
+  // console errors and warnings (KaTeX warns there) are shown on the page, where tests read them
+  ["error", "warn"].forEach(function (level) {
+    var original = console[level];
+    console[level] = function () {
+      fail("console." + level + ": " + Array.prototype.slice.call(arguments).join(" "));
+      original.apply(console, arguments);
+    };
+  });
 
   // ---- small DOM helpers ------------------------------------------------------------------
   function el(tag, attrs, parent, text) {
@@ -314,7 +322,8 @@
     a.frames.forEach(function (f) { a.points.forEach(function (n) { all.push(pointAt(f, n)); }); });
     var box = bounds(all, project), pad = 0.15 * box.size;
     var view = [box.x - pad, box.y - pad, box.w + 2 * pad, box.h + 2 * pad];
-    var s = svg("svg", {"class": "anim", viewBox: view.join(" "), width: 420, height: 420 * view[3] / view[2]}, sec);
+    var k = 420 / Math.max(view[2], view[3]);
+    var s = svg("svg", {"class": "anim", viewBox: view.join(" "), width: k * view[2], height: k * view[3]}, sec);
     var g = svg("g", {}, s);
     svg("line", {x1: view[0], x2: view[0] + view[2], y1: project([0, 0, 0])[1], y2: project([0, 0, 0])[1], "class": "ground"}, g);
     var lines = geo.segments.map(function (seg, k) {
