@@ -172,6 +172,14 @@ def main():
         return 1
     with open(index, encoding="utf-8") as f:
         page = f.read()
+    # same script, same bytes: nothing in the page depends on the clock or the directory
+    again = os.path.join(work, "sit_to_stand_again")
+    shutil.rmtree(again, ignore_errors=True)
+    subprocess.run([cli, "report", model, "--out", again], capture_output=True, text=True, timeout=120)
+    with open(os.path.join(again, "index.html"), encoding="utf-8") as f:
+        check(f.read() == page, "a second run writes the same bytes")
+    leftovers = [n for d, _, files in os.walk(out) for n in files if n.endswith(".tmp")]
+    check(not leftovers, "no temporaries left (%s)" % leftovers)
     remote = [w for w in ('src="http', "src='http", 'href="http', "url(http", "url('http", 'url("http', "@import")
               if w in page]
     check(not remote, "the page loads nothing from the network (%s)" % remote)
