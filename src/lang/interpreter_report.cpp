@@ -57,8 +57,13 @@ std::string Interpreter::Impl::write_report_to(const std::string& dir, const exm
         std::vector<ex> unknowns = sys.symbols().symbols(SymbolKind::unknown);
         if (unknowns.empty())
             for (const TimeVariable& v : c.coordinates) unknowns.push_back(v.d(std::min(2, v.order())));
-        c.rows = guard(where, [&] { return plan_roadmap(sys, c.coordinates, unknowns); },
-                       "form a road-map by hand (roadmap E for ...) before report");
+        try {
+            c.rows = plan_roadmap(sys, c.coordinates, unknowns);
+        } catch (const Error& e) {
+            // the rest of the report stands without it
+            c.notes.push_back(std::string("No road-map: the script forms none and planning one failed: ") + e.what() +
+                              " Form one in the script (roadmap E for ...) to see it here.");
+        }
     }
     // the configuration of the diagrams: as given, else the first sample of a motion, else
     // the initial values

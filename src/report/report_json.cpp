@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <exception>
 #include <set>
 #include <string>
 #include <vector>
@@ -84,8 +85,8 @@ struct Evaluation {
     double at(const ex& e) const {
         try {
             return sys.symbols().evaluate(e, values);
-        } catch (const Error&) {
-            return std::nan("");
+        } catch (const std::exception&) {
+            return std::nan("");  // a library error, or GiNaC's (a spring of length 0 at rest)
         }
     }
     std::vector<double> in_newtonian(const Vector& v) const {
@@ -327,6 +328,16 @@ std::string intermediates_json(const System& sys, const ex& e) {
     return arr(defs);
 }
 
+// the direction as the road-map table writes it: in N when it is constant there
+std::string direction_words(const System& sys, const Vector& u) {
+    Col3 c = u.components_in(sys.newtonian());
+    for (int i = 0; i < 3; ++i) {
+        c[i] = simplify(c[i]);
+        if (!GiNaC::is_a<GiNaC::numeric>(c[i])) return u.to_string();
+    }
+    return Vector(sys.newtonian(), c).to_string();
+}
+
 std::string row_json(const System& sys, const Evaluation& ev, const RoadmapRow& r) {
     std::vector<std::string> extra, names;
     for (const ex& x : r.additional_unknowns) extra.push_back(to_string(x));
@@ -335,7 +346,7 @@ std::string row_json(const System& sys, const Evaluation& ev, const RoadmapRow& 
     o.add("variable", str(to_string(r.variable))).add("variable_tex", str(to_latex(r.variable)));
     o.add("motion", str(motion_word(r.motion)));
     o.add("analysis", str(r.analysis == Analysis::statics ? "statics" : "dynamics"));
-    o.add("direction", str(r.motion == Motion::constraint ? "" : r.direction.to_string()));
+    o.add("direction", str(r.motion == Motion::constraint ? "" : direction_words(sys, r.direction)));
     o.add("system", str_arr(names)).add("fbd", str_arr(r.fbd));
     o.add("about", str(r.about ? r.about->name() : "")).add("constraint", str(r.constraint));
     o.add("equation", str(equation_tex(readable_equation(sys, r.equation))));
@@ -416,7 +427,7 @@ std::string render_report_json(const ReportContent& c) {
         config.push_back(Obj().add("name", str(q.name())).add("value", num(v)).done());
     }
     Obj o;
-    o.add("format", "1").add("title", str(c.title)).add("model", model_json(c));
+    o.add("format", "1").add("title", str(c.title)).add("notes", str_arr(c.notes)).add("model", model_json(c));
     o.add("configuration", arr(config)).add("geometry", geometry).add("roadmap", arr(rows));
     o.add("histories", arr(histories)).add("animation", animation_json(c, placed));
     return o.done();

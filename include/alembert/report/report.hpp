@@ -33,6 +33,8 @@ struct ReportContent {
     /// The unit each name is shown in ("deg" for qA, "N*m" for T_A); empty names have none.
     std::map<std::string, std::string> units{};
     std::vector<ReportHistory> histories{};
+    /// Remarks shown at the top of the page (why there is no road-map, ...).
+    std::vector<std::string> notes{};
 };
 
 /// The report as one HTML page: the content as JSON inside the page and the fixed viewer

@@ -375,7 +375,8 @@
     if (!window.katex)
       el("p", {"class": "warning"}, main, "KaTeX was not found when this report was written, so equations show as TeX; " +
          "install Debian's libjs-katex (or set ALEMBERT_KATEX_DIR) and write the report again.");
-    roadmap(main, data);
+    data.notes.forEach(function (n) { el("p", {"class": "warning"}, main, n); });
+    if (data.roadmap.length) roadmap(main, data);
     animation(main, data);
     histories(main, data);
     model(main, data);
