@@ -749,7 +749,7 @@ std::vector<StatementSpec> number_statements() {
          .help = "writes an HTML report: road-map with free-body diagrams, equations, plots, motion",
          .forms = {{"`report` [`at` *q = value, ...*] [`to` *\"dir\"*]",
                     "report at qA = 20 deg, qB = -70 deg, qC = 60 deg to \"report\"",
-                    "`write_report`: `index.html` (self-contained; KaTeX's fonts in `fonts/`) with the model, the last road-map (or the planned one) with each row's free-body diagram drawn at the `at` configuration (default: the first sample of the motion, else the initial values), the equations typeset, the tables simulate and inverse wrote as plots, and the motion animated"}},
+                    "`write_report`: `index.html` (self-contained; KaTeX's fonts in `fonts/`) and `roadmap.tex` (the table, loads and equations for LaTeX) with the model, the last road-map (or the planned one) with each row's free-body diagram drawn at the `at` configuration (default: the first sample of the motion, else the initial values), the equations typeset, the tables simulate and inverse wrote as plots, and the motion animated"}},
          .clauses = {"at", "to"}, .parse = parse_report, .run = [](M& m, const Statement& s) { m.report(s); }},
         {.keyword = "codegen", .family = family,
          .help = "generates C, C++, MATLAB or Python code for the model's equations",

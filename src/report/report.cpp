@@ -139,6 +139,7 @@ std::string write_report(const ReportContent& content, const std::string& dir) {
             write_atomically(out / "fonts" / entry.path().filename(), read_text(entry.path()), "write_report()");
         }
     }
+    write_atomically(out / "roadmap.tex", render_report_latex(content), "write_report()");
     const fs::path index = out / "index.html";
     write_atomically(index, page, "write_report()");
     return index.string();

@@ -158,3 +158,23 @@ TEST(Report, ErrorsNameTheProblemAndTheFix) {
 
 }  // namespace
 }  // namespace alembert
+
+namespace alembert {
+namespace {
+
+TEST(ReportLatex, TheRoadmapTableTheLoadsAndTheEquationsForAPaper) {
+    SitToStand s;
+    const std::string tex = render_report_latex(s.content);
+    EXPECT_NE(tex.find("\\section*{MG road-map of sit\\_to\\_stand}"), std::string::npos) << tex.substr(0, 400);
+    EXPECT_NE(tex.find("$T_{A}$ & rotate & Nz\\textgreater{} & $\\{A, B, C\\}$ & A\\_o & none \\\\"), std::string::npos)
+        << tex;
+    EXPECT_NE(tex.find("\\item $S = \\{C\\}$ (for $T_{C}$): T\\_C on C from B (unknown); gravity at Ccm; "
+                       "joint force at C\\_o from B (unknown)."),
+              std::string::npos);
+    EXPECT_EQ(count(tex, "\\[ E_{T_{"), 3u);
+    EXPECT_EQ(count(tex, "\\begin{aligned}"), count(tex, "\\end{aligned}"));
+    EXPECT_NE(tex.find("\\end{document}"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace alembert

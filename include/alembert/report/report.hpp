@@ -48,11 +48,17 @@ std::string render_report_html(const ReportContent& content, const std::string& 
 /// The content's data alone, as the JSON the page embeds (deterministic key and row order).
 std::string render_report_json(const ReportContent& content);
 
+/// The road-map as a LaTeX document (article, amsmath) for a paper or a homework solution: the
+/// table in the seed's columns, each row's free-body diagram as the list of its loads, and the
+/// equations, one display each, with the named intermediates they use defined after them.
+std::string render_report_latex(const ReportContent& content);
+
 /// Where KaTeX is read from: $ALEMBERT_KATEX_DIR if set, else the build's default (Debian's
 /// libjs-katex, /usr/share/javascript/katex).
 std::string default_katex_dir();
 
-/// Writes DIR/index.html (and KaTeX's fonts in DIR/fonts/), each written to a temporary and
+/// Writes DIR/index.html (and KaTeX's fonts in DIR/fonts/) and DIR/roadmap.tex
+/// (render_report_latex), each written to a temporary and
 /// renamed; DIR is created if needed. Without KaTeX the page shows the TeX source and says
 /// how to install it. Returns the path of index.html.
 /// @throws alembert::ArgumentError naming DIR if it cannot be created or written.
