@@ -355,15 +355,30 @@ std::string row_json(const System& sys, const Evaluation& ev, const RoadmapRow& 
     return o.done();
 }
 
+// every k-th row (and the last), so that long runs plot quickly: at most kMaxPlotRows
+constexpr std::size_t kMaxPlotRows = 2000;
+
+std::vector<double> thinned(const std::vector<double>& v) {
+    const std::size_t step = std::max<std::size_t>(1, (v.size() + kMaxPlotRows - 1) / kMaxPlotRows);
+    if (step == 1) return v;
+    std::vector<double> out;
+    for (std::size_t k = 0; k < v.size(); k += step) out.push_back(v[k]);
+    if ((v.size() - 1) % step != 0) out.push_back(v.back());
+    return out;
+}
+
 std::string history_json(const ReportHistory& h) {
     std::vector<std::string> series;
     const Table& t = h.table;
     for (std::size_t c = 1; c < t.columns.size(); ++c)
-        series.push_back(
-            Obj().add("name", str(t.names[c])).add("unit", str(t.units[c])).add("values", num_arr(t.columns[c])).done());
+        series.push_back(Obj()
+                             .add("name", str(t.names[c]))
+                             .add("unit", str(t.units[c]))
+                             .add("values", num_arr(thinned(t.columns[c])))
+                             .done());
     Obj o;
-    o.add("title", str(h.title));
-    o.add("time", t.columns.empty() ? "[]" : num_arr(t.columns[0]));
+    o.add("title", str(h.title)).add("rows", num(static_cast<double>(t.row_count())));
+    o.add("time", t.columns.empty() ? "[]" : num_arr(thinned(t.columns[0])));
     o.add("time_unit", str(t.units.empty() ? "" : t.units[0]));
     o.add("series", arr(series));
     return o.done();

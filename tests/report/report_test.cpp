@@ -96,12 +96,32 @@ TEST(Report, HistoriesArePlottedAndTheirMotionAnimated) {
     h.motion = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
     s.content.histories.push_back(h);
     const std::string json = render_report_json(s.content);
-    EXPECT_NE(json.find("\"time\":[0,0.5,1],\"time_unit\":\"s\",\"series\":[{\"name\":\"T_A\",\"unit\":\"N*m\","
+    EXPECT_NE(json.find("\"title\":\"inverse dynamics\",\"rows\":3,\"time\":[0,0.5,1],\"time_unit\":\"s\",\"series\":[{\"name\":\"T_A\",\"unit\":\"N*m\","
                         "\"values\":[1,2,3]}]"),
               std::string::npos);
     std::size_t anim = json.find("\"animation\":{\"source\":\"inverse dynamics\"");
     ASSERT_NE(anim, std::string::npos);
     EXPECT_NE(json.find("\"time\":[0,0.5,1],\"frames\":[[", anim), std::string::npos);
+}
+
+TEST(Report, LongHistoriesAreThinnedForPlottingKeepingTheEnds) {
+    SitToStand s;
+    ReportHistory h;
+    h.title = "simulation";
+    h.table.add_column("t", "s");
+    h.table.add_column("x", "m");
+    for (int k = 0; k <= 100000; ++k) {
+        h.table.columns[0].push_back(k * 1e-3);
+        h.table.columns[1].push_back(k);
+    }
+    s.content.histories.push_back(h);
+    const std::string json = render_report_json(s.content);
+    std::size_t at = json.find("\"title\":\"simulation\",\"rows\":100001,\"time\":[0,0.051,0.102,");
+    ASSERT_NE(at, std::string::npos);
+    const std::size_t begin = json.find('[', at), end = json.find(']', at);
+    // every 51st of 100001 rows is 1961 samples, and the last row: 1962 values
+    EXPECT_EQ(count(json.substr(begin, end - begin), ",") + 1, 1962u);
+    EXPECT_NE(json.find(",100]", at), std::string::npos);
 }
 
 TEST(Report, SameContentGivesTheSameBytes) {
