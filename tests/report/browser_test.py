@@ -193,6 +193,7 @@ def main():
         shot = os.path.join(out, "screenshot.png")
         subprocess.run(flags + ["--window-size=1280,2200", "--screenshot=" + shot, url],
                        capture_output=True, text=True, timeout=90)
+        worked = subprocess.run(flags + ["--dump-dom", url + "#exercise"], capture_output=True, text=True, timeout=90)
     finally:
         shutil.rmtree(profile, ignore_errors=True)
     console = [l for l in dump.stderr.splitlines() if "CONSOLE" in l]
@@ -215,6 +216,14 @@ def main():
           "the torque plot with T_A, T_B, T_C and their toggles (%d plots, %d series)" % (dom.plots, dom.series))
     check(dom.anim == 1 and dom.anim_sticks >= 3 and dom.play and dom.slider,
           "the animation with its sticks, play button and time slider")
+
+    # the controls, worked once in the page (#exercise): series toggles, the value readout,
+    # the time slider, play and pause
+    start = worked.stdout.find('<pre id="alembert-exercise">')
+    steps = worked.stdout[start:worked.stdout.find("</pre>", start)].split(">", 1)[-1].splitlines() if start >= 0 else []
+    check(len(steps) == 6, "the controls were exercised (%d steps)" % len(steps))
+    for step in steps:
+        check(step.startswith("ok "), "control: " + step)
 
     check(os.path.isfile(shot) and os.path.getsize(shot) > 20000, "a screenshot was taken")
     if os.path.isfile(shot):

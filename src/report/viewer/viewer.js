@@ -383,6 +383,44 @@
   } catch (e) {
     fail("the report could not be drawn: " + (e && e.stack ? e.stack : e));
   }
+  // with #exercise in the address, the controls are worked once as a user would and what they
+  // did is written into #alembert-exercise (the browser test reads it)
+  function exercise() {
+    var out = [];
+    function expect(ok, what) { out.push((ok ? "ok " : "FAIL ") + what); }
+    var fig = document.querySelector("figure.plot");
+    if (fig) {
+      var lines = function () { return fig.querySelectorAll("polyline.series").length; };
+      var before = lines(), box = fig.querySelector("input[type=checkbox]");
+      box.checked = false;
+      box.dispatchEvent(new Event("change"));
+      expect(lines() === before - 1, "unticking a series hides it");
+      box.checked = true;
+      box.dispatchEvent(new Event("change"));
+      expect(lines() === before, "ticking it shows it again");
+      var plotSvg = fig.querySelector("svg"), r = plotSvg.getBoundingClientRect();
+      plotSvg.dispatchEvent(new MouseEvent("mousemove", {clientX: r.left + r.width / 2, clientY: r.top + r.height / 2}));
+      expect(/^t = .+, .+ = /.test(fig.querySelector(".readout").textContent), "the cursor reads values");
+    }
+    var slider = document.getElementById("time-slider");
+    if (slider) {
+      var stick = document.querySelector("svg.anim line.stick"), x0 = stick.getAttribute("x2");
+      slider.value = slider.max;
+      slider.dispatchEvent(new Event("input"));
+      expect(stick.getAttribute("x2") !== x0, "the time slider moves the model");
+      var play = document.getElementById("play");
+      slider.value = 0;
+      slider.dispatchEvent(new Event("input"));
+      play.click();
+      expect(play.textContent === "pause", "play starts the animation");
+      play.click();
+      expect(play.textContent === "play", "pause stops it");
+    }
+    el("pre", {id: "alembert-exercise"}, document.body, out.join("\n"));
+  }
+  if (!failed && window.location.hash === "#exercise") {
+    try { exercise(); } catch (e) { fail("exercising the controls failed: " + e); }
+  }
   status.setAttribute("data-status", failed ? "error" : "ready");
   status.textContent = failed ? "the report has errors (below)" : "";
 })();
