@@ -151,6 +151,33 @@ def png_pixels(path):
     return width, height, gray
 
 
+def spatial(cli, source, work, browser):
+    """A spatial model: drawn in a projection the user turns, every equation typeset."""
+    out = os.path.join(work, "spatial")
+    shutil.rmtree(out, ignore_errors=True)
+    os.makedirs(out)
+    script = os.path.join(source, "tests", "report", "spatial_double_pendulum.alb")
+    r = subprocess.run([cli, "run", "-q", script, "--out", out], capture_output=True, text=True, timeout=120)
+    check(r.returncode == 0, "the spatial script writes its report (stderr: %s)" % r.stderr.strip())
+    profile = tempfile.mkdtemp(prefix="alembert-chromium-")
+    try:
+        dump = subprocess.run([browser, "--headless", "--disable-gpu", "--no-sandbox", "--user-data-dir=" + profile,
+                               "--virtual-time-budget=3000", "--dump-dom",
+                               "file://" + os.path.abspath(os.path.join(out, "index.html"))],
+                              capture_output=True, text=True, timeout=90)
+    finally:
+        shutil.rmtree(profile, ignore_errors=True)
+    dom = Dom()
+    dom.feed(dump.stdout)
+    check(dom.status == "ready" and not dom.errors.strip(), "spatial: the viewer finished without errors (%r)"
+          % dom.errors.strip()[:300])
+    # four rows: T1 and T2 with S = {A, B} (2 torques, 2 weights, the joint at A_o), T3 and T4
+    # with S = {B} (2 torques, B's weight, the joint at B_o)
+    check([f[1] for f in dom.fbds] == [5, 5, 4, 4], "spatial: arrows per diagram %s" % dom.fbds)
+    check(dom.equations >= 4 and dom.katex == dom.equations and dom.raw == 0, "spatial: every equation typeset")
+    check('id="view-turn"' in dump.stdout and 'id="view-tilt"' in dump.stdout, "spatial: the view can be turned")
+
+
 def main():
     if len(sys.argv) != 4:
         print(__doc__)
@@ -233,6 +260,7 @@ def main():
         dark = sum(1 for g in gray if g < 128) / len(gray)
         check(w == 1280 and var > 100 and 0.002 < dark < 0.5,
               "the screenshot is not blank (%dx%d, variance %.0f, %.1f%% dark)" % (w, h, var, 100 * dark))
+    spatial(cli, source, work, browser)
     print("report: %s" % index)
     return 1 if failures else 0
 

@@ -60,7 +60,7 @@
     var box = el(display ? "div" : "span", {"class": "equation"}, parent);
     if (window.katex) {
       try {
-        window.katex.render(source, box, {displayMode: !!display, throwOnError: true});
+        window.katex.render(source, box, {displayMode: !!display, throwOnError: true, maxExpand: 1000000});
         return box;
       } catch (e) {
         fail("KaTeX could not typeset: " + source.slice(0, 80) + "...: " + e.message);
@@ -72,9 +72,15 @@
   }
 
   // ---- geometry: the plane of planar models, an oblique view of spatial ones ----------------
+  // spatial models: turned about Ny by view.turn, then tilted by view.tilt (radians)
+  var view = {turn: 0.6, tilt: 0.35};
   function projector(planar) {
-    return planar ? function (p) { return [p[0], -p[1]]; }
-                  : function (p) { return [p[0] - 0.45 * p[2], -(p[1] - 0.3 * p[2])]; };
+    if (planar) return function (p) { return [p[0], -p[1]]; };
+    var ct = Math.cos(view.turn), st = Math.sin(view.turn), ce = Math.cos(view.tilt), se = Math.sin(view.tilt);
+    return function (p) {
+      var x = ct * p[0] + st * p[2], z = -st * p[0] + ct * p[2];
+      return [x, -(ce * p[1] + se * z)];
+    };
   }
   function bounds(points, project) {
     var b = [Infinity, Infinity, -Infinity, -Infinity];
@@ -132,7 +138,16 @@
       lg.head = g.head;
       var p = project(at[load.at] || [0, 0, 0]);
       var labelAt = [p[0] + 0.05 * L, p[1] - 0.05 * L];
-      if (load.kind === "torque") {
+      if (load.kind === "torque" && !geo.planar) {
+        // in space: a double-headed arrow along the torque
+        var tu = unit2(project(load.vector.length ? load.vector : [0, 0, 1]));
+        if (tu) {
+          var tip = [p[0] + tu[0] * arrowLength, p[1] + tu[1] * arrowLength];
+          arrow(lg, p, tip);
+          arrow(lg, p, [tip[0] - tu[0] * g.head, tip[1] - tu[1] * g.head]);
+          labelAt = [tip[0] + 0.03 * L, tip[1]];
+        }
+      } else if (load.kind === "torque") {
         // an arc about the point, counterclockwise in the plane for a +z torque
         var z = load.vector.length ? load.vector[2] : 1, r = 0.11 * L, sense = z >= 0 ? 1 : -1;
         var th0 = sense > 0 ? -2.1 : 2.6, th1 = sense > 0 ? 2.6 : -2.1, pts = [];
@@ -146,8 +161,10 @@
         labelAt = [p[0] + r, p[1] - r];
       } else if (load.kind === "joint") {
         // a joint's force: unknown components along Nx and Ny
-        arrow(lg, p, [p[0] + 0.6 * arrowLength, p[1]]);
-        arrow(lg, p, [p[0], p[1] - 0.6 * arrowLength]);
+        (geo.planar ? [[1, 0, 0], [0, 1, 0]] : [[1, 0, 0], [0, 1, 0], [0, 0, 1]]).forEach(function (axis) {
+          var a = project(axis);
+          arrow(lg, p, [p[0] + 0.6 * arrowLength * a[0], p[1] + 0.6 * arrowLength * a[1]]);
+        });
         labelAt = [p[0] + 0.62 * arrowLength, p[1] + 0.06 * L];
       } else {
         var u = unit2(project(load.vector));
@@ -177,7 +194,7 @@
     var dg = svg("g", {"class": "direction"}, g);
     dg.head = g.head;
     var du = unit2(project(dir));
-    var inPlane = du && Math.hypot(dir[0], dir[1]) > 0.2;
+    var inPlane = du && (!geo.planar || Math.hypot(dir[0], dir[1]) > 0.2);
     var base = [box.x - 0.3 * L, box.y + box.h + 0.3 * L];
     if (inPlane) {
       arrow(dg, base, [base[0] + du[0] * 0.25 * L, base[1] + du[1] * 0.25 * L]);
@@ -368,10 +385,18 @@
   }
 
   // ---- the page ---------------------------------------------------------------------------
-  try {
-    var data = JSON.parse(document.getElementById("alembert-data").textContent);
-    var main = document.getElementById("report");
+  function render(data, main) {
+    while (main.firstChild) main.removeChild(main.firstChild);
     el("h1", {}, main, data.title + ": Alembert report");
+    if (!data.geometry.planar) {
+      // a spatial model: sliders turn the drawings
+      var turn = el("div", {"class": "controls", id: "view-controls"}, main);
+      [["turn", -3.1416, 3.1416], ["tilt", -1.5, 1.5]].forEach(function (c) {
+        var lab = el("label", {}, turn, c[0] + " ");
+        var input = el("input", {type: "range", min: c[1], max: c[2], step: 0.01, value: view[c[0]], id: "view-" + c[0]}, lab);
+        input.addEventListener("change", function () { view[c[0]] = Number(input.value); render(data, main); });
+      });
+    }
     if (!window.katex)
       el("p", {"class": "warning"}, main, "KaTeX was not found when this report was written, so equations show as TeX; " +
          "install Debian's libjs-katex (or set ALEMBERT_KATEX_DIR) and write the report again.");
@@ -380,6 +405,9 @@
     animation(main, data);
     histories(main, data);
     model(main, data);
+  }
+  try {
+    render(JSON.parse(document.getElementById("alembert-data").textContent), document.getElementById("report"));
   } catch (e) {
     fail("the report could not be drawn: " + (e && e.stack ? e.stack : e));
   }
