@@ -56,13 +56,15 @@ std::string Interpreter::Impl::write_report_to(const std::string& dir, const exm
     } else if (!c.coordinates.empty()) {
         std::vector<ex> unknowns = sys.symbols().symbols(SymbolKind::unknown);
         if (unknowns.empty())
-            for (const TimeVariable& v : c.coordinates) unknowns.push_back(v.d(std::min(2, v.order())));
+            for (const TimeVariable& v : c.coordinates)
+                unknowns.push_back(v.d(std::min(2, v.order())));
         try {
             c.rows = plan_roadmap(sys, c.coordinates, unknowns);
         } catch (const Error& e) {
             // the rest of the report stands without it
-            c.notes.push_back(std::string("No road-map: the script forms none and planning one failed: ") + e.what() +
-                              " Form one in the script (roadmap E for ...) to see it here.");
+            c.notes.push_back(
+                std::string("No road-map: the script forms none and planning one failed: ") +
+                e.what() + " Form one in the script (roadmap E for ...) to see it here.");
         }
     }
     // the configuration of the diagrams: as given, else the first sample of a motion, else
@@ -71,7 +73,8 @@ std::string Interpreter::Impl::write_report_to(const std::string& dir, const exm
     for (const ReportHistory& h : histories)
         if (!h.motion.empty()) {
             for (std::size_t k = 0; k < h.coordinates.size(); ++k)
-                if (!h.motion[k].empty()) c.configuration[h.coordinates[k].symbol()] = h.motion[k].front();
+                if (!h.motion[k].empty())
+                    c.configuration[h.coordinates[k].symbol()] = h.motion[k].front();
             break;
         }
     for (const auto& [x, v] : configuration) c.configuration[x] = v;
@@ -91,7 +94,8 @@ void Interpreter::Impl::report(const Statement& s) {
                               "give values to coordinates (report at qA = 20 deg)");
     }
     (void)write_report_to(output_path(s), at, s.location);
-    transcript.result("wrote " + (s.has_word("to") ? s.word("to").text + "/" : std::string()) + "index.html");
+    transcript.result("wrote " + (s.has_word("to") ? s.word("to").text + "/" : std::string()) +
+                      "index.html");
 }
 
 }  // namespace alembert::lang

@@ -109,9 +109,12 @@ std::string latex_add(const ex& e) {
     bool first = true;
     for (const ex& t : sorted_operands(e)) {
         std::string s = latex(t);
-        if (first) out = s;
-        else if (!s.empty() && s[0] == '-') out += " - " + s.substr(1);
-        else out += " + " + s;
+        if (first)
+            out = s;
+        else if (!s.empty() && s[0] == '-')
+            out += " - " + s.substr(1);
+        else
+            out += " + " + s;
         first = false;
     }
     return out;

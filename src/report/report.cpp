@@ -20,13 +20,27 @@ std::string json_escape(const std::string& s) {
     std::string o;
     for (char ch : s) {
         switch (ch) {
-            case '"': o += "\\\""; break;
-            case '\\': o += "\\\\"; break;
-            case '\n': o += "\\n"; break;
-            case '\t': o += "\\t"; break;
-            case '<': o += "\\u003c"; break;
-            case '>': o += "\\u003e"; break;
-            case '&': o += "\\u0026"; break;
+            case '"':
+                o += "\\\"";
+                break;
+            case '\\':
+                o += "\\\\";
+                break;
+            case '\n':
+                o += "\\n";
+                break;
+            case '\t':
+                o += "\\t";
+                break;
+            case '<':
+                o += "\\u003c";
+                break;
+            case '>':
+                o += "\\u003e";
+                break;
+            case '&':
+                o += "\\u0026";
+                break;
             default:
                 if (static_cast<unsigned char>(ch) < 0x20) {
                     char buf[8];
@@ -57,11 +71,16 @@ std::string read_text(const fs::path& p) {
 std::string html_escape(const std::string& s) {
     std::string o;
     for (char c : s) {
-        if (c == '<') o += "&lt;";
-        else if (c == '>') o += "&gt;";
-        else if (c == '&') o += "&amp;";
-        else if (c == '"') o += "&quot;";
-        else o += c;
+        if (c == '<')
+            o += "&lt;";
+        else if (c == '>')
+            o += "&gt;";
+        else if (c == '&')
+            o += "&amp;";
+        else if (c == '"')
+            o += "&quot;";
+        else
+            o += c;
     }
     return o;
 }
@@ -79,14 +98,16 @@ void write_atomically(const fs::path& path, const std::string& bytes, const char
         if (!out) {
             std::error_code ec;
             fs::remove(temporary, ec);
-            throw ArgumentError(std::string(caller) + ": writing '" + path.string() + "' failed (disk full?)");
+            throw ArgumentError(std::string(caller) + ": writing '" + path.string() +
+                                "' failed (disk full?)");
         }
     }
     std::error_code ec;
     fs::rename(temporary, path, ec);
     if (ec) {
         fs::remove(temporary, ec);
-        throw ArgumentError(std::string(caller) + ": cannot replace '" + path.string() + "' (" + ec.message() + ")");
+        throw ArgumentError(std::string(caller) + ": cannot replace '" + path.string() + "' (" +
+                            ec.message() + ")");
     }
 }
 
@@ -136,7 +157,8 @@ std::string write_report(const ReportContent& content, const std::string& dir) {
         fs::create_directories(out / "fonts", ec);
         for (const auto& entry : fs::directory_iterator(fs::path(katex) / "fonts", ec)) {
             if (entry.path().extension() != ".woff2") continue;
-            write_atomically(out / "fonts" / entry.path().filename(), read_text(entry.path()), "write_report()");
+            write_atomically(out / "fonts" / entry.path().filename(), read_text(entry.path()),
+                             "write_report()");
         }
     }
     write_atomically(out / "roadmap.tex", render_report_latex(content), "write_report()");

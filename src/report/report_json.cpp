@@ -154,7 +154,8 @@ std::string model_json(const ReportContent& c) {
     }
     for (const Load& l : sys.loads()) {
         Obj o;
-        o.add("label", str(l.label)).add("kind", str(l.kind == LoadKind::force ? "force" : "torque"));
+        o.add("label", str(l.label))
+            .add("kind", str(l.kind == LoadKind::force ? "force" : "torque"));
         o.add("at", str(l.point ? l.point->name() : "")).add("on", str(l.on ? l.on->name() : ""));
         o.add("from", str(ground_or(sys, l.from))).add("vector", str(l.vector.to_string()));
         loads.push_back(o.done());
@@ -167,7 +168,8 @@ std::string model_json(const ReportContent& c) {
         loads.push_back(o.done());
     }
     for (const TimeVariable& q : c.coordinates)
-        coords.push_back(Obj().add("name", str(q.name())).add("unit", str(unit_of(c, q.name()))).done());
+        coords.push_back(
+            Obj().add("name", str(q.name())).add("unit", str(unit_of(c, q.name()))).done());
     for (const ex& k : st.symbols(SymbolKind::constant)) {
         std::optional<double> v = st.value(k);
         constants.push_back(Obj()
@@ -177,7 +179,8 @@ std::string model_json(const ReportContent& c) {
                                 .done());
     }
     for (const ex& k : st.symbols(SymbolKind::unknown))
-        unknowns.push_back(Obj().add("name", str(st.name(k))).add("unit", str(unit_of(c, st.name(k)))).done());
+        unknowns.push_back(
+            Obj().add("name", str(st.name(k))).add("unit", str(unit_of(c, st.name(k)))).done());
     Obj o;
     o.add("frames", arr(frames)).add("bodies", arr(bodies)).add("points", arr(points));
     o.add("loads", arr(loads)).add("coordinates", arr(coords)).add("constants", arr(constants));
@@ -218,7 +221,8 @@ std::string geometry_json(const System& sys, const Evaluation& ev,
         pts.push_back(Obj().add("name", str(p->name())).add("at", num_arr(x)).done());
     }
     for (const Segment& s : segments_of(sys, placed))
-        segs.push_back(Obj().add("body", str(s.body)).add("from", str(s.from)).add("to", str(s.to)).done());
+        segs.push_back(
+            Obj().add("body", str(s.body)).add("from", str(s.from)).add("to", str(s.to)).done());
     Obj o;
     o.add("planar", *planar ? "true" : "false").add("points", arr(pts)).add("segments", arr(segs));
     return o.done();
@@ -246,7 +250,8 @@ std::string diagram_json(const System& sys, const Evaluation& ev, const RoadmapR
     }
     if (!sys.gravity().is_zero())
         for (const Body* b : S)
-            if (b->has_mass()) load("gravity", b->name() + " g", &b->cm(), ev.in_newtonian(sys.gravity()), false);
+            if (b->has_mass())
+                load("gravity", b->name() + " g", &b->cm(), ev.in_newtonian(sys.gravity()), false);
     for (const Point* p : sys.points()) {
         if (!member(S, p->owner()) || !p->located_from()) continue;
         const Point* from = p->located_from();
@@ -263,9 +268,12 @@ std::string diagram_json(const System& sys, const Evaluation& ev, const RoadmapR
 
 std::string motion_word(Motion m) {
     switch (m) {
-        case Motion::translate: return "translate";
-        case Motion::rotate: return "rotate";
-        case Motion::constraint: return "constraint";
+        case Motion::translate:
+            return "translate";
+        case Motion::rotate:
+            return "rotate";
+        case Motion::constraint:
+            return "constraint";
     }
     return "";
 }
@@ -278,7 +286,8 @@ ex readable_equation(const System& sys, const ex& e) {
     for (const ex& s : symbols_of(e))
         if (st.owns(s) && st.kind(s) == SymbolKind::variable && st.derivative_order(s) == 2)
             acc.push_back(s);
-    std::sort(acc.begin(), acc.end(), [](const ex& a, const ex& b) { return to_string(a) < to_string(b); });
+    std::sort(acc.begin(), acc.end(),
+              [](const ex& a, const ex& b) { return to_string(a) < to_string(b); });
     return acc.empty() ? simplify(e) : collect_in(simplify(e), acc);
 }
 
@@ -288,7 +297,8 @@ std::string equation_tex(const ex& e) {
     if (GiNaC::is_a<GiNaC::add>(e)) {
         std::vector<std::pair<std::string, ex>> keyed;
         for (std::size_t i = 0; i < e.nops(); ++i) keyed.emplace_back(to_string(e.op(i)), e.op(i));
-        std::stable_sort(keyed.begin(), keyed.end(), [](const auto& a, const auto& b) { return a.first < b.first; });
+        std::stable_sort(keyed.begin(), keyed.end(),
+                         [](const auto& a, const auto& b) { return a.first < b.first; });
         for (const auto& k : keyed) terms.push_back(to_latex(k.second));
     } else {
         terms.push_back(to_latex(e));
@@ -302,8 +312,10 @@ std::string equation_tex(const ex& e) {
             out += " \\\\ & ";
             line = 0;
         }
-        if (i > 0 || neg) out += neg ? " - " + t.substr(1) : " + " + t;
-        else out += t;
+        if (i > 0 || neg)
+            out += neg ? " - " + t.substr(1) : " + " + t;
+        else
+            out += t;
         line += t.size();
     }
     return out + " \\end{aligned}";
@@ -318,12 +330,14 @@ std::vector<std::string> intermediate_definitions(const System& sys, const ex& e
         ex x = todo.back();
         todo.pop_back();
         for (const ex& s : symbols_of(x))
-            if (st.owns(s) && st.kind(s) == SymbolKind::intermediate && used.insert(st.name(s)).second)
+            if (st.owns(s) && st.kind(s) == SymbolKind::intermediate &&
+                used.insert(st.name(s)).second)
                 todo.push_back(st.definition(s));
     }
     std::vector<std::string> defs;
     for (const ex& z : st.intermediates())
-        if (used.count(st.name(z))) defs.push_back(to_latex(z) + " = " + to_latex(st.definition(z)));
+        if (used.count(st.name(z)))
+            defs.push_back(to_latex(z) + " = " + to_latex(st.definition(z)));
     return defs;
 }
 
@@ -345,7 +359,8 @@ std::string row_json(const System& sys, const Evaluation& ev, const RoadmapRow& 
     o.add("variable", str(to_string(r.variable))).add("variable_tex", str(to_latex(r.variable)));
     o.add("motion", str(motion_word(r.motion)));
     o.add("analysis", str(r.analysis == Analysis::statics ? "statics" : "dynamics"));
-    o.add("direction", str(r.motion == Motion::constraint ? "" : direction_words(sys, r.direction)));
+    o.add("direction",
+          str(r.motion == Motion::constraint ? "" : direction_words(sys, r.direction)));
     o.add("system", str_arr(names)).add("fbd", str_arr(r.fbd));
     o.add("about", str(r.about ? r.about->name() : "")).add("constraint", str(r.constraint));
     o.add("equation", str(equation_tex(readable_equation(sys, r.equation))));
@@ -427,19 +442,44 @@ std::string tex_text(const std::string& s) {
     std::string o;
     for (char ch : s) {
         switch (ch) {
-            case '_': o += "\\_"; break;
-            case '&': o += "\\&"; break;
-            case '%': o += "\\%"; break;
-            case '#': o += "\\#"; break;
-            case '$': o += "\\$"; break;
-            case '{': o += "\\{"; break;
-            case '}': o += "\\}"; break;
-            case '>': o += "\\textgreater{}"; break;
-            case '<': o += "\\textless{}"; break;
-            case '^': o += "\\textasciicircum{}"; break;
-            case '~': o += "\\textasciitilde{}"; break;
-            case '\\': o += "\\textbackslash{}"; break;
-            default: o += ch;
+            case '_':
+                o += "\\_";
+                break;
+            case '&':
+                o += "\\&";
+                break;
+            case '%':
+                o += "\\%";
+                break;
+            case '#':
+                o += "\\#";
+                break;
+            case '$':
+                o += "\\$";
+                break;
+            case '{':
+                o += "\\{";
+                break;
+            case '}':
+                o += "\\}";
+                break;
+            case '>':
+                o += "\\textgreater{}";
+                break;
+            case '<':
+                o += "\\textless{}";
+                break;
+            case '^':
+                o += "\\textasciicircum{}";
+                break;
+            case '~':
+                o += "\\textasciitilde{}";
+                break;
+            case '\\':
+                o += "\\textbackslash{}";
+                break;
+            default:
+                o += ch;
         }
     }
     return o;
@@ -455,15 +495,20 @@ std::string set_words(const BodySet& S) {
 
 std::string render_report_latex(const ReportContent& c) {
     if (!c.system)
-        throw ArgumentError("render_report_latex(): the report has no model; build one (newtonian N, ...) before report");
+        throw ArgumentError(
+            "render_report_latex(): the report has no model; build one (newtonian N, ...) before "
+            "report");
     const System& sys = *c.system;
     std::string t;
     t += "% Generated by Alembert from the model '" + c.title + "'; regenerate rather than edit.\n";
-    t += "\\documentclass[a4paper]{article}\n\\usepackage{amsmath}\n\\usepackage[margin=2cm]{geometry}\n";
+    t += "\\documentclass[a4paper]{article}\n\\usepackage{amsmath}\n\\usepackage[margin=2cm]{"
+         "geometry}\n";
     t += "\\begin{document}\n\\section*{MG road-map of " + tex_text(c.title) + "}\n\n";
-    t += "Each equation is $E = \\text{applied} - \\text{inertial} = 0$; the free-body diagram of $S$ lists the loads "
+    t += "Each equation is $E = \\text{applied} - \\text{inertial} = 0$; the free-body diagram of "
+         "$S$ lists the loads "
          "external to $S$.\n\n";
-    t += "\\begin{tabular}{llllll}\n\\hline\nvariable & translate/rotate & direction & system $S$ & about point & "
+    t += "\\begin{tabular}{llllll}\n\\hline\nvariable & translate/rotate & direction & system $S$ "
+         "& about point & "
          "additional unknowns \\\\\n\\hline\n";
     for (const RoadmapRow& r : c.rows) {
         std::string extra;
@@ -473,7 +518,8 @@ std::string render_report_latex(const ReportContent& c) {
         t += "$" + to_latex(r.variable) + "$ & " + motion_word(r.motion) + " & " +
              (constraint ? "--" : tex_text(direction_words(sys, r.direction))) + " & " +
              (constraint ? "--" : "$" + set_words(r.system) + "$") + " & " +
-             (r.about ? tex_text(r.about->name()) : "--") + " & " + (extra.empty() ? "none" : extra) + " \\\\\n";
+             (r.about ? tex_text(r.about->name()) : "--") + " & " +
+             (extra.empty() ? "none" : extra) + " \\\\\n";
     }
     t += "\\hline\n\\end{tabular}\n\n\\subsection*{Free-body diagrams}\n\\begin{itemize}\n";
     for (const RoadmapRow& r : c.rows) {
@@ -484,7 +530,8 @@ std::string render_report_latex(const ReportContent& c) {
     }
     t += "\\end{itemize}\n\n\\subsection*{Equations}\n";
     for (const RoadmapRow& r : c.rows) {
-        t += "\\[ E_{" + to_latex(r.variable) + "}: \\quad " + equation_tex(readable_equation(sys, r.equation)) + " \\]\n";
+        t += "\\[ E_{" + to_latex(r.variable) + "}: \\quad " +
+             equation_tex(readable_equation(sys, r.equation)) + " \\]\n";
         std::vector<std::string> defs = intermediate_definitions(sys, r.equation);
         if (!defs.empty()) {
             t += "where\n";
@@ -497,7 +544,9 @@ std::string render_report_latex(const ReportContent& c) {
 
 std::string render_report_json(const ReportContent& c) {
     if (!c.system)
-        throw ArgumentError("render_report_json(): the report has no model; build one (newtonian N, ...) before report");
+        throw ArgumentError(
+            "render_report_json(): the report has no model; build one (newtonian N, ...) before "
+            "report");
     const System& sys = *c.system;
     Evaluation ev(sys, c.configuration);
     std::vector<const Point*> placed = placed_points(sys);
@@ -508,11 +557,15 @@ std::string render_report_json(const ReportContent& c) {
     for (const ReportHistory& h : c.histories) histories.push_back(history_json(h));
     for (const TimeVariable& q : c.coordinates) {
         auto it = ev.values.find(q.symbol());
-        double v = it == ev.values.end() ? 0.0 : GiNaC::ex_to<GiNaC::numeric>(it->second).to_double();
+        double v =
+            it == ev.values.end() ? 0.0 : GiNaC::ex_to<GiNaC::numeric>(it->second).to_double();
         config.push_back(Obj().add("name", str(q.name())).add("value", num(v)).done());
     }
     Obj o;
-    o.add("format", "1").add("title", str(c.title)).add("notes", str_arr(c.notes)).add("model", model_json(c));
+    o.add("format", "1")
+        .add("title", str(c.title))
+        .add("notes", str_arr(c.notes))
+        .add("model", model_json(c));
     o.add("configuration", arr(config)).add("geometry", geometry).add("roadmap", arr(rows));
     o.add("histories", arr(histories)).add("animation", animation_json(c, placed));
     return o.done();

@@ -1,5 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The report's data: the sit-to-stand road-map with its free-body diagrams, histories, motion.
+#include "alembert/report/report.hpp"
+
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -9,14 +11,14 @@
 #include "alembert/eom/planner.hpp"
 #include "alembert/error.hpp"
 #include "alembert/mech/sample_models.hpp"
-#include "alembert/report/report.hpp"
 
 namespace alembert {
 namespace {
 
 std::size_t count(const std::string& text, const std::string& what) {
     std::size_t n = 0;
-    for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+    for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1))
+        ++n;
     return n;
 }
 
@@ -65,8 +67,10 @@ TEST(Report, EachRowsFreeBodyDiagramHoldsTheLoadsExternalToItsSystem) {
     EXPECT_NE(c.find("\"system\":[\"C\"],\"about\":\"C_o\""), std::string::npos);
     EXPECT_EQ(count(c, "\"kind\":"), 3u);
     // the torque on S is unknown, drawn at the joint, positive about +Nz
-    EXPECT_NE(c.find("{\"kind\":\"torque\",\"label\":\"T_C\",\"at\":\"C_o\",\"vector\":[0,0,1],\"unknown\":true}"),
-              std::string::npos) << c;
+    EXPECT_NE(c.find("{\"kind\":\"torque\",\"label\":\"T_C\",\"at\":\"C_o\",\"vector\":[0,0,1],"
+                     "\"unknown\":true}"),
+              std::string::npos)
+        << c;
     // the direction u = Nz, and the equation as TeX with the torque in it
     EXPECT_NE(c.find("\"direction\":[0,0,1]"), std::string::npos);
     EXPECT_NE(c.find("T_{C}"), std::string::npos);
@@ -96,7 +100,9 @@ TEST(Report, HistoriesArePlottedAndTheirMotionAnimated) {
     h.motion = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
     s.content.histories.push_back(h);
     const std::string json = render_report_json(s.content);
-    EXPECT_NE(json.find("\"title\":\"inverse dynamics\",\"rows\":3,\"time\":[0,0.5,1],\"time_unit\":\"s\",\"series\":[{\"name\":\"T_A\",\"unit\":\"N*m\","
+    EXPECT_NE(json.find("\"title\":\"inverse "
+                        "dynamics\",\"rows\":3,\"time\":[0,0.5,1],\"time_unit\":\"s\",\"series\":[{"
+                        "\"name\":\"T_A\",\"unit\":\"N*m\","
                         "\"values\":[1,2,3]}]"),
               std::string::npos);
     std::size_t anim = json.find("\"animation\":{\"source\":\"inverse dynamics\"");
@@ -133,7 +139,8 @@ TEST(Report, PageHoldsTheDataAndTheViewerAndNoClosingScriptInsideTheData) {
     SitToStand s;
     s.content.title = "a</script>b";
     const std::string page = render_report_html(s.content, "");
-    EXPECT_NE(page.find("<script type=\"application/json\" id=\"alembert-data\">{\"format\":1"), std::string::npos);
+    EXPECT_NE(page.find("<script type=\"application/json\" id=\"alembert-data\">{\"format\":1"),
+              std::string::npos);
     EXPECT_NE(page.find("Alembert's report viewer"), std::string::npos);
     EXPECT_EQ(count(page, "</script>"), 2u);  // the data's and the viewer's
     EXPECT_NE(page.find("<title>a&lt;/script&gt;b - Alembert report</title>"), std::string::npos);
@@ -171,7 +178,8 @@ TEST(Report, ErrorsNameTheProblemAndTheFix) {
         (void)write_report(s.content, (file / "sub").string());
         FAIL() << "expected ArgumentError";
     } catch (const ArgumentError& e) {
-        EXPECT_NE(std::string(e.what()).find("cannot create the directory"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("cannot create the directory"), std::string::npos)
+            << e.what();
     }
     fs::remove(file);
 }
@@ -185,12 +193,16 @@ namespace {
 TEST(ReportLatex, TheRoadmapTableTheLoadsAndTheEquationsForAPaper) {
     SitToStand s;
     const std::string tex = render_report_latex(s.content);
-    EXPECT_NE(tex.find("\\section*{MG road-map of sit\\_to\\_stand}"), std::string::npos) << tex.substr(0, 400);
-    EXPECT_NE(tex.find("$T_{A}$ & rotate & Nz\\textgreater{} & $\\{A, B, C\\}$ & A\\_o & none \\\\"), std::string::npos)
+    EXPECT_NE(tex.find("\\section*{MG road-map of sit\\_to\\_stand}"), std::string::npos)
+        << tex.substr(0, 400);
+    EXPECT_NE(
+        tex.find("$T_{A}$ & rotate & Nz\\textgreater{} & $\\{A, B, C\\}$ & A\\_o & none \\\\"),
+        std::string::npos)
         << tex;
-    EXPECT_NE(tex.find("\\item $S = \\{C\\}$ (for $T_{C}$): T\\_C on C from B (unknown); gravity at Ccm; "
-                       "joint force at C\\_o from B (unknown)."),
-              std::string::npos);
+    EXPECT_NE(
+        tex.find("\\item $S = \\{C\\}$ (for $T_{C}$): T\\_C on C from B (unknown); gravity at Ccm; "
+                 "joint force at C\\_o from B (unknown)."),
+        std::string::npos);
     EXPECT_EQ(count(tex, "\\[ E_{T_{"), 3u);
     EXPECT_EQ(count(tex, "\\begin{aligned}"), count(tex, "\\end{aligned}"));
     EXPECT_NE(tex.find("\\end{document}"), std::string::npos);

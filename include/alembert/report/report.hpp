@@ -14,18 +14,18 @@ namespace alembert {
 /// A time history to plot: a table whose first column is the time, and, when the motion is
 /// known, the coordinates at each of its rows (SI) for the animation.
 struct ReportHistory {
-    std::string title{};                       ///< "inverse dynamics", "simulation"
-    Table table{};                             ///< t, then the series, in their units
-    std::vector<TimeVariable> coordinates{};   ///< the coordinates `motion` holds
-    std::vector<std::vector<double>> motion{}; ///< motion[k][row]: coordinate k at each row (SI)
+    std::string title{};                        ///< "inverse dynamics", "simulation"
+    Table table{};                              ///< t, then the series, in their units
+    std::vector<TimeVariable> coordinates{};    ///< the coordinates `motion` holds
+    std::vector<std::vector<double>> motion{};  ///< motion[k][row]: coordinate k at each row (SI)
 };
 
 /// Everything a report shows. The page is a function of this alone (no clock, no paths), so
 /// the same content gives the same bytes.
 struct ReportContent {
     const System* system = nullptr;
-    std::string title{};                       ///< the model's name
-    std::vector<RoadmapRow> rows{};            ///< formed road-map rows
+    std::string title{};             ///< the model's name
+    std::vector<RoadmapRow> rows{};  ///< formed road-map rows
     std::vector<TimeVariable> coordinates{};
     /// Values of coordinates (and rates) at which free-body diagrams are drawn (SI); those
     /// missing are 0. Constants take their values from the model's symbol table.
