@@ -62,9 +62,8 @@ std::string Interpreter::Impl::write_report_to(const std::string& dir, const exm
             c.rows = plan_roadmap(sys, c.coordinates, unknowns);
         } catch (const Error& e) {
             // the rest of the report stands without it
-            c.notes.push_back(
-                std::string("No road-map: the script forms none and planning one failed: ") +
-                e.what() + " Form one in the script (roadmap E for ...) to see it here.");
+            c.notes.push_back(std::string("No road-map: the script forms none and planning one failed: ") + e.what() +
+                              "; form one in the script (roadmap E for ...) to see it here.");
         }
     }
     // the configuration of the diagrams: as given, else the first sample of a motion, else

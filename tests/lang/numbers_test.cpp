@@ -325,3 +325,19 @@ TEST(Report, AtNamesCoordinatesOnly) {
     EXPECT_NE(err.str().find("'T_A' is not a coordinate or rate"), std::string::npos) << err.str();
     EXPECT_NE(err.str().find("report at qA = 20 deg"), std::string::npos) << err.str();
 }
+
+TEST(Report, AModelThePlannerCannotPlanGetsANoteInsteadOfARoadmap) {
+    TempDir dir;
+    Script r(dir.path);
+    // a pendulum hung from nowhere: no point of A is fixed, so no about point removes the pivot
+    r.run("newtonian N\nbody A\nvariable q'\nconstant L = 1 m, m = 1 kg, I = 1 kg*m^2, g = 9.81 m/s^2\n"
+          "rotate A from N about z by q\ntranslate Acm from N_o by L*Ay>\nmass A = m\ninertia A = 0, 0, I\n"
+          "gravity -g*Ny>\nreport\n");
+    std::ifstream in(dir.path / "index.html");
+    std::stringstream page;
+    page << in.rdbuf();
+    EXPECT_NE(page.str().find("\"notes\":[\"No road-map: the script forms none and planning one failed: plan_roadmap(): "),
+              std::string::npos);
+    EXPECT_NE(page.str().find("; form one in the script (roadmap E for ...) to see it here.\"]"), std::string::npos);
+    EXPECT_NE(page.str().find("\"roadmap\":[]"), std::string::npos);
+}

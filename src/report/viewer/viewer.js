@@ -132,7 +132,7 @@
       svg("circle", {cx: q[0], cy: q[1], r: 0.012 * L, "class": "point"}, g);
     });
     var arrowLength = 0.28 * L;
-    row.diagram.loads.forEach(function (load, i) {
+    row.diagram.loads.forEach(function (load) {
       var lg = svg("g", {"class": "load " + load.kind + (load.unknown ? " unknown" : " known"),
                          "data-label": load.label}, g);
       lg.head = g.head;
@@ -178,7 +178,6 @@
         }
       }
       svg("text", {x: labelAt[0], y: labelAt[1], "class": "label"}, lg, load.label);
-      void i;
     });
     // the about point O and the direction u
     if (row.diagram.about && at[row.diagram.about]) {
@@ -190,7 +189,7 @@
       svg("text", {x: o[0] - 0.05 * L, y: o[1] + 0.1 * L, "text-anchor": "end", "class": "label"}, og,
           "O = " + row.diagram.about);
     }
-    var dir = row.diagram.direction, origin = project(at[row.diagram.about] || geo.points[0].at);
+    var dir = row.diagram.direction;
     var dg = svg("g", {"class": "direction"}, g);
     dg.head = g.head;
     var du = unit2(project(dir));
@@ -204,7 +203,6 @@
     }
     svg("text", {x: base[0] + 0.07 * L, y: base[1] + 0.02 * L, "class": "label"}, dg,
         "\u00fb = " + row.direction + (inPlane ? "" : " (out of the page)"));
-    void origin;
     return s;
   }
 
