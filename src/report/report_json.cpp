@@ -291,14 +291,17 @@ ex readable_equation(const System& sys, const ex& e) {
     return acc.empty() ? simplify(e) : collect_in(simplify(e), acc);
 }
 
-// "0 = t1 + t2 ...": one line per few terms, so long equations wrap
-std::string equation_tex(const ex& e) {
+// "0 = t1 + t2 ...": the terms holding the row's variable first, the others in the order of
+// their printed form; one line per few terms, so long equations wrap
+std::string equation_tex(const ex& e, const ex& variable) {
     std::vector<std::string> terms;
     if (GiNaC::is_a<GiNaC::add>(e)) {
         std::vector<std::pair<std::string, ex>> keyed;
         for (std::size_t i = 0; i < e.nops(); ++i) keyed.emplace_back(to_string(e.op(i)), e.op(i));
-        std::stable_sort(keyed.begin(), keyed.end(),
-                         [](const auto& a, const auto& b) { return a.first < b.first; });
+        std::stable_sort(keyed.begin(), keyed.end(), [&](const auto& a, const auto& b) {
+            const bool va = a.second.has(variable), vb = b.second.has(variable);
+            return va != vb ? va : a.first < b.first;
+        });
         for (const auto& k : keyed) terms.push_back(to_latex(k.second));
     } else {
         terms.push_back(to_latex(e));
@@ -363,7 +366,7 @@ std::string row_json(const System& sys, const Evaluation& ev, const RoadmapRow& 
           str(r.motion == Motion::constraint ? "" : direction_words(sys, r.direction)));
     o.add("system", str_arr(names)).add("fbd", str_arr(r.fbd));
     o.add("about", str(r.about ? r.about->name() : "")).add("constraint", str(r.constraint));
-    o.add("equation", str(equation_tex(readable_equation(sys, r.equation))));
+    o.add("equation", str(equation_tex(readable_equation(sys, r.equation), r.variable)));
     o.add("intermediates", str_arr(intermediate_definitions(sys, r.equation)));
     o.add("additional_unknowns", str_arr(extra)).add("note", str(r.note));
     o.add("diagram", r.motion == Motion::constraint ? "null" : diagram_json(sys, ev, r));
@@ -531,7 +534,7 @@ std::string render_report_latex(const ReportContent& c) {
     t += "\\end{itemize}\n\n\\subsection*{Equations}\n";
     for (const RoadmapRow& r : c.rows) {
         t += "\\[ E_{" + to_latex(r.variable) + "}: \\quad " +
-             equation_tex(readable_equation(sys, r.equation)) + " \\]\n";
+             equation_tex(readable_equation(sys, r.equation), r.variable) + " \\]\n";
         std::vector<std::string> defs = intermediate_definitions(sys, r.equation);
         if (!defs.empty()) {
             t += "where\n";
