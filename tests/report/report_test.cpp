@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -74,7 +75,8 @@ TEST(Report, EachRowsFreeBodyDiagramHoldsTheLoadsExternalToItsSystem) {
     // the direction u = Nz, and the equation as TeX with the torque in it
     EXPECT_NE(c.find("\"direction\":[0,0,1]"), std::string::npos);
     // the row's unknown leads its equation
-    EXPECT_NE(c.find("\"equation\":\"\\\\begin{aligned} 0 ={} \\u0026 T_{C}"), std::string::npos) << c;
+    EXPECT_NE(c.find("\"equation\":\"\\\\begin{aligned} 0 ={} \\u0026 T_{C}"), std::string::npos)
+        << c;
     EXPECT_NE(c.find("\\\\begin{aligned}"), std::string::npos);
 }
 
@@ -158,8 +160,32 @@ TEST(Report, WritesIndexHtmlWithoutLeavingTemporaries) {
     std::stringstream text;
     text << in.rdbuf();
     EXPECT_NE(text.str().find("alembert-data"), std::string::npos);
+    // with Debian's libjs-katex, KaTeX is inlined and its fonts copied beside the page
+    if (std::filesystem::exists(default_katex_dir() + "/katex.min.js")) {
+        EXPECT_NE(text.str().find("KaTeX parse error"), std::string::npos);
+        EXPECT_TRUE(fs::exists(dir / "out" / "fonts" / "KaTeX_Main-Regular.woff2"));
+    }
     for (const auto& e : fs::recursive_directory_iterator(dir))
         EXPECT_NE(e.path().extension(), ".tmp") << e.path();
+    fs::remove_all(dir);
+}
+
+TEST(Report, WithoutKatexThePageStillWorksAndSaysHowToGetIt) {
+    SitToStand s;
+    namespace fs = std::filesystem;
+    const fs::path dir = fs::temp_directory_path() / "alembert_report_nokatex";
+    fs::remove_all(dir);
+    ::setenv("ALEMBERT_KATEX_DIR", (dir / "no-katex-here").c_str(), 1);
+    const std::string index = write_report(s.content, dir.string());
+    ::unsetenv("ALEMBERT_KATEX_DIR");
+    std::ifstream in(index);
+    std::stringstream text;
+    text << in.rdbuf();
+    EXPECT_EQ(text.str().find(".katex{"), std::string::npos);            // no KaTeX style
+    EXPECT_EQ(text.str().find("KaTeX parse error"), std::string::npos);  // no KaTeX script
+    EXPECT_FALSE(fs::exists(dir / "fonts"));
+    EXPECT_NE(text.str().find("install Debian's libjs-katex"),
+              std::string::npos);  // the viewer's note
     fs::remove_all(dir);
 }
 
