@@ -9,6 +9,8 @@ packages=(
   libboost-dev libfmt-dev libcli11-dev libedit-dev
   gnuplot-nox
   python3-numpy python3-scipy  # the tests run the generated Python
+  libjs-katex                  # HTML reports typeset their equations with KaTeX (inlined)
+  chromium                     # the tests open the HTML report in headless Chromium
 )
 
 missing=()

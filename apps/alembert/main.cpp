@@ -148,6 +148,25 @@ int print_roadmap(const RoadmapOptions& o) {
     return kOk;
 }
 
+// `alembert report`: the whole script runs (its files go into DIR, its transcript is not
+// printed), then the report of what it formed and computed is written to DIR/index.html
+struct ReportOptions {
+    std::string file;
+    std::string out;
+};
+
+int write_report_command(const ReportOptions& o) {
+    std::string text;
+    if (!read_script(o.file, text)) return kUsageError;
+    std::ostringstream discard;
+    Interpreter interp(discard, std::cerr, false);
+    interp.set_output_dir(o.out);
+    RunStatus s = interp.run(text, display_name(o.file));
+    if (s == RunStatus::ok) s = interp.write_report(o.out);
+    if (s == RunStatus::ok) std::cout << "wrote " << (std::filesystem::path(o.out) / "index.html").string() << "\n";
+    return exit_status(s);
+}
+
 // ---- the interactive session ------------------------------------------------------------
 
 // Ctrl-C: while a line is typed, it is dropped and a new prompt shown; while a statement runs,
@@ -316,6 +335,7 @@ int main(int argc, char** argv) {
     RunOptions run_opts;
     RoadmapOptions roadmap_opts;
     ModelCommandOptions inverse_opts, codegen_opts;
+    ReportOptions report_opts;
     // The subcommand table. Each row adds one subcommand and the function that carries it out,
     // so main() stays a dispatcher.
     struct Subcommand {
@@ -368,6 +388,13 @@ int main(int argc, char** argv) {
              c.add_option("--name", codegen_opts.name, "prefix of the files and functions (default: the script's name)");
          },
          [&] { return run_model_command(codegen_opts, false); }},
+        {"report", "Run a script and write its HTML report: road-map with free-body diagrams, equations, plots, motion",
+         [&](CLI::App& c) {
+             c.add_option("MODEL", report_opts.file, "the script; '-' reads standard input")->required();
+             c.add_option("--out", report_opts.out,
+                          "directory for index.html (and the files of simulate and inverse)")->required();
+         },
+         [&] { return write_report_command(report_opts); }},
     };
     std::vector<CLI::App*> commands;
     for (const Subcommand& s : table) {

@@ -54,3 +54,4 @@
 #include "alembert/sim/progress.hpp"
 #include "alembert/sim/simulation.hpp"
 #include "alembert/sim/table.hpp"
+#include "alembert/report/report.hpp"

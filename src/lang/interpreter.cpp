@@ -109,6 +109,11 @@ RunStatus Interpreter::run_codegen(const std::string& language, const std::strin
     });
 }
 
+RunStatus Interpreter::write_report(const std::string& dir) {
+    Impl& m = *impl_;
+    return run_command(m, m.script_file, [&] { (void)m.write_report_to(dir, {}, {1, 1}); });
+}
+
 RunStatus Interpreter::run(std::string_view source, const std::string& file, int first_line) {
     Impl& m = *impl_;
     m.last_error.reset();

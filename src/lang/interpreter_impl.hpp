@@ -109,6 +109,8 @@ struct Interpreter::Impl {
     std::string script_name = "model";  ///< the script's stem, naming the model in messages and files
     std::vector<std::string> including{};  ///< the files `include` is running, outermost first
     bool model_only = false;          ///< skip simulate, inverse and codegen
+    /// What simulate and inverse computed, in run order, for the report.
+    std::vector<ReportHistory> histories{};
 
     // ---- statements ------------------------------------------------------------------------
     /// Runs one parsed statement: its StatementSpec::run from the registry (statements.hpp),
@@ -135,6 +137,12 @@ struct Interpreter::Impl {
     void codegen(const Statement& s);
     void run_inverse(const InverseRequest& r, Location where);
     void run_codegen(const CodegenRequest& r, Location where);
+    // interpreter_report.cpp
+    void report(const Statement& s);
+    /// Writes the report of the model so far into `dir`; returns the path of its index.html.
+    std::string write_report_to(const std::string& dir, const exmap& configuration, Location where);
+    /// Records a table simulate or inverse wrote, with the motion behind it when known.
+    void record_history(const std::string& title, const Table& table, const MotionSamples* motion);
     ex quantity_expression(const Quantity& q, const Dimension& expected, const std::string& what);
     bool is_coordinate(const ex& x, int order);
     std::string output_path(const Statement& s) const;

@@ -348,6 +348,7 @@ void Interpreter::Impl::simulate(const Statement& s) {
                                  "means the coordinates do not fix the model's configuration");
     const std::string dir = output_path(s);
     PlotResult plot = guard(s.location, [&] { return write_table_and_plot(res.table, dir, "simulation"); });
+    record_history("simulation", res.table, nullptr);
     std::ostringstream out;
     out << "simulated t = " << transcript.number(r.options.t_initial) << " to " << transcript.number(res.t_end) << " s";
     if (!res.stopped_by.empty()) out << ", stopped when " << res.stopped_by;
@@ -468,12 +469,12 @@ void Interpreter::Impl::run_inverse(const InverseRequest& r, Location where) {
         const auto steps = static_cast<std::size_t>(std::floor((o.t_final - o.t_initial) / o.output_step + 1e-9));
         for (std::size_t k = 0; k <= steps; ++k) times.push_back(o.t_initial + static_cast<double>(k) * o.output_step);
         if (times.back() < o.t_final - 1e-12) times.push_back(o.t_final);
-        rep = guard(where, [&] {
-            PrescribedMotion motion(table, q, formulas);
-            return run_inverse_dynamics(id, motion.sample(times), r.dir, opts);
-        });
+        MotionSamples samples = guard(where, [&] { return PrescribedMotion(table, q, formulas).sample(times); });
+        rep = guard(where, [&] { return run_inverse_dynamics(id, samples, r.dir, opts); });
         span = "the prescribed motion";
+        record_history("inverse dynamics", rep.loads, &samples);
     }
+    if (!r.motion_file.empty()) record_history("inverse dynamics", rep.loads, nullptr);
     const Table& t = rep.loads;
     std::ostringstream out;
     out << "inverse dynamics over " << span << ", t = " << transcript.number(t.columns[0].front()) << " to "
@@ -680,6 +681,15 @@ void parse_run(StatementParser& p, Statement& s) {
                           "write inverse for T_A, T_B");
 }
 
+// report [at q = value, ...] [to "dir"]
+void parse_report(StatementParser& p, Statement& s) {
+    while (!p.at_end()) {
+        if (p.accept_word("at")) s.bindings["at"] = p.bindings("a coordinate");
+        else if (p.accept_word("to")) s.words["to"] = p.text("the output directory");
+        else p.fail_expected("'at' or 'to'");
+    }
+}
+
 }  // namespace
 
 // ---- the statements ----------------------------------------------------------------------
@@ -752,6 +762,12 @@ std::vector<StatementSpec> number_statements() {
                     "the same over a motion table (columns `t [s]` and one per coordinate, units in the header), filtered at f (default 6 Hz; 0: none) and differentiated"}},
          .clauses = {"for", "from", "cutoff", "compiled", "to"}, .parse = parse_run,
          .run = [](M& m, const Statement& s) { m.inverse(s); }},
+        {.keyword = "report", .family = family,
+         .help = "writes an HTML report: road-map with free-body diagrams, equations, plots, motion",
+         .forms = {{"`report` [`at` *q = value, ...*] [`to` *\"dir\"*]",
+                    "report at qA = 20 deg, qB = -70 deg, qC = 60 deg to \"report\"",
+                    "`write_report`: `index.html` (self-contained; KaTeX's fonts in `fonts/`) and `roadmap.tex` (the table, loads and equations for LaTeX) with the model, the last road-map (or the planned one) with each row's free-body diagram drawn at the `at` configuration (default: the first sample of the motion, else the initial values), the equations typeset, the tables simulate and inverse wrote as plots, and the motion animated"}},
+         .clauses = {"at", "to"}, .parse = parse_report, .run = [](M& m, const Statement& s) { m.report(s); }},
         {.keyword = "codegen", .family = family,
          .help = "generates C, C++, MATLAB or Python code for the model's equations",
          .forms = {{"`codegen` *c\\|cpp\\|matlab\\|python* [`name` *N*] [`for` *loads*] [`to` *\"dir\"*]",

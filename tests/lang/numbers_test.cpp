@@ -296,3 +296,48 @@ TEST(Digits, OnlyWholeNumbersFromOneToSeventeen) {
     ASSERT_EQ(interp.run("newtonian N\nconstant a = 2\nevaluate sqrt(a)\n", "t.alb"), RunStatus::ok);
     EXPECT_EQ(out.str(), "= 1.41\n");
 }
+
+TEST(Report, TheStatementDrawsTheRoadmapAtTheGivenConfigurationAndAnimatesTheSimulation) {
+    TempDir dir;
+    Script r(dir.path);
+    r.run(sit_to_stand_model() + "roadmap E for T_A, T_B, T_C\n"
+          "initial qA = 20 deg, qB = -70 deg, qC = 60 deg\nfinal time 0.2 s\noutput step 0.05 s\n"
+          "simulate to \"fall\"\nreport at qA = 10 deg to \"rep\"\n");
+    EXPECT_NE(r.out.str().find("wrote rep/index.html"), std::string::npos) << r.out.str();
+    std::ifstream in(dir.path / "rep" / "index.html");
+    std::stringstream page;
+    page << in.rdbuf();
+    const std::string html = page.str();
+    // qA as given, qB and qC from the first sample of the motion (SI)
+    EXPECT_NE(html.find("\"configuration\":[{\"name\":\"qA\",\"value\":0.174533},{\"name\":\"qB\",\"value\":-1.22173},"
+                        "{\"name\":\"qC\",\"value\":1.0472}]"),
+              std::string::npos);
+    EXPECT_NE(html.find("\"animation\":{\"source\":\"simulation\""), std::string::npos);
+    EXPECT_NE(html.find("{\"variable\":\"T_B\""), std::string::npos);
+}
+
+TEST(Report, AtNamesCoordinatesOnly) {
+    TempDir dir;
+    std::ostringstream out, err;
+    Interpreter interp(out, err, false);
+    interp.set_output_dir(dir.path.string());
+    EXPECT_EQ(interp.run(sit_to_stand_model() + "report at T_A = 1 N*m\n", "test.alb"), RunStatus::script_error);
+    EXPECT_NE(err.str().find("'T_A' is not a coordinate or rate"), std::string::npos) << err.str();
+    EXPECT_NE(err.str().find("report at qA = 20 deg"), std::string::npos) << err.str();
+}
+
+TEST(Report, AModelThePlannerCannotPlanGetsANoteInsteadOfARoadmap) {
+    TempDir dir;
+    Script r(dir.path);
+    // a pendulum hung from nowhere: no point of A is fixed, so no about point removes the pivot
+    r.run("newtonian N\nbody A\nvariable q'\nconstant L = 1 m, m = 1 kg, I = 1 kg*m^2, g = 9.81 m/s^2\n"
+          "rotate A from N about z by q\ntranslate Acm from N_o by L*Ay>\nmass A = m\ninertia A = 0, 0, I\n"
+          "gravity -g*Ny>\nreport\n");
+    std::ifstream in(dir.path / "index.html");
+    std::stringstream page;
+    page << in.rdbuf();
+    EXPECT_NE(page.str().find("\"notes\":[\"No road-map: the script forms none and planning one failed: plan_roadmap(): "),
+              std::string::npos);
+    EXPECT_NE(page.str().find("; form one in the script (roadmap E for ...) to see it here.\"]"), std::string::npos);
+    EXPECT_NE(page.str().find("\"roadmap\":[]"), std::string::npos);
+}

@@ -76,6 +76,9 @@ public:
     /// Code for the model in `language` (c, cpp, matlab, python) written to the output
     /// directory, named `name` (empty: the script's name): `alembert codegen`.
     RunStatus run_codegen(const std::string& language, const std::string& name);
+    /// The HTML report of the model run so far (the `report` statement's work) written to
+    /// `dir`/index.html: `alembert report`. Errors go to `err`.
+    RunStatus write_report(const std::string& dir);
     /// The model built so far, or nullptr before `newtonian`.
     const System* system() const;
 

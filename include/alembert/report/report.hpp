@@ -1,0 +1,72 @@
+// SPDX-License-Identifier: MIT
+// The HTML report: the model, the road-map with free-body diagrams, equations, plots, motion.
+#pragma once
+
+#include <map>
+#include <string>
+#include <vector>
+
+#include "alembert/eom/roadmap.hpp"
+#include "alembert/sim/table.hpp"
+
+namespace alembert {
+
+/// A time history to plot: a table whose first column is the time, and, when the motion is
+/// known, the coordinates at each of its rows (SI) for the animation.
+struct ReportHistory {
+    std::string title{};                        ///< "inverse dynamics", "simulation"
+    Table table{};                              ///< t, then the series, in their units
+    std::vector<TimeVariable> coordinates{};    ///< the coordinates `motion` holds
+    std::vector<std::vector<double>> motion{};  ///< motion[k][row]: coordinate k at each row (SI)
+};
+
+/// Everything a report shows. The page is a function of this alone (no clock, no paths), so
+/// the same content gives the same bytes.
+struct ReportContent {
+    const System* system = nullptr;
+    std::string title{};             ///< the model's name
+    std::vector<RoadmapRow> rows{};  ///< formed road-map rows
+    std::vector<TimeVariable> coordinates{};
+    /// Values of coordinates (and rates) at which free-body diagrams are drawn (SI); those
+    /// missing are 0. Constants take their values from the model's symbol table.
+    exmap configuration{};
+    /// The unit each name is shown in ("deg" for qA, "N*m" for T_A); empty names have none.
+    std::map<std::string, std::string> units{};
+    std::vector<ReportHistory> histories{};
+    /// Remarks shown at the top of the page (why there is no road-map, ...).
+    std::vector<std::string> notes{};
+};
+
+/// The report as one HTML page: the content as JSON inside the page and the fixed viewer
+/// (src/report/viewer) inlined, with KaTeX's script and style when `katex_dir` holds them.
+/// Free-body diagrams and animation frames are computed here, from the model's points at the
+/// configuration: for each row, the loads external to S (as describe_free_body_diagram lists
+/// them; gravity one arrow per mass centre), the about point and the direction.
+/// @throws alembert::ArgumentError if the content has no system.
+std::string render_report_html(const ReportContent& content, const std::string& katex_dir);
+
+/// The content's data alone, as the JSON the page embeds (deterministic key and row order).
+std::string render_report_json(const ReportContent& content);
+
+/// The road-map as a LaTeX document (article, amsmath) for a paper or a homework solution: the
+/// table in the seed's columns, each row's free-body diagram as the list of its loads, and the
+/// equations, one display each, with the named intermediates they use defined after them.
+std::string render_report_latex(const ReportContent& content);
+
+/// Where KaTeX is read from: $ALEMBERT_KATEX_DIR if set, else the build's default (Debian's
+/// libjs-katex, /usr/share/javascript/katex).
+std::string default_katex_dir();
+
+/// Writes DIR/index.html (and KaTeX's fonts in DIR/fonts/) and DIR/roadmap.tex
+/// (render_report_latex), each written to a temporary and
+/// renamed; DIR is created if needed. Without KaTeX the page shows the TeX source and says
+/// how to install it. Returns the path of index.html.
+/// @throws alembert::ArgumentError naming DIR if it cannot be created or written.
+std::string write_report(const ReportContent& content, const std::string& dir);
+
+/// `e` as TeX: terms and factors in a deterministic order (sorted by their printed form),
+/// products as \frac where there are negative powers, sin and cos as \sin and \cos, primes
+/// kept (qA''), names with an underscore subscripted (T_A -> T_{A}).
+std::string to_latex(const ex& e);
+
+}  // namespace alembert

@@ -1,0 +1,170 @@
+// SPDX-License-Identifier: MIT
+// The report page: the data as JSON, the fixed viewer and KaTeX, written atomically.
+#include "alembert/report/report.hpp"
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "alembert/error.hpp"
+#include "report_detail.hpp"
+
+namespace alembert {
+
+namespace report_detail {
+
+std::string json_escape(const std::string& s) {
+    std::string o;
+    for (char ch : s) {
+        switch (ch) {
+            case '"':
+                o += "\\\"";
+                break;
+            case '\\':
+                o += "\\\\";
+                break;
+            case '\n':
+                o += "\\n";
+                break;
+            case '\t':
+                o += "\\t";
+                break;
+            case '<':
+                o += "\\u003c";
+                break;
+            case '>':
+                o += "\\u003e";
+                break;
+            case '&':
+                o += "\\u0026";
+                break;
+            default:
+                if (static_cast<unsigned char>(ch) < 0x20) {
+                    char buf[8];
+                    std::snprintf(buf, sizeof buf, "\\u%04x", ch);
+                    o += buf;
+                } else {
+                    o += ch;
+                }
+        }
+    }
+    return o;
+}
+
+}  // namespace report_detail
+
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string read_text(const fs::path& p) {
+    std::ifstream in(p, std::ios::binary);
+    if (!in) return "";
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+std::string html_escape(const std::string& s) {
+    std::string o;
+    for (char c : s) {
+        if (c == '<')
+            o += "&lt;";
+        else if (c == '>')
+            o += "&gt;";
+        else if (c == '&')
+            o += "&amp;";
+        else if (c == '"')
+            o += "&quot;";
+        else
+            o += c;
+    }
+    return o;
+}
+
+void write_atomically(const fs::path& path, const std::string& bytes, const char* caller) {
+    fs::path temporary = path;
+    temporary += ".tmp";
+    {
+        std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+        if (!out)
+            throw ArgumentError(std::string(caller) + ": cannot write '" + path.string() +
+                                "'; check that the directory is writable");
+        out << bytes;
+        out.close();
+        if (!out) {
+            std::error_code ec;
+            fs::remove(temporary, ec);
+            throw ArgumentError(std::string(caller) + ": writing '" + path.string() +
+                                "' failed (disk full?)");
+        }
+    }
+    std::error_code ec;
+    fs::rename(temporary, path, ec);
+    if (ec) {
+        fs::remove(temporary, ec);
+        throw ArgumentError(std::string(caller) + ": cannot replace '" + path.string() + "' (" +
+                            ec.message() + ")");
+    }
+}
+
+}  // namespace
+
+std::string default_katex_dir() {
+    if (const char* env = std::getenv("ALEMBERT_KATEX_DIR"); env && *env) return env;
+    return ALEMBERT_KATEX_DIR;
+}
+
+std::string render_report_html(const ReportContent& content, const std::string& katex_dir) {
+    const std::string json = render_report_json(content);
+    const fs::path katex(katex_dir);
+    const std::string katex_js = katex_dir.empty() ? "" : read_text(katex / "katex.min.js");
+    const std::string katex_css = katex_dir.empty() ? "" : read_text(katex / "katex.min.css");
+    std::string page;
+    page.reserve(json.size() + katex_js.size() + katex_css.size() + 64000);
+    page += "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n";
+    page += "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n";
+    page += "<meta name=\"generator\" content=\"Alembert\">\n";
+    page += "<title>" + html_escape(content.title) + " - Alembert report</title>\n";
+    if (!katex_css.empty()) page += "<style>\n" + katex_css + "\n</style>\n";
+    page += "<style>\n" + std::string(report_detail::kViewerStyle) + "</style>\n";
+    if (!katex_js.empty()) page += "<script>\n" + katex_js + "\n</script>\n";
+    page += "</head>\n<body>\n";
+    page += "<div id=\"alembert-status\" data-status=\"loading\">loading the report...</div>\n";
+    page += "<pre id=\"alembert-errors\"></pre>\n<main id=\"report\"></main>\n";
+    page += "<script type=\"application/json\" id=\"alembert-data\">" + json + "</script>\n";
+    page += "<script>\n" + std::string(report_detail::kViewerScript) + "</script>\n";
+    page += "</body>\n</html>\n";
+    return page;
+}
+
+std::string write_report(const ReportContent& content, const std::string& dir) {
+    const fs::path out(dir);
+    std::error_code ec;
+    fs::create_directories(out, ec);
+    if (ec || !fs::is_directory(out))
+        throw ArgumentError("write_report(): cannot create the directory '" + dir + "' (" +
+                            (ec ? ec.message() : std::string("a file is in the way")) +
+                            "); choose another --out or remove the file");
+    const std::string katex = default_katex_dir();
+    const bool have_katex = fs::is_regular_file(fs::path(katex) / "katex.min.js", ec);
+    const std::string page = render_report_html(content, have_katex ? katex : "");
+    // KaTeX's stylesheet names its fonts relative to the page: fonts/KaTeX_*.woff2
+    if (have_katex) {
+        fs::create_directories(out / "fonts", ec);
+        for (const auto& entry : fs::directory_iterator(fs::path(katex) / "fonts", ec)) {
+            if (entry.path().extension() != ".woff2") continue;
+            write_atomically(out / "fonts" / entry.path().filename(), read_text(entry.path()),
+                             "write_report()");
+        }
+    }
+    write_atomically(out / "roadmap.tex", render_report_latex(content), "write_report()");
+    const fs::path index = out / "index.html";
+    write_atomically(index, page, "write_report()");
+    return index.string();
+}
+
+}  // namespace alembert

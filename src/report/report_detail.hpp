@@ -1,0 +1,16 @@
+// SPDX-License-Identifier: MIT
+// Helpers shared by the report's sources (private to src/report).
+#pragma once
+
+#include <string>
+
+namespace alembert::report_detail {
+
+/// `s` as the inside of a JSON string; '<' escaped too, so the JSON can sit in a <script>.
+std::string json_escape(const std::string& s);
+
+/// The viewer's script and style (src/report/viewer), compiled in.
+extern const char* const kViewerScript;
+extern const char* const kViewerStyle;
+
+}  // namespace alembert::report_detail

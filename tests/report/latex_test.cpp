@@ -1,0 +1,31 @@
+// SPDX-License-Identifier: MIT
+// to_latex: expressions as TeX for KaTeX, in a deterministic order.
+#include <gtest/gtest.h>
+
+#include "alembert/report/report.hpp"
+
+namespace alembert {
+namespace {
+
+TEST(Latex, SubscriptsPrimesFunctionsAndFractions) {
+    SymbolTable st;
+    TimeVariable q = st.add_variable("qA", 2);
+    ex T = st.add_unknown("T_A"), m = st.add_constant("m_A"), L = st.add_constant("L");
+    EXPECT_EQ(to_latex(T), "T_{A}");
+    EXPECT_EQ(to_latex(q.d(2)), "{qA}''");
+    EXPECT_EQ(to_latex(GiNaC::sin(q.symbol())), "\\sin\\left(qA\\right)");
+    EXPECT_EQ(to_latex(m / L), "\\frac{m_{A}}{L}");
+    EXPECT_EQ(to_latex(ex(1) / 2 * m), "\\frac{m_{A}}{2}");
+    EXPECT_EQ(to_latex(T - m * L), "-L \\, m_{A} + T_{A}");
+    EXPECT_EQ(to_latex(GiNaC::pow(L, 2)), "L^{2}");
+    EXPECT_EQ(to_latex(GiNaC::sqrt(L)), "\\sqrt{L}");
+}
+
+TEST(Latex, SameExpressionBuiltInAnyOrderPrintsTheSame) {
+    SymbolTable st;
+    ex a = st.add_constant("a"), b = st.add_constant("b"), c = st.add_constant("c");
+    EXPECT_EQ(to_latex(a * b + c - a), to_latex(c - a + b * a));
+}
+
+}  // namespace
+}  // namespace alembert
