@@ -82,7 +82,8 @@ Plan plan_coordinate(const System& sys, const TimeVariable& q) {
     }
     // check: S turns as one body about O (partials w0 and w0 x r^{cm/O})
     for (std::size_t i = 0; i < p.S.size(); ++i) {
-        bool rigid = zero(sys, pw[i] - w0) &&
+        // (a particle has no orientation: only its velocity counts)
+        bool rigid = (!p.S[i]->frame() || zero(sys, pw[i] - w0)) &&
                      zero(sys, pv[i] - cross(w0, p.S[i]->cm().pos_from(*p.O)));
         if (!rigid) {
             p.note = "S does not turn as one body about " + p.O->name() + " when only " +

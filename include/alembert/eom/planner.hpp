@@ -16,8 +16,12 @@ namespace alembert {
 /// point O of S whose partial velocity is zero (the joint, where the unknown forces between S
 /// and the rest act, so they drop out); if S only slides, the row translates along the
 /// partial velocity direction. The planner then checks that S moves as one rigid body about
-/// O (partial velocities of every mass centre equal u x r^{cm/O}); where that fails (closed
-/// loops, rolling), it says so in the row's note.
+/// O (partial angular velocities of every rigid body of S equal u, partial velocities of
+/// every mass centre equal u x r^{cm/O}); where that fails (closed loops, rolling), it says
+/// so in the row's note. These zero tests, and those that decide which unknowns a row holds,
+/// are made at random states through the named intermediates (a symbolic test misses
+/// cancellations inside them), with a symbolic fallback for small expressions that cannot
+/// be evaluated there.
 ///
 /// `unknowns` are what the rows solve for: accelerations q_i'' (forward dynamics), torque or
 /// force measures (inverse dynamics, statics), or coordinates q_i (statics). A coordinate's own
