@@ -207,3 +207,34 @@ TEST(JointReactions, SpatialChainReactionsMatchNewtonEuler) {
         EXPECT_LT(c.max_difference, kAgree) << n << " links";
     }
 }
+
+TEST(JointReactions, FourBarCrankPinRowComesAfterTheLoopItNeeds) {
+    // statics of the four-bar with the crank-coupler pin's force along Nx> as an unknown too:
+    // its row (S = {B}, what lies beyond the pin, along Nx>) holds the loop's pin force F_x
+    // and the loop's angles, so it is solved after the block that gives them
+    SampleModel m = make_four_bar();
+    System& sys = m.system;
+    ex R = sys.symbols().add_unknown("R_AB_x");
+    sys.add_joint_reaction("crank pin", m.links[0], *m.links[1], sys.point("B_o"),
+                           {{R, sys.newtonian().x()}});
+    ex T = m.unknowns[0], Fx = m.unknowns[1], Fy = m.unknowns[2];
+    std::vector<ex> unknowns{R, T, Fx, Fy, m.q[1].symbol(), m.q[2].symbol()};
+    std::vector<RoadmapRow> rows = plan_roadmap(sys, m.q, unknowns, Analysis::statics);
+    ASSERT_EQ(rows.size(), 6u);
+    auto position = [&](const ex& x) {
+        for (std::size_t i = 0; i < rows.size(); ++i)
+            if (rows[i].variable.is_equal(x)) return i;
+        ADD_FAILURE() << "no row for " << x;
+        return rows.size();
+    };
+    const std::size_t r = position(R);
+    for (const ex& x : {Fx, Fy, m.q[1].symbol(), m.q[2].symbol()}) EXPECT_LT(position(x), r) << x;
+    const RoadmapRow& row = rows[r];
+    EXPECT_EQ(row.motion, Motion::translate);
+    EXPECT_EQ(body_names(row.system), std::vector<std::string>{"B"});
+    EXPECT_TRUE(holds(row.additional_unknowns, Fx));
+    EXPECT_FALSE(holds(row.additional_unknowns, Fy));  // along Ny>, normal to the row's Nx>
+    EXPECT_FALSE(holds(row.additional_unknowns, T));
+    // solved after the block it needs: no note
+    EXPECT_TRUE(row.note.empty()) << row.note;
+}
