@@ -282,7 +282,8 @@ CodePlan plan_code(const SymbolTable& table, const DynamicsEquations& eq,
             .arrays = {"q", "qp", "qpp"},
             .results = {"u"},
             .result_sizes = {eq.loads.size()},
-            .program = compile(table, symbols({&q, &qp, &qpp}), u, compile_options, "inverse dynamics"),
+            .program =
+                compile(table, symbols({&q, &qp, &qpp}), u, compile_options, "inverse dynamics"),
             .input_names = input_names({&q_names, &qp_names, &qpp_names}),
             .parameter_names = parameter_names};
     }

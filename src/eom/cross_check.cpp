@@ -170,8 +170,9 @@ ReactionComparison compare_reactions(const System& sys, const std::vector<TimeVa
                                      int states, unsigned seed) {
     const SymbolTable& st = sys.symbols();
     if (sys.joint_reactions().empty())
-        throw ModelError("compare_reactions(): the model declares no joint reaction; declare "
-                         "one with System::add_joint_reaction");
+        throw ModelError(
+            "compare_reactions(): the model declares no joint reaction; declare "
+            "one with System::add_joint_reaction");
     std::vector<ex> acc, measures;
     for (const TimeVariable& qi : q) acc.push_back(qi.d(2));
     for (const JointReaction& jr : sys.joint_reactions())
@@ -221,7 +222,8 @@ ReactionComparison compare_reactions(const System& sys, const std::vector<TimeVa
             const Body* ne_parent = c.kind == LoadKind::force ? j->parent : j->torque_parent;
             if (ne_parent != jr.parent)
                 throw ModelError("compare_reactions(): Newton–Euler joins '" + jr.child->name() +
-                                 "' to '" + (ne_parent ? ne_parent->name() : sys.newtonian().name()) +
+                                 "' to '" +
+                                 (ne_parent ? ne_parent->name() : sys.newtonian().name()) +
                                  "', but the reaction '" + jr.name + "' is declared from '" +
                                  parent + "'; declare it from the body the child is placed from");
             if (c.kind == LoadKind::force) {
@@ -229,7 +231,8 @@ ReactionComparison compare_reactions(const System& sys, const std::vector<TimeVa
                 by_ne.push_back(dot(c.direction, j->force));
             } else {
                 by_roadmap.push_back(dot(c.direction, T));
-                by_ne.push_back(dot(c.direction, j->torque + cross(j->at->pos_from(*jr.at), j->force)));
+                by_ne.push_back(
+                    dot(c.direction, j->torque + cross(j->at->pos_from(*jr.at), j->force)));
             }
         }
     }
@@ -263,8 +266,8 @@ ReactionComparison compare_reactions(const System& sys, const std::vector<TimeVa
         projections.evaluate_extended(in.data(), p.data());
         const auto m = static_cast<Eigen::Index>(measures.size());
         for (Eigen::Index i = 0; i < m; ++i) {
-            double d = static_cast<double>(std::abs(p(i) - p(m + i)) /
-                                           std::max(1.0L, std::abs(p(m + i))));
+            double d =
+                static_cast<double>(std::abs(p(i) - p(m + i)) / std::max(1.0L, std::abs(p(m + i))));
             out.differences[static_cast<std::size_t>(i)] =
                 std::max(out.differences[static_cast<std::size_t>(i)], d);
             out.max_difference = std::max(out.max_difference, d);

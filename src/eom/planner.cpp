@@ -114,13 +114,13 @@ BodySet calc_bodies_beyond(const System& sys, const JointReaction& reaction) {
     const Body& child = *reaction.child;
     BodySet S;
     for (const Body* b : sys.bodies()) {
-        bool beyond = b == &child || placed_from(&b->cm(), child) ||
-                      oriented_from(b->frame(), child.frame());
+        bool beyond =
+            b == &child || placed_from(&b->cm(), child) || oriented_from(b->frame(), child.frame());
         if (!beyond) continue;
         if (b == reaction.parent)
-            throw ModelError("plan_roadmap(): the joint reaction '" + reaction.name + "' acts on '" +
-                             child.name() + "' from '" + b->name() + "', but '" + b->name() +
-                             "' is placed from '" + child.name() +
+            throw ModelError("plan_roadmap(): the joint reaction '" + reaction.name +
+                             "' acts on '" + child.name() + "' from '" + b->name() + "', but '" +
+                             b->name() + "' is placed from '" + child.name() +
                              "'; declare the reaction with its parent and child swapped");
         S.push_back(b);
     }
@@ -135,8 +135,10 @@ RoadmapRow plan_reaction(const System& sys, const JointReaction& reaction,
                          const ReactionComponent& c, Analysis analysis) {
     RoadmapRow r{.variable = c.measure,
                  .motion = c.kind == LoadKind::force ? Motion::translate : Motion::rotate,
-                 .direction = c.direction, .system = calc_bodies_beyond(sys, reaction),
-                 .about = reaction.at, .analysis = analysis};
+                 .direction = c.direction,
+                 .system = calc_bodies_beyond(sys, reaction),
+                 .about = reaction.at,
+                 .analysis = analysis};
     // S should meet the rest only at this joint; other joints leave their forces in the row
     std::string elsewhere;
     for (const Point* p : sys.points()) {
@@ -153,7 +155,8 @@ RoadmapRow plan_reaction(const System& sys, const JointReaction& reaction,
         elsewhere += (elsewhere.empty() ? "" : ", ") + p->name();
     }
     if (!elsewhere.empty())
-        r.note = "S is joined to the rest at " + elsewhere + " too; the constraint forces there "
+        r.note = "S is joined to the rest at " + elsewhere +
+                 " too; the constraint forces there "
                  "stay in this row";
     return r;
 }
@@ -217,7 +220,8 @@ namespace {
 // holds the unknown of row j"), in an order in which each block needs only the unknowns of
 // blocks before it; ties keep the rows' order. Tarjan's algorithm, then a stable topological
 // sort of the components.
-std::vector<std::vector<std::size_t>> solve_order(const std::vector<std::vector<std::size_t>>& deps) {
+std::vector<std::vector<std::size_t>> solve_order(
+    const std::vector<std::vector<std::size_t>>& deps) {
     const std::size_t n = deps.size();
     std::vector<int> index(n, -1), low(n, 0), comp(n, -1);
     std::vector<bool> on_stack(n, false);
@@ -256,7 +260,8 @@ std::vector<std::vector<std::size_t>> solve_order(const std::vector<std::vector<
             }
             std::size_t done = v;
             frames.pop_back();
-            if (!frames.empty()) low[frames.back().first] = std::min(low[frames.back().first], low[done]);
+            if (!frames.empty())
+                low[frames.back().first] = std::min(low[frames.back().first], low[done]);
         }
     }
     std::vector<std::vector<std::size_t>> members(static_cast<std::size_t>(n_comp));
@@ -271,7 +276,8 @@ std::vector<std::vector<std::size_t>> solve_order(const std::vector<std::vector<
             bool ready = true;
             for (std::size_t i : members[c])
                 for (std::size_t w : deps[i])
-                    if (static_cast<std::size_t>(comp[w]) != c && !placed[static_cast<std::size_t>(comp[w])])
+                    if (static_cast<std::size_t>(comp[w]) != c &&
+                        !placed[static_cast<std::size_t>(comp[w])])
                         ready = false;
             if (ready && (best == members.size() || members[c].front() < members[best].front()))
                 best = c;
@@ -303,21 +309,23 @@ std::vector<RoadmapRow> plan_roadmap(const System& sys,
     std::vector<ex> shared;
     std::size_t n_reactions = 0;
     for (const ex& x : unknowns) {
-        if (sys.reaction_of(x)) ++n_reactions;
-        else shared.push_back(x);
+        if (sys.reaction_of(x))
+            ++n_reactions;
+        else
+            shared.push_back(x);
     }
     const std::size_t n_rows = coordinates.size() + constraint_rows.size();
     if (shared.size() > n_rows)
-        throw ModelError("plan_roadmap(): " + std::to_string(shared.size()) +
-                         " unknowns but only " + std::to_string(coordinates.size()) +
-                         " coordinates and " + std::to_string(constraint_rows.size()) +
-                         " constraint rows" +
-                         (n_reactions ? " (besides " + std::to_string(n_reactions) +
-                                            " joint-reaction measures, which have rows of their own)"
-                                      : std::string()) +
-                         "; each row determines one unknown, so declare fewer unknowns, declare "
-                         "the model's constraints, or declare constraint forces as joint "
-                         "reactions (System::add_joint_reaction, the reaction statement)");
+        throw ModelError(
+            "plan_roadmap(): " + std::to_string(shared.size()) + " unknowns but only " +
+            std::to_string(coordinates.size()) + " coordinates and " +
+            std::to_string(constraint_rows.size()) + " constraint rows" +
+            (n_reactions ? " (besides " + std::to_string(n_reactions) +
+                               " joint-reaction measures, which have rows of their own)"
+                         : std::string()) +
+            "; each row determines one unknown, so declare fewer unknowns, declare "
+            "the model's constraints, or declare constraint forces as joint "
+            "reactions (System::add_joint_reaction, the reaction statement)");
     std::vector<Plan> plans;
     for (const TimeVariable& q : coordinates) plans.push_back(plan_coordinate(sys, q));
 
@@ -379,14 +387,16 @@ std::vector<RoadmapRow> plan_roadmap(const System& sys,
     std::size_t k = 0;
     for (const ex& x : unknowns) {
         if (const JointReaction* jr = sys.reaction_of(x)) {
-            auto c = std::find_if(jr->components.begin(), jr->components.end(),
-                                  [&](const ReactionComponent& rc) { return rc.measure.is_equal(x); });
+            auto c =
+                std::find_if(jr->components.begin(), jr->components.end(),
+                             [&](const ReactionComponent& rc) { return rc.measure.is_equal(x); });
             RoadmapRow r = plan_reaction(sys, *jr, *c, analysis);
             form_roadmap_row(sys, r, unknowns);
             if (!r.equation.has(x))
-                throw ModelError("plan_roadmap(): the row of the reaction measure '" + to_string(x) +
-                                 "' of '" + jr->name + "' does not hold it (S = what moves beyond '" +
-                                 jr->child->name() + "' does not feel it); check the reaction's "
+                throw ModelError("plan_roadmap(): the row of the reaction measure '" +
+                                 to_string(x) + "' of '" + jr->name +
+                                 "' does not hold it (S = what moves beyond '" + jr->child->name() +
+                                 "' does not feel it); check the reaction's "
                                  "direction and its parent and child");
             rows.push_back(std::move(r));
             reaction_row.push_back(true);
@@ -399,15 +409,20 @@ std::vector<RoadmapRow> plan_roadmap(const System& sys,
             // holds, so only the one it is now for leaves the list
             RoadmapRow r = constraint_rows[i - coordinates.size()];
             r.variable = x;
-            std::erase_if(r.additional_unknowns, [&](const ex& y) { return y.is_equal(r.variable); });
+            std::erase_if(r.additional_unknowns,
+                          [&](const ex& y) { return y.is_equal(r.variable); });
             rows.push_back(std::move(r));
             continue;
         }
         const Plan& p = plans[i];
         if (p.motion == Motion::rotate && !p.O)
             throw ModelError("plan_roadmap(): " + p.note + " (unknown '" + to_string(x) + "')");
-        RoadmapRow r{.variable = x, .motion = p.motion, .direction = p.u,
-                     .system = p.S, .about = p.O, .analysis = analysis};
+        RoadmapRow r{.variable = x,
+                     .motion = p.motion,
+                     .direction = p.u,
+                     .system = p.S,
+                     .about = p.O,
+                     .analysis = analysis};
         r.note = p.note;
         form_roadmap_row(sys, r, unknowns);
         rows.push_back(std::move(r));

@@ -560,11 +560,13 @@ void Interpreter::Impl::run_codegen(const CodegenRequest& r, Location where) {
     GeneratedCode g = guard(where, [&] {
         // joint-reaction measures among the loads: inverse dynamics from the road-map rows
         std::vector<ex> inverse_residuals;
-        if (std::any_of(loads.begin(), loads.end(), [&](const ex& x) { return sys.reaction_of(x); }))
+        if (std::any_of(loads.begin(), loads.end(),
+                        [&](const ex& x) { return sys.reaction_of(x); }))
             inverse_residuals = residuals_of(plan_roadmap(sys, q, loads));
         if (std::optional<TreeEquations> t = form_tree_equations_if_tree(sys, q)) {
             tree = true;
-            DynamicsEquations eqs{q, t->residuals, loads, std::nullopt, t->accelerations, inverse_residuals};
+            DynamicsEquations eqs{
+                q, t->residuals, loads, std::nullopt, t->accelerations, inverse_residuals};
             return generate_code(table, eqs, language, r.dir, opts);
         }
         KaneEquations k = form_kane_equations(sys, KaneOptions{.coordinates = q});

@@ -109,11 +109,19 @@ const JointReaction& System::add_joint_reaction(const std::string& name, const B
         const Vector v = c.measure * c.direction;
         const LoadKind kind = c.kind;
         const Point* point = kind == LoadKind::force ? &at : nullptr;
-        loads_.push_back(Load{.kind = kind, .label = label, .point = point, .vector = v,
-                              .on = &child, .from = parent});
+        loads_.push_back(Load{.kind = kind,
+                              .label = label,
+                              .point = point,
+                              .vector = v,
+                              .on = &child,
+                              .from = parent});
         if (parent)
-            loads_.push_back(Load{.kind = kind, .label = label, .point = point, .vector = -v,
-                                  .on = parent, .from = &child});
+            loads_.push_back(Load{.kind = kind,
+                                  .label = label,
+                                  .point = point,
+                                  .vector = -v,
+                                  .on = parent,
+                                  .from = &child});
     }
     reactions_.push_back(std::move(r));
     return reactions_.back();

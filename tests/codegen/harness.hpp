@@ -108,8 +108,8 @@ inline CodegenCase triple_pendulum_reactions_case() {
         loads.push_back(Ry);
     }
     KaneEquations k = form_kane_equations(sys, KaneOptions{.coordinates = c.model->q});
-    c.equations = {c.model->q, k.residuals, loads, k.dynamics, {},
-                   residuals_of(plan_roadmap(sys, c.model->q, loads))};
+    c.equations = {c.model->q, k.residuals, loads,
+                   k.dynamics, {},          residuals_of(plan_roadmap(sys, c.model->q, loads))};
     return c;
 }
 

@@ -208,8 +208,8 @@ inline std::vector<ex> declare_chain_reactions(SampleModel& m, bool spatial) {
             forces.push_back({s.add_unknown("R_" + n + "_z"), F.z()});
             torques.push_back({s.add_unknown("M_" + n), cross(P.z(), F.x())});
         }
-        const JointReaction& r = sys.add_joint_reaction(
-            "joint " + n, i ? m.links[i - 1] : nullptr, L, sys.point(n + "_o"), forces, torques);
+        const JointReaction& r = sys.add_joint_reaction("joint " + n, i ? m.links[i - 1] : nullptr,
+                                                        L, sys.point(n + "_o"), forces, torques);
         for (const ReactionComponent& c : r.components) measures.push_back(c.measure);
     }
     return measures;

@@ -47,10 +47,10 @@ struct ReactionComponent {
 /// components), and their opposites on the parent. Its measures R are unknowns a road-map
 /// solves for (alembert::plan_roadmap gives each its own row).
 struct JointReaction {
-    std::string name;              ///< the user's name for the joint ("knee")
-    const Body* parent = nullptr;  ///< the body exerting it; nullptr for the ground
-    const Body* child = nullptr;   ///< the body it acts on
-    const Point* at = nullptr;     ///< where the force acts (the joint)
+    std::string name;                           ///< the user's name for the joint ("knee")
+    const Body* parent = nullptr;               ///< the body exerting it; nullptr for the ground
+    const Body* child = nullptr;                ///< the body it acts on
+    const Point* at = nullptr;                  ///< where the force acts (the joint)
     std::vector<ReactionComponent> components;  ///< force components, then torque components
 };
 
