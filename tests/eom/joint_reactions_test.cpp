@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 // Joint reactions as road-map unknowns: a row per measure, checked by hand and against
 // brute-force Newton–Euler at random states.
+#include <cstdio>
+
 #include "alembert/eom/cross_check.hpp"
 #include "alembert/eom/equations.hpp"
 #include "alembert/eom/planner.hpp"
@@ -186,6 +188,7 @@ TEST(JointReactions, TriplePendulumReactionsMatchNewtonEuler) {
     ReactionComparison c = compare_reactions(m.system, m.q, 4);
     ASSERT_EQ(c.measures.size(), 6u);
     EXPECT_LT(c.max_difference, kAgree);
+    std::printf("triple pendulum: 6 reaction measures, largest difference %.2g\n", c.max_difference);
 }
 
 TEST(JointReactions, PlanarChainReactionsMatchNewtonEuler) {
@@ -205,6 +208,8 @@ TEST(JointReactions, SpatialChainReactionsMatchNewtonEuler) {
         ReactionComparison c = compare_reactions(m.system, m.q, 2);
         EXPECT_EQ(c.measures.size(), 4u * static_cast<std::size_t>(n));
         EXPECT_LT(c.max_difference, kAgree) << n << " links";
+        std::printf("spatial chain of %d links: %zu reaction measures, largest difference %.2g\n", n,
+                    c.measures.size(), c.max_difference);
     }
 }
 
