@@ -188,7 +188,8 @@ TEST(JointReactions, TriplePendulumReactionsMatchNewtonEuler) {
     ReactionComparison c = compare_reactions(m.system, m.q, 4);
     ASSERT_EQ(c.measures.size(), 6u);
     EXPECT_LT(c.max_difference, kAgree);
-    std::printf("triple pendulum: 6 reaction measures, largest difference %.2g\n", c.max_difference);
+    std::printf("triple pendulum: 6 reaction measures, largest difference %.2g\n",
+                c.max_difference);
 }
 
 TEST(JointReactions, PlanarChainReactionsMatchNewtonEuler) {
@@ -208,8 +209,8 @@ TEST(JointReactions, SpatialChainReactionsMatchNewtonEuler) {
         ReactionComparison c = compare_reactions(m.system, m.q, 2);
         EXPECT_EQ(c.measures.size(), 4u * static_cast<std::size_t>(n));
         EXPECT_LT(c.max_difference, kAgree) << n << " links";
-        std::printf("spatial chain of %d links: %zu reaction measures, largest difference %.2g\n", n,
-                    c.measures.size(), c.max_difference);
+        std::printf("spatial chain of %d links: %zu reaction measures, largest difference %.2g\n",
+                    n, c.measures.size(), c.max_difference);
     }
 }
 
