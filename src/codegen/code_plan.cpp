@@ -98,7 +98,8 @@ bool symmetric_at_random_states(const StraightLineProgram& p, const std::vector<
 // sums of the E0; otherwise the system is solved symbolically, one decoupled block at a time.
 std::vector<ex> solve_for_loads(const SymbolTable& table, const DynamicsEquations& eq) {
     const auto n = static_cast<unsigned>(eq.loads.size());
-    LinearSystem L = detail::split_linear(table, eq.residuals, eq.loads, kWho);  // C = -A
+    const std::vector<ex>& E = eq.inverse_residuals.empty() ? eq.residuals : eq.inverse_residuals;
+    LinearSystem L = detail::split_linear(table, E, eq.loads, kWho);  // C = -A
     bool numeric = true;
     for (unsigned i = 0; i < n && numeric; ++i)
         for (unsigned j = 0; j < n && numeric; ++j) numeric = GiNaC::is_a<GiNaC::numeric>(L.A(i, j));
@@ -269,15 +270,20 @@ CodePlan plan_code(const SymbolTable& table, const DynamicsEquations& eq,
     }
 
     // ---- inverse dynamics: the residuals solved for the loads ---------------------------------
-    if (!eq.loads.empty() && eq.loads.size() == n) {
+    if (!eq.inverse_residuals.empty() && eq.inverse_residuals.size() != eq.loads.size())
+        throw ArgumentError(std::string(kWho) + ": " + std::to_string(eq.inverse_residuals.size()) +
+                            " inverse-dynamics residuals for " + std::to_string(eq.loads.size()) +
+                            " loads; give one per load (the road-map rows of the loads)");
+    if (!eq.loads.empty() && (eq.loads.size() == n || !eq.inverse_residuals.empty())) {
         std::vector<ex> u = solve_for_loads(table, eq);
         plan.inverse_dynamics = {
             .name = "inverse_dynamics",
             .summary = "loads u that give the accelerations qpp (inverse dynamics)",
             .arrays = {"q", "qp", "qpp"},
             .results = {"u"},
-            .result_sizes = {n},
-            .program = compile(table, symbols({&q, &qp, &qpp}), u, compile_options, "inverse dynamics"),
+            .result_sizes = {eq.loads.size()},
+            .program =
+                compile(table, symbols({&q, &qp, &qpp}), u, compile_options, "inverse dynamics"),
             .input_names = input_names({&q_names, &qp_names, &qpp_names}),
             .parameter_names = parameter_names};
     }

@@ -166,4 +166,114 @@ MethodComparison compare_methods(const System& sys, const std::vector<TimeVariab
     return out;
 }
 
+ReactionComparison compare_reactions(const System& sys, const std::vector<TimeVariable>& q,
+                                     int states, unsigned seed) {
+    const SymbolTable& st = sys.symbols();
+    if (sys.joint_reactions().empty())
+        throw ModelError(
+            "compare_reactions(): the model declares no joint reaction; declare "
+            "one with System::add_joint_reaction");
+    std::vector<ex> acc, measures;
+    for (const TimeVariable& qi : q) acc.push_back(qi.d(2));
+    for (const JointReaction& jr : sys.joint_reactions())
+        for (const ReactionComponent& c : jr.components) measures.push_back(c.measure);
+
+    // the road-map: accelerations and the declared measures together
+    std::vector<ex> x_rm = acc;
+    x_rm.insert(x_rm.end(), measures.begin(), measures.end());
+    std::vector<ex> roadmap;
+    for (const RoadmapRow& r : plan_roadmap(sys, q, x_rm)) roadmap.push_back(r.equation);
+
+    // Newton–Euler with the declared reaction loads set to zero
+    NewtonEulerEquations ne = form_newton_euler_equations(sys, q, acc);
+    exmap zero;
+    for (const ex& m : measures) zero[m] = 0;
+    std::vector<ex> ne_equations;
+    for (const ex& e : ne.equations) ne_equations.push_back(e.subs(zero));
+    auto among = [](const std::vector<ex>& xs, const ex& s) {
+        return std::any_of(xs.begin(), xs.end(), [&](const ex& x) { return x.is_equal(s); });
+    };
+
+    // the state: as compare_methods() draws it, less every reaction measure
+    std::vector<ex> state;
+    for (SymbolKind kind : {SymbolKind::variable, SymbolKind::specified, SymbolKind::unknown})
+        for (const ex& s : st.symbols(kind))
+            if (!(kind == SymbolKind::variable && st.derivative_order(s) >= 2) &&
+                !among(ne.reactions, s) && !among(measures, s))
+                state.push_back(s);
+    std::size_t free_constants = 0;
+    for (const ex& c : st.symbols(SymbolKind::constant))
+        if (!st.value(c)) state.push_back(c), ++free_constants;
+    state.push_back(st.time());
+
+    // per declared component: its projection by the road-map and by Newton–Euler
+    std::vector<ex> by_roadmap, by_ne;
+    for (const JointReaction& jr : sys.joint_reactions()) {
+        auto j = std::find_if(ne.joints.begin(), ne.joints.end(),
+                              [&](const NewtonEulerJoint& nj) { return nj.body == jr.child; });
+        const std::string parent = jr.parent ? jr.parent->name() : sys.newtonian().name();
+        if (j == ne.joints.end())
+            throw ModelError("compare_reactions(): Newton–Euler infers no joint of '" +
+                             jr.child->name() + "', the child of the reaction '" + jr.name + "'");
+        Vector F, T;
+        for (const ReactionComponent& c : jr.components)
+            (c.kind == LoadKind::force ? F : T) += c.measure * c.direction;
+        for (const ReactionComponent& c : jr.components) {
+            const Body* ne_parent = c.kind == LoadKind::force ? j->parent : j->torque_parent;
+            if (ne_parent != jr.parent)
+                throw ModelError("compare_reactions(): Newton–Euler joins '" + jr.child->name() +
+                                 "' to '" +
+                                 (ne_parent ? ne_parent->name() : sys.newtonian().name()) +
+                                 "', but the reaction '" + jr.name + "' is declared from '" +
+                                 parent + "'; declare it from the body the child is placed from");
+            if (c.kind == LoadKind::force) {
+                by_roadmap.push_back(dot(c.direction, F));
+                by_ne.push_back(dot(c.direction, j->force));
+            } else {
+                by_roadmap.push_back(dot(c.direction, T));
+                by_ne.push_back(
+                    dot(c.direction, j->torque + cross(j->at->pos_from(*jr.at), j->force)));
+            }
+        }
+    }
+    std::vector<ex> inputs = measures;
+    inputs.insert(inputs.end(), ne.reactions.begin(), ne.reactions.end());
+    inputs.insert(inputs.end(), state.begin(), state.end());
+    std::vector<ex> outputs = by_roadmap;
+    outputs.insert(outputs.end(), by_ne.begin(), by_ne.end());
+    CompiledExpressions projections(st, inputs, outputs);
+
+    CompiledMethod rm("road-map", st, roadmap, x_rm, state);
+    CompiledMethod brute("Newton–Euler", st, ne_equations, ne.unknowns, state);
+    ReactionComparison out{measures, states, 0, std::vector<double>(measures.size(), 0.0)};
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> unit(-1, 1), positive(0.5, 1.5);
+    const std::size_t varying = state.size() - free_constants - 1;
+    for (int k = 0; k < states; ++k) {
+        std::vector<double> values;
+        for (std::size_t i = 0; i < varying; ++i) values.push_back(unit(rng));
+        for (std::size_t i = 0; i < free_constants; ++i) values.push_back(positive(rng));
+        values.push_back(positive(rng));
+        Eigen::VectorXd a = rm.solve(values), b = brute.solve(values);
+        // the inputs of the projections: declared measures, Newton–Euler's, the state
+        std::vector<long double> in;
+        for (std::size_t i = 0; i < measures.size(); ++i)
+            in.push_back(a(static_cast<Eigen::Index>(acc.size() + i)));
+        for (std::size_t i = 0; i < ne.reactions.size(); ++i)
+            in.push_back(b(static_cast<Eigen::Index>(acc.size() + i)));
+        in.insert(in.end(), values.begin(), values.end());
+        VectorXld p(static_cast<Eigen::Index>(outputs.size()));
+        projections.evaluate_extended(in.data(), p.data());
+        const auto m = static_cast<Eigen::Index>(measures.size());
+        for (Eigen::Index i = 0; i < m; ++i) {
+            double d =
+                static_cast<double>(std::abs(p(i) - p(m + i)) / std::max(1.0L, std::abs(p(m + i))));
+            out.differences[static_cast<std::size_t>(i)] =
+                std::max(out.differences[static_cast<std::size_t>(i)], d);
+            out.max_difference = std::max(out.max_difference, d);
+        }
+    }
+    return out;
+}
+
 }  // namespace alembert

@@ -8,12 +8,17 @@
 #include "alembert/error.hpp"
 #include "alembert/sym/print.hpp"
 #include "alembert/sym/simplify.hpp"
+#include "zero_test.hpp"
 
 namespace alembert {
 
 namespace {
 
-bool zero(const Vector& v) { return v.simplify().is_zero(); }
+// zero at random states, through the intermediates (a symbolic test misses cancellations
+// inside them)
+bool zero(const System& sys, const Vector& v) {
+    return detail::is_zero_at_random_states(sys.symbols(), v, sys.newtonian());
+}
 
 // the geometry of one coordinate's row
 struct Plan {
@@ -33,7 +38,7 @@ Plan plan_coordinate(const System& sys, const TimeVariable& q) {
     for (const Body* b : sys.bodies()) {
         Vector w = b->frame() ? b->frame()->ang_vel_in(N).diff(qd) : Vector();
         Vector v = b->cm().vel_in(N).diff(qd);
-        if (zero(w) && zero(v)) continue;
+        if (zero(sys, w) && zero(sys, v)) continue;
         p.S.push_back(b);
         pw.push_back(w.simplify());
         pv.push_back(v.simplify());
@@ -48,7 +53,7 @@ Plan plan_coordinate(const System& sys, const TimeVariable& q) {
         p.motion = Motion::translate;
         p.u = pv.front().unit();
         for (std::size_t i = 0; i < p.S.size(); ++i)
-            if (!zero(pv[i] - pv.front()))
+            if (!zero(sys, pv[i] - pv.front()))
                 p.note = "S does not slide as one body when only " + q.name() +
                          " changes; constraint forces may remain";
         return p;
@@ -65,7 +70,7 @@ Plan plan_coordinate(const System& sys, const TimeVariable& q) {
         } catch (const ModelError&) {
             continue;  // a point never located cannot serve as the about point
         }
-        if (zero(v.diff(qd))) {
+        if (zero(sys, v.diff(qd))) {
             p.O = P;
             break;
         }
@@ -77,8 +82,9 @@ Plan plan_coordinate(const System& sys, const TimeVariable& q) {
     }
     // check: S turns as one body about O (partials w0 and w0 x r^{cm/O})
     for (std::size_t i = 0; i < p.S.size(); ++i) {
-        bool rigid = zero(pw[i] - w0) &&
-                     zero(pv[i] - cross(w0, p.S[i]->cm().pos_from(*p.O)));
+        // (a particle has no orientation: only its velocity counts)
+        bool rigid = (!p.S[i]->frame() || zero(sys, pw[i] - w0)) &&
+                     zero(sys, pv[i] - cross(w0, p.S[i]->cm().pos_from(*p.O)));
         if (!rigid) {
             p.note = "S does not turn as one body about " + p.O->name() + " when only " +
                      q.name() + " changes; constraint forces may remain";
@@ -88,9 +94,72 @@ Plan plan_coordinate(const System& sys, const TimeVariable& q) {
     return p;
 }
 
+// true if the placement of p (its chain of located-from points) passes through a point of b
+bool placed_from(const Point* p, const Body& b) {
+    for (const Point* x = p ? p->located_from() : nullptr; x; x = x->located_from())
+        if (x->owner() == &b) return true;
+    return false;
+}
+
+// true if frame F is oriented, through its chain of parents, from frame B
+bool oriented_from(const Frame* F, const Frame* B) {
+    for (const Frame* x = F ? F->parent() : nullptr; x && B; x = x->parent())
+        if (x == B) return true;
+    return false;
+}
+
 }  // namespace
 
+BodySet calc_bodies_beyond(const System& sys, const JointReaction& reaction) {
+    const Body& child = *reaction.child;
+    BodySet S;
+    for (const Body* b : sys.bodies()) {
+        bool beyond =
+            b == &child || placed_from(&b->cm(), child) || oriented_from(b->frame(), child.frame());
+        if (!beyond) continue;
+        if (b == reaction.parent)
+            throw ModelError("plan_roadmap(): the joint reaction '" + reaction.name +
+                             "' acts on '" + child.name() + "' from '" + b->name() + "', but '" +
+                             b->name() + "' is placed from '" + child.name() +
+                             "'; declare the reaction with its parent and child swapped");
+        S.push_back(b);
+    }
+    return S;
+}
+
 namespace {
+
+// the row of a reaction measure: translate along its direction (force) or rotate about it
+// (torque) with S = what moves if the joint let that motion through, about the joint
+RoadmapRow plan_reaction(const System& sys, const JointReaction& reaction,
+                         const ReactionComponent& c, Analysis analysis) {
+    RoadmapRow r{.variable = c.measure,
+                 .motion = c.kind == LoadKind::force ? Motion::translate : Motion::rotate,
+                 .direction = c.direction,
+                 .system = calc_bodies_beyond(sys, reaction),
+                 .about = reaction.at,
+                 .analysis = analysis};
+    // S should meet the rest only at this joint; other joints leave their forces in the row
+    std::string elsewhere;
+    for (const Point* p : sys.points()) {
+        const Point* from = p->located_from();
+        if (!p->owner() || !from || p == reaction.at) continue;
+        if (std::find(r.system.begin(), r.system.end(), p->owner()) == r.system.end()) continue;
+        if (from->owner() == reaction.parent ||
+            std::find(r.system.begin(), r.system.end(), from->owner()) != r.system.end())
+            continue;
+        // a point placed through points of no body from the parent is the same joint
+        const Point* up = from;
+        while (up && !up->owner()) up = up->located_from();
+        if (up ? up->owner() == reaction.parent : reaction.parent == nullptr) continue;
+        elsewhere += (elsewhere.empty() ? "" : ", ") + p->name();
+    }
+    if (!elsewhere.empty())
+        r.note = "S is joined to the rest at " + elsewhere +
+                 " too; the constraint forces there "
+                 "stay in this row";
+    return r;
+}
 
 // Minimum-cost assignment of each of n agents to a distinct one of m >= n tasks (Hungarian
 // algorithm, Kuhn-Munkres with potentials); cost[i][j] = kInfeasible forbids a pair. Returns
@@ -145,6 +214,82 @@ std::string list_text(const std::vector<ex>& xs) {
 
 }  // namespace
 
+namespace {
+
+// The blocks of rows that must be solved together (strongly connected components of "row i
+// holds the unknown of row j"), in an order in which each block needs only the unknowns of
+// blocks before it; ties keep the rows' order. Tarjan's algorithm, then a stable topological
+// sort of the components.
+std::vector<std::vector<std::size_t>> solve_order(
+    const std::vector<std::vector<std::size_t>>& deps) {
+    const std::size_t n = deps.size();
+    std::vector<int> index(n, -1), low(n, 0), comp(n, -1);
+    std::vector<bool> on_stack(n, false);
+    std::vector<std::size_t> stack;
+    int counter = 0, n_comp = 0;
+    // iterative Tarjan: (node, next edge) frames
+    for (std::size_t root = 0; root < n; ++root) {
+        if (index[root] >= 0) continue;
+        std::vector<std::pair<std::size_t, std::size_t>> frames{{root, 0}};
+        index[root] = low[root] = counter++;
+        stack.push_back(root);
+        on_stack[root] = true;
+        while (!frames.empty()) {
+            auto& [v, e] = frames.back();
+            if (e < deps[v].size()) {
+                std::size_t w = deps[v][e++];
+                if (index[w] < 0) {
+                    index[w] = low[w] = counter++;
+                    stack.push_back(w);
+                    on_stack[w] = true;
+                    frames.push_back({w, 0});
+                } else if (on_stack[w]) {
+                    low[v] = std::min(low[v], index[w]);
+                }
+                continue;
+            }
+            if (low[v] == index[v]) {
+                std::size_t w;
+                do {
+                    w = stack.back();
+                    stack.pop_back();
+                    on_stack[w] = false;
+                    comp[w] = n_comp;
+                } while (w != v);
+                ++n_comp;
+            }
+            std::size_t done = v;
+            frames.pop_back();
+            if (!frames.empty())
+                low[frames.back().first] = std::min(low[frames.back().first], low[done]);
+        }
+    }
+    std::vector<std::vector<std::size_t>> members(static_cast<std::size_t>(n_comp));
+    for (std::size_t i = 0; i < n; ++i) members[static_cast<std::size_t>(comp[i])].push_back(i);
+    std::vector<bool> placed(static_cast<std::size_t>(n_comp), false);
+    std::vector<std::vector<std::size_t>> order;
+    while (order.size() < members.size()) {
+        // the ready block whose first row comes first
+        std::size_t best = members.size();
+        for (std::size_t c = 0; c < members.size(); ++c) {
+            if (placed[c]) continue;
+            bool ready = true;
+            for (std::size_t i : members[c])
+                for (std::size_t w : deps[i])
+                    if (static_cast<std::size_t>(comp[w]) != c &&
+                        !placed[static_cast<std::size_t>(comp[w])])
+                        ready = false;
+            if (ready && (best == members.size() || members[c].front() < members[best].front()))
+                best = c;
+        }
+        placed[best] = true;
+        order.push_back(members[best]);
+    }
+    return order;
+}
+
+}  // namespace
+
 std::vector<RoadmapRow> plan_roadmap(const System& sys,
                                      const std::vector<TimeVariable>& coordinates,
                                      const std::vector<ex>& unknowns, Analysis analysis) {
@@ -159,13 +304,28 @@ std::vector<RoadmapRow> plan_roadmap(const System& sys,
         form_constraint_row(sys, r, unknowns);
         constraint_rows.push_back(std::move(r));
     }
+    // the measures of declared joint reactions get rows of their own; the other unknowns
+    // share the coordinate and constraint rows
+    std::vector<ex> shared;
+    std::size_t n_reactions = 0;
+    for (const ex& x : unknowns) {
+        if (sys.reaction_of(x))
+            ++n_reactions;
+        else
+            shared.push_back(x);
+    }
     const std::size_t n_rows = coordinates.size() + constraint_rows.size();
-    if (unknowns.size() > n_rows)
-        throw ModelError("plan_roadmap(): " + std::to_string(unknowns.size()) +
-                         " unknowns but only " + std::to_string(coordinates.size()) +
-                         " coordinates and " + std::to_string(constraint_rows.size()) +
-                         " constraint rows; each row determines one unknown, so declare fewer "
-                         "unknowns or declare the model's constraints");
+    if (shared.size() > n_rows)
+        throw ModelError(
+            "plan_roadmap(): " + std::to_string(shared.size()) + " unknowns but only " +
+            std::to_string(coordinates.size()) + " coordinates and " +
+            std::to_string(constraint_rows.size()) + " constraint rows" +
+            (n_reactions ? " (besides " + std::to_string(n_reactions) +
+                               " joint-reaction measures, which have rows of their own)"
+                         : std::string()) +
+            "; each row determines one unknown, so declare fewer unknowns, declare "
+            "the model's constraints, or declare constraint forces as joint "
+            "reactions (System::add_joint_reaction, the reaction statement)");
     std::vector<Plan> plans;
     for (const TimeVariable& q : coordinates) plans.push_back(plan_coordinate(sys, q));
 
@@ -185,81 +345,135 @@ std::vector<RoadmapRow> plan_roadmap(const System& sys,
     // else a row whose equation holds it, preferring rows with the fewest other unknowns,
     // and keeping earlier coordinates in their own rows when a constraint row must take one
     // (the constraint rows then read as the equations of the dependent coordinates)
-    const std::size_t n = unknowns.size();
+    const std::size_t n = shared.size();
     std::vector<std::vector<double>> cost(n, std::vector<double>(n_rows, kInfeasible));
     for (std::size_t k = 0; k < n; ++k) {
         for (std::size_t i = 0; i < n_rows; ++i) {
             bool own = false;
             if (i < coordinates.size())
                 for (int d = 0; d <= coordinates[i].order(); ++d)
-                    if (unknowns[k].is_equal(coordinates[i].d(d))) own = true;
+                    if (shared[k].is_equal(coordinates[i].d(d))) own = true;
             if (own) {
                 cost[k][i] = 0;
                 continue;
             }
-            if (probe[i].is_zero() || !probe[i].has(unknowns[k])) continue;
+            if (probe[i].is_zero() || !probe[i].has(shared[k])) continue;
             double others = 0;
-            for (const ex& x : unknowns)
-                if (!x.is_equal(unknowns[k]) && probe[i].has(x)) others += 1;
+            for (const ex& x : shared)
+                if (!x.is_equal(shared[k]) && probe[i].has(x)) others += 1;
             cost[k][i] = 1 + others + (i >= coordinates.size()
                                            ? 0.5 * static_cast<double>(n - k) / static_cast<double>(n + 1)
                                            : 0);
         }
     }
-    std::vector<int> row_of = assign_min_cost(cost);
-    if (row_of.empty()) {
+    std::vector<int> row_of = n ? assign_min_cost(cost) : std::vector<int>{};
+    if (n && row_of.empty()) {
         // name an unknown no row can hold, or say that they compete
         for (std::size_t k = 0; k < n; ++k)
             if (std::all_of(cost[k].begin(), cost[k].end(), [](double c) { return c >= kInfeasible; }))
                 throw ModelError("plan_roadmap(): no road-map row holds the unknown '" +
-                                 to_string(unknowns[k]) +
+                                 to_string(shared[k]) +
                                  "'; check that it acts on a body that moves, or that it is not "
                                  "internal to every system the planner found");
-        throw ModelError("plan_roadmap(): the unknowns " + list_text(unknowns) +
+        throw ModelError("plan_roadmap(): the unknowns " + list_text(shared) +
                          " cannot each be given a row of their own (too many of them appear "
                          "only in the same rows); declare the model's constraints or fewer "
                          "unknowns");
     }
 
+    // the rows, in the order of the unknowns
     std::vector<RoadmapRow> rows;
-    for (std::size_t k = 0; k < n; ++k) {
-        const std::size_t i = static_cast<std::size_t>(row_of[k]);
+    std::vector<bool> reaction_row;
+    std::size_t k = 0;
+    for (const ex& x : unknowns) {
+        if (const JointReaction* jr = sys.reaction_of(x)) {
+            auto c =
+                std::find_if(jr->components.begin(), jr->components.end(),
+                             [&](const ReactionComponent& rc) { return rc.measure.is_equal(x); });
+            RoadmapRow r = plan_reaction(sys, *jr, *c, analysis);
+            form_roadmap_row(sys, r, unknowns);
+            if (!r.equation.has(x))
+                throw ModelError("plan_roadmap(): the row of the reaction measure '" +
+                                 to_string(x) + "' of '" + jr->name +
+                                 "' does not hold it (S = what moves beyond '" + jr->child->name() +
+                                 "' does not feel it); check the reaction's "
+                                 "direction and its parent and child");
+            rows.push_back(std::move(r));
+            reaction_row.push_back(true);
+            continue;
+        }
+        const std::size_t i = static_cast<std::size_t>(row_of[k++]);
+        reaction_row.push_back(false);
         if (i >= coordinates.size()) {
             // formed already, with no variable: its additional unknowns are all those it
             // holds, so only the one it is now for leaves the list
             RoadmapRow r = constraint_rows[i - coordinates.size()];
-            r.variable = unknowns[k];
-            std::erase_if(r.additional_unknowns, [&](const ex& x) { return x.is_equal(r.variable); });
+            r.variable = x;
+            std::erase_if(r.additional_unknowns,
+                          [&](const ex& y) { return y.is_equal(r.variable); });
             rows.push_back(std::move(r));
             continue;
         }
         const Plan& p = plans[i];
         if (p.motion == Motion::rotate && !p.O)
-            throw ModelError("plan_roadmap(): " + p.note + " (unknown '" +
-                             to_string(unknowns[k]) + "')");
-        RoadmapRow r{.variable = unknowns[k], .motion = p.motion, .direction = p.u,
-                     .system = p.S, .about = p.O, .analysis = analysis};
+            throw ModelError("plan_roadmap(): " + p.note + " (unknown '" + to_string(x) + "')");
+        RoadmapRow r{.variable = x,
+                     .motion = p.motion,
+                     .direction = p.u,
+                     .system = p.S,
+                     .about = p.O,
+                     .analysis = analysis};
         r.note = p.note;
         form_roadmap_row(sys, r, unknowns);
         rows.push_back(std::move(r));
     }
+
+    // the order of solution: blocks of rows that share unknowns, each after those it needs
+    std::vector<std::vector<std::size_t>> deps(rows.size());
+    for (std::size_t i = 0; i < rows.size(); ++i)
+        for (const ex& x : rows[i].additional_unknowns)
+            for (std::size_t j = 0; j < rows.size(); ++j)
+                if (j != i && rows[j].variable.is_equal(x)) deps[i].push_back(j);
+    std::vector<std::vector<std::size_t>> blocks = solve_order(deps);
+
     // say where constraint forces stay in a row, and what closes the system
     std::string closing;
     for (const RoadmapRow& r : rows)
         if (r.motion == Motion::constraint) closing += (closing.empty() ? "" : ", ") + r.constraint;
     const SymbolTable& st = sys.symbols();
-    for (RoadmapRow& r : rows) {
-        if (r.motion == Motion::constraint || !r.note.empty()) continue;
-        // the load measures left (other accelerations in a row are expected: they couple)
-        std::vector<ex> loads;
-        for (const ex& x : r.additional_unknowns)
-            if (st.owns(x) && st.kind(x) == SymbolKind::unknown) loads.push_back(x);
-        if (loads.empty()) continue;
-        r.note = "no choice of S and O eliminates " + list_text(loads) +
-                 (closing.empty() ? "; solve the rows together"
-                                  : "; the constraint rows (" + closing + ") close the system");
+    for (const std::vector<std::size_t>& block : blocks) {
+        bool has_reaction = false;
+        for (std::size_t i : block) has_reaction = has_reaction || reaction_row[i];
+        for (std::size_t i : block) {
+            RoadmapRow& r = rows[i];
+            if (r.motion == Motion::constraint || !r.note.empty()) continue;
+            if (has_reaction && block.size() > 1) {
+                // a block of rows with reaction measures: name the rows it is solved with
+                std::vector<ex> with;
+                for (std::size_t j : block)
+                    if (j != i) with.push_back(rows[j].variable);
+                r.note = "solve together with the rows of " + list_text(with);
+                continue;
+            }
+            if (reaction_row[i]) continue;
+            // the load measures left (other accelerations in a row are expected: they couple)
+            std::vector<ex> loads;
+            for (const ex& x : r.additional_unknowns)
+                if (st.owns(x) && st.kind(x) == SymbolKind::unknown && !sys.reaction_of(x))
+                    loads.push_back(x);
+            if (loads.empty()) continue;
+            r.note = "no choice of S and O eliminates " + list_text(loads) +
+                     (closing.empty() ? "; solve the rows together"
+                                      : "; the constraint rows (" + closing + ") close the system");
+        }
     }
-    return rows;
+    // with reaction measures, the rows in the order of solution; without, in the order of the
+    // unknowns, as callers that pair row k with unknown k expect
+    if (n_reactions == 0) return rows;
+    std::vector<RoadmapRow> ordered;
+    for (const std::vector<std::size_t>& block : blocks)
+        for (std::size_t i : block) ordered.push_back(std::move(rows[i]));
+    return ordered;
 }
 
 }  // namespace alembert

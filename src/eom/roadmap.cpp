@@ -9,6 +9,7 @@
 #include "alembert/error.hpp"
 #include "alembert/sym/print.hpp"
 #include "alembert/sym/simplify.hpp"
+#include "zero_test.hpp"
 
 namespace alembert {
 
@@ -55,19 +56,31 @@ ex form_roadmap_equation(const System& sys, const RoadmapRow& row) {
 }
 
 std::vector<std::string> describe_free_body_diagram(const System& sys, const BodySet& S) {
+    return describe_free_body_diagram(sys, S, ex());
+}
+
+std::vector<std::string> describe_free_body_diagram(const System& sys, const BodySet& S,
+                                                    const ex& equation) {
     std::vector<std::string> out;
     for (const Load& l : sys.loads()) {
         if (!member(S, l.on) || member(S, l.from)) continue;
         std::string what = l.label.empty() ? (l.kind == LoadKind::force ? "force" : "torque")
                                            : l.label;
         // a load whose measures are unknowns is marked, like the joints' forces
-        bool unknown = false;
+        // (and, given the row's equation, those whose measures it does not keep)
+        bool unknown = false, kept = false;
         for (const auto& part : l.vector.components())
             for (int i = 0; i < 3; ++i)
                 for (const ex& s : symbols_of(part.second[i]))
-                    if (sys.symbols().owns(s) && sys.symbols().kind(s) == SymbolKind::unknown)
+                    if (sys.symbols().owns(s) && sys.symbols().kind(s) == SymbolKind::unknown) {
                         unknown = true;
-        const char* mark = unknown ? " (unknown)" : "";
+                        if (equation.is_zero() ||
+                            (equation.has(s) &&
+                             !detail::is_zero_at_random_states(
+                                 sys.symbols(), equation.diff(GiNaC::ex_to<GiNaC::symbol>(s)))))
+                            kept = true;
+                    }
+        const char* mark = !unknown ? "" : kept ? " (unknown)" : " (unknown, drops out)";
         if (l.kind == LoadKind::force)
             out.push_back(what + " at " + l.point->name() + " from " +
                           body_or_ground(sys, l.from) + mark);
@@ -92,10 +105,19 @@ std::vector<std::string> describe_free_body_diagram(const System& sys, const Bod
 }
 
 namespace {
-void list_additional_unknowns(RoadmapRow& row, const std::vector<ex>& unknowns) {
+// the unknowns the equation holds; a load measure (never inside an intermediate) only where
+// its coefficient is not zero at random states (a torque normal to the row's direction
+// written in another frame has a coefficient that is zero but does not look it)
+void list_additional_unknowns(const System& sys, RoadmapRow& row, const std::vector<ex>& unknowns) {
+    const SymbolTable& st = sys.symbols();
     row.additional_unknowns.clear();
-    for (const ex& x : unknowns)
-        if (!x.is_equal(row.variable) && row.equation.has(x)) row.additional_unknowns.push_back(x);
+    for (const ex& x : unknowns) {
+        if (x.is_equal(row.variable) || !row.equation.has(x)) continue;
+        if (st.owns(x) && st.kind(x) == SymbolKind::unknown &&
+            detail::is_zero_at_random_states(st, row.equation.diff(GiNaC::ex_to<GiNaC::symbol>(x))))
+            continue;
+        row.additional_unknowns.push_back(x);
+    }
 }
 }  // namespace
 
@@ -105,8 +127,8 @@ void form_roadmap_row(const System& sys, RoadmapRow& row, const std::vector<ex>&
         return;
     }
     row.equation = form_roadmap_equation(sys, row);
-    row.fbd = describe_free_body_diagram(sys, row.system);
-    list_additional_unknowns(row, unknowns);
+    row.fbd = describe_free_body_diagram(sys, row.system, row.equation);
+    list_additional_unknowns(sys, row, unknowns);
 }
 
 void form_constraint_row(const System& sys, RoadmapRow& row, const std::vector<ex>& unknowns) {
@@ -136,7 +158,7 @@ void form_constraint_row(const System& sys, RoadmapRow& row, const std::vector<e
     row.about = nullptr;
     row.fbd.clear();
     row.equation = e;
-    list_additional_unknowns(row, unknowns);
+    list_additional_unknowns(sys, row, unknowns);
 }
 
 namespace {

@@ -12,6 +12,7 @@
 
 #include "alembert/codegen/codegen.hpp"
 #include "alembert/codegen/native.hpp"
+#include "alembert/eom/planner.hpp"
 #include "alembert/eom/tree_dynamics.hpp"
 #include "alembert/lang/parser.hpp"
 #include "interpreter_impl.hpp"
@@ -567,13 +568,19 @@ void Interpreter::Impl::run_codegen(const CodegenRequest& r, Location where) {
     // of bodies, forward dynamics with no solve); otherwise Kane's equations with their M
     bool tree = false;
     GeneratedCode g = guard(where, [&] {
+        // joint-reaction measures among the loads: inverse dynamics from the road-map rows
+        std::vector<ex> inverse_residuals;
+        if (std::any_of(loads.begin(), loads.end(),
+                        [&](const ex& x) { return sys.reaction_of(x); }))
+            inverse_residuals = residuals_of(plan_roadmap(sys, q, loads));
         if (std::optional<TreeEquations> t = form_tree_equations_if_tree(sys, q)) {
             tree = true;
-            DynamicsEquations eqs{q, t->residuals, loads, std::nullopt, t->accelerations};
+            DynamicsEquations eqs{
+                q, t->residuals, loads, std::nullopt, t->accelerations, inverse_residuals};
             return generate_code(table, eqs, language, r.dir, opts);
         }
         KaneEquations k = form_kane_equations(sys, KaneOptions{.coordinates = q});
-        DynamicsEquations eqs{q, k.residuals, loads, k.dynamics};
+        DynamicsEquations eqs{q, k.residuals, loads, k.dynamics, {}, inverse_residuals};
         return generate_code(table, eqs, language, r.dir, opts);
     });
     std::ostringstream out;

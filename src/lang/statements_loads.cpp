@@ -110,6 +110,57 @@ void run_torque(Interpreter::Impl& m, const Statement& s) {
     }
 }
 
+// ---- reaction: a joint's constraint force and torque, components as unknowns -------------
+
+void parse_reaction(StatementParser& p, Statement& s) {
+    s.words["label"] = p.name("a name for the joint reaction");
+    p.expect_word("between", "(reaction knee between A and B at B_o force F_x along Bx>)");
+    s.words["parent"] = p.name("the parent body (or the Newtonian frame)");
+    p.expect_word("and", "and the child body");
+    s.words["child"] = p.name("the child body");
+    p.expect_word("at", "and the joint point (reaction knee between A and B at B_o ...)");
+    s.words["at"] = p.name("a point");
+    bool any = false;
+    for (const std::string kind : {"force", "torque"}) {
+        if (!p.accept_word(kind)) continue;
+        any = true;
+        const std::string along = kind == "force" ? "along" : "about";
+        do {
+            s.lists[kind].push_back(p.name("an unknown " + kind + " measure"));
+            p.expect_word(along, "and its direction (" + kind + " F_x " + along + " Bx>)");
+            s.expr_lists[kind].push_back(p.expression());
+        } while (p.accept_punct(","));
+    }
+    if (!any) p.fail_expected("'force' or 'torque' and the components (force F_x along Bx>)");
+}
+
+void run_reaction(Interpreter::Impl& m, const Statement& s) {
+    System& sys = m.model(s.location);
+    const Word& label = s.word("label");
+    const Word& pw = s.word("parent");
+    const Body* parent = pw.text == sys.newtonian().name() ? nullptr : &m.body(pw);
+    Body& child = m.body(s.word("child"));
+    Point& at = m.point(s.word("at"));
+    std::vector<ReactionComponent> forces, torques;
+    for (const std::string kind : {"force", "torque"}) {
+        if (!s.lists.count(kind)) continue;
+        const std::vector<Word>& measures = s.lists.at(kind);
+        const auto& directions = s.expr_lists.at(kind);
+        Interpreter::Impl::require_each_once(measures, "measure");
+        for (std::size_t i = 0; i < measures.size(); ++i) {
+            const Word& w = measures[i];
+            ex x = m.symbol(w, "an unknown " + kind + " measure");
+            m.check_dimension(m.symbol_dimension(w.text),
+                              kind == "force" ? Dimension::force() : Dimension::torque(),
+                              "the " + kind + " measure " + w.text, w.location);
+            Vector d = m.vector(*directions[i], Dimension::none(), "the direction of " + w.text);
+            (kind == "force" ? forces : torques).push_back({x, d});
+        }
+    }
+    m.guard(label.location,
+            [&] { sys.add_joint_reaction(label.text, parent, child, at, forces, torques); });
+}
+
 // ---- spring, damper, attraction: between two points --------------------------------------
 
 void parse_between(StatementParser& p, Statement& s) {
@@ -239,6 +290,15 @@ std::vector<StatementSpec> load_statements() {
                     "torque T_B on B from A = T_B*Nz>",
                     "`System::add_torque_pair` (and the opposite on A)"}},
          .clauses = {"on", "from"}, .parse = parse_force_or_torque, .run = run_torque},
+        {.keyword = "reaction", .family = family,
+         .help = "a joint reaction: its force and torque components as unknowns a road-map solves for",
+         .forms = {{"`reaction` *label* `between` *A* `and` *B* `at` *P* [`force` *F* `along` *u*, ...] "
+                    "[`torque` *M* `about` *u*, ...]",
+                    "reaction knee between A and B at B_o force F_Kc along Ay>, F_Ks along Ax>",
+                    "`System::add_joint_reaction` (on B from A at P, the opposite on A; A may be "
+                    "the Newtonian frame)"}},
+         .clauses = {"between", "and", "at", "force", "along", "torque", "about"}, .parse = parse_reaction,
+         .run = run_reaction},
         {.keyword = "spring", .family = family, .help = "a linear spring between two points",
          .forms = {{"`spring` *label* `between` *P* `and` *Q* `stiffness` *k* `length` *L0*",
                     "spring k1 between Q and N_o stiffness k length 0",

@@ -2,6 +2,7 @@
 // Declaring loads: forces, torques, action/reaction pairs and the textbook force models.
 #include "alembert/error.hpp"
 #include "alembert/mech/system.hpp"
+#include "alembert/sym/print.hpp"
 #include "alembert/sym/simplify.hpp"
 
 namespace alembert {
@@ -74,6 +75,77 @@ void System::add_torque_pair(const Body& B, const Frame& A, const Vector& T,
     if (from)
         loads_.push_back(Load{.kind = LoadKind::torque, .label = label, .point = nullptr,
                               .vector = -T, .on = from, .from = &B});
+}
+
+const JointReaction& System::add_joint_reaction(const std::string& name, const Body* parent,
+                                                const Body& child, const Point& at,
+                                                const std::vector<ReactionComponent>& forces,
+                                                const std::vector<ReactionComponent>& torques) {
+    const std::string caller = "System::add_joint_reaction(): ";
+    if (name.empty()) throw ArgumentError(caller + "a joint reaction needs a name");
+    for (const JointReaction& r : reactions_)
+        if (r.name == name)
+            throw ArgumentError(caller + "a joint reaction named '" + name +
+                                "' is declared already; give this one another name");
+    if (parent == &child)
+        throw ArgumentError(caller + "the reaction '" + name + "' is between '" + child.name() +
+                            "' and itself; name the body it is joined to");
+    if (forces.empty() && torques.empty())
+        throw ArgumentError(caller + "the reaction '" + name +
+                            "' has no force or torque component; give at least one");
+    JointReaction r{.name = name, .parent = parent, .child = &child, .at = &at, .components = {}};
+    auto add = [&](const ReactionComponent& c, LoadKind kind) {
+        const ex& m = c.measure;
+        if (!GiNaC::is_a<GiNaC::symbol>(m) || !table_->owns(m) ||
+            table_->kind(m) != SymbolKind::unknown)
+            throw ArgumentError(caller + "the measure '" + to_string(m) + "' of '" + name +
+                                "' is not an unknown; declare it as an unknown first");
+        for (const JointReaction& other : reactions_)
+            for (const ReactionComponent& o : other.components)
+                if (o.measure.is_equal(m))
+                    throw ArgumentError(caller + "the measure '" + to_string(m) +
+                                        "' belongs to the reaction '" + other.name +
+                                        "' already; give '" + name + "' its own unknowns");
+        for (const ReactionComponent& o : r.components)
+            if (o.measure.is_equal(m))
+                throw ArgumentError(caller + "the measure '" + to_string(m) +
+                                    "' appears twice in '" + name + "'; one per direction");
+        if (c.direction.simplify().is_zero())
+            throw ArgumentError(caller + "the direction of '" + to_string(m) + "' in '" + name +
+                                "' is zero; give a direction the joint prevents");
+        r.components.push_back({m, c.direction, kind});
+    };
+    for (const ReactionComponent& c : forces) add(c, LoadKind::force);
+    for (const ReactionComponent& c : torques) add(c, LoadKind::torque);
+    // the loads: on the child from the parent, and the opposite on the parent
+    for (const ReactionComponent& c : r.components) {
+        const std::string label = to_string(c.measure);
+        const Vector v = c.measure * c.direction;
+        const LoadKind kind = c.kind;
+        const Point* point = kind == LoadKind::force ? &at : nullptr;
+        loads_.push_back(Load{.kind = kind,
+                              .label = label,
+                              .point = point,
+                              .vector = v,
+                              .on = &child,
+                              .from = parent});
+        if (parent)
+            loads_.push_back(Load{.kind = kind,
+                                  .label = label,
+                                  .point = point,
+                                  .vector = -v,
+                                  .on = parent,
+                                  .from = &child});
+    }
+    reactions_.push_back(std::move(r));
+    return reactions_.back();
+}
+
+const JointReaction* System::reaction_of(const ex& measure) const {
+    for (const JointReaction& r : reactions_)
+        for (const ReactionComponent& c : r.components)
+            if (c.measure.is_equal(measure)) return &r;
+    return nullptr;
 }
 
 void System::set_gravity(const Vector& g) { gravity_ = g; }

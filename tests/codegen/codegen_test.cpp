@@ -80,6 +80,18 @@ TEST(GenerateCode, ParametersChangedInTheGeneratedCodeActLikeNewConstants) {
     expect_agreement(c, states, got, 1e-12, "C++ with changed parameters");
 }
 
+TEST(GenerateCode, JointReactionsOfInverseDynamicsAgreeWithTheEvaluator) {
+    // 3 torques and 6 joint-reaction measures for 3 coordinates: inverse dynamics from the
+    // road-map rows, at full precision
+    CodegenCase c = triple_pendulum_reactions_case();
+    ScratchDir dir("c-reactions");
+    GeneratedCode g = generate_case(c, Language::c, dir.path());
+    EXPECT_TRUE(g.inverse_dynamics);
+    std::vector<State> states = random_states(c, 4);
+    std::vector<double> got = run_generated(c, Language::c, dir.path(), states);
+    expect_agreement(c, states, got, 1e-12, "C with joint reactions");
+}
+
 TEST(GenerateCode, InverseThenForwardDynamicsGivesBackTheAccelerations) {
     // a round trip through the generated C alone: the torques inverse dynamics computes for
     // q'', fed to forward dynamics, give back q''

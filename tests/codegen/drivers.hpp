@@ -36,7 +36,7 @@ int main(void) {
     int count = 0;
     if (scanf("%d", &count) != 1) return 1;
     for (int k = 0; k < count; ++k) {
-        double t, q[NQ], qp[NQ], qpp[NQ], u[NU + 1], M[NQ * NQ], f[NQ], fd[NQ], id[NQ + 1];
+        double t, q[NQ], qp[NQ], qpp[NQ], u[NU + 1], M[NQ * NQ], f[NQ], fd[NQ], id[NU + 1];
         double y[NY + 1];
         if (!read(&t, 1) || !read(q, NQ) || !read(qp, NQ) || !read(qpp, NQ) || !read(u, NU))
             return 1;
@@ -46,7 +46,7 @@ int main(void) {
         print(f, NQ);
         print(fd, NQ);
         NAME_inverse_dynamics(&c, t, q, qp, qpp, id);
-        print(id, NQ);
+        print(id, NU);
 #if NY > 0
         NAME_outputs(&c, t, q, qp, qpp, u, y);
 #endif

@@ -88,6 +88,31 @@ inline CodegenCase tree_chain_case(int n, ChainKind kind) {
     return c;
 }
 
+/// The triple pendulum with its joint reactions (forces along each link's x and y axes) by
+/// Kane's method for forward dynamics; inverse dynamics for the 3 torques and the 6 reaction
+/// measures from the planned road-map rows.
+inline CodegenCase triple_pendulum_reactions_case() {
+    CodegenCase c;
+    c.name = "triple_pendulum_reactions";
+    c.model = std::make_unique<SampleModel>(make_triple_pendulum());
+    System& sys = c.model->system;
+    std::vector<ex> loads = c.model->unknowns;
+    for (std::size_t i = 0; i < c.model->links.size(); ++i) {
+        RigidBody& L = *c.model->links[i];
+        SymbolTable& s = sys.symbols();
+        ex Rx = s.add_unknown("R_" + L.name() + "_x"), Ry = s.add_unknown("R_" + L.name() + "_y");
+        sys.add_joint_reaction("joint " + L.name(), i ? c.model->links[i - 1] : nullptr, L,
+                               sys.point(L.name() + "_o"),
+                               {{Rx, L.body_frame().x()}, {Ry, L.body_frame().y()}});
+        loads.push_back(Rx);
+        loads.push_back(Ry);
+    }
+    KaneEquations k = form_kane_equations(sys, KaneOptions{.coordinates = c.model->q});
+    c.equations = {c.model->q, k.residuals, loads,
+                   k.dynamics, {},          residuals_of(plan_roadmap(sys, c.model->q, loads))};
+    return c;
+}
+
 /// Generates `lang` for the case into `dir`, named after the case and with its outputs (the
 /// other options from `o`).
 inline GeneratedCode generate_case(const CodegenCase& c, Language lang, const fs::path& dir,
@@ -163,9 +188,12 @@ public:
             c.reference_residuals.empty() ? c.equations.residuals : c.reference_residuals;
         mf_ = CompiledExpressions(T, inputs({&q, &qp, &c.equations.loads}),
                                   flat(form_linear_system(E, qpp)));
-        if (m_ == n_)
-            id_ = CompiledExpressions(T, inputs({&q, &qp, &qpp}),
-                                      flat(form_linear_system(E, c.equations.loads)));
+        if (m_ == n_ || !c.equations.inverse_residuals.empty())
+            id_ = CompiledExpressions(
+                T, inputs({&q, &qp, &qpp}),
+                flat(form_linear_system(
+                    c.equations.inverse_residuals.empty() ? E : c.equations.inverse_residuals,
+                    c.equations.loads)));
         std::vector<ex> y;
         for (const CodegenOutput& o : c.outputs) y.push_back(o.expression);
         y_ = CompiledExpressions(T, inputs({&q, &qp, &qpp, &c.equations.loads}), y);
@@ -186,12 +214,13 @@ public:
         Eigen::MatrixXd M = Eigen::Map<const RowMajor>(v.M.data(), n, n);
         Eigen::VectorXd x = M.partialPivLu().solve(Eigen::Map<const Eigen::VectorXd>(v.f.data(), n));
         v.fd.assign(x.data(), x.data() + n);
-        if (m_ == n_) {
+        if (id_.output_count()) {
+            const auto m = static_cast<long>(m_);
             std::vector<double> ab = id_.evaluate(join({&s.q, &s.qp, &s.qpp}));
-            Eigen::MatrixXd A = Eigen::Map<const RowMajor>(ab.data(), n, n);
+            Eigen::MatrixXd A = Eigen::Map<const RowMajor>(ab.data(), m, m);
             Eigen::VectorXd u =
-                A.partialPivLu().solve(Eigen::Map<const Eigen::VectorXd>(ab.data() + n * n, n));
-            v.id.assign(u.data(), u.data() + n);
+                A.partialPivLu().solve(Eigen::Map<const Eigen::VectorXd>(ab.data() + m * m, m));
+            v.id.assign(u.data(), u.data() + m);
         }
         v.y = y_.evaluate(join({&s.q, &s.qp, &s.qpp, &s.u}));
         return v;

@@ -5,6 +5,7 @@
 #include <random>
 #include <vector>
 
+#include "alembert/mech/sample_models.hpp"
 #include "alembert/mech/system.hpp"
 
 namespace alembert::test {
@@ -184,6 +185,34 @@ inline Model make_rod_and_plate() {
     m.sys.set_gravity(-s.add_constant("g", 9.81) * N.y());
     m.q = {q1, q2};
     return m;
+}
+
+/// Declares a joint reaction at each link of a chain sample model (make_triple_pendulum,
+/// make_n_link_pendulum): on link L from its parent (N for the first) at L_o, forces R_L_x,
+/// R_L_y along L's x and y axes (and R_L_z along z when `spatial`); spatial, also a torque
+/// M_L about P.z x L.x, normal to both axes of the two-axis joint (P the parent's frame).
+/// Returns the measures, reaction by reaction.
+inline std::vector<ex> declare_chain_reactions(SampleModel& m, bool spatial) {
+    System& sys = m.system;
+    SymbolTable& s = sys.symbols();
+    std::vector<ex> measures;
+    for (std::size_t i = 0; i < m.links.size(); ++i) {
+        RigidBody& L = *m.links[i];
+        const Frame& F = L.body_frame();
+        const Frame& P = i ? m.links[i - 1]->body_frame() : sys.newtonian();
+        const std::string n = L.name();
+        std::vector<ReactionComponent> forces{{s.add_unknown("R_" + n + "_x"), F.x()},
+                                              {s.add_unknown("R_" + n + "_y"), F.y()}};
+        std::vector<ReactionComponent> torques;
+        if (spatial) {
+            forces.push_back({s.add_unknown("R_" + n + "_z"), F.z()});
+            torques.push_back({s.add_unknown("M_" + n), cross(P.z(), F.x())});
+        }
+        const JointReaction& r = sys.add_joint_reaction("joint " + n, i ? m.links[i - 1] : nullptr,
+                                                        L, sys.point(n + "_o"), forces, torques);
+        for (const ReactionComponent& c : r.components) measures.push_back(c.measure);
+    }
+    return measures;
 }
 
 /// A random state: every coordinate, speed, acceleration, specified input and unknown not in

@@ -5,6 +5,7 @@
 #include "alembert/eom/equations.hpp"
 #include "alembert/error.hpp"
 #include "alembert/mech/sample_models.hpp"
+#include "models.hpp"
 #include "support/expect.hpp"
 
 using namespace alembert;
@@ -120,4 +121,83 @@ TEST(Planner, RejectsUnknownsNoRowHolds) {
                      "no road-map row holds the unknown 'F_x'");
     EXPECT_THROW_MSG(plan_roadmap(m.system, m.q, {m.unknowns[0], m.unknowns[1], m.unknowns[2], F}),
                      ModelError, "4 unknowns but only 3 coordinates");
+}
+
+namespace {
+// the rows' notes that claim S does not move as one body
+std::string rigidity_notes(const System& sys, const std::vector<TimeVariable>& q) {
+    std::vector<ex> acc;
+    for (const TimeVariable& qi : q) acc.push_back(qi.d(2));
+    std::string out;
+    for (const RoadmapRow& r : plan_roadmap(sys, q, acc))
+        if (r.note.find("as one body") != std::string::npos)
+            out += to_string(r.variable) + ": " + r.note + "\n";
+    return out;
+}
+}  // namespace
+
+// The rigidity checks decide their zeros at random states through the named intermediates,
+// so no tree model of the cross-check gets a false "does not turn as one body" note: not the
+// deep chains, not a payload particle on the last link.
+TEST(Planner, TreeModelsOfTheCrossCheckHaveNoRigidityNote) {
+    {
+        SampleModel m = make_triple_pendulum();
+        EXPECT_EQ(rigidity_notes(m.system, m.q), "");
+    }
+    for (ChainKind kind : {ChainKind::planar, ChainKind::spatial})
+        for (int n = 1; n <= 8; ++n) {
+            SampleModel m = make_n_link_pendulum(n, kind);
+            EXPECT_EQ(rigidity_notes(m.system, m.q), "") << n << " links";
+        }
+    for (int n : {4, 8}) {
+        SampleModel m = make_planar_chain(n);
+        EXPECT_EQ(rigidity_notes(m.system, m.q), "") << n << " links";
+    }
+    {
+        SampleModel m = make_mass_spring_damper();
+        EXPECT_EQ(rigidity_notes(m.system, m.q), "");
+    }
+    for (test::Model (*make)() :
+         {&test::make_rod_pendulum, &test::make_particle_double_pendulum,
+          &test::make_free_rigid_body, &test::make_gimbal, &test::make_rod_and_plate}) {
+        test::Model m = make();
+        EXPECT_EQ(rigidity_notes(m.sys, m.q), "");
+    }
+    {
+        test::Model m = test::make_spinning_tube(false);
+        EXPECT_EQ(rigidity_notes(m.sys, m.q), "");
+    }
+    // a payload particle at the tip of the last of five planar links
+    SampleModel m = make_n_link_pendulum(5, ChainKind::planar);
+    SymbolTable& s = m.system.symbols();
+    Particle& P = m.system.add_particle("P");
+    P.set_mass(s.add_constant("mP", 2.0));
+    P.point().set_pos(m.system.point("B5_o"), -s.symbol("L5") * m.links[4]->body_frame().y());
+    EXPECT_EQ(rigidity_notes(m.system, m.q), "");
+}
+
+// the check still says so where S really does not turn as one body about O: a rod B oriented
+// by an absolute angle and hung from the tip of rod A translates when A turns
+TEST(Planner, AbsoluteAngleOfAHungRodKeepsItsNote) {
+    System sys("N");
+    SymbolTable& s = sys.symbols();
+    const Frame& N = sys.newtonian();
+    TimeVariable q1 = s.add_variable("q1"), q2 = s.add_variable("q2");
+    ex L = s.add_constant("L", 1.0), mass = s.add_constant("m", 1.0);
+    RigidBody& A = sys.add_rigid_body("A");
+    RigidBody& B = sys.add_rigid_body("B");
+    A.body_frame().orient_axis(N, Axis::z, q1);
+    B.body_frame().orient_axis(N, Axis::z, q2);
+    sys.point("A_o").set_pos(sys.origin(), Vector());
+    A.cm().set_pos(sys.point("A_o"), -(L / 2) * A.body_frame().y());
+    sys.point("B_o").set_pos(sys.point("A_o"), -L * A.body_frame().y());
+    B.cm().set_pos(sys.point("B_o"), -(L / 2) * B.body_frame().y());
+    for (RigidBody* b : {&A, &B}) {
+        b->set_mass(mass);
+        b->set_inertia(b->cm(), 0, 0, mass * L * L / 12);
+    }
+    sys.set_gravity(-s.add_constant("g", 9.81) * N.y());
+    EXPECT_EQ(rigidity_notes(sys, {q1, q2}),
+              "q1'': S does not turn as one body about A_o when only q1 changes; constraint "
+              "forces may remain\n");
 }

@@ -78,6 +78,28 @@ TEST(Examples, SitToStandHoldingTorquesEqualTheGravityMomentsAboutEachJoint) {
     expect_printed(value(out, "T_C"), T_C);
 }
 
+TEST(Examples, SitToStandJointForcesCarryTheWeightAboveEachJoint) {
+    Session s;
+    std::string out = s.run(example("sit_to_stand"));
+    // hand statics of the crouch: each joint pushes up on what lies above it with that weight,
+    // W Ny>; compressive along the lower segment's y axis, shear along its x axis, and
+    // Ny> . Ay> = cos qA, Ny> . Ax> = sin qA (Ax> = cos qA Nx> + sin qA Ny>)
+    const double g = 9.81, mA = 6.51, mB = 14.00, mC = 47.46;
+    const double qA = 20 * kDeg, qB = -70 * kDeg;
+    const double ankle = (mA + mB + mC) * g, knee = (mB + mC) * g, hip = mC * g;
+    expect_printed(value(out, "F_Ac"), ankle * std::cos(qA));
+    expect_printed(value(out, "F_As"), ankle * std::sin(qA));
+    expect_printed(value(out, "F_Kc"), knee * std::cos(qA));
+    expect_printed(value(out, "F_Ks"), knee * std::sin(qA));
+    expect_printed(value(out, "F_Hc"), hip * std::cos(qA + qB));
+    expect_printed(value(out, "F_Hs"), hip * std::sin(qA + qB));
+    // the road-map: each force its own translate row, S what lies beyond the joint
+    std::string table = s.interp.roadmap_text(false);
+    EXPECT_NE(table.find("| F_Kc     | translate        | Ay>       | {B, C}    |"), std::string::npos) << table;
+    EXPECT_NE(table.find("| F_Hs     | translate        | Bx>       | {C}       |"), std::string::npos) << table;
+    EXPECT_NE(table.find("F_Kc at B_o from A (unknown, drops out)"), std::string::npos) << table;
+}
+
 TEST(Examples, SitToStandRoadmapHasTheSeedsThreeRows) {
     Session s;
     s.run(example("sit_to_stand"));

@@ -230,6 +230,20 @@ TEST(Inverse, SampledMotionDataReproduceTheFormulaTorquesAwayFromTheEnds) {
     }
 }
 
+TEST(Codegen, JointReactionsAreLoadsOfTheGeneratedInverseDynamics) {
+    // 3 torques and the 6 joint forces of the sit-to-stand model for 3 coordinates: inverse
+    // dynamics from the road-map rows (tests/codegen checks its numbers against the evaluator)
+    TempDir dir;
+    Script r(dir.path);
+    r.run(sit_to_stand_model() +
+          "codegen c name sts for T_A, T_B, T_C, F_Ac, F_As, F_Kc, F_Ks, F_Hc, F_Hs to \"gen\"\n");
+    EXPECT_NE(r.out.str().find(", inverse dynamics"), std::string::npos) << r.out.str();
+    std::ifstream h(dir.path / "gen" / "sts.h");
+    std::string header((std::istreambuf_iterator<char>(h)), std::istreambuf_iterator<char>());
+    EXPECT_NE(header.find("sts_inverse_dynamics"), std::string::npos) << header;
+    EXPECT_NE(header.find("F_Kc"), std::string::npos) << header;
+}
+
 TEST(Codegen, TheStatementWritesCodeWhoseSimulationProgramFollowsAlembertsSimulation) {
     TempDir dir;
     Script r(dir.path);

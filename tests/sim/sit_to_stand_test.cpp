@@ -79,6 +79,45 @@ TEST_F(SitToStand, SeatOffAndStandingNeedTheStaticHoldingTorques) {
     EXPECT_NEAR(q[2], -10 * kDeg, 1e-14);
 }
 
+TEST_F(SitToStand, SeatOffAndStandingJointForcesCarryTheWeightAbove) {
+    // the example's joint reactions: ankle on A from N, knee on B from A (both in the shank
+    // frame A), hip on C from B (in the thigh frame B); compressive along y, shear along x
+    System& sys = model.system;
+    SymbolTable& s = sys.symbols();
+    RigidBody &A = *model.links[0], &B = *model.links[1], &C = *model.links[2];
+    const Frame &FA = A.body_frame(), &FB = B.body_frame();
+    std::vector<ex> R;
+    for (const char* n : {"F_Ac", "F_As", "F_Kc", "F_Ks", "F_Hc", "F_Hs"})
+        R.push_back(s.add_unknown(n));
+    sys.add_joint_reaction("ankle", nullptr, A, sys.point("A_o"), {{R[0], FA.y()}, {R[1], FA.x()}});
+    sys.add_joint_reaction("knee", &A, B, sys.point("B_o"), {{R[2], FA.y()}, {R[3], FA.x()}});
+    sys.add_joint_reaction("hip", &B, C, sys.point("C_o"), {{R[4], FB.y()}, {R[5], FB.x()}});
+    std::vector<ex> unknowns = model.unknowns;
+    unknowns.insert(unknowns.end(), R.begin(), R.end());
+    InverseDynamics with_forces = compile_inverse_dynamics(sys, model.q, unknowns, "sit_to_stand");
+    // hand statics at the poses at rest: a joint pushes up with the weight W above it, W Ny>;
+    // Ny> . Fy> = cos a and Ny> . Fx> = sin a for a frame F turned by a about Nz
+    for (double t : {0.0, 1.5}) {
+        double q[3], qd[3], qdd[3], L[9];
+        motion.calc_state(t, q, qd, qdd);
+        with_forces.calc_loads(t, q, qd, qdd, L);
+        const std::array<double, 3> hold = holding_torques(q);
+        for (int j = 0; j < 3; ++j)
+            EXPECT_NEAR(L[j], hold[static_cast<std::size_t>(j)], 1e-9) << "t = " << t;
+        const double W[3] = {(kMass[0] + kMass[1] + kMass[2]) * kG, (kMass[1] + kMass[2]) * kG,
+                             kMass[2] * kG};
+        const double angle[3] = {q[0], q[0], q[0] + q[1]};  // of A, A, B
+        for (int j = 0; j < 3; ++j) {
+            EXPECT_NEAR(L[3 + 2 * j], W[j] * std::cos(angle[j]), 1e-9)
+                << "t = " << t << ", joint " << j;
+            EXPECT_NEAR(L[4 + 2 * j], W[j] * std::sin(angle[j]), 1e-9)
+                << "t = " << t << ", joint " << j;
+        }
+        std::printf("t = %.1f s: knee compressive %.2f N, shear %.2f N; hip %.2f N, %.2f N\n", t,
+                    L[5], L[6], L[7], L[8]);
+    }
+}
+
 TEST_F(SitToStand, FilteredSampledDataReproduceTheExactTorquesAwayFromTheEnds) {
     // the motion sampled at 100 Hz into a CSV in degrees (6 decimals, as the example ships it),
     // read back, filtered at 6 Hz and differentiated; compared with the exact formulas over

@@ -43,7 +43,8 @@ const char* generator_version();
 ///    partial pivoting otherwise; or the explicit `accelerations` when given;
 ///  - inverse dynamics, the load measures from q, q', q'' (the residuals solved for the
 ///    loads symbolically, one decoupled block at a time), when there are as many loads as
-///    coordinates.
+///    coordinates, or from `inverse_residuals` (one per load) when given: road-map rows for
+///    motor torques and joint-reaction measures, more loads than coordinates.
 struct DynamicsEquations {
     /// The generalized coordinates q (with q', q'' declared).
     std::vector<TimeVariable> coordinates{};
@@ -60,6 +61,10 @@ struct DynamicsEquations {
     /// forward dynamics evaluates them instead of solving M q'' = f, in time linear in the
     /// number of bodies. The mass matrix and forcing are still generated from the residuals.
     std::vector<ex> accelerations{};
+    /// Residuals for inverse dynamics, one per load, linear in the loads (road-map rows
+    /// `residuals_of(plan_roadmap(sys, q, loads))` with joint-reaction measures among the
+    /// loads); when given, inverse dynamics solves these instead of `residuals`.
+    std::vector<ex> inverse_residuals{};
 };
 
 /// A quantity the generated code computes on request (an output column of a simulation):

@@ -32,4 +32,28 @@ struct MethodComparison {
 MethodComparison compare_methods(const System& sys, const std::vector<TimeVariable>& q,
                                  int states = 3, unsigned seed = 1);
 
+/// The outcome of comparing the declared joint reactions from road-map rows with brute-force
+/// Newton–Euler's.
+struct ReactionComparison {
+    std::vector<ex> measures;         ///< every declared reaction measure, reaction by reaction
+    int states = 0;                   ///< random states compared
+    double max_difference = 0;        ///< largest difference, scaled by max(1, |value|)
+    std::vector<double> differences;  ///< the same per measure
+};
+
+/// Solves the planned road-map for the accelerations and every declared joint reaction
+/// measure together (forward dynamics, alembert::plan_roadmap) and, independently, the
+/// brute-force Newton–Euler equations for the accelerations and the reactions of the joints
+/// it infers (the declared reaction loads set to zero there, so its reactions carry the whole
+/// joint load), at `states` pseudo-random states drawn as compare_methods() draws them. For
+/// each declared component R_i d_i it compares d_i . F with d_i . F_NE (force components:
+/// F = sum of the reaction's force components, F_NE the force of Newton–Euler's joint of
+/// the same child and parent) or d_i . T with d_i . (T_NE + r^{J/P} x F_NE) (torque
+/// components, P the reaction's point, J Newton–Euler's joint point).
+/// @throws alembert::ModelError if the model declares no joint reaction, or Newton–Euler
+///         joins a reaction's child to another body than its declared parent;
+///         alembert::SolveError as compare_methods().
+ReactionComparison compare_reactions(const System& sys, const std::vector<TimeVariable>& q,
+                                     int states = 3, unsigned seed = 1);
+
 }  // namespace alembert

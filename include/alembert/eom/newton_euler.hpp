@@ -22,13 +22,6 @@ struct NewtonEulerOptions {
     NewtonEulerMode mode = NewtonEulerMode::automatic;
 };
 
-/// One measure of a joint reaction: the unknown times a fixed-in-form direction.
-struct ReactionComponent {
-    ex measure{};           ///< the unknown symbol, e.g. F_AB_x
-    Vector direction{};     ///< the vector it multiplies (a unit vector where one was found)
-    LoadKind kind = LoadKind::force;
-};
-
 /// A joint inferred from the model: body B joined to its parent at point J.
 ///
 /// The reaction force (sum of the force components) acts on B at J and its opposite on the

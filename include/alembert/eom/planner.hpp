@@ -16,8 +16,12 @@ namespace alembert {
 /// point O of S whose partial velocity is zero (the joint, where the unknown forces between S
 /// and the rest act, so they drop out); if S only slides, the row translates along the
 /// partial velocity direction. The planner then checks that S moves as one rigid body about
-/// O (partial velocities of every mass centre equal u x r^{cm/O}); where that fails (closed
-/// loops, rolling), it says so in the row's note.
+/// O (partial angular velocities of every rigid body of S equal u, partial velocities of
+/// every mass centre equal u x r^{cm/O}); where that fails (closed loops, rolling), it says
+/// so in the row's note. These zero tests, and those that decide which unknowns a row holds,
+/// are made at random states through the named intermediates (a symbolic test misses
+/// cancellations inside them), with a symbolic fallback for small expressions that cannot
+/// be evaluated there.
 ///
 /// `unknowns` are what the rows solve for: accelerations q_i'' (forward dynamics), torque or
 /// force measures (inverse dynamics, statics), or coordinates q_i (statics). A coordinate's own
@@ -30,11 +34,34 @@ namespace alembert {
 /// when it can, load measures to the rows that hold them with the fewest other unknowns, and
 /// the later (dependent) coordinates to the constraint rows. Where a row keeps load measures
 /// no choice of S and O eliminated (a closed loop's pin force), its note says so.
+///
+/// Measures of joint reactions the model declares (System::add_joint_reaction) have rows of
+/// their own (the road-map's column 4: treat a force measure as a velocity measure, a torque
+/// measure as an angular velocity measure, and see what moves). For a force measure along u
+/// at the joint between S's parent and S, the row translates along u with S = what would move
+/// if the joint could slide along u: the child and every body placed from it
+/// (alembert::calc_bodies_beyond); for a torque measure about u it rotates about u with the
+/// same S, about the joint point. Every other joint force of the model is internal to S or
+/// acts on the rest, so the row keeps the measure, the accelerations (dynamics) and the loads
+/// on S. Where S meets the rest at a second joint (a closed loop), the row's note says so.
+///
+/// When reaction measures are among the unknowns, the rows come out in an order in which
+/// they can be solved one block after another (without, in the order of `unknowns`): each
+/// block needs only the unknowns of the blocks before it (a stable topological order of the
+/// strongly connected components of "row i holds the unknown of row j"); where a block with
+/// reaction rows has more than one row, their notes name the rows solved with them.
 /// @throws alembert::ModelError naming the unknown if no row holds it, or if there are more
-///         unknowns than coordinates and constraint rows.
+///         unknowns (besides reaction measures) than coordinates and constraint rows.
 std::vector<RoadmapRow> plan_roadmap(const System& sys,
                                      const std::vector<TimeVariable>& coordinates,
                                      const std::vector<ex>& unknowns,
                                      Analysis analysis = Analysis::dynamics);
+
+/// The system S of a joint reaction's rows: the child and every body whose mass centre is
+/// placed (through located-from points) from a point of the child, or whose frame is
+/// oriented (through parent frames) from the child's frame.
+/// @throws alembert::ModelError if the reaction's parent is among them (parent and child
+///         swapped).
+BodySet calc_bodies_beyond(const System& sys, const JointReaction& reaction);
 
 }  // namespace alembert

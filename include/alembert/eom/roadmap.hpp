@@ -60,6 +60,11 @@ void form_constraint_row(const System& sys, RoadmapRow& row, const std::vector<e
 /// what exerts it, gravity, and the joints where S connects to the rest (unknown forces).
 std::vector<std::string> describe_free_body_diagram(const System& sys, const BodySet& S);
 
+/// The same, marking the loads whose unknown measures the row's `equation` does not keep
+/// ("(unknown, drops out)": a joint force through the about point, a force normal to u).
+std::vector<std::string> describe_free_body_diagram(const System& sys, const BodySet& S,
+                                                    const ex& equation);
+
 /// The road-map as an aligned text table (variable | translate/rotate | direction | system S |
 /// FBD of S | about point | equation | additional unknowns), followed by the equations.
 std::string format_roadmap_table(const System& sys, const std::vector<RoadmapRow>& rows);

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "alembert/vec/vector.hpp"
 
@@ -31,6 +32,26 @@ struct Load {
     /// calc_potential_energy() (springs, inverse-square gravity); Lagrange's method takes
     /// such loads through the potential energy instead of generalized forces.
     bool conservative = false;
+};
+
+/// One measure of a joint reaction: the unknown times a direction (a force along it or a
+/// torque about it).
+struct ReactionComponent {
+    ex measure{};        ///< the unknown symbol, e.g. F_AB_x
+    Vector direction{};  ///< the vector it multiplies (a unit vector where one was found)
+    LoadKind kind = LoadKind::force;
+};
+
+/// A joint reaction the user declares: the force sum R_i d_i (force components) that the
+/// parent exerts on the child at the point `at`, with the torque sum R_j d_j (torque
+/// components), and their opposites on the parent. Its measures R are unknowns a road-map
+/// solves for (alembert::plan_roadmap gives each its own row).
+struct JointReaction {
+    std::string name;                           ///< the user's name for the joint ("knee")
+    const Body* parent = nullptr;               ///< the body exerting it; nullptr for the ground
+    const Body* child = nullptr;                ///< the body it acts on
+    const Point* at = nullptr;                  ///< where the force acts (the joint)
+    std::vector<ReactionComponent> components;  ///< force components, then torque components
 };
 
 }  // namespace alembert

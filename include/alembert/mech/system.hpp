@@ -113,6 +113,24 @@ public:
     /// the force on P is -G m_P m_Q / |r|^2 r/|r|, r = r^{P/Q}, and the opposite on Q.
     void add_inverse_square_gravity(const Point& P, const Point& Q, const ex& G,
                                     const std::string& label = "");
+    /// A joint reaction between `parent` (nullptr: the ground) and `child` at the point `at`:
+    /// the force sum F_i d_i over `forces` and the torque sum T_j d_j over `torques`, exerted
+    /// by the parent on the child (at `at`), and their opposites on the parent. Each measure
+    /// must be an unknown of the symbol table, used by no other reaction; its load is recorded
+    /// as a load labelled with the measure's name. Returns the reaction recorded.
+    /// Reactions are constraint forces: declared along directions in which the joint moves
+    /// freely they would do work, so declare them along the directions the joint prevents.
+    /// @throws alembert::ArgumentError if the name is empty or taken, if there is no
+    ///         component, a measure is not an unknown symbol or is used twice, a direction is
+    ///         zero, or parent and child are the same body.
+    const JointReaction& add_joint_reaction(const std::string& name, const Body* parent,
+                                            const Body& child, const Point& at,
+                                            const std::vector<ReactionComponent>& forces,
+                                            const std::vector<ReactionComponent>& torques = {});
+    /// Every declared joint reaction, in the order declared.
+    const std::vector<JointReaction>& joint_reactions() const { return reactions_; }
+    /// The joint reaction one of whose measures is `measure`, or nullptr.
+    const JointReaction* reaction_of(const ex& measure) const;
     /// Every load, in the order added (gravity is applied when resultants are formed).
     const std::vector<Load>& loads() const { return loads_; }
     /// The gravity vector (zero if none).
@@ -178,6 +196,7 @@ private:
     std::vector<std::unique_ptr<Body>> bodies_;
     std::vector<Load> loads_;
     std::vector<Constraint> constraints_;
+    std::vector<JointReaction> reactions_;
     std::vector<Potential> potentials_;
     Vector gravity_;
 };
