@@ -94,10 +94,12 @@ std::vector<std::string> describe_free_body_diagram(const System& sys, const Bod
         out.push_back(g);
     }
     // joints: points of S located from a point that is not on S carry unknown contact loads
+    // (a declared reaction's measures, listed above, stand for them)
     for (const Point* p : sys.points()) {
         if (!member(S, p->owner()) || !p->located_from()) continue;
         const Point* from = p->located_from();
-        if (member(S, from->owner())) continue;
+        if (member(S, from->owner()) || sys.find_joint_reaction(*p, from->owner(), p->owner()))
+            continue;
         out.push_back("joint force at " + p->name() + " from " +
                       body_or_ground(sys, from->owner()) + " (unknown)");
     }

@@ -203,4 +203,11 @@ void System::add_inverse_square_gravity(const Point& P, const Point& Q, const ex
     potentials_.push_back({-mm / l.length});
 }
 
+const JointReaction* System::find_joint_reaction(const Point& at, const Body* parent,
+                                                 const Body* child) const {
+    for (const JointReaction& r : reactions_)
+        if (r.at == &at && r.parent == parent && r.child == child) return &r;
+    return nullptr;
+}
+
 }  // namespace alembert

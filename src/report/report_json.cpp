@@ -255,7 +255,9 @@ std::string diagram_json(const System& sys, const Evaluation& ev, const RoadmapR
     for (const Point* p : sys.points()) {
         if (!member(S, p->owner()) || !p->located_from()) continue;
         const Point* from = p->located_from();
-        if (member(S, from->owner())) continue;
+        // a declared reaction's measures, drawn above, stand for the joint's force
+        if (member(S, from->owner()) || sys.find_joint_reaction(*p, from->owner(), p->owner()))
+            continue;
         load("joint", "from " + ground_or(sys, from->owner()), p, {}, true);
     }
     std::vector<std::string> names;

@@ -230,17 +230,22 @@ def main():
     dom.feed(dump.stdout)
     check(dom.status == "ready", "the viewer finished (data-status %r)" % dom.status)
     check(dom.errors.strip() == "", "the viewer reports no errors (%r)" % dom.errors.strip()[:300])
-    # the seed's three rows: {A,B,C} about A_o: T_A, gravity at Acm, Bcm, Ccm, the ground's
-    # force at A_o; {B,C} about B_o: T_B, 2 x gravity, A's force; {C} about C_o: T_C, gravity, B's force
-    check(len(dom.fbds) == 3, "one free-body diagram per road-map row (%d)" % len(dom.fbds))
-    check([f[1] for f in dom.fbds] == [5, 4, 3], "arrows per diagram are the loads on S: %s" % dom.fbds)
+    # the seed's three rows, then a row per declared reaction measure (compressive and shear at
+    # the ankle, knee and hip). Loads on S: {A,B,C} (rows T_A, F_Ac, F_As): T_A, gravity at
+    # Acm, Bcm, Ccm and the ankle's two components at A_o (they stand for the joint's force);
+    # {B,C} (T_B, F_Kc, F_Ks): T_B, 2 x gravity, the knee's two; {C} (T_C, F_Hc, F_Hs): T_C,
+    # gravity, the hip's two
+    check(len(dom.fbds) == 9, "one free-body diagram per road-map row (%d)" % len(dom.fbds))
+    check([f[1] for f in dom.fbds] == [6, 5, 4, 6, 6, 5, 5, 4, 4],
+          "arrows per diagram are the loads on S: %s" % dom.fbds)
     check(all(f[0] == f[1] for f in dom.fbds), "every load of the data is drawn")
-    check(dom.equations == 3, "one equation per row (%d)" % dom.equations)
+    check(dom.equations == 9, "one equation per row (%d)" % dom.equations)
     check(dom.katex == dom.equations, "every equation typeset by KaTeX (%d of %d)" % (dom.katex, dom.equations))
     check(dom.raw == 0 and dom.text_backslashes == 0,
           "no raw TeX left (%d raw boxes, %d texts with backslashes)" % (dom.raw, dom.text_backslashes))
-    check(dom.plots >= 1 and dom.series == 3 and dom.legend_boxes == 3,
-          "the torque plot with T_A, T_B, T_C and their toggles (%d plots, %d series)" % (dom.plots, dom.series))
+    check(dom.plots >= 1 and dom.series == 9 and dom.legend_boxes == 9,
+          "the plot of the torques and the joints' force components with their toggles "
+          "(%d plots, %d series)" % (dom.plots, dom.series))
     check(dom.anim == 1 and dom.anim_sticks >= 3 and dom.play and dom.slider,
           "the animation with its sticks, play button and time slider")
 

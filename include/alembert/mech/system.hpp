@@ -129,6 +129,10 @@ public:
                                             const std::vector<ReactionComponent>& torques = {});
     /// Every declared joint reaction, in the order declared.
     const std::vector<JointReaction>& joint_reactions() const { return reactions_; }
+    /// The joint reaction declared at point `at` between `parent` (nullptr: the ground) and
+    /// `child`, or nullptr: free-body diagrams draw its measures in place of the joint's force.
+    const JointReaction* find_joint_reaction(const Point& at, const Body* parent,
+                                             const Body* child) const;
     /// The joint reaction one of whose measures is `measure`, or nullptr.
     const JointReaction* reaction_of(const ex& measure) const;
     /// Every load, in the order added (gravity is applied when resultants are formed).
