@@ -17,6 +17,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "alembert/cleanup.hpp"
 #include "alembert/error.hpp"
 #include "alembert/lang/interpreter.hpp"
 #include "alembert/lang/lexer.hpp"
@@ -74,19 +75,69 @@ bool read_script(const std::string& path, std::string& text) {
 
 std::string display_name(const std::string& path) { return path == "-" ? "<stdin>" : path; }
 
+// the output directory exists (or is created) and takes files; false (and a message) if not,
+// before any work starts
+bool check_output_dir(const std::string& dir) {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    if (fs::exists(dir, ec) && !fs::is_directory(dir, ec)) {
+        std::cerr << "alembert: --out '" << dir << "' is not a directory; name a directory to write into\n";
+        return false;
+    }
+    fs::create_directories(dir, ec);
+    if (ec) {
+        std::cerr << "alembert: --out '" << dir << "': cannot create the directory (" << ec.message()
+                  << "); choose a place you can write to\n";
+        return false;
+    }
+    // a probe file, removed at once: permissions alone do not tell (root, read-only mounts)
+    std::string probe = (fs::path(dir) / ".alembert-probe-XXXXXX").string();
+    const int fd = ::mkstemp(probe.data());
+    if (fd < 0) {
+        std::cerr << "alembert: --out '" << dir << "': cannot write there (" << std::strerror(errno)
+                  << "); choose a place you can write to\n";
+        return false;
+    }
+    ::close(fd);
+    ::unlink(probe.c_str());
+    return true;
+}
+
+// the settings run, inverse and codegen share
+struct LimitOptions {
+    bool allow_outside_out = false;
+    std::size_t max_terms = alembert::lang::kDefaultMaxTerms;
+};
+
+void add_limit_options(CLI::App& c, LimitOptions& o) {
+    c.add_flag("--allow-outside-out", o.allow_outside_out,
+               "let a script's 'to \"dir\"' name an absolute path or leave --out through '..'");
+    c.add_option("--max-terms", o.max_terms,
+                 "largest expansion expand() and simplify() may form (default 100000)")
+        ->check(CLI::PositiveNumber);
+}
+
+void apply(const LimitOptions& o, Interpreter& interp) {
+    interp.set_allow_outside_output(o.allow_outside_out);
+    interp.set_max_terms(o.max_terms);
+}
+
 // ---- subcommands ------------------------------------------------------------------------
 
 struct RunOptions {
     std::string file;
     bool quiet = false;
     std::string out = ".";
+    LimitOptions limits;
 };
 
 int run_script(const RunOptions& o) {
     std::string text;
     if (!read_script(o.file, text)) return kUsageError;
+    if (!check_output_dir(o.out)) return kUsageError;
     Interpreter interp(std::cout, std::cerr, !o.quiet);
     interp.set_output_dir(o.out);
+    apply(o.limits, interp);
     return exit_status(interp.run(text, display_name(o.file)));
 }
 
@@ -100,6 +151,7 @@ struct ModelCommandOptions {
     bool compiled = false;
     std::string language;
     std::string name;
+    LimitOptions limits;
 };
 
 int run_model_command(const ModelCommandOptions& o, bool inverse) {
@@ -109,9 +161,11 @@ int run_model_command(const ModelCommandOptions& o, bool inverse) {
         std::cerr << "alembert inverse: the motion table '" << o.motion << "' is not a file\n";
         return kUsageError;
     }
+    if (!check_output_dir(o.out)) return kUsageError;
     Interpreter interp(std::cout, std::cerr, false);
     interp.set_model_only(true);
     interp.set_output_dir(o.out);
+    apply(o.limits, interp);
     RunStatus s = interp.run(text, display_name(o.file));
     if (s != RunStatus::ok) return exit_status(s);
     return exit_status(inverse ? interp.run_inverse(o.motion, o.cutoff_hz, o.compiled)
@@ -231,6 +285,7 @@ int main(int argc, char** argv) {
              c.add_flag("-q,--quiet", run_opts.quiet, "print only results, not the statements");
              c.add_option("--out", run_opts.out,
                           "directory for the files of simulate, inverse and codegen (default: .)");
+             add_limit_options(c, run_opts.limits);
          },
          [&] { return run_script(run_opts); }},
         {"roadmap", "Print the MG road-map table of the model in a script",
@@ -250,6 +305,7 @@ int main(int argc, char** argv) {
                           "low-pass Butterworth cutoff in Hz before differentiating (0: no filter; default 6)")
                  ->check(CLI::NonNegativeNumber);
              c.add_flag("--compiled", inverse_opts.compiled, "evaluate through compiled C code");
+             add_limit_options(c, inverse_opts.limits);
          },
          [&] { return run_model_command(inverse_opts, true); }},
         {"codegen", "Generate C, C++, MATLAB/Octave or Python code for a script's model",
@@ -260,6 +316,7 @@ int main(int argc, char** argv) {
                  ->check(CLI::IsMember({"c", "cpp", "c++", "matlab", "octave", "python"}));
              c.add_option("--out", codegen_opts.out, "directory for the generated files")->required();
              c.add_option("--name", codegen_opts.name, "prefix of the files and functions (default: the script's name)");
+             add_limit_options(c, codegen_opts.limits);
          },
          [&] { return run_model_command(codegen_opts, false); }},
     };
@@ -278,7 +335,11 @@ int main(int argc, char** argv) {
     }
     try {
         for (std::size_t i = 0; i < table.size(); ++i)
-            if (commands[i]->parsed()) return table[i].action();
+            if (commands[i]->parsed()) {
+                // an interrupted command removes its temporary files and child processes
+                alembert::install_interrupt_cleanup();
+                return table[i].action();
+            }
         return interactive();
     } catch (const std::exception& e) {
         std::cerr << "alembert: internal error: " << e.what() << "\n";

@@ -98,6 +98,8 @@ struct Interpreter::Impl {
     std::string script_file{};        ///< as named in diagnostics
     std::string script_name = "model";  ///< the script's stem, naming the model in messages and files
     bool model_only = false;          ///< skip simulate, inverse and codegen
+    bool allow_outside_output = false;  ///< `to` may leave output_dir (--allow-outside-out)
+    std::size_t max_terms = kDefaultMaxTerms;  ///< largest expansion expand/simplify may form
 
     // ---- statements (interpreter.cpp, interpreter_equations.cpp) ---------------------------
     void execute(const Statement& s);
