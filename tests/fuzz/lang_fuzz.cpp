@@ -15,8 +15,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-// the files scripts write (simulate, inverse, codegen) go to one temporary directory,
-// emptied after each input and removed when the fuzzer exits
+// the files scripts write (simulate, inverse, codegen, compiled evaluators) go to one
+// temporary directory, emptied after each input and removed when the fuzzer exits (a crash
+// or timeout ends it at once and leaves the directory, alembert-fuzz-*, for inspection)
 fs::path g_out;
 
 void remove_output_dir() {
@@ -26,11 +27,21 @@ void remove_output_dir() {
 
 }  // namespace
 
+// ASan's memory of its own, which libFuzzer counts against -rss_limit_mb: a quarantine of
+// freed blocks (256 MB by default) and a stack trace per allocation site. Smaller settings
+// keep a long run's resident size well under the limit (docs/fuzzing.md, Memory); an
+// ASAN_OPTIONS variable still overrides them.
+extern "C" const char* __asan_default_options() {
+    return "quarantine_size_mb=16:malloc_context_size=5:allocator_release_to_os_interval_ms=500";
+}
+
 extern "C" int LLVMFuzzerInitialize(int*, char***) {
     std::string pattern = (fs::temp_directory_path() / "alembert-fuzz-XXXXXX").string();
     if (!::mkdtemp(pattern.data())) std::abort();
     g_out = pattern;
     std::atexit(remove_output_dir);
+    // the compiled evaluators' cache (temp_directory_path()/alembert-native) goes there too
+    ::setenv("TMPDIR", pattern.c_str(), 1);
     return 0;
 }
 
