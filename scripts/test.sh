@@ -17,10 +17,10 @@ have_libfuzzer() {
   local dir
   dir=$(mktemp -d)
   printf 'extern "C" int LLVMFuzzerTestOneInput(const unsigned char*, unsigned long) { return 0; }\n' >"$dir/f.cpp"
-  clang++ -fsanitize=fuzzer,address "$dir/f.cpp" -o "$dir/f" >/dev/null 2>&1
-  local ok=$?
+  local ok=0
+  clang++ -fsanitize=fuzzer,address "$dir/f.cpp" -o "$dir/f" >/dev/null 2>&1 || ok=1
   rm -rf "$dir"
-  return $ok
+  return "$ok"
 }
 
 if [[ ${ALEMBERT_CI_SANITIZE:-1} == 1 ]]; then
