@@ -8,6 +8,7 @@ packages=(
   libgtest-dev libgmock-dev googletest libbenchmark-dev
   libboost-dev libfmt-dev libcli11-dev libedit-dev
   gnuplot-nox
+  clang libclang-rt-14-dev  # the sanitizer pass builds the fuzz target (docs/fuzzing.md)
   python3-numpy python3-scipy  # the tests run the generated Python
   libjs-katex                  # HTML reports typeset their equations with KaTeX (inlined)
   chromium                     # the tests open the HTML report in headless Chromium

@@ -19,6 +19,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "alembert/cleanup.hpp"
 #include "alembert/error.hpp"
 #include "alembert/lang/interpreter.hpp"
 #include "alembert/lang/lexer.hpp"
@@ -77,6 +78,53 @@ bool read_script(const std::string& path, std::string& text) {
 
 std::string display_name(const std::string& path) { return path == "-" ? "<stdin>" : path; }
 
+// the output directory exists (or is created) and takes files; false (and a message) if not,
+// before any work starts
+bool check_output_dir(const std::string& dir) {
+    namespace fs = std::filesystem;
+    std::error_code ec;
+    if (fs::exists(dir, ec) && !fs::is_directory(dir, ec)) {
+        std::cerr << "alembert: --out '" << dir << "' is not a directory; name a directory to write into\n";
+        return false;
+    }
+    fs::create_directories(dir, ec);
+    if (ec) {
+        std::cerr << "alembert: --out '" << dir << "': cannot create the directory (" << ec.message()
+                  << "); choose a place you can write to\n";
+        return false;
+    }
+    // a probe file, removed at once: permissions alone do not tell (root, read-only mounts)
+    std::string probe = (fs::path(dir) / ".alembert-probe-XXXXXX").string();
+    const int fd = ::mkstemp(probe.data());
+    if (fd < 0) {
+        std::cerr << "alembert: --out '" << dir << "': cannot write there (" << std::strerror(errno)
+                  << "); choose a place you can write to\n";
+        return false;
+    }
+    ::close(fd);
+    ::unlink(probe.c_str());
+    return true;
+}
+
+// the settings run, inverse and codegen share
+struct LimitOptions {
+    bool allow_outside_out = false;
+    std::size_t max_terms = alembert::lang::kDefaultMaxTerms;
+};
+
+void add_limit_options(CLI::App& c, LimitOptions& o) {
+    c.add_flag("--allow-outside-out", o.allow_outside_out,
+               "let a script's 'to \"dir\"' name an absolute path or leave --out through '..'");
+    c.add_option("--max-terms", o.max_terms,
+                 "largest expansion expand() and simplify() may form (default 100000)")
+        ->check(CLI::PositiveNumber);
+}
+
+void apply(const LimitOptions& o, Interpreter& interp) {
+    interp.set_allow_outside_output(o.allow_outside_out);
+    interp.set_max_terms(o.max_terms);
+}
+
 // ---- subcommands ------------------------------------------------------------------------
 
 struct RunOptions {
@@ -84,14 +132,17 @@ struct RunOptions {
     bool quiet = false;
     std::string out = ".";
     int digits = 6;
+    LimitOptions limits;
 };
 
 int run_script(const RunOptions& o) {
     std::string text;
     if (!read_script(o.file, text)) return kUsageError;
+    if (!check_output_dir(o.out)) return kUsageError;
     Interpreter interp(std::cout, std::cerr, !o.quiet);
     interp.set_output_dir(o.out);
     interp.set_digits(o.digits);
+    apply(o.limits, interp);
     return exit_status(interp.run(text, display_name(o.file)));
 }
 
@@ -106,6 +157,7 @@ struct ModelCommandOptions {
     std::string unitless;
     std::string language;
     std::string name;
+    LimitOptions limits;
 };
 
 int run_model_command(const ModelCommandOptions& o, bool inverse) {
@@ -115,9 +167,11 @@ int run_model_command(const ModelCommandOptions& o, bool inverse) {
         std::cerr << "alembert inverse: the motion table '" << o.motion << "' is not a file\n";
         return kUsageError;
     }
+    if (!check_output_dir(o.out)) return kUsageError;
     Interpreter interp(std::cout, std::cerr, false);
     interp.set_model_only(true);
     interp.set_output_dir(o.out);
+    apply(o.limits, interp);
     RunStatus s = interp.run(text, display_name(o.file));
     if (s != RunStatus::ok) return exit_status(s);
     return exit_status(inverse ? interp.run_inverse(o.motion, o.cutoff_hz, o.compiled, o.unitless)
@@ -174,7 +228,7 @@ int write_report_command(const ReportOptions& o) {
 volatile std::sig_atomic_t g_interrupted = 0;
 volatile std::sig_atomic_t g_running = 0;
 
-extern "C" void on_interrupt(int) {
+extern "C" void on_session_interrupt(int) {
     if (g_running) {
         if (g_interrupted) {
             std::signal(SIGINT, SIG_DFL);
@@ -255,7 +309,7 @@ int interactive() {
     std::string history = history_path();
     if (terminal) {
         struct sigaction sa {};
-        sa.sa_handler = on_interrupt;
+        sa.sa_handler = on_session_interrupt;
         sa.sa_flags = SA_RESTART;
         sigemptyset(&sa.sa_mask);
         sigaction(SIGINT, &sa, nullptr);
@@ -355,6 +409,7 @@ int main(int argc, char** argv) {
                           "significant digits of printed numbers, 1 to 17 (default: 6; a script's "
                           "digits statement changes it; CSV files always read back exactly)")
                  ->check(CLI::Range(1, 17));
+             add_limit_options(c, run_opts.limits);
          },
          [&] { return run_script(run_opts); }},
         {"roadmap", "Print the MG road-map table of the model in a script",
@@ -376,6 +431,7 @@ int main(int argc, char** argv) {
              c.add_flag("--compiled", inverse_opts.compiled, "evaluate through compiled C code");
              c.add_option("--unitless", inverse_opts.unitless,
                           "read coordinate columns without a unit in the header in this unit (deg, rad, m, mm)");
+             add_limit_options(c, inverse_opts.limits);
          },
          [&] { return run_model_command(inverse_opts, true); }},
         {"codegen", "Generate C, C++, MATLAB/Octave or Python code for a script's model",
@@ -386,6 +442,7 @@ int main(int argc, char** argv) {
                  ->check(CLI::IsMember({"c", "cpp", "c++", "matlab", "octave", "python"}));
              c.add_option("--out", codegen_opts.out, "directory for the generated files")->required();
              c.add_option("--name", codegen_opts.name, "prefix of the files and functions (default: the script's name)");
+             add_limit_options(c, codegen_opts.limits);
          },
          [&] { return run_model_command(codegen_opts, false); }},
         {"report", "Run a script and write its HTML report: road-map with free-body diagrams, equations, plots, motion",
@@ -411,7 +468,11 @@ int main(int argc, char** argv) {
     }
     try {
         for (std::size_t i = 0; i < table.size(); ++i)
-            if (commands[i]->parsed()) return table[i].action();
+            if (commands[i]->parsed()) {
+                // an interrupted command removes its temporary files and child processes
+                alembert::install_interrupt_cleanup();
+                return table[i].action();
+            }
         return interactive();
     } catch (const std::exception& e) {
         std::cerr << "alembert: internal error: " << e.what() << "\n";

@@ -13,6 +13,7 @@
 #include <sstream>
 #include <system_error>
 
+#include "alembert/cleanup.hpp"
 #include "alembert/error.hpp"
 
 extern char** environ;
@@ -35,27 +36,23 @@ void ensure_directory(const fs::path& dir, const char* who) {
 
 void write_file_atomically(const fs::path& path, const std::string& text, const char* who) {
     static std::atomic<unsigned> counter{0};
-    fs::path tmp = path;
-    tmp += ".tmp." + std::to_string(::getpid()) + "." + std::to_string(counter++);
+    fs::path name = path;
+    name += ".tmp." + std::to_string(::getpid()) + "." + std::to_string(counter++);
+    TemporaryFile tmp(name.string());  // removed on failure and if the run is interrupted
     {
-        std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+        std::ofstream out(tmp.path(), std::ios::binary | std::ios::trunc);
         if (out) out << text;
         out.close();
-        if (!out) {
-            std::error_code ignored;
-            fs::remove(tmp, ignored);
+        if (!out)
             throw ArgumentError(std::string(who) + ": cannot write '" + path.string() +
                                 "' (is the directory writable and the disk not full?)");
-        }
     }
     std::error_code ec;
-    fs::rename(tmp, path, ec);
-    if (ec) {
-        std::error_code ignored;
-        fs::remove(tmp, ignored);
+    fs::rename(tmp.path(), path, ec);
+    if (ec)
         throw ArgumentError(std::string(who) + ": cannot replace '" + path.string() + "' (" +
                             ec.message() + ")");
-    }
+    tmp.release();
 }
 
 fs::path find_program(const std::string& name) {
@@ -85,6 +82,7 @@ int run_program(const std::vector<std::string>& argv, const fs::path& log) {
     int rc = ::posix_spawn(&pid, args[0], &actions, nullptr, args.data(), environ);
     posix_spawn_file_actions_destroy(&actions);
     if (rc != 0) return -1;
+    ChildProcess child(pid);  // terminated if the run is interrupted
     int status = 0;
     while (::waitpid(pid, &status, 0) < 0)
         if (errno != EINTR) return -1;

@@ -13,6 +13,7 @@
 
 #include "alembert/codegen/code_printer.hpp"
 #include "alembert/codegen/codegen.hpp"
+#include "alembert/cleanup.hpp"
 #include "alembert/error.hpp"
 #include "file_writer.hpp"
 
@@ -123,6 +124,8 @@ NativeExpressions::NativeExpressions(CompiledExpressions tape, const NativeOptio
                                  "." + std::to_string(counter++);
         const fs::path src = dir / (stem + ".c"), tmp = dir / (stem + ".so"),
                        log = dir / (stem + ".log");
+        // removed if the run is interrupted; a failed compilation keeps the source and log
+        TemporaryFile src_file(src.string()), tmp_file(tmp.string()), log_file(log.string());
         detail::write_file_atomically(src, source_, kNativeWho);
         std::vector<std::string> argv{compiler.string()};
         argv.insert(argv.end(), options.flags.begin(), options.flags.end());
@@ -136,12 +139,12 @@ NativeExpressions::NativeExpressions(CompiledExpressions tape, const NativeOptio
             message_ = std::string(kNativeWho) + ": the C compiler '" + compiler.string() +
                        "' failed (exit status " + std::to_string(rc) + ") on " + src.string() +
                        "; evaluating on the interpreted tape. Its output:" + head_of(log);
-            fs::remove(tmp, ec);
+            src_file.release();
+            log_file.release();
             return;  // the source and log stay for inspection
         }
         fs::rename(tmp, library, ec);
-        fs::remove(src, ec);
-        fs::remove(log, ec);
+        if (!ec) tmp_file.release();
     }
 
     // ---- load --------------------------------------------------------------------------------

@@ -53,6 +53,10 @@ void Interpreter::set_output_dir(const std::string& dir) { impl_->output_dir = d
 
 void Interpreter::set_model_only(bool model_only) { impl_->model_only = model_only; }
 
+void Interpreter::set_allow_outside_output(bool allow) { impl_->allow_outside_output = allow; }
+
+void Interpreter::set_max_terms(std::size_t max_terms) { impl_->max_terms = max_terms; }
+
 namespace {
 
 // runs a command of the public API, reporting a ScriptError or library error as `who: error`
@@ -116,6 +120,8 @@ RunStatus Interpreter::write_report(const std::string& dir) {
 
 RunStatus Interpreter::run(std::string_view source, const std::string& file, int first_line) {
     Impl& m = *impl_;
+    // a UTF-8 byte-order mark some editors put at the start of a file is not part of the script
+    if (first_line == 1 && source.starts_with("\xEF\xBB\xBF")) source.remove_prefix(3);
     m.last_error.reset();
     m.transcript.set_muted(m.model_only);
     if (m.script_file.empty()) {

@@ -1,6 +1,8 @@
 // SPDX-License-Identifier: MIT
 // Expressions: values, dimension checks, functions and the monogram names of kinematic calls.
 #include <cmath>
+#include <iomanip>
+#include <sstream>
 
 #include "alembert/lang/lexer.hpp"
 #include "interpreter_impl.hpp"
@@ -403,7 +405,21 @@ Value Interpreter::Impl::eval_call(const Expr& e) {
     if (f == "simplify" || f == "expand") {
         want(1, f + "(x)");
         Value x = eval(*a[0]);
-        auto op = [&](const ex& s) { return f == "simplify" ? alembert::simplify(s) : GiNaC::expand(s); };
+        auto op = [&](const ex& s) {
+            // the expansion's size is bounded before GiNaC builds it
+            const double terms = estimate_expansion_terms(s);
+            if (terms > static_cast<double>(max_terms)) {
+                std::ostringstream n;  // whole numbers while exact, else 3 digits
+                if (terms < 1e15) n << std::fixed << std::setprecision(0) << terms;
+                else n << std::setprecision(3) << terms;
+                throw ScriptError(e.location,
+                                  f + "(): expanding the expression would form up to " + n.str() +
+                                      " terms, more than the limit of " + std::to_string(max_terms),
+                                  "factor or split the expression, or raise the limit with --max-terms "
+                                  "(Interpreter::set_max_terms)");
+            }
+            return f == "simplify" ? alembert::simplify(s) : GiNaC::expand(s);
+        };
         guarded([&] {
             if (x.kind == Kind::scalar) x.s = op(x.s);
             else if (x.kind == Kind::vector) x.v = x.v.map(op);

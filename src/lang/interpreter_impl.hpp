@@ -111,6 +111,8 @@ struct Interpreter::Impl {
     bool model_only = false;          ///< skip simulate, inverse and codegen
     /// What simulate and inverse computed, in run order, for the report.
     std::vector<ReportHistory> histories{};
+    bool allow_outside_output = false;  ///< `to` may leave output_dir (--allow-outside-out)
+    std::size_t max_terms = kDefaultMaxTerms;  ///< largest expansion expand/simplify may form
 
     // ---- statements ------------------------------------------------------------------------
     /// Runs one parsed statement: its StatementSpec::run from the registry (statements.hpp),

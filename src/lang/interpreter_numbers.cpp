@@ -295,7 +295,17 @@ void Interpreter::Impl::add_event(const Statement& s) {
 std::string Interpreter::Impl::output_path(const Statement& s) const {
     namespace fs = std::filesystem;
     if (!s.has_word("to")) return output_dir;
-    fs::path p(s.word("to").text);
+    const Word& to = s.word("to");
+    fs::path p(to.text);
+    // a script writes inside the output directory unless its user allows more
+    if (!allow_outside_output) {
+        const fs::path inside = p.lexically_normal();
+        if (p.is_absolute() || p.has_root_name() || (!inside.empty() && *inside.begin() == ".."))
+            throw ScriptError(to.location, "to \"" + to.text + "\" leaves the output directory '" +
+                                               output_dir + "' (--out)",
+                              "write to a directory inside it, such as to \"results\", or allow it with "
+                              "--allow-outside-out");
+    }
     return p.is_absolute() ? p.string() : (fs::path(output_dir) / p).string();
 }
 
@@ -310,6 +320,7 @@ void Interpreter::Impl::simulate(const Statement& s) {
     if (model_only) return;
     System& sys = model(s.location);
     const SymbolTable& table = sys.symbols();
+    const std::string dir = output_path(s);  // refused before the work starts
     SimulationRequest r;
     r.model = script_name;
     r.coordinates = default_coordinates();
@@ -347,7 +358,6 @@ void Interpreter::Impl::simulate(const Statement& s) {
     SimulationResult res = guard(s.location, [&] { return run_simulation(sys, r); },
                                  "check the initial values and the loads; a singular mass matrix "
                                  "means the coordinates do not fix the model's configuration");
-    const std::string dir = output_path(s);
     PlotResult plot = guard(s.location, [&] { return write_table_and_plot(res.table, dir, "simulation"); });
     record_history("simulation", res.table, nullptr);
     std::ostringstream out;

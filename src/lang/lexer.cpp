@@ -20,6 +20,8 @@ std::string describe_char(char32_t c, std::string_view bytes) {
         std::snprintf(buf, sizeof buf, "U+%04X", static_cast<unsigned>(c));
         return std::string("control character ") + buf;
     }
+    // invisible in an editor: named (only the start of a script may carry one)
+    if (c == 0xFEFF) return "U+FEFF (a byte-order mark, allowed only at the start of the script)";
     return "'" + std::string(bytes) + "'";
 }
 

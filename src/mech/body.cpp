@@ -77,8 +77,11 @@ Vector RigidBody::calc_angular_momentum(const Point& O, const Frame& N) const {
 }
 
 ex RigidBody::calc_kinetic_energy(const Frame& N) const {
-    Vector w = frame_->ang_vel_in(N);
-    return Body::calc_kinetic_energy(N) + dot(w, dot(inertia(), w)) / 2;
+    // the body's own inertia first, so that a missing one is the error reported whatever
+    // order the compiler evaluates the sum's operands in
+    const Dyadic I = inertia();
+    const Vector w = frame_->ang_vel_in(N);
+    return Body::calc_kinetic_energy(N) + dot(w, dot(I, w)) / 2;
 }
 
 }  // namespace alembert

@@ -2,14 +2,22 @@
 // gnuplot driven through a pipe: one panel per unit, PNG then SVG.
 #include "alembert/sim/plot.hpp"
 
+#include <fcntl.h>
+#include <signal.h>
+#include <spawn.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
+#include <cerrno>
 #include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <map>
 
+#include "alembert/cleanup.hpp"
 #include "alembert/error.hpp"
+
+extern char** environ;
 
 namespace alembert {
 
@@ -30,6 +38,51 @@ std::string shell_quoted(const std::string& s) {
 
 std::string label(const Table& t, std::size_t c) {
     return t.units[c].empty() ? t.names[c] : t.names[c] + " [" + t.units[c] + "]";
+}
+
+// runs gnuplot on `script` with its standard error in `errors`; false if it cannot start.
+// The child is registered so that an interrupted run terminates it.
+bool run_gnuplot(const std::string& script, const std::string& errors, int& status) {
+    int fds[2];
+    if (::pipe(fds) != 0) return false;
+    ::fcntl(fds[1], F_SETFD, FD_CLOEXEC);
+    posix_spawn_file_actions_t actions;
+    posix_spawn_file_actions_init(&actions);
+    posix_spawn_file_actions_adddup2(&actions, fds[0], 0);
+    posix_spawn_file_actions_addclose(&actions, fds[0]);
+    posix_spawn_file_actions_addopen(&actions, 2, errors.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
+    std::string program = gnuplot_program();
+    char* argv[] = {program.data(), nullptr};
+    pid_t pid = 0;
+    const int rc = ::posix_spawnp(&pid, program.c_str(), &actions, nullptr, argv, environ);
+    posix_spawn_file_actions_destroy(&actions);
+    ::close(fds[0]);
+    if (rc != 0) {
+        ::close(fds[1]);
+        return false;
+    }
+    ChildProcess child(pid);
+    // a gnuplot that exits early must not kill us with SIGPIPE
+    struct sigaction ignore {}, old {};
+    ignore.sa_handler = SIG_IGN;
+    sigemptyset(&ignore.sa_mask);
+    ::sigaction(SIGPIPE, &ignore, &old);
+    for (std::size_t done = 0; done < script.size();) {
+        const ssize_t n = ::write(fds[1], script.data() + done, script.size() - done);
+        if (n < 0 && errno == EINTR) continue;
+        if (n <= 0) break;
+        done += static_cast<std::size_t>(n);
+    }
+    ::close(fds[1]);
+    ::sigaction(SIGPIPE, &old, nullptr);
+    int wstatus = 0;
+    while (::waitpid(pid, &wstatus, 0) < 0)
+        if (errno != EINTR) {
+            status = -1;
+            return true;
+        }
+    status = WIFEXITED(wstatus) ? WEXITSTATUS(wstatus) : -1;
+    return true;
 }
 
 }  // namespace
@@ -100,36 +153,50 @@ PlotResult plot_csv(const Table& table, const std::string& csv_path, const std::
     }
     body += "unset multiplot\n";
     const std::string height = std::to_string(300 + 300 * rows);
+    // gnuplot draws into temporary files renamed into place once both are complete, so an
+    // interrupted or failed run leaves no empty or partial plot
+    namespace fs = std::filesystem;
+    const std::string stamp = ".tmp" + std::to_string(static_cast<long>(::getpid()));
+    auto temporary_for = [&](const std::string& suffix) {
+        const fs::path target(output_base + suffix);
+        return (target.parent_path() / ("." + target.filename().string() + stamp)).string();
+    };
+    TemporaryFile png(temporary_for(".png")), svg(temporary_for(".svg"));
+    TemporaryFile err(temporary_for(".gnuplot-errors"));
     std::string script = panels;
     script += "set terminal pngcairo size 900," + height + " font 'sans,10' noenhanced\n";
-    script += "set output " + gp_quoted(output_base + ".png") + "\n" + body;
+    script += "set output " + gp_quoted(png.path()) + "\n" + body;
     script += "set terminal svg size 900," + height + " dynamic font 'sans,10' noenhanced\n";
-    script += "set output " + gp_quoted(output_base + ".svg") + "\n" + body;
+    script += "set output " + gp_quoted(svg.path()) + "\n" + body;
     script += "set output\n";
 
-    // run it; gnuplot's complaints go to a temporary file that becomes the message
-    const std::string err = output_base + ".gnuplot-errors";
-    const std::string cmd = shell_quoted(gnuplot_program()) + " 2>" + shell_quoted(err);
-    std::FILE* pipe = ::popen(cmd.c_str(), "w");
-    if (!pipe) {
+    // run it; its complaints go to a temporary file that becomes the message
+    int status = -1;
+    if (!run_gnuplot(script, err.path(), status)) {
         result.message = "plot not drawn: cannot start gnuplot";
         return result;
     }
-    std::fputs(script.c_str(), pipe);
-    const int status = ::pclose(pipe);
     std::string complaints;
-    if (std::FILE* f = std::fopen(err.c_str(), "r")) {
+    if (std::FILE* f = std::fopen(err.path().c_str(), "r")) {
         char buf[512];
         while (std::fgets(buf, sizeof buf, f)) complaints += buf;
         std::fclose(f);
     }
-    std::remove(err.c_str());
-    namespace fs = std::filesystem;
-    const bool files = fs::exists(output_base + ".png") && fs::exists(output_base + ".svg");
+    std::error_code ec;
+    const bool files = fs::file_size(png.path(), ec) > 0 && !ec && fs::file_size(svg.path(), ec) > 0 && !ec;
     if (status != 0 || !files) {
         result.message = "plot not drawn: gnuplot failed: " +
                          (complaints.empty() ? std::string("no message") : complaints);
         return result;
+    }
+    for (TemporaryFile* t : {&png, &svg}) {
+        const std::string target = t == &png ? output_base + ".png" : output_base + ".svg";
+        fs::rename(t->path(), target, ec);
+        if (ec) {
+            result.message = "plot not drawn: cannot write '" + target + "' (" + ec.message() + ")";
+            return result;
+        }
+        t->release();
     }
     result.drawn = true;
     result.files = {output_base + ".png", output_base + ".svg"};

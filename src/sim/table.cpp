@@ -15,6 +15,7 @@
 #include <numbers>
 #include <utility>
 
+#include "alembert/cleanup.hpp"
 #include "alembert/error.hpp"
 
 namespace alembert {
@@ -138,10 +139,11 @@ void write_csv(const Table& table, const std::string& path, int digits) {
                             " significant digits asked for '" + path +
                             "'; give 1 to 17, or 0 for the shortest exact form");
     const fs::path target(path);
-    const fs::path temporary =
-        target.parent_path() /
-        ("." + target.filename().string() + ".tmp" + std::to_string(static_cast<long>(::getpid())));
-    std::FILE* f = std::fopen(temporary.c_str(), "w");
+    // written to a temporary file renamed into place: an interrupted run leaves no partial table
+    TemporaryFile temporary((target.parent_path() / ("." + target.filename().string() + ".tmp" +
+                                                     std::to_string(static_cast<long>(::getpid()))))
+                                .string());
+    std::FILE* f = std::fopen(temporary.path().c_str(), "w");
     if (!f)
         throw ArgumentError("write_csv(): cannot write '" + path + "' (" + std::strerror(errno) +
                             "); create its directory or choose a writable path");
@@ -162,15 +164,12 @@ void write_csv(const Table& table, const std::string& path, int digits) {
     }
     const bool ok = std::ferror(f) == 0;
     if (std::fclose(f) != 0 || !ok) {
-        std::remove(temporary.c_str());
         throw ArgumentError("write_csv(): writing '" + path + "' failed (disk full?)");
     }
     std::error_code ec;
-    fs::rename(temporary, target, ec);
-    if (ec) {
-        std::remove(temporary.c_str());
-        throw ArgumentError("write_csv(): cannot replace '" + path + "' (" + ec.message() + ")");
-    }
+    fs::rename(temporary.path(), target, ec);
+    if (ec) throw ArgumentError("write_csv(): cannot replace '" + path + "' (" + ec.message() + ")");
+    temporary.release();
 }
 
 Table read_csv(const std::string& path) {

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <complex>
+#include <algorithm>
 #include <map>
 #include <random>
 
@@ -29,6 +30,69 @@ std::size_t count_ops(const ex& e) {
         return n + e.nops() - 1;
     }
     return n + 1;  // power, function, other
+}
+
+namespace {
+
+// the number of terms expand() would form for each node, an upper bound (no cancellation);
+// shared subexpressions are counted once
+class ExpansionCounter {
+public:
+    double largest = 1;
+
+    double terms(const ex& e) {
+        if (e.nops() == 0) return 1;
+        auto it = memo_.find(e);
+        if (it != memo_.end()) return it->second;
+        double t = 1;
+        if (is_a<add>(e)) {
+            t = 0;
+            for (std::size_t i = 0; i < e.nops(); ++i) t += terms(e.op(i));
+        } else if (is_a<mul>(e)) {
+            for (std::size_t i = 0; i < e.nops(); ++i) t *= terms(e.op(i));
+        } else if (is_a<power>(e)) {
+            const double k = terms(e.op(0));
+            const ex& n = e.op(1);
+            if (is_a<numeric>(n) && ex_to<numeric>(n).is_integer()) {
+                // (t_1 + ... + t_k)^n has C(n+k-1, n) monomials; a negative power expands its
+                // denominator and stays one term
+                const double m = std::abs(ex_to<numeric>(n).to_double());
+                const double p = monomials(k, m);
+                largest = std::max(largest, p);
+                t = ex_to<numeric>(n).is_positive() ? p : 1;
+            } else {
+                terms(n);
+            }
+        } else {
+            for (std::size_t i = 0; i < e.nops(); ++i) terms(e.op(i));  // arguments expand apart
+        }
+        largest = std::max(largest, t);
+        memo_.emplace(e, t);
+        return t;
+    }
+
+private:
+    std::map<ex, double, ex_is_less> memo_;
+
+    // C(n+k-1, n): the monomials of degree n in k terms, infinity past 1e300
+    static double monomials(double k, double n) {
+        if (k <= 1 || n <= 1) return n < 1 ? 1 : k;
+        const double m = std::min(n, k - 1), top = n + k - 1;
+        double c = 1;
+        for (double i = 1; i <= m; ++i) {
+            c = c * (top - m + i) / i;
+            if (c > 1e300) return HUGE_VAL;
+        }
+        return std::round(c);
+    }
+};
+
+}  // namespace
+
+double estimate_expansion_terms(const ex& e) {
+    ExpansionCounter counter;
+    counter.terms(e);
+    return counter.largest;
 }
 
 namespace {

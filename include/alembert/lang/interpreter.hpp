@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // The interpreter of the Alembert language: runs statements against an alembert::System.
 #pragma once
+#include <cstddef>
 #include <memory>
 #include <optional>
 #include <ostream>
@@ -14,6 +15,9 @@ class System;
 }
 
 namespace alembert::lang {
+
+/// The default of Interpreter::set_max_terms().
+inline constexpr std::size_t kDefaultMaxTerms = 100000;
 
 /// How a run ended, as the command-line tool maps it to its exit status.
 enum class RunStatus {
@@ -62,6 +66,13 @@ public:
     /// directory); a statement's `to "dir"` is relative to it. Paths a script reads (`from
     /// "motion.csv"`) are relative to the script's own directory.
     void set_output_dir(const std::string& dir);
+    /// With `allow`, a statement's `to "dir"` may name an absolute path or leave the output
+    /// directory through ".." (`--allow-outside-out`); by default such a statement is refused.
+    void set_allow_outside_output(bool allow);
+    /// The largest number of terms `expand()` and `simplify()` may form (an upper bound
+    /// estimated before expanding: multinomial counts for powers of sums); a larger expansion
+    /// is refused with a script error instead of exhausting memory (`--max-terms`).
+    void set_max_terms(std::size_t max_terms);
     /// With `model_only`, run() builds the model and skips `simulate`, `inverse` and `codegen`
     /// (the `alembert inverse` and `alembert codegen` commands run the script this way).
     void set_model_only(bool model_only);

@@ -16,6 +16,12 @@ using GiNaC::ex;
 /// operands, one per power and per function call (how operation counts are reported).
 std::size_t count_ops(const ex& e);
 
+/// The largest number of terms expand(e) forms, an upper bound that assumes no cancellation:
+/// a sum of sums adds their counts, a product multiplies them, and (t_1 + ... + t_k)^n has
+/// C(n + k - 1, n) terms (the multinomial count). Infinity when the count passes 1e300.
+/// Shared subexpressions are visited once, so the estimate is cheap beside the expansion.
+double estimate_expansion_terms(const ex& e);
+
 /// Trigonometric simplification of a sum of products:
 ///  - Pythagorean identity sin^2 x + cos^2 x = 1 in whichever direction shortens;
 ///  - angle sums s_a c_b +- c_a s_b = sin(a +- b) and c_a c_b -+ s_a s_b = cos(a +- b),
