@@ -56,22 +56,7 @@ public:
 
 private:
     // the symbols e depends on, through intermediates, other than intermediates
-    GiNaC::exset leaves(const ex& e) const {
-        GiNaC::exset out, seen;
-        std::vector<ex> todo{e};
-        while (!todo.empty()) {
-            ex cur = todo.back();
-            todo.pop_back();
-            for (const ex& s : symbols_of(cur)) {
-                if (st_.owns(s) && st_.kind(s) == SymbolKind::intermediate) {
-                    if (seen.insert(s).second) todo.push_back(st_.definition(s));
-                } else {
-                    out.insert(s);
-                }
-            }
-        }
-        return out;
-    }
+    GiNaC::exset leaves(const ex& e) const { return st_.calc_leaf_symbols(e); }
 
     const SymbolTable& st_;
     std::mt19937 rng_;

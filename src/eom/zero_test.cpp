@@ -15,23 +15,12 @@ namespace alembert::detail {
 
 namespace {
 
-// the symbols e depends on, through intermediates, other than intermediates and constants
-// with a value
+// the symbols e depends on, through intermediates, other than constants with a value
 std::vector<ex> zero_test_leaves(const SymbolTable& st, const ex& e) {
-    GiNaC::exset out, seen;
-    std::vector<ex> todo{e};
-    while (!todo.empty()) {
-        ex cur = todo.back();
-        todo.pop_back();
-        for (const ex& s : symbols_of(cur)) {
-            if (st.owns(s) && st.kind(s) == SymbolKind::intermediate) {
-                if (seen.insert(s).second) todo.push_back(st.definition(s));
-            } else if (!(st.owns(s) && st.kind(s) == SymbolKind::constant && st.value(s))) {
-                out.insert(s);
-            }
-        }
-    }
-    return {out.begin(), out.end()};
+    std::vector<ex> out;
+    for (const ex& s : st.calc_leaf_symbols(e))
+        if (!(st.owns(s) && st.kind(s) == SymbolKind::constant && st.value(s))) out.push_back(s);
+    return out;
 }
 
 bool all_zero(const SymbolTable& st, const std::vector<ex>& es) {

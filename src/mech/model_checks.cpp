@@ -51,15 +51,8 @@ std::optional<Eigen::Matrix3d> matrix_at_constants(const SymbolTable& st, const 
 // the leaf symbols of e without a value: time-varying ones and constants without a value,
 // looking through intermediates to their definitions
 void collect_free_symbols(const SymbolTable& st, const ex& e, GiNaC::exset& out) {
-    for (const ex& s : symbols_of(e)) {
-        if (!st.owns(s)) {
-            out.insert(s);
-        } else if (st.kind(s) == SymbolKind::intermediate) {
-            collect_free_symbols(st, st.definition(s), out);
-        } else if (!(st.kind(s) == SymbolKind::constant && st.value(s))) {
-            out.insert(s);
-        }
-    }
+    for (const ex& s : st.calc_leaf_symbols(e))
+        if (!(st.owns(s) && st.kind(s) == SymbolKind::constant && st.value(s))) out.insert(s);
 }
 
 }  // namespace

@@ -382,6 +382,24 @@ std::string SymbolTable::unique_name(const std::string& name) const {
     return n;
 }
 
+GiNaC::exset SymbolTable::calc_leaf_symbols(const ex& e) const {
+    GiNaC::exset out, seen;
+    std::vector<ex> todo{e};
+    while (!todo.empty()) {
+        ex cur = todo.back();
+        todo.pop_back();
+        for (const ex& s : symbols_of(cur)) {
+            auto it = info_.find(s);
+            if (it != info_.end() && it->second.kind == SymbolKind::intermediate) {
+                if (seen.insert(s).second) todo.push_back(it->second.definition);
+            } else {
+                out.insert(s);
+            }
+        }
+    }
+    return out;
+}
+
 bool SymbolTable::depends_on(const ex& e, const ex& s) const {
     if (e.has(s)) return true;
     for (const ex& z : symbols_of(e)) {

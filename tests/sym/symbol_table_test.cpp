@@ -207,3 +207,14 @@ TEST(SymbolTable, PartialDerivativeOfALongChainOfIntermediatesStaysSmall) {
         EXPECT_NEAR(f.evaluate(x)[0], expected, 1e-9);
     }
 }
+
+TEST(SymbolTable, LeafSymbolsLookThroughIntermediatesToTheirDefinitions) {
+    SymbolTable s;
+    TimeVariable q = s.add_variable("q");
+    ex a = s.add_constant("a", 2.0), b = s.add_constant("b"), c = s.add_unknown("c");
+    ex z1 = s.add_intermediate(a * GiNaC::sin(q.symbol()));
+    ex z2 = s.add_intermediate(z1 * z1 + b);
+    GiNaC::exset leaves = s.calc_leaf_symbols(z2 * c + z1);
+    EXPECT_EQ(leaves, (GiNaC::exset{a, b, c, q.symbol()}));
+    EXPECT_EQ(s.calc_leaf_symbols(ex(3)), GiNaC::exset{});
+}

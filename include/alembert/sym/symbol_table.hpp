@@ -159,6 +159,10 @@ public:
     bool is_solve_level(const ex& s) const;
     /// True if `e` depends on `s`, directly or through intermediates.
     bool depends_on(const ex& e, const ex& s) const;
+    /// The symbols `e` depends on, looking through intermediates to their definitions: every
+    /// constant, variable, specified, unknown and t it holds, but no intermediate. Each
+    /// intermediate's definition is visited once, so the cost is linear in their total size.
+    GiNaC::exset calc_leaf_symbols(const ex& e) const;
     /// `e` with every intermediate replaced by its definition (recursively).
     ex expand_intermediates(const ex& e) const;
 
