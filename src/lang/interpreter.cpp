@@ -373,10 +373,24 @@ exmap Interpreter::Impl::bindings(const std::vector<Binding>& list, const std::s
         ex x = symbol(b.name, "a symbol to give a value " + purpose);
         if (out.count(x))
             throw ScriptError(b.name.location, "'" + b.name.text + "' is given twice", "give each value once");
-        out[x] = number_of(b.quantity, symbol_dimension(b.name.text), "the value of " + b.name.text,
-                           b.name.location);
+        out[x] = binding_value(b, "the value of " + b.name.text);
     }
     return out;
+}
+
+double Interpreter::Impl::binding_value(const Binding& b, const std::string& what) {
+    double x = number_of(b.quantity, symbol_dimension(b.name.text), what, b.name.location);
+    if (b.quantity.unit.empty() && x != 0) {
+        std::optional<Unit> u = display_unit(b.name.text);
+        if (u && u->scale != 1)
+            throw ScriptError(b.quantity.value->location,
+                              "'" + b.name.text + "' is declared in " + u->text + ", so " +
+                                  format_number(x) + " without a unit is ambiguous (" +
+                                  format_number(x) + " " + u->text + ", or in SI units?)",
+                              "write the unit: " + b.name.text + " = " + format_number(x) + " " +
+                                  u->text);
+    }
+    return x;
 }
 
 // ---- statements --------------------------------------------------------------------------

@@ -173,6 +173,9 @@ struct Interpreter::Impl {
     std::optional<Unit> display_unit(const std::string& printed) const;
     std::string format_value(const std::string& printed, double si) const;
     exmap bindings(const std::vector<Binding>& list, const std::string& purpose);
+    /// The value of `name = value` in SI; a value without a unit for a symbol declared in a
+    /// unit that is not SI (qA in deg) is refused unless it is 0, never read as SI silently.
+    double binding_value(const Binding& b, const std::string& what);
     double number_of(const Quantity& q, const Dimension& expected, const std::string& what,
                      Location where, Dimension* got = nullptr);
 

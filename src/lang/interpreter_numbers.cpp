@@ -164,8 +164,7 @@ void Interpreter::Impl::set_initial(const Statement& s) {
             throw ScriptError(b.name.location, "'" + b.name.text + "' is not a coordinate or a coordinate's rate",
                               "give initial values of the coordinates and their first derivatives "
                               "(initial qA = 30 deg, qA' = 0)");
-        numbers.initial[x] = number_of(b.quantity, symbol_dimension(b.name.text),
-                                       "the initial value of " + b.name.text, b.name.location);
+        numbers.initial[x] = binding_value(b, "the initial value of " + b.name.text);
     }
 }
 
