@@ -56,6 +56,7 @@ const char* to_string(NativeStatus status) {
         case NativeStatus::no_compiler: return "no_compiler";
         case NativeStatus::compile_failed: return "compile_failed";
         case NativeStatus::load_failed: return "load_failed";
+        case NativeStatus::no_directory: return "no_directory";
     }
     return "?";
 }
@@ -107,9 +108,17 @@ NativeExpressions::NativeExpressions(CompiledExpressions tape, const NativeOptio
     }
 
     // ---- the cache: one library per source, compiler and flags ---------------------------------
-    fs::path dir = options.cache_dir.empty() ? fs::temp_directory_path() / "alembert-native"
-                                             : options.cache_dir;
-    detail::ensure_directory(dir, kNativeWho);
+    // the temporary directory may be missing or unwritable ($TMPDIR): evaluate on the tape then
+    fs::path dir = options.cache_dir;
+    try {
+        if (dir.empty()) dir = fs::temp_directory_path() / "alembert-native";
+        detail::ensure_directory(dir, kNativeWho);
+    } catch (const std::exception& e) {
+        status_ = NativeStatus::no_directory;
+        message_ = std::string(kNativeWho) + ": no directory to compile in (" + e.what() +
+                   "); set TMPDIR to a writable directory; evaluating on the interpreted tape";
+        return;
+    }
     std::string key = source_ + "\n" + compiler.string();
     for (const std::string& f : options.flags) key += " " + f;
     const fs::path library = dir / ("alembert_" + hex(fnv1a(key)) + ".so");

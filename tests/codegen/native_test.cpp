@@ -104,6 +104,15 @@ TEST(NativeExpressions, FallsBackToTheTapeWithAReason) {
     EXPECT_NE(none.message().find("no C compiler '/nonexistent/cc' found"), std::string::npos)
         << none.message();
     for (const auto& s : t.states(2)) expect_same(none, tape, s, 0);
+    // no directory to compile in: a cache path under a regular file
+    const fs::path file = cache.path() / "a_file";
+    std::ofstream(file) << "x";
+    NativeExpressions homeless(tape, {.compiler = "", .flags = {}, .cache_dir = file / "cache"});
+    EXPECT_FALSE(homeless.is_native());
+    EXPECT_EQ(homeless.status(), NativeStatus::no_directory);
+    EXPECT_NE(homeless.message().find("no directory to compile in"), std::string::npos)
+        << homeless.message();
+    for (const auto& s : t.states(2)) expect_same(homeless, tape, s, 0);
     // a "compiler" that fails
     NativeExpressions failed(tape, {.compiler = "false", .flags = {}, .cache_dir = cache.path()});
     EXPECT_FALSE(failed.is_native());

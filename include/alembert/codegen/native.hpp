@@ -20,6 +20,7 @@ enum class NativeStatus {
     no_compiler,     ///< on the tape: no C compiler was found
     compile_failed,  ///< on the tape: the compiler failed (message() has its first lines)
     load_failed,     ///< on the tape: the library could not be loaded
+    no_directory,    ///< on the tape: no directory to compile in ($TMPDIR missing, unwritable)
 };
 
 /// The word for a status ("compiled", "no_compiler", ...).
