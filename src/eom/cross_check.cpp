@@ -98,6 +98,47 @@ private:
     CompiledExpressions x_;
 };
 
+// the symbols a random state gives values to (coordinates, speeds, with_accelerations: the
+// accelerations too, specified inputs, unknown loads not excluded, constants without a value,
+// the time) and the draws: the varying ones from [-1, 1], constants and the time from
+// [0.5, 1.5], in the order of symbols(); deterministic for a seed
+class StateSampler {
+public:
+    StateSampler(const SymbolTable& st, const std::vector<ex>& excluded, bool with_accelerations,
+                 unsigned seed)
+        : rng_(seed) {
+        auto is_excluded = [&](const ex& s) {
+            return std::any_of(excluded.begin(), excluded.end(),
+                               [&](const ex& x) { return x.is_equal(s); });
+        };
+        for (SymbolKind kind : {SymbolKind::variable, SymbolKind::specified, SymbolKind::unknown})
+            for (const ex& s : st.symbols(kind))
+                if (!(kind == SymbolKind::variable && st.derivative_order(s) >= 2 &&
+                      !with_accelerations) &&
+                    !is_excluded(s))
+                    symbols_.push_back(s);
+        varying_ = symbols_.size();
+        for (const ex& c : st.symbols(SymbolKind::constant))
+            if (!st.value(c)) symbols_.push_back(c);
+        symbols_.push_back(st.time());
+    }
+
+    const std::vector<ex>& symbols() const { return symbols_; }
+
+    std::vector<double> draw() {
+        std::uniform_real_distribution<double> unit(-1, 1), positive(0.5, 1.5);
+        std::vector<double> values;
+        for (std::size_t i = 0; i < symbols_.size(); ++i)
+            values.push_back(i < varying_ ? unit(rng_) : positive(rng_));
+        return values;
+    }
+
+private:
+    std::vector<ex> symbols_;
+    std::size_t varying_ = 0;
+    std::mt19937 rng_;
+};
+
 }  // namespace
 
 MethodComparison compare_methods(const System& sys, const std::vector<TimeVariable>& q,
@@ -109,22 +150,11 @@ MethodComparison compare_methods(const System& sys, const std::vector<TimeVariab
     for (const RoadmapRow& r : plan_roadmap(sys, q, acc)) roadmap.push_back(r.equation);
     // Newton–Euler solves for the accelerations and every joint reaction together
     NewtonEulerEquations ne = form_newton_euler_equations(sys, q, acc);
-    auto is_reaction = [&](const ex& s) {
-        return std::any_of(ne.reactions.begin(), ne.reactions.end(),
-                           [&](const ex& r) { return r.is_equal(s); });
-    };
 
     // what a state gives values to: coordinates, speeds, specified inputs, unknown loads,
     // constants without a value, the time
-    std::vector<ex> state;
-    for (SymbolKind kind : {SymbolKind::variable, SymbolKind::specified, SymbolKind::unknown})
-        for (const ex& s : st.symbols(kind))
-            if (!(kind == SymbolKind::variable && st.derivative_order(s) >= 2) && !is_reaction(s))
-                state.push_back(s);
-    std::size_t free_constants = 0;
-    for (const ex& c : st.symbols(SymbolKind::constant))
-        if (!st.value(c)) state.push_back(c), ++free_constants;
-    state.push_back(st.time());
+    StateSampler sampler(st, ne.reactions, false, seed);
+    const std::vector<ex>& state = sampler.symbols();
 
     std::vector<CompiledMethod> methods;
     methods.emplace_back("road-map", st, roadmap, acc, state);
@@ -143,15 +173,8 @@ MethodComparison compare_methods(const System& sys, const std::vector<TimeVariab
     for (const CompiledMethod& m : methods) out.methods.push_back(m.name());
     for (const ExplicitMethod& m : explicit_methods) out.methods.push_back(m.name());
 
-    std::mt19937 rng(seed);
-    std::uniform_real_distribution<double> unit(-1, 1), positive(0.5, 1.5);
-    const std::size_t varying = state.size() - free_constants - 1;
     for (int k = 0; k < states; ++k) {
-        // a random state, drawn in the order of `state`
-        std::vector<double> values;
-        for (std::size_t i = 0; i < varying; ++i) values.push_back(unit(rng));
-        for (std::size_t i = 0; i < free_constants; ++i) values.push_back(positive(rng));
-        values.push_back(positive(rng));
+        const std::vector<double> values = sampler.draw();
         Eigen::VectorXd ref = methods[0].solve(values);
         for (std::size_t m = 1; m < count; ++m) {
             Eigen::VectorXd x = m < methods.size()
@@ -167,44 +190,50 @@ MethodComparison compare_methods(const System& sys, const std::vector<TimeVariab
 }
 
 ReactionComparison compare_reactions(const System& sys, const std::vector<TimeVariable>& q,
-                                     int states, unsigned seed) {
+                                     int states, unsigned seed, const std::vector<ex>& loads) {
     const SymbolTable& st = sys.symbols();
     if (sys.joint_reactions().empty())
         throw ModelError(
             "compare_reactions(): the model declares no joint reaction; declare "
             "one with System::add_joint_reaction");
-    std::vector<ex> acc, measures;
-    for (const TimeVariable& qi : q) acc.push_back(qi.d(2));
+    std::vector<ex> measures;
     for (const JointReaction& jr : sys.joint_reactions())
         for (const ReactionComponent& c : jr.components) measures.push_back(c.measure);
+    auto among = [](const std::vector<ex>& xs, const ex& s) {
+        return std::any_of(xs.begin(), xs.end(), [&](const ex& x) { return x.is_equal(s); });
+    };
+    for (const ex& l : loads)
+        if (among(measures, l))
+            throw ArgumentError("compare_reactions(): the load '" + to_string(l) +
+                                "' is a measure of a declared joint reaction; give only loads "
+                                "that are not reactions (motor torques, applied forces)");
+    // forward dynamics: the accelerations are the method's own unknowns; inverse dynamics:
+    // the given loads, the accelerations drawn with the state
+    const bool inverse = !loads.empty();
+    std::vector<ex> own = loads;
+    if (!inverse)
+        for (const TimeVariable& qi : q) own.push_back(qi.d(2));
 
-    // the road-map: accelerations and the declared measures together
-    std::vector<ex> x_rm = acc;
+    // the road-map: its own unknowns and the declared measures together
+    std::vector<ex> x_rm = own;
     x_rm.insert(x_rm.end(), measures.begin(), measures.end());
     std::vector<ex> roadmap;
     for (const RoadmapRow& r : plan_roadmap(sys, q, x_rm)) roadmap.push_back(r.equation);
 
     // Newton–Euler with the declared reaction loads set to zero
-    NewtonEulerEquations ne = form_newton_euler_equations(sys, q, acc);
+    NewtonEulerEquations ne = form_newton_euler_equations(sys, q, own);
     exmap zero;
     for (const ex& m : measures) zero[m] = 0;
     std::vector<ex> ne_equations;
     for (const ex& e : ne.equations) ne_equations.push_back(e.subs(zero));
-    auto among = [](const std::vector<ex>& xs, const ex& s) {
-        return std::any_of(xs.begin(), xs.end(), [&](const ex& x) { return x.is_equal(s); });
-    };
 
-    // the state: as compare_methods() draws it, less every reaction measure
-    std::vector<ex> state;
-    for (SymbolKind kind : {SymbolKind::variable, SymbolKind::specified, SymbolKind::unknown})
-        for (const ex& s : st.symbols(kind))
-            if (!(kind == SymbolKind::variable && st.derivative_order(s) >= 2) &&
-                !among(ne.reactions, s) && !among(measures, s))
-                state.push_back(s);
-    std::size_t free_constants = 0;
-    for (const ex& c : st.symbols(SymbolKind::constant))
-        if (!st.value(c)) state.push_back(c), ++free_constants;
-    state.push_back(st.time());
+    // the state: as compare_methods() draws it (with the accelerations for inverse dynamics),
+    // less the loads solved for and every reaction measure
+    std::vector<ex> excluded = ne.reactions;
+    excluded.insert(excluded.end(), measures.begin(), measures.end());
+    excluded.insert(excluded.end(), loads.begin(), loads.end());
+    StateSampler sampler(st, excluded, inverse, seed);
+    const std::vector<ex>& state = sampler.symbols();
 
     // per declared component: its projection by the road-map and by Newton–Euler
     std::vector<ex> by_roadmap, by_ne;
@@ -245,33 +274,32 @@ ReactionComparison compare_reactions(const System& sys, const std::vector<TimeVa
 
     CompiledMethod rm("road-map", st, roadmap, x_rm, state);
     CompiledMethod brute("Newton–Euler", st, ne_equations, ne.unknowns, state);
-    ReactionComparison out{measures, states, 0, std::vector<double>(measures.size(), 0.0)};
-    std::mt19937 rng(seed);
-    std::uniform_real_distribution<double> unit(-1, 1), positive(0.5, 1.5);
-    const std::size_t varying = state.size() - free_constants - 1;
+    ReactionComparison out{loads, states, 0,
+                           std::vector<double>(loads.size() + measures.size(), 0.0)};
+    out.measures.insert(out.measures.end(), measures.begin(), measures.end());
+    auto record = [&](std::size_t i, long double a, long double b) {
+        double d = static_cast<double>(std::abs(a - b) / std::max(1.0L, std::abs(b)));
+        out.differences[i] = std::max(out.differences[i], d);
+        out.max_difference = std::max(out.max_difference, d);
+    };
     for (int k = 0; k < states; ++k) {
-        std::vector<double> values;
-        for (std::size_t i = 0; i < varying; ++i) values.push_back(unit(rng));
-        for (std::size_t i = 0; i < free_constants; ++i) values.push_back(positive(rng));
-        values.push_back(positive(rng));
+        const std::vector<double> values = sampler.draw();
         Eigen::VectorXd a = rm.solve(values), b = brute.solve(values);
+        // the loads solved for: the same unknowns in both
+        for (std::size_t i = 0; i < loads.size(); ++i)
+            record(i, a(static_cast<Eigen::Index>(i)), b(static_cast<Eigen::Index>(i)));
         // the inputs of the projections: declared measures, Newton–Euler's, the state
         std::vector<long double> in;
         for (std::size_t i = 0; i < measures.size(); ++i)
-            in.push_back(a(static_cast<Eigen::Index>(acc.size() + i)));
+            in.push_back(a(static_cast<Eigen::Index>(own.size() + i)));
         for (std::size_t i = 0; i < ne.reactions.size(); ++i)
-            in.push_back(b(static_cast<Eigen::Index>(acc.size() + i)));
+            in.push_back(b(static_cast<Eigen::Index>(own.size() + i)));
         in.insert(in.end(), values.begin(), values.end());
         VectorXld p(static_cast<Eigen::Index>(outputs.size()));
         projections.evaluate_extended(in.data(), p.data());
         const auto m = static_cast<Eigen::Index>(measures.size());
-        for (Eigen::Index i = 0; i < m; ++i) {
-            double d =
-                static_cast<double>(std::abs(p(i) - p(m + i)) / std::max(1.0L, std::abs(p(m + i))));
-            out.differences[static_cast<std::size_t>(i)] =
-                std::max(out.differences[static_cast<std::size_t>(i)], d);
-            out.max_difference = std::max(out.max_difference, d);
-        }
+        for (Eigen::Index i = 0; i < m; ++i)
+            record(loads.size() + static_cast<std::size_t>(i), p(i), p(m + i));
     }
     return out;
 }
