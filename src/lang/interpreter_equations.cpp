@@ -217,6 +217,11 @@ void Interpreter::Impl::solve(const Statement& s) {
         printed.push_back(w.text);
     }
     bool nonlinear = s.bindings.count("guess") != 0;
+    if (s.quantities.count("limit") && (s.bindings.count("at") || nonlinear))
+        throw ScriptError(s.quantities.at("limit").value->location,
+                          "the term limit applies to symbolic solves only, not to a solve with "
+                          "'at' or 'guess'",
+                          "drop 'limit ...', or drop the values to solve symbolically");
     if (!nonlinear && xs.size() != eqs.size())
         throw ScriptError(s.lists.at("unknowns").front().location,
                           std::to_string(eqs.size()) + " equations cannot be solved for " +
