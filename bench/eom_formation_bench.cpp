@@ -6,6 +6,10 @@
 #include <alembert/eom/kane.hpp>
 #include <alembert/eom/lagrange.hpp>
 #include <alembert/eom/planner.hpp>
+#include <alembert/lang/interpreter.hpp>
+
+#include <fstream>
+#include <sstream>
 
 namespace {
 
@@ -64,8 +68,51 @@ void BM_SpatialLagrange(benchmark::State& s) { run(s, ChainKind::spatial, Method
 void BM_PlanarTree(benchmark::State& s) { run(s, ChainKind::planar, Method::tree); }
 void BM_SpatialTree(benchmark::State& s) { run(s, ChainKind::spatial, Method::tree); }
 
+// the KUKA LBR iiwa 14 of examples/kuka_iiwa/model.alb: the road-map for its 7 motor torques
+// and 35 joint reaction measures (42 rows), the model built by the script outside the timing
+void BM_KukaIiwaRoadmap(benchmark::State& state) {
+    std::ifstream file(ALEMBERT_SOURCE_DIR "/examples/kuka_iiwa/model.alb");
+    std::stringstream source;
+    source << file.rdbuf();
+    std::ostringstream out, err;
+    lang::Interpreter in(out, err, false);
+    in.set_model_only(true);
+    if (in.run(source.str(), "model.alb") != lang::RunStatus::ok || !in.system()) {
+        state.SkipWithError(("examples/kuka_iiwa/model.alb: " + err.str()).c_str());
+        return;
+    }
+    const System& sys = *in.system();
+    const SymbolTable& st = sys.symbols();
+    std::vector<TimeVariable> q;
+    std::vector<ex> x;
+    for (int i = 1; i <= 7; ++i) {
+        const std::string n = std::to_string(i);
+        q.push_back(st.variable("q" + n));
+        x.push_back(st.symbol("T" + n));
+    }
+    for (int i = 1; i <= 7; ++i)
+        for (const char* c : {"F%x", "F%y", "F%z", "M%x", "M%y"}) {
+            std::string name = c;
+            name.replace(1, 1, std::to_string(i));
+            x.push_back(st.symbol(name));
+        }
+    std::size_t ops = 0, rows = 0;
+    for (auto _ : state) {
+        std::vector<RoadmapRow> R = plan_roadmap(sys, q, x);
+        benchmark::DoNotOptimize(R);
+        state.PauseTiming();
+        rows = R.size();
+        ops = 0;
+        for (const RoadmapRow& r : R) ops += count_ops(r.equation);
+        state.ResumeTiming();
+    }
+    state.counters["rows"] = static_cast<double>(rows);
+    state.counters["ops"] = static_cast<double>(ops);
+}
+
 }  // namespace
 
+BENCHMARK(BM_KukaIiwaRoadmap)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_PlanarKane)->Arg(1)->Arg(2)->Arg(4)->Arg(6)->Arg(8)->Arg(10)->Arg(12)->Arg(16)->Arg(20)->Arg(30)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_PlanarRoadmap)->Arg(1)->Arg(2)->Arg(4)->Arg(6)->Arg(8)->Arg(10)->Arg(12)->Unit(benchmark::kMillisecond);
 BENCHMARK(BM_PlanarLagrange)->Arg(1)->Arg(2)->Arg(4)->Arg(6)->Arg(8)->Unit(benchmark::kMillisecond);

@@ -3,7 +3,10 @@
 #include "alembert/eom/equations.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <iomanip>
+#include <limits>
 #include <sstream>
 
 #include "alembert/error.hpp"
@@ -96,8 +99,87 @@ LinearSystem form_linear_system(const std::vector<ex>& residuals, const std::vec
     return s;
 }
 
-std::vector<ex> solve_symbolic(const LinearSystem& sys) {
+namespace {
+
+// the permanent of a nonnegative n x n matrix (n <= 16): over the subsets of columns, the
+// number of ways the first |mask| rows take the columns in mask; sums of nonnegative terms
+// only, so no cancellation
+double calc_permanent(const std::vector<std::vector<double>>& T) {
+    const std::size_t n = T.size();
+    std::vector<double> ways(std::size_t{1} << n, 0.0);
+    ways[0] = 1;
+    for (std::size_t mask = 0; mask < ways.size(); ++mask) {
+        if (ways[mask] == 0) continue;
+        const auto row = static_cast<std::size_t>(std::popcount(mask));
+        if (row == n) continue;
+        for (std::size_t j = 0; j < n; ++j)
+            if (!(mask & (std::size_t{1} << j)) && T[row][j] != 0)
+                ways[mask | (std::size_t{1} << j)] += ways[mask] * T[row][j];
+    }
+    return ways.back();
+}
+
+std::string format_terms(double terms) {
+    std::ostringstream os;
+    if (terms < 1e15) os << std::fixed << std::setprecision(0) << terms;
+    else os << std::setprecision(3) << terms;
+    return os.str();
+}
+
+}  // namespace
+
+double estimate_solution_terms(const LinearSystem& sys) {
+    const std::size_t n = sys.A.rows();
+    std::vector<std::vector<double>> T(n, std::vector<double>(n, 0.0));
+    std::vector<double> tb(n, 0.0);
+    for (std::size_t i = 0; i < n; ++i) {
+        for (std::size_t j = 0; j < n; ++j) {
+            const ex& a = sys.A(static_cast<unsigned>(i), static_cast<unsigned>(j));
+            T[i][j] = a.is_zero() ? 0.0 : estimate_expansion_terms(a);
+        }
+        const ex& b = sys.b(static_cast<unsigned>(i), 0);
+        tb[i] = b.is_zero() ? 0.0 : estimate_expansion_terms(b);
+    }
+    const double inf = std::numeric_limits<double>::infinity();
+    auto capped = [&](double x) { return x > 1e300 ? inf : x; };
+    if (n > 16) {
+        double bound = 1;
+        for (std::size_t i = 0; i < n; ++i) {
+            double row = tb[i];
+            for (double t : T[i]) row += t;
+            bound *= row;
+        }
+        return capped(bound);
+    }
+    double numerator = 0;
+    for (std::size_t j = 0; j < n; ++j) {
+        std::vector<std::vector<double>> Tj = T;
+        for (std::size_t i = 0; i < n; ++i) Tj[i][j] = tb[i];
+        numerator = std::max(numerator, calc_permanent(Tj));
+    }
+    return capped(calc_permanent(T) + numerator);
+}
+
+std::vector<ex> solve_symbolic(const LinearSystem& sys, const SymbolicSolveOptions& options) {
     const unsigned n = sys.A.rows();
+    // refused before any work when the written-out solution would be too large
+    const double expected = estimate_solution_terms(sys);
+    if (expected > options.max_terms) {
+        std::string unknowns;
+        for (const ex& x : sys.unknowns) unknowns += (unknowns.empty() ? "" : ", ") + to_string(x);
+        throw SolveError("solve_symbolic(): solving for " + unknowns +
+                         " symbolically would write out up to " + format_terms(expected) +
+                         " terms (Cramer's rule expanded), more than the limit of " +
+                         format_terms(options.max_terms) +
+                         "; solve numerically at given values (solve_numeric, `solve ... at`), "
+                         "generate code for the equations (codegen), or raise the limit "
+                         "(SymbolicSolveOptions::max_terms, `solve ... limit N`)");
+    }
+    const std::size_t steps = n + 1;
+    auto report = [&](std::size_t step) {
+        if (options.progress) options.progress(step, steps);
+    };
+    report(0);
     GiNaC::matrix vars(n, 1);
     for (unsigned i = 0; i < n; ++i) vars(i, 0) = GiNaC::symbol("x" + std::to_string(i));
     GiNaC::matrix x;
@@ -110,7 +192,11 @@ std::vector<ex> solve_symbolic(const LinearSystem& sys) {
                          (why.empty() ? "; check that every unknown appears in the equations" : why));
     }
     std::vector<ex> out;
-    for (unsigned i = 0; i < n; ++i) out.push_back(simplify(GiNaC::normal(x(i, 0))));
+    for (unsigned i = 0; i < n; ++i) {
+        report(i + 1);
+        out.push_back(simplify(GiNaC::normal(x(i, 0))));
+    }
+    report(steps);
     return out;
 }
 

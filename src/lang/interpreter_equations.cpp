@@ -1,7 +1,11 @@
 // SPDX-License-Identifier: MIT
 // Assignments, printed values, and the statements of road-maps, Kane's and Lagrange's methods,
 // solving and evaluating: their meaning, then their grammar and table (equation_statements()).
+#include <unistd.h>
+
 #include <algorithm>
+#include <cmath>
+#include <cstdio>
 
 #include "alembert/lang/parser.hpp"
 #include "interpreter_impl.hpp"
@@ -213,6 +217,11 @@ void Interpreter::Impl::solve(const Statement& s) {
         printed.push_back(w.text);
     }
     bool nonlinear = s.bindings.count("guess") != 0;
+    if (s.quantities.count("limit") && (s.bindings.count("at") || nonlinear))
+        throw ScriptError(s.quantities.at("limit").value->location,
+                          "the term limit applies to symbolic solves only, not to a solve with "
+                          "'at' or 'guess'",
+                          "drop 'limit ...', or drop the values to solve symbolically");
     if (!nonlinear && xs.size() != eqs.size())
         throw ScriptError(s.lists.at("unknowns").front().location,
                           std::to_string(eqs.size()) + " equations cannot be solved for " +
@@ -253,7 +262,41 @@ void Interpreter::Impl::solve(const Statement& s) {
             for (std::size_t i = 0; i < xs.size(); ++i)
                 out += format_value(printed[i], x(static_cast<Eigen::Index>(i))) + "\n";
         } else {
-            std::vector<ex> x = guard(n.location, [&] { return solve_symbolic(ls); });
+            SymbolicSolveOptions options;
+            if (s.quantities.count("limit")) {
+                const Quantity& q = s.quantities.at("limit");
+                double limit = number_of(q, Dimension::none(), "the term limit", q.value->location);
+                if (!(limit >= 1 && limit <= 1e15) || limit != std::floor(limit))
+                    throw ScriptError(q.value->location,
+                                      "the term limit must be a whole number from 1 to 1e15, not " +
+                                          format_number(limit),
+                                      "write solve " + n.text + " for ... limit 10000000");
+                options.max_terms = limit;
+            }
+            // a progress line on a terminal (standard error), erased when the solve ends
+            const bool terminal = ::isatty(2) == 1;
+            bool shown = false;
+            options.progress = [&](std::size_t step, std::size_t steps) {
+                if (!terminal) return;
+                if (step >= steps) {
+                    if (shown) std::fprintf(stderr, "\r\033[K");
+                    shown = false;
+                    return;
+                }
+                const std::string what = step == 0 ? "eliminating"
+                                                   : "simplifying " + printed[step - 1];
+                std::fprintf(stderr, "\r\033[Ksolving %s symbolically: %s (step %zu of %zu)",
+                             n.text.c_str(), what.c_str(), step + 1, steps);
+                std::fflush(stderr);
+                shown = true;
+            };
+            std::vector<ex> x;
+            try {
+                x = guard(n.location, [&] { return solve_symbolic(ls, options); });
+            } catch (...) {
+                if (shown) std::fprintf(stderr, "\r\033[K");
+                throw;
+            }
             for (std::size_t i = 0; i < xs.size(); ++i) out += printed[i] + " = " + to_string(x[i]) + "\n";
         }
     }
@@ -334,7 +377,8 @@ void parse_solve(StatementParser& p, Statement& s) {
     while (!p.at_end()) {
         if (p.accept_word("guess")) s.bindings["guess"] = p.bindings("an unknown");
         else if (p.accept_word("at")) s.bindings["at"] = p.bindings("a symbol");
-        else p.fail_expected("'at' or 'guess'");
+        else if (p.accept_word("limit")) s.quantities["limit"] = p.quantity();
+        else p.fail_expected("'at', 'guess' or 'limit'");
     }
 }
 
@@ -404,14 +448,17 @@ std::vector<StatementSpec> equation_statements() {
          .help = "solves equations symbolically, numerically, or for an equilibrium from a guess",
          .forms = {{"`solve` *E* `for` *x...*",
                     "solve K for qA'', qB''",
-                    "`form_linear_system` + `solve_symbolic`; prints `qA'' = ...`"},
+                    "`form_linear_system` + `solve_symbolic`; prints `qA'' = ...` (a progress line on a terminal; refused, before any work, when the expected size, Cramer's rule written out, passes the term limit, default 1000)"},
+                   {"`solve` *E* `for` *x...* `limit` *n*",
+                    "solve E for qA'', qB'', F_x limit 10000000",
+                    "`SymbolicSolveOptions::max_terms`: the symbolic solve with the term limit raised to n"},
                    {"`solve` *E* `for` *x...* `at` *name = value, ...*",
                     "solve E for T_A, T_B, T_C at qA = 20 deg, qB = -70 deg",
                     "`form_linear_system` + `solve_numeric` (unset speeds, accelerations: error)"},
                    {"`solve` *E* `for` *x...* `guess` *name = value, ...* [`at` ...]",
                     "solve E for q1, q2 guess q1 = 10 deg, q2 = 20 deg",
                     "`solve_equilibrium` (nonlinear; speeds and accelerations 0)"}},
-         .clauses = {"for", "at", "guess"}, .parse = parse_solve,
+         .clauses = {"for", "at", "guess", "limit"}, .parse = parse_solve,
          .run = [](M& m, const Statement& s) { m.solve(s); }},
         {.keyword = "digits", .family = solving,
          .help = "sets the significant digits of the numbers printed from here on (6 at the start)",

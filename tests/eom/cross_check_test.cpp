@@ -5,6 +5,7 @@
 
 #include "alembert/eom/equations.hpp"
 #include "alembert/eom/kane.hpp"
+#include "alembert/eom/planner.hpp"
 #include "alembert/mech/sample_models.hpp"
 #include "models.hpp"
 #include "support/expect.hpp"
@@ -162,4 +163,49 @@ TEST(CompareMethods, TorqueFreeBodyAboutItsMassCentreSatisfiesEulersEquations) {
     const Dyadic& I = B.inertia();
     Col3 euler = (dot(I, alpha) + cross(w, dot(I, w))).components_in(Bf);
     for (int i = 0; i < 3; ++i) EXPECT_NEAR(s.evaluate(euler[i], state), 0.0, 1e-12);
+}
+
+// The planner's "S does not turn as one body about O when only q changes" note is decided by
+// numeric tests at random states; on a tree every row's S does turn as one body, so no row of
+// any tree model of the cross-check may carry it, for the accelerations (forward dynamics) or
+// for the model's unknown loads (inverse dynamics).
+TEST(CompareMethods, NoTreeModelRowSaysItsSystemDoesNotTurnAsOneBody) {
+    auto check = [](const System& sys, const std::vector<TimeVariable>& q,
+                    const std::vector<ex>& loads, const std::string& name) {
+        std::vector<std::vector<ex>> unknown_sets{test::accelerations(q)};
+        if (loads.size() == q.size()) unknown_sets.push_back(loads);
+        std::size_t rows = 0;
+        for (const std::vector<ex>& x : unknown_sets)
+            for (const RoadmapRow& r : plan_roadmap(sys, q, x)) {
+                ++rows;
+                EXPECT_EQ(r.note.find("does not turn as one body"), std::string::npos)
+                    << name << ", row for " << r.variable << ": " << r.note;
+            }
+        EXPECT_GE(rows, q.size()) << name;
+    };
+    SampleModel triple = make_triple_pendulum();
+    check(triple.system, triple.q, triple.unknowns, "triple pendulum");
+    for (int n = 1; n <= 8; ++n)
+        for (ChainKind kind : {ChainKind::planar, ChainKind::spatial}) {
+            SampleModel m = make_n_link_pendulum(n, kind);
+            check(m.system, m.q, m.unknowns,
+                  std::to_string(n) + (kind == ChainKind::planar ? " planar" : " spatial") +
+                      " links");
+        }
+    SampleModel msd = make_mass_spring_damper();
+    check(msd.system, msd.q, msd.unknowns, "mass-spring-damper");
+    for (auto [make, name] :
+         std::vector<std::pair<test::Model (*)(), std::string>>{
+             {test::make_particle_double_pendulum, "particle double pendulum"},
+             {test::make_gimbal, "gimbal"},
+             {test::make_rod_and_plate, "rod and plate"},
+             {test::make_free_rigid_body, "free rigid body"},
+             {test::make_rod_pendulum, "rod pendulum"}}) {
+        test::Model m = make();
+        check(m.sys, m.q, m.loads, name);
+    }
+    for (bool driven : {true, false}) {
+        test::Model m = test::make_spinning_tube(driven);
+        check(m.sys, m.q, m.loads, driven ? "driven spinning tube" : "free spinning tube");
+    }
 }

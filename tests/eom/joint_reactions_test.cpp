@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Joint reactions as road-map unknowns: a row per measure, checked by hand and against
 // brute-force Newton–Euler at random states.
+#include <cmath>
 #include <cstdio>
 
 #include "alembert/eom/cross_check.hpp"
@@ -243,4 +244,75 @@ TEST(JointReactions, FourBarCrankPinRowComesAfterTheLoopItNeeds) {
     EXPECT_FALSE(holds(row.additional_unknowns, T));
     // solved after the block it needs: no note
     EXPECT_TRUE(row.note.empty()) << row.note;
+}
+
+// A closed loop: the four-bar's three pins to the ground and the crank as declared reactions,
+// the loop's pin force F_x, F_y held by the loop constraints. The road-map (coordinate rows
+// and the loop's constraint rows) and brute-force Newton–Euler (9 body equations and the
+// loop at the acceleration level, in 11 unknowns) are solved at random states that close the
+// loop (qB, qC by Newton's method, their rates from the loop's velocity level).
+TEST(JointReactions, FourBarReactionsMatchNewtonEuler) {
+    SampleModel m = make_four_bar();
+    System& sys = m.system;
+    SymbolTable& s = sys.symbols();
+    const Frame& N = sys.newtonian();
+    auto declare = [&](const std::string& name, const Body* parent, const Body& child,
+                       const std::string& at) {
+        sys.add_joint_reaction(name, parent, child, sys.point(at),
+                               {{s.add_unknown("R_" + child.name() + "_x"), N.x()},
+                                {s.add_unknown("R_" + child.name() + "_y"), N.y()}});
+    };
+    declare("crank bearing", nullptr, *m.links[0], "A_o");
+    declare("crank pin", m.links[0], *m.links[1], "B_o");
+    declare("rocker bearing", nullptr, *m.links[2], "C_o");
+    const ex Fx = m.unknowns[1], Fy = m.unknowns[2];
+    ReactionComparison c = compare_reactions(sys, m.q, 4, 1, {}, {Fx, Fy});
+    ASSERT_EQ(c.measures.size(), 8u);
+    EXPECT_TRUE(c.measures[0].is_equal(Fx));
+    EXPECT_TRUE(c.measures[1].is_equal(Fy));
+    EXPECT_LT(c.max_difference, kAgree);
+    std::printf("four-bar: the loop's pin force and 6 reaction measures, largest difference %.2g\n",
+                c.max_difference);
+}
+
+TEST(JointReactions, ConstraintForceThatIsAReactionMeasureIsAnArgumentError) {
+    SampleModel m = make_triple_pendulum();
+    std::vector<ex> R = test::declare_chain_reactions(m, false);
+    EXPECT_THROW_MSG(compare_reactions(m.system, m.q, 1, 1, {}, {R[0]}), ArgumentError,
+                     "is a measure of a declared joint reaction");
+}
+
+// Rolling: the ground's force on the disk at the contact, friction F_x, F_y and normal F_z,
+// held by the no-slip motion constraints and the height constraint. The road-map's rows (6
+// coordinate rows and the 3 constraint rows) and brute-force Newton–Euler (6 body equations
+// and the 3 constraints at the acceleration level) give the same contact force at random
+// states that satisfy the constraints.
+TEST(JointReactions, RollingDiskContactForceMatchesNewtonEuler) {
+    test::Model d = test::make_rolling_disk_with_contact();
+    ReactionComparison c = compare_reactions(d.sys, d.q, 4, 1, {}, d.loads);
+    ASSERT_EQ(c.measures.size(), 3u);
+    EXPECT_LT(c.max_difference, kAgree);
+    std::printf("rolling disk: contact force (3 measures), largest difference %.2g\n",
+                c.max_difference);
+    // by hand: released at rest with lean q2, the disk pivots about the contact line,
+    // (m r^2/4 + m r^2) q2'' = +-m g r sin q2, so the centre's vertical acceleration is
+    // -r sin q2 |q2''| and the ground pushes F_z = m g (1 - 4/5 sin^2 q2) up, and horizontally
+    // m r cos q2 |q2''| = 4/5 m g sin q2 cos q2
+    const SymbolTable& st = d.sys.symbols();
+    std::vector<ex> x = test::accelerations(d.q);
+    x.insert(x.end(), d.loads.begin(), d.loads.end());
+    std::vector<ex> E;
+    for (const RoadmapRow& r : plan_roadmap(d.sys, d.q, x)) E.push_back(r.equation);
+    LinearSystem L = form_linear_system(E, x);
+    const double m = 2.0, r = 0.3, g = 9.81;
+    for (double lean : {0.0, 0.4, -1.1}) {
+        exmap state{{d.q[0].symbol(), 0.3}, {d.q[1].symbol(), lean}, {d.q[2].symbol(), 0.2},
+                    {d.q[3].symbol(), 0.1}, {d.q[4].symbol(), -0.2},
+                    {d.q[5].symbol(), r * std::cos(lean)}};
+        for (const TimeVariable& qi : d.q) state[qi.d(1)] = 0;
+        Eigen::VectorXd v = solve_numeric(st, L, state);
+        EXPECT_NEAR(v(8), m * g * (1 - 0.8 * std::sin(lean) * std::sin(lean)), 1e-12 * m * g);
+        EXPECT_NEAR(std::hypot(v(6), v(7)), 0.8 * m * g * std::abs(std::sin(lean) * std::cos(lean)),
+                    1e-12 * m * g);
+    }
 }

@@ -160,6 +160,44 @@ inline Model make_gimbal() {
     return m;
 }
 
+/// A thin uniform disk D (mass m, radius r) rolling without slip on the plane of Nx>, Ny>
+/// (Nz> up): heading Y (q1 about Nz>), lean L (q2 about Yx>), spin D (q3 about Ly>); the mass
+/// centre at x Nx> + y Ny> + z Nz>, its height held by the configuration constraint
+/// z - r cos q2 = 0 ("height"), D_P the disk's own point at the contact (-r Lz> from Dcm)
+/// with no slip, the motion constraints roll_x, roll_y (v^{D_P} . Nx>, . Ny> = 0). The ground's
+/// force on D at D_P, F_x Nx> + F_y Ny> + F_z Nz>, is held by those constraints (unknowns
+/// F_x, F_y, F_z, in `loads`); gravity -g Nz>.
+inline Model make_rolling_disk_with_contact() {
+    Model m{System("N"), {}, {}};
+    System& sys = m.sys;
+    SymbolTable& s = sys.symbols();
+    Frame& N = sys.newtonian();
+    TimeVariable q1 = s.add_variable("q1"), q2 = s.add_variable("q2"), q3 = s.add_variable("q3"),
+                 x = s.add_variable("x"), y = s.add_variable("y"), z = s.add_variable("z");
+    ex mass = s.add_constant("m", 2.0), r = s.add_constant("r", 0.3), g = s.add_constant("g", 9.81);
+    Frame& Y = sys.add_frame("Y");
+    Frame& L = sys.add_frame("L");
+    RigidBody& D = sys.add_rigid_body("D");
+    Y.orient_axis(N, Axis::z, q1);
+    L.orient_axis(Y, Axis::x, q2);
+    D.body_frame().orient_axis(L, Axis::y, q3);
+    D.cm().set_pos(sys.origin(), x * N.x() + y * N.y() + z * N.z());
+    Point& DP = sys.add_point("D_P", &D);
+    DP.set_pos(D.cm(), -r * L.z());
+    DP.set_vel_two_point(N, D.cm(), D.body_frame());
+    D.set_mass(mass);
+    D.set_inertia(D.cm(), mass * r * r / 4, mass * r * r / 2, mass * r * r / 4);
+    sys.set_gravity(-g * N.z());
+    sys.add_configuration_constraint("height", z.symbol() - r * cos(q2.symbol()));
+    sys.add_motion_constraint("roll_x", dot(DP.vel_in(N), N.x()));
+    sys.add_motion_constraint("roll_y", dot(DP.vel_in(N), N.y()));
+    ex Fx = s.add_unknown("F_x"), Fy = s.add_unknown("F_y"), Fz = s.add_unknown("F_z");
+    sys.add_force(DP, Fx * N.x() + Fy * N.y() + Fz * N.z(), "contact");
+    m.q = {q1, q2, q3, x, y, z};
+    m.loads = {Fx, Fy, Fz};
+    return m;
+}
+
 /// A 3D double pendulum: rod A hinged to N at N_o about Nz; square plate B hinged at the rod's
 /// end about Ay, its mass centre off the hinge line; gravity -g Ny.
 inline Model make_rod_and_plate() {
