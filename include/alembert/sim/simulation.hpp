@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Forward simulation: adaptive Dormand-Prince integration with dense output, events, outputs.
+// Forward simulation: adaptive integration with dense output, events, outputs.
 #pragma once
 
 #include <functional>
@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "alembert/sim/forward_dynamics.hpp"
+#include "alembert/sim/integrator.hpp"
 #include "alembert/sim/plot.hpp"
 #include "alembert/sim/table.hpp"
 
@@ -40,6 +41,9 @@ struct EventSpec {
 struct SimulationOptions {
     double t_initial = 0.0;
     double t_final = 1.0;
+    /// The integration method (see Integrator): Dormand-Prince 5(4) by default; rkf78 or
+    /// bulirsch_stoer for tight tolerances, bdf for stiff models.
+    Integrator integrator = Integrator::dopri5;
     /// Output every output_step from t_initial to t_final (t_final included).
     double output_step = 0.01;
     /// Output exactly at these times instead (sorted, within [t_initial, t_final]).
@@ -112,9 +116,9 @@ struct SimulationResult {
 };
 
 /// Integrates the forward dynamics `fd` from q(t_initial) = q0, q'(t_initial) = qd0 with
-/// Boost.Odeint's Dormand-Prince 5(4) method (runge_kutta_dopri5) under error control and
-/// dense output: outputs are interpolated exactly at the requested times (fourth-order dense
-/// output), events are checked at every accepted step and located by bisection on the dense
+/// options.integrator (Dormand-Prince 5(4) by default) under error control and dense output:
+/// outputs are interpolated exactly at the requested times (each method's dense output),
+/// events are checked at every accepted step and located by bisection on the dense
 /// output to 1e-12 s (a sign change inside one step is found; two crossings inside one step
 /// cancel). `inputs` gives the run-time inputs (empty: all zero). `check_row`, if given, sees
 /// each output row as it is written (the table so far and the row's index) and stops the run
