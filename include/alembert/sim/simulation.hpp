@@ -113,6 +113,9 @@ struct SimulationResult {
     double t_end = 0.0;
     std::vector<double> q_end{}, qd_end{};  ///< state at t_end (SI)
     std::size_t steps = 0;                  ///< accepted steps
+    /// run_simulation: true if q'' came from the recursive tree formation (explicit
+    /// accelerations, no solve), false for the dense equations A x = b.
+    bool recursive = false;
 };
 
 /// Integrates the forward dynamics `fd` from q(t_initial) = q0, q'(t_initial) = qd0 with
@@ -167,8 +170,11 @@ struct SimulationRequest {
     std::map<std::string, std::string> constraint_units{};
 };
 
-/// Forms the forward dynamics of `sys` (compile_forward_dynamics), substitutes the inputs,
-/// compiles outputs, checks and events, and simulates. The declared constraints must hold at
+/// Forms the forward dynamics of `sys`, compiles outputs, checks and events, and simulates.
+/// A model without constraints whose bodies form a tree in relative coordinates
+/// (form_tree_equations_if_tree) is integrated on its explicit accelerations from the
+/// articulated-body recursion, with the load measures evaluated from their formulas at each
+/// call; any other model on compile_forward_dynamics' equations with the inputs substituted. The declared constraints must hold at
 /// the initial state (their residuals, the rates of configuration residuals, within
 /// options.constraint_tolerance): the initial values are not moved onto them silently; and
 /// their drift columns must stay within the same tolerance during the run.
