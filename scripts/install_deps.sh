@@ -7,6 +7,7 @@ packages=(
   libginac-dev libcln-dev libeigen3-dev
   libgtest-dev libgmock-dev googletest libbenchmark-dev
   libboost-dev libfmt-dev libcli11-dev libedit-dev
+  libsundials-dev              # the bdf integrator (SUNDIALS CVODE)
   gnuplot-nox
   clang libclang-rt-14-dev  # the sanitizer pass builds the fuzz target (docs/fuzzing.md)
   python3-numpy python3-scipy  # the tests run the generated Python

@@ -363,6 +363,8 @@ void Interpreter::Impl::simulate(const Statement& s) {
     out << "simulated t = " << transcript.number(r.options.t_initial) << " to " << transcript.number(res.t_end) << " s";
     if (!res.stopped_by.empty()) out << ", stopped when " << res.stopped_by;
     out << ": " << res.table.row_count() << " rows";
+    if (r.options.integrator != Integrator::dopri5)
+        out << ", integrated by " << to_string(r.options.integrator) << " in " << res.steps << " steps";
     std::string note = evaluator_note(s.flag("compiled"), why_not);
     if (!note.empty()) out << ", " << note;
     out << "\nwrote " << file_list(plot, "simulation.csv");
@@ -607,6 +609,9 @@ void Interpreter::Impl::run_codegen(const CodegenRequest& r, Location where) {
     else out << "; no inverse dynamics (" << loads.size() << " loads for " << q.size() << " coordinates)";
     if (!opts.outputs.empty()) out << ", " << opts.outputs.size() << " outputs";
     out << ", a simulation program";
+    if (numbers.options.integrator != Integrator::dopri5)
+        out << " (integrating by Dormand-Prince 5(4): the integrator " << to_string(numbers.options.integrator)
+            << " applies to simulate, not to generated code)";
     transcript.result(out.str());
 }
 
@@ -640,6 +645,22 @@ void parse_tolerance(StatementParser& p, Statement& s) {
         if (p.accept_word("abs")) s.quantities["abs"] = p.quantity();
         else if (p.accept_word("rel")) s.quantities["rel"] = p.quantity();
         else p.fail_expected("'abs' or 'rel' and a number (tolerance abs 1e-10 rel 1e-10)");
+    }
+}
+
+// integrator dopri5 | rkf78 | bulirsch_stoer | bdf
+void parse_integrator_choice(StatementParser& p, Statement& s) {
+    s.words["method"] = p.name("an integrator: dopri5, rkf78, bulirsch_stoer or bdf");
+}
+
+void run_integrator_choice(Interpreter::Impl& m, const Statement& s) {
+    const Word& w = s.word("method");
+    try {
+        m.numbers.options.integrator = parse_integrator(w.text);
+    } catch (const ArgumentError&) {
+        throw ScriptError(w.location, "there is no integrator named '" + w.text + "'",
+                          "choose dopri5 (the default), rkf78 or bulirsch_stoer (tight tolerances), "
+                          "or bdf (stiff models): integrator rkf78");
     }
 }
 
@@ -748,6 +769,14 @@ std::vector<StatementSpec> number_statements() {
                     "`SimulationOptions::abs_tol`, `rel_tol` (default 1e-8)"}},
          .clauses = {"rel"}, .parse = parse_tolerance,
          .run = [](M& m, const Statement& s) { m.set_times_and_tolerances(s); }},
+        {.keyword = "integrator", .family = family, .help = "chooses the method simulate integrates with",
+         .forms = {{"`integrator` `dopri5`\\|`rkf78`\\|`bulirsch_stoer`\\|`bdf`",
+                    "integrator rkf78",
+                    "`SimulationOptions::integrator` (default `dopri5`, Dormand-Prince 5(4)); `rkf78` "
+                    "(Runge-Kutta-Fehlberg 7(8)) and `bulirsch_stoer` for tight tolerances, `bdf` "
+                    "(SUNDIALS CVODE, implicit) for stiff models; each keeps output times and "
+                    "`stop when` events; generated code keeps Dormand-Prince"}},
+         .parse = parse_integrator_choice, .run = run_integrator_choice},
         {.keyword = "stop", .family = family,
          .help = "stops simulate where an expression crosses a value",
          .forms = {{"`stop when` *expr* `=` *value* [`rising`\\|`falling`]",

@@ -1,27 +1,29 @@
 // SPDX-License-Identifier: MIT
-// Forward simulation with Boost.Odeint's Dormand-Prince stepper, dense output and events.
+// Forward simulation: the chosen integrator's steps, dense output at the output times, events.
 #include "alembert/sim/simulation.hpp"
 
 #include <algorithm>
-#include <boost/numeric/odeint.hpp>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <memory>
+#include <optional>
 #include <sstream>
 
 #include "alembert/eom/kane.hpp"
+#include "alembert/eom/tree_dynamics.hpp"
 #include "alembert/error.hpp"
 #include "alembert/sim/progress.hpp"
 #include "alembert/sym/print.hpp"
 #include "alembert/sym/simplify.hpp"
+#include "dense_stepper.hpp"
 #include "number_text.hpp"
 
 namespace alembert {
 
 namespace {
 
-namespace odeint = boost::numeric::odeint;
-using State = std::vector<double>;
+using State = detail::OdeState;
 
 using detail::number;
 
@@ -44,6 +46,23 @@ NumericFunction compile_over_layout(const SymbolTable& table, const StateLayout&
         throw ArgumentError(std::string(caller) + ": " + e.what() +
                             "; an output may use t, the coordinates, their rates, the unknowns "
                             "of the equations (accelerations, constraint forces), the inputs and "
+                            "constants with values");
+    }
+}
+
+// thrown where the recursive formation's q'' are not finite, to retry on the dense equations
+struct RecursionNotFinite : SolveError {
+    RecursionNotFinite() : SolveError("the recursive formation's accelerations are not finite") {}
+};
+
+// the load laws (formulas of t, q, q') as one function of [t, q, q']
+NumericFunction compile_over_layout_inputs(const SymbolTable& table, const std::vector<ex>& state,
+                                           const std::vector<ex>& laws, const FunctionMaker& make) {
+    try {
+        return make_numeric_function(table, state, laws, make);
+    } catch (const ArgumentError& e) {
+        throw ArgumentError(std::string("run_simulation(): an input law: ") + e.what() +
+                            "; an input is a formula of t, the coordinates, their rates and "
                             "constants with values");
     }
 }
@@ -294,13 +313,14 @@ SimulationResult simulate(const ForwardDynamics& fd, const std::vector<double>& 
     State x(2 * n);
     std::copy(q0.begin(), q0.end(), x.begin());
     std::copy(qd0.begin(), qd0.end(), x.begin() + static_cast<std::ptrdiff_t>(n));
-    auto stepper = odeint::make_dense_output(options.abs_tol, options.rel_tol,
-                                             odeint::runge_kutta_dopri5<State>());
+    std::unique_ptr<detail::DenseStepper> method =
+        detail::make_dense_stepper(options.integrator, options.abs_tol, options.rel_tol, rhs);
+    detail::DenseStepper& stepper = *method;
     const double first_step =
         options.initial_step > 0
             ? options.initial_step
             : std::min(tf - t0, times.size() > 1 ? times[1] - times[0] : tf - t0) / 100;
-    stepper.initialize(x, t0, first_step);
+    stepper.initialize(x, t0, first_step, tf);
 
     ProgressIndicator progress("simulating '" + fd.model() + "'", t0, tf, options.progress);
     std::vector<double> g_before(events.names.size()), g_after(events.names.size());
@@ -314,11 +334,13 @@ SimulationResult simulate(const ForwardDynamics& fd, const std::vector<double>& 
             if (result.steps >= options.max_steps)
                 throw SolveError(who + "more than " + std::to_string(options.max_steps) +
                                  " steps before t = " + number(stepper.current_time()) +
-                                 " s; the model may be stiff or near a singularity (loosen the "
-                                 "tolerances or raise max_steps)");
-            const auto [t_prev, t_cur] = stepper.do_step(rhs);
+                                 " s; the model may be stiff or near a singularity (integrate "
+                                 "a stiff model with the bdf integrator, loosen the tolerances "
+                                 "or raise max_steps)");
+            const auto [t_prev, t_cur] = stepper.do_step();
             ++result.steps;
-            if (!(t_cur > t_prev) || t_cur - t_prev < 1e-14 * std::max(1.0, std::abs(t_cur)))
+            if (!(t_cur > t_prev) || (!stepper.guards_step_size() &&
+                                      t_cur - t_prev < 1e-14 * std::max(1.0, std::abs(t_cur))))
                 throw SolveError(who + "the step size fell to " + number(t_cur - t_prev) +
                                  " s at t = " + number(t_cur) +
                                  " s; the model may be singular "
@@ -397,52 +419,110 @@ SimulationResult run_simulation(const System& sys, const SimulationRequest& requ
         auto it = request.inputs.find(measure);
         loads[measure] = it == request.inputs.end() ? ex(0) : it->second;
     }
-    LinearSystem eqs = form_forward_equations(sys, q, request.constraint_forces);
-    eqs.A = GiNaC::ex_to<GiNaC::matrix>(eqs.A.subs(loads));
-    eqs.b = GiNaC::ex_to<GiNaC::matrix>(eqs.b.subs(loads));
-    ForwardDynamics fd = compile_forward_dynamics(table, eqs, q, {}, request.model, request.make);
-
-    // outputs: the user's, then the checks
-    std::vector<OutputSpec> outputs = request.outputs;
-    for (OutputSpec& o : outputs) o.expression = o.expression.subs(loads);
-    if (request.checks) {
-        bool conservative = true;
-        exmap without_constraint_forces = loads;
-        for (const ex& c : request.constraint_forces) without_constraint_forces[c] = 0;
-        for (const ex& f : form_generalized_active_forces(sys, q, LoadSelection::nonconservative))
-            conservative = conservative && equal(f.subs(without_constraint_forces), 0);
-        if (conservative)
-            outputs.push_back({"energy",
-                               sys.calc_kinetic_energy(sys.bodies()) + sys.calc_potential_energy(),
-                               "J"});
-        for (const Constraint& c : sys.constraints()) {
-            auto unit = request.constraint_units.find(c.name);
-            outputs.push_back({"drift_" + c.name, c.residual,
-                               unit == request.constraint_units.end() ? "" : unit->second, 1.0});
+    auto run = [&](bool allow_tree) {
+        // a tree of bodies in relative coordinates: q'' from the articulated-body recursion (no
+        // mass matrix, no solve; its size grows linearly in the bodies), the load measures run-time
+        // inputs given by their formulas (they sit inside the recursion's named intermediates, out
+        // of reach of a substitution); otherwise the dense equations with the loads substituted
+        std::optional<TreeEquations> tree;
+        if (allow_tree && request.constraint_forces.empty() && sys.constraints().empty())
+            tree = form_tree_equations_if_tree(sys, q);
+        std::vector<ex> measures;
+        InputFunction input_laws;
+        std::optional<ForwardDynamics> dynamics;
+        if (tree) {
+            const std::size_t n = q.size();
+            LinearSystem eqs{GiNaC::ex_to<GiNaC::matrix>(GiNaC::unit_matrix(static_cast<unsigned>(n))),
+                             GiNaC::matrix(static_cast<unsigned>(n), 1), {}};
+            for (std::size_t i = 0; i < n; ++i) {
+                eqs.b(static_cast<unsigned>(i), 0) = tree->accelerations[i];
+                eqs.unknowns.push_back(q[i].d(2));
+            }
+            measures = table.symbols(SymbolKind::unknown);
+            const ForwardDynamics recursion =
+                compile_forward_dynamics(table, eqs, q, measures, request.model, request.make);
+            NumericFunction checked = recursion.function();
+            checked.evaluate = [inner = recursion.function().evaluate,
+                                count = checked.output_count](const double* x, double* y) {
+                inner(x, y);
+                for (std::size_t j = 0; j < count; ++j)
+                    if (!std::isfinite(y[j])) throw RecursionNotFinite();
+            };
+            dynamics.emplace(recursion.model(), recursion.layout(), checked);
+            std::vector<ex> state{table.time()}, laws;
+            for (const TimeVariable& v : q) state.push_back(v.symbol());
+            for (const TimeVariable& v : q) state.push_back(v.d(1));
+            for (const ex& m : measures) laws.push_back(loads.at(m));
+            auto f = std::make_shared<NumericFunction>(
+                compile_over_layout_inputs(table, state, laws, request.make));
+            auto in = std::make_shared<std::vector<double>>(1 + 2 * n);
+            input_laws = [f, in, n](double t, const double* qv, const double* qd, double* u) {
+                (*in)[0] = t;
+                std::copy(qv, qv + n, in->begin() + 1);
+                std::copy(qd, qd + n, in->begin() + 1 + static_cast<std::ptrdiff_t>(n));
+                f->evaluate(in->data(), u);
+            };
+        } else {
+            LinearSystem eqs = form_forward_equations(sys, q, request.constraint_forces);
+            eqs.A = GiNaC::ex_to<GiNaC::matrix>(eqs.A.subs(loads));
+            eqs.b = GiNaC::ex_to<GiNaC::matrix>(eqs.b.subs(loads));
+            dynamics.emplace(compile_forward_dynamics(table, eqs, q, {}, request.model, request.make));
         }
-    }
-    OutputFunction out = compile_outputs(table, fd.layout(), outputs, request.make);
-    std::vector<EventSpec> event_specs = request.events;
-    for (EventSpec& e : event_specs) e.expression = e.expression.subs(loads);
-    EventFunction events = compile_events(table, fd.layout(), event_specs, request.make);
+        const ForwardDynamics& fd = *dynamics;
 
-    // initial values
-    std::vector<double> q0(q.size(), 0.0), qd0(q.size(), 0.0);
-    for (const auto& [symbol, value] : request.initial_values) {
-        bool found = false;
-        for (std::size_t i = 0; i < q.size(); ++i) {
-            if (symbol.is_equal(q[i].symbol())) q0[i] = table.evaluate(value), found = true;
-            if (symbol.is_equal(q[i].d(1))) qd0[i] = table.evaluate(value), found = true;
+        // outputs: the user's, then the checks
+        std::vector<OutputSpec> outputs = request.outputs;
+        for (OutputSpec& o : outputs) o.expression = o.expression.subs(loads);
+        if (request.checks) {
+            bool conservative = true;
+            exmap without_constraint_forces = loads;
+            for (const ex& c : request.constraint_forces) without_constraint_forces[c] = 0;
+            for (const ex& f : form_generalized_active_forces(sys, q, LoadSelection::nonconservative))
+                conservative = conservative && equal(f.subs(without_constraint_forces), 0);
+            if (conservative)
+                outputs.push_back({"energy",
+                                   sys.calc_kinetic_energy(sys.bodies()) + sys.calc_potential_energy(),
+                                   "J"});
+            for (const Constraint& c : sys.constraints()) {
+                auto unit = request.constraint_units.find(c.name);
+                outputs.push_back({"drift_" + c.name, c.residual,
+                                   unit == request.constraint_units.end() ? "" : unit->second, 1.0});
+            }
         }
-        ALEMBERT_CHECK_ARG(found, who + "an initial value is given for '" + to_string(symbol) +
-                                      "', which is neither a coordinate nor a coordinate's rate");
+        OutputFunction out = compile_outputs(table, fd.layout(), outputs, request.make);
+        std::vector<EventSpec> event_specs = request.events;
+        for (EventSpec& e : event_specs) e.expression = e.expression.subs(loads);
+        EventFunction events = compile_events(table, fd.layout(), event_specs, request.make);
+
+        // initial values
+        std::vector<double> q0(q.size(), 0.0), qd0(q.size(), 0.0);
+        for (const auto& [symbol, value] : request.initial_values) {
+            bool found = false;
+            for (std::size_t i = 0; i < q.size(); ++i) {
+                if (symbol.is_equal(q[i].symbol())) q0[i] = table.evaluate(value), found = true;
+                if (symbol.is_equal(q[i].d(1))) qd0[i] = table.evaluate(value), found = true;
+            }
+            ALEMBERT_CHECK_ARG(found, who + "an initial value is given for '" + to_string(symbol) +
+                                          "', which is neither a coordinate nor a coordinate's rate");
+        }
+        check_initial_constraints(sys, fd, request, q0, qd0);
+        // the run stops at the first output row where a constraint has drifted too far
+        std::function<void(const Table&, std::size_t)> check_row;
+        if (request.checks && !sys.constraints().empty())
+            check_row = [&](const Table& t, std::size_t r) { check_constraint_drift(sys, request, t, r); };
+        SimulationResult result =
+            simulate(fd, q0, qd0, request.options, out, events, input_laws, check_row);
+        result.recursive = tree.has_value();
+        return result;
+    };
+    try {
+        return run(true);
+    } catch (const RecursionNotFinite&) {
+        // the recursion divides by articulated inertias: where they vanish (a singular
+        // configuration, a massless body) its q'' are not finite; the dense equations then say
+        // which accelerations are not determined, or integrate where the recursion cannot
+        return run(false);
     }
-    check_initial_constraints(sys, fd, request, q0, qd0);
-    // the run stops at the first output row where a constraint has drifted too far
-    std::function<void(const Table&, std::size_t)> check_row;
-    if (request.checks && !sys.constraints().empty())
-        check_row = [&](const Table& t, std::size_t r) { check_constraint_drift(sys, request, t, r); };
-    return simulate(fd, q0, qd0, request.options, out, events, {}, check_row);
 }
 
 PlotResult write_table_and_plot(const Table& table, const std::string& dir, const std::string& name,

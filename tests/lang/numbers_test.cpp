@@ -126,6 +126,31 @@ TEST(Simulate, StopWhenEndsTheRunWhereTheExpressionCrossesAndCompiledCodeAgreesW
     EXPECT_NE(r.out.str().find("stopped when dot(pos(Ccm, N_o), Ny>) = 50 cm"), std::string::npos) << r.out.str();
 }
 
+TEST(Simulate, TheIntegratorStatementChoosesTheMethodAndEachFindsTheSameStop) {
+    // the fall of the sit-to-stand model stopped where the head-arms-trunk centre passes 50 cm:
+    // Dormand-Prince, Fehlberg 7(8) and BDF at tight tolerances find one stop and one path
+    TempDir dir;
+    Script r(dir.path);
+    r.run(sit_to_stand_model() + kFall + "stop when dot(pos(Ccm, N_o), Ny>) = 50 cm falling\n" +
+          "simulate to \"dopri5\"\nintegrator rkf78\nsimulate to \"rkf78\"\n" +
+          "integrator bdf\ntolerance abs 1e-11 rel 1e-11\nsimulate to \"bdf\"\n");
+    alembert::Table a = alembert::read_csv((dir.path / "dopri5/simulation.csv").string());
+    for (const char* method : {"rkf78", "bdf"}) {
+        alembert::Table b = alembert::read_csv((dir.path / method / "simulation.csv").string());
+        ASSERT_EQ(a.row_count(), b.row_count()) << method;
+        const double tol = std::string(method) == "bdf" ? 1e-6 : 1e-9;
+        EXPECT_NEAR(a.columns[0].back(), b.columns[0].back(), tol) << method;
+        const std::size_t E = b.column_index("energy");
+        for (std::size_t k = 0; k < b.row_count(); ++k)
+            EXPECT_NEAR(b.columns[E][k], b.columns[E].front(), 10 * tol * std::abs(b.columns[E].front())) << method;
+        for (std::size_t c = 0; c < a.names.size(); ++c)
+            for (std::size_t k = 0; k < a.row_count(); ++k)
+                EXPECT_NEAR(a.columns[c][k], b.columns[c][k], tol * (1 + std::abs(a.columns[c][k]))) << method;
+    }
+    EXPECT_NE(r.out.str().find("integrated by rkf78 in "), std::string::npos) << r.out.str();
+    EXPECT_NE(r.out.str().find("integrated by bdf in "), std::string::npos) << r.out.str();
+}
+
 TEST(Simulate, AMotorLawActsAsTheScriptWritesIt) {
     // a mass on a spring driven by F = -k x (input) is the same oscillator as k alone:
     // x(t) = x0 cos(w t), w = sqrt(2 k / m) with both the spring and the law

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: MIT
-// Forward simulation: adaptive Dormand-Prince integration with dense output, events, outputs.
+// Forward simulation: adaptive integration with dense output, events, outputs.
 #pragma once
 
 #include <functional>
@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "alembert/sim/forward_dynamics.hpp"
+#include "alembert/sim/integrator.hpp"
 #include "alembert/sim/plot.hpp"
 #include "alembert/sim/table.hpp"
 
@@ -40,6 +41,9 @@ struct EventSpec {
 struct SimulationOptions {
     double t_initial = 0.0;
     double t_final = 1.0;
+    /// The integration method (see Integrator): Dormand-Prince 5(4) by default; rkf78 or
+    /// bulirsch_stoer for tight tolerances, bdf for stiff models.
+    Integrator integrator = Integrator::dopri5;
     /// Output every output_step from t_initial to t_final (t_final included).
     double output_step = 0.01;
     /// Output exactly at these times instead (sorted, within [t_initial, t_final]).
@@ -109,12 +113,15 @@ struct SimulationResult {
     double t_end = 0.0;
     std::vector<double> q_end{}, qd_end{};  ///< state at t_end (SI)
     std::size_t steps = 0;                  ///< accepted steps
+    /// run_simulation: true if q'' came from the recursive tree formation (explicit
+    /// accelerations, no solve), false for the dense equations A x = b.
+    bool recursive = false;
 };
 
 /// Integrates the forward dynamics `fd` from q(t_initial) = q0, q'(t_initial) = qd0 with
-/// Boost.Odeint's Dormand-Prince 5(4) method (runge_kutta_dopri5) under error control and
-/// dense output: outputs are interpolated exactly at the requested times (fourth-order dense
-/// output), events are checked at every accepted step and located by bisection on the dense
+/// options.integrator (Dormand-Prince 5(4) by default) under error control and dense output:
+/// outputs are interpolated exactly at the requested times (each method's dense output),
+/// events are checked at every accepted step and located by bisection on the dense
 /// output to 1e-12 s (a sign change inside one step is found; two crossings inside one step
 /// cancel). `inputs` gives the run-time inputs (empty: all zero). `check_row`, if given, sees
 /// each output row as it is written (the table so far and the row's index) and stops the run
@@ -163,8 +170,11 @@ struct SimulationRequest {
     std::map<std::string, std::string> constraint_units{};
 };
 
-/// Forms the forward dynamics of `sys` (compile_forward_dynamics), substitutes the inputs,
-/// compiles outputs, checks and events, and simulates. The declared constraints must hold at
+/// Forms the forward dynamics of `sys`, compiles outputs, checks and events, and simulates.
+/// A model without constraints whose bodies form a tree in relative coordinates
+/// (form_tree_equations_if_tree) is integrated on its explicit accelerations from the
+/// articulated-body recursion, with the load measures evaluated from their formulas at each
+/// call; any other model on compile_forward_dynamics' equations with the inputs substituted. The declared constraints must hold at
 /// the initial state (their residuals, the rates of configuration residuals, within
 /// options.constraint_tolerance): the initial values are not moved onto them silently; and
 /// their drift columns must stay within the same tolerance during the run.
