@@ -73,6 +73,37 @@ std::vector<ex> Interpreter::Impl::array(const Expr& e, const std::string& what)
     return v.a;
 }
 
+bool carries_unit(const Expr& e) {
+    if (e.kind == Expr::Kind::number) return !e.unit.empty();
+    for (const ExprPtr& a : e.args)
+        if (a && carries_unit(*a)) return true;
+    return false;
+}
+
+Value Interpreter::Impl::number_with_unit(const Expr& e, const ex& n) {
+    // a unit name joined by * or / that is also a name of the script is ambiguous: refuse it
+    // rather than guess (2 kg*g: grams, or the constant g?)
+    for (std::size_t i = 1; i < e.unit.factors.size(); ++i) {
+        const Word& w = e.unit.factors[i].name;
+        bool declared = values.count(w.text) || names.count(w.text) ||
+                        (sys && sys->symbols().contains(w.text));
+        if (!declared) continue;
+        Unit u = *find_unit(w.text);
+        throw ScriptError(w.location,
+                          "'" + w.text + "' after the number " + e.number_text +
+                              " reads as the unit " + u.text + " (" + describe(u.dimension) + "), but '" + w.text +
+                              "' is also a name of this script",
+                          "for the name, close the number's unit with parentheses: (" + e.number_text +
+                              " " + e.unit.factors[0].name.text + ")*" + w.text +
+                              "; for the unit, give the value a name: constant c = " + e.number_text +
+                              " " + e.unit.factors[0].name.text + "*" + w.text);
+    }
+    Unit u = parse_unit(e.unit);
+    // exact while the unit is SI (2 kg stays 2); a scaled unit multiplies by its factor
+    ex value = u.scale == 1 ? n : ex(n * GiNaC::numeric(u.scale));
+    return scalar_value(value, u.dimension);
+}
+
 Value Interpreter::Impl::eval_name(const Expr& e) {
     const std::string& n = e.text;
     auto it = values.find(n);
@@ -112,6 +143,7 @@ Value Interpreter::Impl::eval(const Expr& e) {
         case Expr::Kind::number: {
             bool whole = e.number_text.find_first_of(".eE") == std::string::npos;
             ex n = whole ? ex(GiNaC::numeric(e.number_text.c_str())) : ex(GiNaC::numeric(e.number));
+            if (!e.unit.empty()) return number_with_unit(e, n);
             // zero has every dimension (0 N*m is 0 m); other numbers are dimensionless
             return scalar_value(n, n.is_zero() ? Dimension::open() : Dimension::none());
         }
@@ -328,6 +360,12 @@ Value Interpreter::Impl::eval_call(const Expr& e) {
                                           "check the units");
                 for (auto& k : d.exponent) k /= 2;
             }
+        } else if (x.dim.known && x.dim.exponent == std::array<int, 3>{0, 0, 1}) {
+            throw ScriptError(a[0]->location,
+                              "the argument of " + f + "() must be an angle or a number, but this is a time (s)",
+                              "scale time by a frequency or a period: " + f + "(2*pi*f*t) with constant f = 1 Hz, "
+                              "or " + f + "(2*pi*t/T) with constant T = 2 s, or " + f +
+                              "(w*t) with constant w = 3 rad/s");
         } else {
             check_dimension(x.dim, Dimension::none(), "the argument of " + f + "()", a[0]->location);
         }

@@ -397,16 +397,28 @@ SimulationResult run_simulation(const System& sys, const SimulationRequest& requ
         auto it = request.inputs.find(measure);
         loads[measure] = it == request.inputs.end() ? ex(0) : it->second;
     }
+    for (const auto& [symbol, formula] : request.specified) {
+        ALEMBERT_CHECK_ARG(table.owns(symbol) && table.kind(symbol) == SymbolKind::specified,
+                           who + "a value is given for '" + to_string(symbol) +
+                               "', which is not a specified quantity of the model");
+        loads[symbol] = formula;
+    }
     LinearSystem eqs = form_forward_equations(sys, q, request.constraint_forces);
+    if (!request.specified.empty()) {
+        // a specified quantity may sit inside a named intermediate's definition
+        eqs.A = GiNaC::ex_to<GiNaC::matrix>(table.expand_intermediates(eqs.A));
+        eqs.b = GiNaC::ex_to<GiNaC::matrix>(table.expand_intermediates(eqs.b));
+    }
     eqs.A = GiNaC::ex_to<GiNaC::matrix>(eqs.A.subs(loads));
     eqs.b = GiNaC::ex_to<GiNaC::matrix>(eqs.b.subs(loads));
     ForwardDynamics fd = compile_forward_dynamics(table, eqs, q, {}, request.model, request.make);
 
     // outputs: the user's, then the checks
     std::vector<OutputSpec> outputs = request.outputs;
-    for (OutputSpec& o : outputs) o.expression = o.expression.subs(loads);
+    for (OutputSpec& o : outputs)
+        o.expression = (request.specified.empty() ? o.expression : table.expand_intermediates(o.expression)).subs(loads);
     if (request.checks) {
-        bool conservative = true;
+        bool conservative = request.specified.empty();  // a driven quantity does work
         exmap without_constraint_forces = loads;
         for (const ex& c : request.constraint_forces) without_constraint_forces[c] = 0;
         for (const ex& f : form_generalized_active_forces(sys, q, LoadSelection::nonconservative))
@@ -423,7 +435,8 @@ SimulationResult run_simulation(const System& sys, const SimulationRequest& requ
     }
     OutputFunction out = compile_outputs(table, fd.layout(), outputs, request.make);
     std::vector<EventSpec> event_specs = request.events;
-    for (EventSpec& e : event_specs) e.expression = e.expression.subs(loads);
+    for (EventSpec& e : event_specs)
+        e.expression = (request.specified.empty() ? e.expression : table.expand_intermediates(e.expression)).subs(loads);
     EventFunction events = compile_events(table, fd.layout(), event_specs, request.make);
 
     // initial values
