@@ -9,6 +9,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <numbers>
 #include <sstream>
 #include <string>
@@ -234,6 +235,59 @@ TEST(Flexibility, ASessionMayGiveAConstantANewValue) {
     Interpreter script(o2, e2, false);
     EXPECT_EQ(script.run("newtonian N\nconstant L = 1 m\nconstant L = 3 m\n", "s.alb"), RunStatus::script_error);
     EXPECT_TRUE(has(e2.str(), "'L' is already declared")) << e2.str();
+}
+
+// ---- the linear-quadratic regulator ----------------------------------------------------
+
+TEST(LqrStatement, DoubleIntegratorGainIsTheHandSolution) {
+    // x'' = F/m with m = 1 kg, weights 1, 1 on (x, x') and 1 on F: the Riccati equation's
+    // entries give p12 = 1, p22 = sqrt 3, so K = (1, sqrt 3) and the closed loop
+    // s^2 + sqrt(3) s + 1 has the eigenvalues (-sqrt 3 +- i)/2
+    ScriptSession r;
+    std::string out = r.ok("digits 12\nnewtonian N\nparticle P\nvariable x'' m\nunknown F N\n"
+                           "translate P from N_o by x*Nx>\nmass P = 1 kg\nforce push on P = F*Nx>\nkane K for x\n"
+                           "linearize K at x = 0, x' = 0 inputs F lqr 1, 1 and 1 gains L\nL[1]\nL[2]");
+    std::size_t gains = out.find("L = [");
+    ASSERT_NE(gains, std::string::npos) << out;
+    EXPECT_NEAR(number_after(out.substr(gains), "L = ["), 1, 1e-10);
+    EXPECT_NEAR(number_after(out.substr(gains), ", "), std::sqrt(3.0), 1e-10);
+    EXPECT_TRUE(has(out, "F = -(L[1]*x + L[2]*x')")) << out;
+    std::size_t closed = out.find("closed-loop eigenvalues");
+    ASSERT_NE(closed, std::string::npos);
+    EXPECT_NEAR(number_after(out.substr(closed), "lambda1 = "), -std::sqrt(3.0) / 2, 1e-10);
+    // errors name the fix
+    std::string e = r.fails("linearize K at x = 0, x' = 0 inputs F lqr 1 and 1 gains L2");
+    EXPECT_TRUE(has(e, "1 state weights for 2 states")) << e;
+    e = r.fails("linearize K at x = 0, x' = 0 inputs F lqr 1, 1 and 0 gains L2");
+    EXPECT_TRUE(has(e, "a weight on an input must be greater than 0")) << e;
+    e = r.fails("linearize K at x = 0, x' = 0 inputs F lqr 0, 1 and 1 gains L2");
+    EXPECT_TRUE(has(e, "imaginary axis")) << e;  // x unweighted: its integrator mode sits at 0
+}
+
+TEST(LqrStatement, RegulatedCartPendulumReturnsUpright) {
+    // the example's regulator: from a 5 degree tilt the closed loop returns upright and the
+    // cart back near x = 0; the gain on the cart's position is -sqrt(q_x/r) = -10 (for the
+    // cart's free position the Riccati equation's first entry gives K_x^2 = q_x/r)
+    ScriptSession r;
+    std::string out = r.ok("digits 12\n" + [] {
+        std::ifstream in(fs::path(ALEMBERT_SOURCE_DIR) / "examples" / "inverted_pendulum_cart" / "model.alb");
+        std::ostringstream t;
+        t << in.rdbuf();
+        return t.str();
+    }());
+    std::size_t gains = out.find("L = [");
+    ASSERT_NE(gains, std::string::npos) << out;
+    EXPECT_NEAR(number_after(out.substr(gains), "L = ["), -10, 1e-8);
+    EXPECT_TRUE(has(out, "holds to 1e-1")) << out;  // a relative residual of 1e-10 or less
+    alembert::Table t = alembert::read_csv((r.dir.path / "lqr" / "simulation.csv").string());
+    const auto& th = t.columns[t.column_index("th")];
+    const auto& x = t.columns[t.column_index("x")];
+    EXPECT_NEAR(t.columns[0].back(), 6, 1e-12);
+    double worst = 0;
+    for (double v : th) worst = std::max(worst, std::abs(v));
+    EXPECT_LE(worst, 5 + 1e-9);
+    EXPECT_LT(std::abs(th.back()), 1e-2);
+    EXPECT_LT(std::abs(x.back()), 1e-3);
 }
 
 }  // namespace flexibility_lang_test
