@@ -24,9 +24,13 @@ struct Value {
     ex s{};
     Vector v{};
     std::vector<ex> a{};
-    Mat3 m{};
+    Mat3 m{};  ///< a 3 by 3 matrix's entries (rotation, direction cosines), mirroring `a`
+    int rows = 0, cols = 0;  ///< a matrix's size; its entries are `a`, row by row
     Dimension dim = Dimension::open();
 };
+
+/// A matrix value of `rows` by `cols` entries given row by row (`m` set too when 3 by 3).
+Value matrix_value(int rows, int cols, std::vector<ex> entries, Dimension dim);
 
 /// True if a number in `e` is written with a unit (`2 kg * 9.81 m/s^2`).
 bool carries_unit(const Expr& e);

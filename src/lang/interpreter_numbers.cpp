@@ -270,8 +270,21 @@ void Interpreter::Impl::add_outputs(const Statement& s) {
                 throw ScriptError(labels[i].text.empty() ? e.location : labels[i].location,
                                   "there is already an output named '" + name + "'", "name each column once");
         Value v = eval(e);
+        if (v.kind == Kind::matrix) {
+            // a matrix is a column per entry, name_ij (row i, column j)
+            if (!s.units[i].empty())
+                throw ScriptError(s.units[i].location, "a matrix's columns are written in SI units", "drop the unit");
+            for (int r = 0; r < v.rows; ++r)
+                for (int c = 0; c < v.cols; ++c) {
+                    std::string col = name + "_" + std::to_string(r + 1) + std::to_string(c + 1);
+                    if (v.rows > 9 || v.cols > 9) col = name + "_" + std::to_string(r + 1) + "_" + std::to_string(c + 1);
+                    numbers.outputs.push_back({col, v.a[static_cast<std::size_t>(r * v.cols + c)], "", 1.0});
+                    numbers.output_si_units.push_back("");
+                }
+            continue;
+        }
         if (v.kind != Kind::scalar)
-            throw ScriptError(e.location, "an output is a scalar", "take a measure with dot(v>, Nx>)");
+            throw ScriptError(e.location, "an output is a scalar or a matrix", "take a measure with dot(v>, Nx>)");
         OutputSpec o{name, v.s, "", 1.0};
         const UnitText& ut = s.units[i];
         if (!ut.empty()) {

@@ -18,7 +18,7 @@ const std::set<std::string, std::less<>>& function_words() {
         "sin", "cos", "tan", "asin", "acos", "atan", "sqrt", "exp", "log", "abs", "dot", "cross",
         "express", "dt", "mag", "unit", "simplify", "expand", "angvel", "angacc", "vel", "acc",
         "pos", "rotation", "mass", "momentum", "angmomentum", "kinetic", "potential",
-        "resultant", "moment", "pi", "minimum_jerk"};
+        "resultant", "moment", "pi", "minimum_jerk", "massmatrix", "jacobian"};
     return w;
 }
 
@@ -368,6 +368,7 @@ ExprPtr StatementParser::primary() {
                 next();
                 node->kind = Expr::Kind::index;
                 node->args.push_back(expression());
+                if (accept_punct(",")) node->args.push_back(expression());  // a matrix's row, column
                 expect_punct("]", "after the index of " + node->text);
                 return node;
             }

@@ -73,7 +73,7 @@ void run_rotate(Interpreter::Impl& m, const Statement& s) {
         });
     } else {
         Value v = m.eval(*s.exprs.at("dcm"));
-        if (v.kind != Value::Kind::matrix)
+        if (v.kind != Value::Kind::matrix || v.rows != 3 || v.cols != 3)
             throw ScriptError(s.exprs.at("dcm")->location,
                               "a direction-cosine matrix must be 3 by 3, written [a, b, c; d, e, f; g, h, i]",
                               "separate the rows with ';'");

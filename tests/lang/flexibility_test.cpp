@@ -237,6 +237,66 @@ TEST(Flexibility, ASessionMayGiveAConstantANewValue) {
     EXPECT_TRUE(has(e2.str(), "'L' is already declared")) << e2.str();
 }
 
+// ---- matrices ------------------------------------------------------------------------------
+
+// a double pendulum of point masses m: A's at L along Ax>, B's at 2L Ax> + L Bx>
+const char* kTwoLinks =
+    "newtonian N\nbody A, B\nconstant L = 1 m, m = 2 kg\nvariable q1'', q2''\n"
+    "rotate A from N about z by q1\nrotate B from A about z by q2\ntranslate A_o from N_o by 0>\n"
+    "translate Acm from A_o by L*Ax>\ntranslate B_o from Acm by L*Ax>\ntranslate Bcm from B_o by L*Bx>\n"
+    "mass A = m; mass B = m\ninertia A = 0, 0, 0\ninertia B = 0, 0, 0\n";
+
+TEST(Matrices, MassMatrixAndJacobianAreTheHandDerivedOnes) {
+    // T = m/2 |v_Acm|^2 + m/2 |v_Bcm|^2 gives M = m L^2 [6 + 4 cos q2, 1 + 2 cos q2; 1 + 2 cos q2, 1]
+    // (the second point at 2L Ax> + L Bx>: |.|^2 = 5 L^2 + 4 L^2 cos q2 for q1' alone)
+    for (const char* method : {"kane", "lagrange"}) {
+        ScriptSession r;
+        r.ok(std::string(kTwoLinks) + method + " K for q1, q2\nM = massmatrix(K)\n");
+        EXPECT_EQ(r.ok("simplify(M[1, 1] - m*L^2*(6 + 4*cos(q2)))"), "= 0\n") << method;
+        EXPECT_EQ(r.ok("simplify(M[1, 2] - m*L^2*(1 + 2*cos(q2)))"), "= 0\n") << method;
+        EXPECT_EQ(r.ok("simplify(M[2, 1] - M[1, 2])"), "= 0\n") << method;
+        EXPECT_EQ(r.ok("simplify(M[2, 2] - m*L^2)"), "= 0\n") << method;
+    }
+    // the Jacobian of Bcm's position in N: d/dq of (2L cos q1 + L cos(q1 + q2), 2L sin q1 + L sin(q1 + q2), 0)
+    ScriptSession r;
+    r.ok(std::string(kTwoLinks) + "J = jacobian(pos(Bcm, N_o), [q1, q2], N)\n");
+    EXPECT_EQ(r.ok("simplify(J[1, 1] + 2*L*sin(q1) + L*sin(q1 + q2))"), "= 0\n");
+    EXPECT_EQ(r.ok("simplify(J[1, 2] + L*sin(q1 + q2))"), "= 0\n");
+    EXPECT_EQ(r.ok("simplify(J[2, 1] - 2*L*cos(q1) - L*cos(q1 + q2))"), "= 0\n");
+    EXPECT_EQ(r.ok("J[3, 2]"), "J[3, 2] = 0\n");
+    // J q' is the velocity: compare with vel(Bcm, N) along Nx>
+    EXPECT_EQ(r.ok("simplify(J[1, 1]*q1' + J[1, 2]*q2' - dot(vel(Bcm, N), Nx>))"), "= 0\n");
+    // a literal matrix, the rotation matrix, and the errors
+    EXPECT_EQ(r.ok("X = [1, 2, 3; 4, 5, 6]"), "X = [1, 2, 3; 4, 5, 6]\n");
+    EXPECT_EQ(r.ok("X[2, 3]"), "X[2, 3] = 6\n");
+    r.ok("R = rotation(N, B)");
+    EXPECT_EQ(r.ok("simplify(R[1, 1] - cos(q1 + q2))"), "= 0\n");
+    EXPECT_EQ(r.ok("simplify(R[2, 1] - sin(q1 + q2))"), "= 0\n");
+    std::string e = r.fails("X[3, 1]");
+    EXPECT_TRUE(has(e, "index 3 is out of range: X has 2 rows")) << e;
+    e = r.fails("X[1]");
+    EXPECT_TRUE(has(e, "'X' is a matrix: give its row and column")) << e;
+    e = r.fails("frame C\nrotate C from N dcm X");
+    EXPECT_TRUE(has(e, "must be 3 by 3")) << e;
+}
+
+TEST(Matrices, MatricesAreOutputsAColumnPerEntry) {
+    // released at q1 = 30 deg, q2 = 0 with no loads it stays there: R = rotation(N, B) holds
+    // cos, sin of 30 deg and M its values at q2 = 0 (m L^2 (10, 3; 3, 1))
+    ScriptSession r;
+    r.ok(std::string(kTwoLinks) + "kane K for q1, q2\ninitial q1 = 30 deg\noutput M = massmatrix(K), R = rotation(N, B)\n"
+                                  "final time 0.1 s\nsimulate to \"m\"\n");
+    alembert::Table t = alembert::read_csv((r.dir.path / "m" / "simulation.csv").string());
+    const double c = std::cos(std::numbers::pi / 6), sn = std::sin(std::numbers::pi / 6);
+    EXPECT_NEAR(t.columns[t.column_index("M_11")].back(), 2 * 10, 1e-12);
+    EXPECT_NEAR(t.columns[t.column_index("M_12")].back(), 2 * 3, 1e-12);
+    EXPECT_NEAR(t.columns[t.column_index("M_22")].back(), 2, 1e-12);
+    EXPECT_NEAR(t.columns[t.column_index("R_11")].back(), c, 1e-12);
+    EXPECT_NEAR(t.columns[t.column_index("R_12")].back(), -sn, 1e-12);
+    EXPECT_NEAR(t.columns[t.column_index("R_21")].back(), sn, 1e-12);
+    EXPECT_NEAR(t.columns[t.column_index("R_33")].back(), 1, 1e-12);
+}
+
 // ---- the linear-quadratic regulator ----------------------------------------------------
 
 TEST(LqrStatement, DoubleIntegratorGainIsTheHandSolution) {
