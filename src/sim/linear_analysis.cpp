@@ -185,7 +185,7 @@ Eigen::MatrixXd solve_lyapunov(const Eigen::MatrixXd& Ac, const Eigen::MatrixXd&
                 L(j * n + k, i * n + k) += At(j, i);  // Ac^T (x) 1: block (j, i) times 1
             }
     Eigen::VectorXd w = Eigen::Map<const Eigen::VectorXd>(W.data(), n * n);
-    Eigen::VectorXd p = L.fullPivLu().solve(-w);
+    Eigen::VectorXd p = L.partialPivLu().solve(-w);  // nonsingular: Ac is stable
     Eigen::MatrixXd P = Eigen::Map<Eigen::MatrixXd>(p.data(), n, n);
     return (P + P.transpose()) / 2;
 }
@@ -253,7 +253,7 @@ LqrSolution solve_lqr(const Eigen::MatrixXd& A, const Eigen::MatrixXd& B, const 
     // ---- Newton-Kleinman refinement: K = R^-1 B^T P, then (A - B K)^T P + P (A - B K) = -(Q + K^T R K)
     LqrSolution out;
     double residual = riccati_residual(A, G, Q, P);
-    if (n <= 30) {
+    if (n <= 12) {  // the Kronecker form is n^2 x n^2
         for (int step = 0; step < 8 && residual > 1e-15; ++step) {
             const Eigen::MatrixXd K = Rinv_Bt * P;
             Eigen::MatrixXd next = solve_lyapunov(A - B * K, Q + K.transpose() * R * K);

@@ -66,8 +66,9 @@ struct LqrSolution {
 /// Solves the Riccati equation above: P from the stable invariant subspace of the Hamiltonian
 /// matrix H = [A, -B R^-1 B^T; -Q, -A^T] (its eigenvectors for the n eigenvalues with negative
 /// real part, [U1; U2], P = U2 U1^-1), then refined by Newton-Kleinman steps (each a Lyapunov
-/// equation of the closed loop, solved through its Kronecker form, for n <= 30) until the
-/// residual stops falling; the relative residual is checked to be below 1e-8.
+/// equation of the closed loop, solved through its Kronecker form, for n <= 12) until the
+/// residual stops falling; the relative residual is checked to be below 1e-8. Eigenvalues of H
+/// within zero_real_part_tolerance(H) of the imaginary axis are refused.
 /// @throws alembert::ArgumentError if the sizes do not fit, Q is not symmetric positive
 ///         semi-definite or R not symmetric positive definite; alembert::SolveError if H has
 ///         eigenvalues on the imaginary axis or U1 is singular ((A, B) not stabilisable, or a
