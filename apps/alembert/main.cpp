@@ -328,6 +328,7 @@ int interactive() {
         std::cout << "alembert " << ALEMBERT_VERSION
                   << ": type statements (docs/language.md), help, or quit; Ctrl-C drops a line\n";
     Interpreter interp(std::cout, std::cerr, false);
+    interp.set_session(true);
     std::string buffer, line;
     int line_number = 1, first_line = 1;
     int status = kOk;

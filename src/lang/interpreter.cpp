@@ -52,6 +52,7 @@ const System* Interpreter::system() const { return impl_->sys.get(); }
 void Interpreter::set_output_dir(const std::string& dir) { impl_->output_dir = dir.empty() ? "." : dir; }
 
 void Interpreter::set_model_only(bool model_only) { impl_->model_only = model_only; }
+void Interpreter::set_session(bool session) { impl_->session = session; }
 
 void Interpreter::set_allow_outside_output(bool allow) { impl_->allow_outside_output = allow; }
 
@@ -345,6 +346,11 @@ double Interpreter::Impl::number_of(const Quantity& q, const Dimension& expected
                           "give a number with an optional unit, e.g. 20 deg");
     double x = GiNaC::ex_to<GiNaC::numeric>(n).to_double();
     Dimension d = Dimension::open();
+    if (q.unit.empty() && carries_unit(*q.value)) {
+        // units inside the expression: 2 kg * 9.81 m/s^2
+        d = v.dim;
+        check_dimension(d, expected, what, q.value->location);
+    }
     if (!q.unit.empty()) {
         Unit u = parse_unit(q.unit);
         x *= u.scale;
@@ -380,7 +386,7 @@ exmap Interpreter::Impl::bindings(const std::vector<Binding>& list, const std::s
 
 double Interpreter::Impl::binding_value(const Binding& b, const std::string& what) {
     double x = number_of(b.quantity, symbol_dimension(b.name.text), what, b.name.location);
-    if (b.quantity.unit.empty() && x != 0) {
+    if (b.quantity.unit.empty() && !carries_unit(*b.quantity.value) && x != 0) {
         std::optional<Unit> u = display_unit(b.name.text);
         if (u && u->scale != 1)
             throw ScriptError(b.quantity.value->location,

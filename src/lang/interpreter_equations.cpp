@@ -53,8 +53,6 @@ void Interpreter::Impl::assign(const Statement& s) {
     if (!want_vector && v.kind == Kind::vector)
         throw ScriptError(target.location, "a vector must be named with a trailing '>': " + target.text + ">",
                           "write " + target.text + "> = ...");
-    if (v.kind == Kind::matrix)
-        throw ScriptError(s.exprs.at("value")->location, "matrices cannot be assigned; use them in 'rotate ... dcm'", "");
     if (!want_vector) names[target.text] = {NameKind::value, target.location};
     values[key] = v;
     if (v.kind == Kind::array) print_equations(target.text, v.a);
@@ -70,7 +68,10 @@ void Interpreter::Impl::show(const Statement& s) {
         v = guard(e.location, [&] {
             if (v.kind == Kind::scalar) v.s = alembert::simplify(v.s);
             else if (v.kind == Kind::vector) v.v = v.v.simplify();
-            else if (v.kind == Kind::matrix) v.m = v.m.map([](const ex& x) { return alembert::simplify(x); });
+            else if (v.kind == Kind::matrix) {
+                for (ex& x : v.a) x = alembert::simplify(x);
+                v = matrix_value(v.rows, v.cols, v.a, v.dim);
+            }
             return v;
         });
         if (v.kind != Kind::matrix) {
@@ -84,7 +85,9 @@ void Interpreter::Impl::show(const Statement& s) {
     std::string label;
     if (e.kind == Expr::Kind::name) label = e.text + " = ";
     else if (e.kind == Expr::Kind::vector_name) label = e.text + "> = ";
-    else if (e.kind == Expr::Kind::index) label = e.text + "[" + to_string(eval(*e.args[0]).s) + "] = ";
+    else if (e.kind == Expr::Kind::index)
+        label = e.text + "[" + to_string(eval(*e.args[0]).s) +
+                (e.args.size() > 1 ? ", " + to_string(eval(*e.args[1]).s) : std::string()) + "] = ";
     else label = "= ";
     transcript.result(label + print(v));
 }

@@ -37,7 +37,31 @@ Value vector_value(const Vector& x, Dimension d) {
 
 const Dimension kL = Dimension::length(), kM = Dimension::mass(), kT = Dimension::time();
 
+// the 1-based index `e` names, checked against 1..n
+std::size_t index_in(Interpreter::Impl& m, const Expr& e, std::size_t n, const std::string& of, const char* what) {
+    Value i = m.eval(e);
+    if (i.kind != Kind::scalar || !GiNaC::is_a<GiNaC::numeric>(i.s) || !GiNaC::ex_to<GiNaC::numeric>(i.s).is_integer())
+        throw ScriptError(e.location, "an index must be a whole number", "");
+    const auto& k = GiNaC::ex_to<GiNaC::numeric>(i.s);
+    if (k < 1 || k > static_cast<long>(n))
+        throw ScriptError(e.location,
+                          "index " + to_string(i.s) + " is out of range: " + of + " has " + std::to_string(n) + " " + what,
+                          "indices start at 1");
+    return static_cast<std::size_t>(k.to_int() - 1);
+}
+
 }  // namespace
+
+Value matrix_value(int rows, int cols, std::vector<ex> entries, Dimension dim) {
+    Value v;
+    v.kind = Kind::matrix;
+    v.rows = rows, v.cols = cols;
+    v.a = std::move(entries);
+    v.dim = dim;
+    if (rows == 3 && cols == 3)
+        for (int i = 0; i < 9; ++i) v.m(i / 3, i % 3) = v.a[static_cast<std::size_t>(i)];
+    return v;
+}
 
 void Interpreter::Impl::check_dimension(const Dimension& got, const Dimension& expected,
                                         const std::string& what, Location where) const {
@@ -71,6 +95,37 @@ std::vector<ex> Interpreter::Impl::array(const Expr& e, const std::string& what)
     if (v.kind != Kind::array)
         throw ScriptError(e.location, what + " must be a list of scalars [a, b, ...]", "");
     return v.a;
+}
+
+bool carries_unit(const Expr& e) {
+    if (e.kind == Expr::Kind::number) return !e.unit.empty();
+    for (const ExprPtr& a : e.args)
+        if (a && carries_unit(*a)) return true;
+    return false;
+}
+
+Value Interpreter::Impl::number_with_unit(const Expr& e, const ex& n) {
+    // a unit name joined by * or / that is also a name of the script is ambiguous: refuse it
+    // rather than guess (2 kg*g: grams, or the constant g?)
+    for (std::size_t i = 1; i < e.unit.factors.size(); ++i) {
+        const Word& w = e.unit.factors[i].name;
+        bool declared = values.count(w.text) || names.count(w.text) ||
+                        (sys && sys->symbols().contains(w.text));
+        if (!declared) continue;
+        Unit u = *find_unit(w.text);
+        throw ScriptError(w.location,
+                          "'" + w.text + "' after the number " + e.number_text +
+                              " reads as the unit " + u.text + " (" + describe(u.dimension) + "), but '" + w.text +
+                              "' is also a name of this script",
+                          "for the name, close the number's unit with parentheses: (" + e.number_text +
+                              " " + e.unit.factors[0].name.text + ")*" + w.text +
+                              "; for the unit, give the value a name: constant c = " + e.number_text +
+                              " " + e.unit.factors[0].name.text + "*" + w.text);
+    }
+    Unit u = parse_unit(e.unit);
+    // exact while the unit is SI (2 kg stays 2); a scaled unit multiplies by its factor
+    ex value = u.scale == 1 ? n : ex(n * GiNaC::numeric(u.scale));
+    return scalar_value(value, u.dimension);
 }
 
 Value Interpreter::Impl::eval_name(const Expr& e) {
@@ -112,6 +167,7 @@ Value Interpreter::Impl::eval(const Expr& e) {
         case Expr::Kind::number: {
             bool whole = e.number_text.find_first_of(".eE") == std::string::npos;
             ex n = whole ? ex(GiNaC::numeric(e.number_text.c_str())) : ex(GiNaC::numeric(e.number));
+            if (!e.unit.empty()) return number_with_unit(e, n);
             // zero has every dimension (0 N*m is 0 m); other numbers are dimensionless
             return scalar_value(n, n.is_zero() ? Dimension::open() : Dimension::none());
         }
@@ -222,12 +278,24 @@ Value Interpreter::Impl::eval(const Expr& e) {
         }
         case Expr::Kind::index: {
             auto it = values.find(e.text);
+            if (it != values.end() && it->second.kind == Kind::matrix) {
+                const Value& M = it->second;
+                if (e.args.size() != 2)
+                    throw ScriptError(e.location, "'" + e.text + "' is a matrix: give its row and column",
+                                      "write " + e.text + "[1, 2]");
+                std::size_t i = index_in(*this, *e.args[0], static_cast<std::size_t>(M.rows), e.text, "rows");
+                std::size_t j = index_in(*this, *e.args[1], static_cast<std::size_t>(M.cols), e.text, "columns");
+                return scalar_value(M.a[i * static_cast<std::size_t>(M.cols) + j], M.dim);
+            }
             if (it == values.end() || it->second.kind != Kind::array) {
                 if (it == values.end() && !names.count(e.text))
                     throw ScriptError(e.location, "'" + e.text + "' is not defined",
                                       "arrays come from kane, lagrange, roadmap or name = [a, b]");
                 throw ScriptError(e.location, "'" + e.text + "' is not an array", "");
             }
+            if (e.args.size() != 1)
+                throw ScriptError(e.args[1]->location, "'" + e.text + "' is an array: give one index",
+                                  "write " + e.text + "[1]");
             Value i = eval(*e.args[0]);
             if (i.kind != Kind::scalar || !GiNaC::is_a<GiNaC::numeric>(i.s) ||
                 !GiNaC::ex_to<GiNaC::numeric>(i.s).is_integer())
@@ -248,21 +316,16 @@ Value Interpreter::Impl::eval(const Expr& e) {
             return out;
         }
         case Expr::Kind::matrix: {
-            if (e.rows != 3 || e.args.size() != 9)
-                throw ScriptError(e.location, "a matrix must be 3 by 3 (a direction-cosine matrix)",
-                                  "write [a, b, c; d, e, f; g, h, i]");
-            Value out;
-            out.kind = Kind::matrix;
-            out.dim = Dimension::none();
-            for (int i = 0; i < 9; ++i) {
-                Value x = eval(*e.args[static_cast<std::size_t>(i)]);
-                if (x.kind != Kind::scalar)
-                    throw ScriptError(e.args[static_cast<std::size_t>(i)]->location,
-                                      "matrix entries must be scalars", "");
-                if (x.dim.conflicts(Dimension::none())) out.dim = x.dim;
-                out.m(i / 3, i % 3) = x.s;
+            const int cols = static_cast<int>(e.args.size()) / e.rows;
+            Dimension dim = Dimension::none();
+            std::vector<ex> entries;
+            for (const ExprPtr& a : e.args) {
+                Value x = eval(*a);
+                if (x.kind != Kind::scalar) throw ScriptError(a->location, "matrix entries must be scalars", "");
+                if (x.dim.conflicts(Dimension::none())) dim = x.dim;
+                entries.push_back(x.s);
             }
-            return out;
+            return matrix_value(e.rows, cols, std::move(entries), dim);
         }
         case Expr::Kind::call: return eval_call(e);
     }
@@ -328,6 +391,12 @@ Value Interpreter::Impl::eval_call(const Expr& e) {
                                           "check the units");
                 for (auto& k : d.exponent) k /= 2;
             }
+        } else if (x.dim.known && x.dim.exponent == std::array<int, 3>{0, 0, 1}) {
+            throw ScriptError(a[0]->location,
+                              "the argument of " + f + "() must be an angle or a number, but this is a time (s)",
+                              "scale time by a frequency or a period: " + f + "(2*pi*f*t) with constant f = 1 Hz, "
+                              "or " + f + "(2*pi*t/T) with constant T = 2 s, or " + f +
+                              "(w*t) with constant w = 3 rad/s");
         } else {
             check_dimension(x.dim, Dimension::none(), "the argument of " + f + "()", a[0]->location);
         }
@@ -425,7 +494,11 @@ Value Interpreter::Impl::eval_call(const Expr& e) {
             else if (x.kind == Kind::vector) x.v = x.v.map(op);
             else if (x.kind == Kind::array)
                 for (ex& s : x.a) s = op(s);
-            else x.m = x.m.map(op);
+            else x = matrix_value(x.rows, x.cols, [&] {
+                std::vector<ex> out;
+                for (const ex& s : x.a) out.push_back(op(s));
+                return out;
+            }(), x.dim);
             return 0;
         });
         return x;
@@ -456,11 +529,10 @@ Value Interpreter::Impl::eval_call(const Expr& e) {
         want(2, "rotation(A, B)");
         Frame& A = frame(word(0, "a frame"));
         Frame& B = frame(word(1, "a frame"));
-        Value v;
-        v.kind = Kind::matrix;
-        v.m = guarded([&] { return rotation_matrix(A, B); });
-        v.dim = Dimension::none();
-        return v;
+        Mat3 R = guarded([&] { return rotation_matrix(A, B); });
+        std::vector<ex> entries;
+        for (int i = 0; i < 9; ++i) entries.push_back(R(i / 3, i % 3));
+        return matrix_value(3, 3, std::move(entries), Dimension::none());
     }
     if (f == "potential") {
         want(0, "potential()");
@@ -488,10 +560,75 @@ Value Interpreter::Impl::eval_call(const Expr& e) {
             return vector_value(guarded([&] { return m.calc_resultant(S, O).moment; }), Dimension::torque());
         return vector_value(guarded([&] { return m.calc_angular_momentum(S, O); }), kM * kL * kL / kT);
     }
+    if (f == "massmatrix") {
+        want(1, "massmatrix(K), K formed by kane or lagrange");
+        const Word k = word(0, "equations formed by kane or lagrange");
+        auto it = formed.find(k.text);
+        if (it == formed.end())
+            throw ScriptError(k.location, "'" + k.text + "' holds no equations formed by kane or lagrange",
+                              "form them first: kane " + k.text + " for q1, q2");
+        SymbolTable& table = model(e.location).symbols();
+        const FormedEquations& fe = it->second;
+        // the accelerations: the coordinates' second derivatives, or the chosen speeds' rates
+        std::vector<ex> acc;
+        if (fe.kane)
+            for (const ex& u : fe.kane->independent_speeds) acc.push_back(guarded([&] { return table.dt(u); }));
+        else
+            for (const TimeVariable& q : fe.coordinates) acc.push_back(q.d(2));
+        // the equations read 0 = F - M acc (Kane's F + F*, Lagrange's Q - d/dt dL/dq' + dL/dq)
+        std::vector<ex> entries;
+        guarded([&] {
+            for (const ex& r : fe.residuals) {
+                ex full = table.expand_intermediates(r);
+                for (const ex& x : acc) entries.push_back(alembert::simplify(-full.diff(GiNaC::ex_to<GiNaC::symbol>(x))));
+            }
+            return 0;
+        });
+        return matrix_value(static_cast<int>(fe.residuals.size()), static_cast<int>(acc.size()), std::move(entries),
+                            Dimension::open());
+    }
+    if (f == "jacobian") {
+        if (a.size() != 2 && a.size() != 3)
+            throw ScriptError(e.location, "jacobian() takes 2 or 3 arguments, not " + std::to_string(a.size()),
+                              "write jacobian([f1, f2], [q1, q2]) or jacobian(v>, [q1, q2], N)");
+        Value x = eval(*a[0]);
+        std::vector<ex> fs;
+        if (x.kind == Kind::scalar) fs = {x.s};
+        else if (x.kind == Kind::array) fs = x.a;
+        else if (x.kind == Kind::vector) {
+            if (a.size() != 3)
+                throw ScriptError(a[0]->location, "a vector's Jacobian needs the frame of its components",
+                                  "write jacobian(v>, [q1, q2], N)");
+            Frame& F = frame(word(2, "a frame"));
+            Vector w = guarded([&] { return x.v.express_in(F); });
+            for (Axis ax : {Axis::x, Axis::y, Axis::z})
+                fs.push_back(guarded([&] { return alembert::dot(w, F.unit(ax)); }));
+        } else {
+            throw ScriptError(a[0]->location, "jacobian() takes a scalar, a list [f1, f2] or a vector", "");
+        }
+        if (x.kind != Kind::vector && a.size() == 3)
+            throw ScriptError(a[2]->location, "a frame is given only for a vector's Jacobian", "drop it");
+        std::vector<ex> by = array(*a[1], "the symbols to differentiate by");
+        SymbolTable& table = model(e.location).symbols();
+        for (const ex& s : by)
+            if (!GiNaC::is_a<GiNaC::symbol>(s) || !table.owns(s))
+                throw ScriptError(a[1]->location, to_string(s) + " is not a declared symbol",
+                                  "differentiate by coordinates, speeds or constants: [q1, q2]");
+        std::vector<ex> entries;
+        guarded([&] {
+            for (const ex& fi : fs) {
+                ex full = table.expand_intermediates(fi);
+                for (const ex& s : by) entries.push_back(alembert::simplify(full.diff(GiNaC::ex_to<GiNaC::symbol>(s))));
+            }
+            return 0;
+        });
+        return matrix_value(static_cast<int>(fs.size()), static_cast<int>(by.size()), std::move(entries),
+                            Dimension::open());
+    }
     throw ScriptError(e.location, "unknown function '" + f + "'",
                       "functions: sin cos tan asin acos atan sqrt exp log abs dot cross express dt "
                       "mag unit simplify expand angvel angacc vel acc pos rotation mass momentum "
-                      "angmomentum kinetic potential resultant moment");
+                      "angmomentum kinetic potential resultant moment massmatrix jacobian");
 }
 
 // ---- output ----------------------------------------------------------------------------
@@ -507,9 +644,10 @@ std::string Interpreter::Impl::print(const Value& v) const {
         }
         case Kind::matrix: {
             std::string s = "[";
-            for (int i = 0; i < 3; ++i)
-                for (int j = 0; j < 3; ++j)
-                    s += to_string(v.m(i, j)) + (j < 2 ? ", " : i < 2 ? "; " : "]");
+            for (int i = 0; i < v.rows; ++i)
+                for (int j = 0; j < v.cols; ++j)
+                    s += to_string(v.a[static_cast<std::size_t>(i * v.cols + j)]) +
+                         (j + 1 < v.cols ? ", " : i + 1 < v.rows ? "; " : "]");
             return s;
         }
     }

@@ -24,8 +24,24 @@ struct Value {
     ex s{};
     Vector v{};
     std::vector<ex> a{};
-    Mat3 m{};
+    Mat3 m{};  ///< a 3 by 3 matrix's entries (rotation, direction cosines), mirroring `a`
+    int rows = 0, cols = 0;  ///< a matrix's size; its entries are `a`, row by row
     Dimension dim = Dimension::open();
+};
+
+/// A matrix value of `rows` by `cols` entries given row by row (`m` set too when 3 by 3).
+Value matrix_value(int rows, int cols, std::vector<ex> entries, Dimension dim);
+
+/// True if a number in `e` is written with a unit (`2 kg * 9.81 m/s^2`).
+bool carries_unit(const Expr& e);
+
+/// A constant, variable, specified or unknown declared before `newtonian`, declared in the
+/// model's symbol table when the model is made.
+struct PendingSymbol {
+    std::string keyword{};  ///< constant, positive, variable, specified or unknown
+    Word name{};
+    int primes = 0;
+    std::optional<double> value{};
 };
 
 /// What a name of the script stands for.
@@ -53,6 +69,7 @@ struct NumberSettings {
     exmap initial{};                       ///< coordinate or rate -> SI value
     exmap inputs{};                        ///< load measure -> formula of t, q, q'
     std::map<std::string, ex> motion{};    ///< coordinate name -> formula of t (SI)
+    exmap specified{};                     ///< specified symbol -> formula of t (q, q' for input)
     SimulationOptions options{};
     std::vector<OutputSpec> outputs{};
     std::vector<std::string> output_si_units{};  ///< per output: its SI unit ("" if open)
@@ -109,6 +126,8 @@ struct Interpreter::Impl {
     std::string script_name = "model";  ///< the script's stem, naming the model in messages and files
     std::vector<std::string> including{};  ///< the files `include` is running, outermost first
     bool model_only = false;          ///< skip simulate, inverse and codegen
+    bool session = false;             ///< an interactive session: a constant may be given a new value
+    std::vector<PendingSymbol> pending_symbols{};  ///< declared before newtonian
     /// What simulate and inverse computed, in run order, for the report.
     std::vector<ReportHistory> histories{};
     bool allow_outside_output = false;  ///< `to` may leave output_dir (--allow-outside-out)
@@ -183,6 +202,7 @@ struct Interpreter::Impl {
     Value eval(const Expr& e);
     Value eval_call(const Expr& e);
     Value eval_name(const Expr& e);
+    Value number_with_unit(const Expr& e, const ex& n);  ///< `0.1575 m`: n in SI, with its dimension
     Value eval_vector_name(const Expr& e);
     ex scalar(const Expr& e, const Dimension& expected, const std::string& what);
     Vector vector(const Expr& e, const Dimension& expected, const std::string& what);

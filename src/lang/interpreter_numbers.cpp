@@ -172,9 +172,10 @@ void Interpreter::Impl::set_inputs(const Statement& s) {
     const SymbolTable& table = model(s.location).symbols();
     for (const Binding& b : s.bindings.at("values")) {
         ex x = symbol(b.name, "a load measure");
-        if (table.kind(x) != SymbolKind::unknown)
-            throw ScriptError(b.name.location, "'" + b.name.text + "' is not a load measure",
-                              "declare it with 'unknown' and use it in a force or torque");
+        bool specified = table.kind(x) == SymbolKind::specified && table.derivative_order(x) == 0;
+        if (table.kind(x) != SymbolKind::unknown && !specified)
+            throw ScriptError(b.name.location, "'" + b.name.text + "' is not a load measure or a specified quantity",
+                              "declare it with 'unknown' (or 'specified') and use it in a force or torque");
         ex f = quantity_expression(b.quantity, symbol_dimension(b.name.text), "the law of " + b.name.text);
         for (const ex& u : table.symbols(SymbolKind::unknown))
             if (table.depends_on(f, u))
@@ -186,6 +187,18 @@ void Interpreter::Impl::set_inputs(const Statement& s) {
                 throw ScriptError(b.quantity.value->location,
                                   "the law of " + b.name.text + " holds the acceleration " + to_string(v.d(2)),
                                   "write a load as a formula of t, the coordinates, their rates and constants");
+        if (specified) {
+            // its derivatives are the law's: a law of the state would need the accelerations
+            for (const TimeVariable& v : default_coordinates())
+                if (table.variable(b.name.text).order() > 0 && table.depends_on(f, v.symbol()))
+                    throw ScriptError(b.quantity.value->location,
+                                      "'" + b.name.text + "' is declared with derivatives, so its law must be a "
+                                      "formula of time; this one depends on " + v.name(),
+                                      "declare it without primes (specified " + b.name.text +
+                                          "), or give a formula of t");
+            numbers.specified[x] = f;
+            continue;
+        }
         numbers.inputs[x] = f;
     }
 }
@@ -194,9 +207,11 @@ void Interpreter::Impl::set_prescribed_motion(const Statement& s) {
     const SymbolTable& table = model(s.location).symbols();
     for (const Binding& b : s.bindings.at("values")) {
         ex x = symbol(b.name, "a coordinate");
-        if (!is_coordinate(x, 0))
-            throw ScriptError(b.name.location, "'" + b.name.text + "' is not a coordinate",
-                              "prescribe coordinates: motion qA = 30*sin(2*pi*t) deg");
+        bool specified = table.kind(x) == SymbolKind::specified && table.derivative_order(x) == 0;
+        if (!is_coordinate(x, 0) && !specified)
+            throw ScriptError(b.name.location, "'" + b.name.text + "' is not a coordinate or a specified quantity",
+                              "prescribe coordinates or specified quantities: motion qA = 30*sin(2*pi*f*t) deg, "
+                              "with constant f = 1 Hz");
         ex f = quantity_expression(b.quantity, symbol_dimension(b.name.text), "the motion of " + b.name.text);
         for (const ex& v : table.symbols(SymbolKind::variable))
             if (table.depends_on(f, v))
@@ -204,7 +219,8 @@ void Interpreter::Impl::set_prescribed_motion(const Statement& s) {
                                   "the motion of " + b.name.text + " depends on " + to_string(v) +
                                       "; a prescribed motion is a formula of time t",
                                   "write it with t and constants, e.g. minimum_jerk(t, 0, 1.5)");
-        numbers.motion[b.name.text] = f;
+        if (specified) numbers.specified[x] = f;  // drives simulate
+        else numbers.motion[b.name.text] = f;
     }
 }
 
@@ -254,8 +270,21 @@ void Interpreter::Impl::add_outputs(const Statement& s) {
                 throw ScriptError(labels[i].text.empty() ? e.location : labels[i].location,
                                   "there is already an output named '" + name + "'", "name each column once");
         Value v = eval(e);
+        if (v.kind == Kind::matrix) {
+            // a matrix is a column per entry, name_ij (row i, column j)
+            if (!s.units[i].empty())
+                throw ScriptError(s.units[i].location, "a matrix's columns are written in SI units", "drop the unit");
+            for (int r = 0; r < v.rows; ++r)
+                for (int c = 0; c < v.cols; ++c) {
+                    std::string col = name + "_" + std::to_string(r + 1) + std::to_string(c + 1);
+                    if (v.rows > 9 || v.cols > 9) col = name + "_" + std::to_string(r + 1) + "_" + std::to_string(c + 1);
+                    numbers.outputs.push_back({col, v.a[static_cast<std::size_t>(r * v.cols + c)], "", 1.0});
+                    numbers.output_si_units.push_back("");
+                }
+            continue;
+        }
         if (v.kind != Kind::scalar)
-            throw ScriptError(e.location, "an output is a scalar", "take a measure with dot(v>, Nx>)");
+            throw ScriptError(e.location, "an output is a scalar or a matrix", "take a measure with dot(v>, Nx>)");
         OutputSpec o{name, v.s, "", 1.0};
         const UnitText& ut = s.units[i];
         if (!ut.empty()) {
@@ -331,6 +360,15 @@ void Interpreter::Impl::simulate(const Statement& s) {
             throw ScriptError(s.location, "the coordinate " + v.name() + " has no second derivative declared",
                               "declare it as variable " + v.name() + "''");
     r.inputs = numbers.inputs;
+    for (const auto& [x, f] : numbers.specified) {
+        // the quantity and each declared derivative: x, x' = dx/dt, ...
+        TimeVariable v = table.variable(table.name(x));
+        ex d = f;
+        for (int k = 0; k <= v.order(); ++k) {
+            if (k > 0) d = guard(s.location, [&] { return sys.symbols().dt(d); });
+            r.specified[v.d(k)] = d;
+        }
+    }
     if (!sys.constraints().empty())
         for (const ex& u : table.symbols(SymbolKind::unknown))
             if (!numbers.inputs.count(u)) r.constraint_forces.push_back(u);
@@ -629,7 +667,7 @@ void parse_input(StatementParser& p, Statement& s) {
 }
 
 void parse_motion(StatementParser& p, Statement& s) {
-    s.bindings["values"] = p.bindings("a coordinate (motion qA = 30*sin(t) deg)");
+    s.bindings["values"] = p.bindings("a coordinate (motion qA = 30*sin(2*pi*f*t) deg)");
 }
 
 void parse_final(StatementParser& p, Statement& s) {
@@ -744,7 +782,7 @@ std::vector<StatementSpec> number_statements() {
          .help = "gives load measures as formulas of time and state for simulate",
          .forms = {{"`input` *load = formula, ...*",
                     "input T_A = -k*qA - c*qA'",
-                    "`SimulationRequest::inputs`: a load measure as a formula of t, q, q' and constants (others 0; in a constrained model the others are the constraint forces, solved for)"}},
+                    "`SimulationRequest::inputs`: a load measure as a formula of t, q, q' and constants (others 0; in a constrained model the others are the constraint forces, solved for); for a `specified` quantity, `SimulationRequest::specified`"}},
          .parse = parse_input, .run = [](M& m, const Statement& s) { m.set_inputs(s); }},
         {.keyword = "final", .family = family, .help = "sets the final time of simulate and inverse",
          .forms = {{"`final time` *T*",
@@ -795,7 +833,7 @@ std::vector<StatementSpec> number_statements() {
          .help = "prescribes coordinates as formulas of time, for inverse",
          .forms = {{"`motion` *q = formula of t, ...*",
                     "motion qA = (-25 + 20*minimum_jerk(t, 0.15, 1.5)) deg",
-                    "`PrescribedMotion` (q', q'' exact)"}},
+                    "`PrescribedMotion` (q', q'' exact) for `inverse`; a `specified` quantity (`motion xb = A*sin(w*t)`) is driven in `simulate` with its derivatives (`SimulationRequest::specified`)"}},
          .parse = parse_motion, .run = [](M& m, const Statement& s) { m.set_prescribed_motion(s); }},
         {.keyword = "inverse", .family = family,
          .help = "inverse dynamics over the prescribed motion or a motion table",

@@ -18,7 +18,7 @@ const std::set<std::string, std::less<>>& function_words() {
         "sin", "cos", "tan", "asin", "acos", "atan", "sqrt", "exp", "log", "abs", "dot", "cross",
         "express", "dt", "mag", "unit", "simplify", "expand", "angvel", "angacc", "vel", "acc",
         "pos", "rotation", "mass", "momentum", "angmomentum", "kinetic", "potential",
-        "resultant", "moment", "pi", "minimum_jerk"};
+        "resultant", "moment", "pi", "minimum_jerk", "massmatrix", "jacobian"};
     return w;
 }
 
@@ -111,9 +111,9 @@ void StatementParser::expect_end(const std::string& context) {
     if (!at_end() && i_ > 0 && t_[i_ - 1].kind == TokenKind::number && peek().kind == TokenKind::name &&
         find_unit(peek().text))
         throw ScriptError(peek().location,
-                          "a unit may follow a number only in a constant's declaration or after 'at' "
-                          "or 'guess'",
-                          "declare a constant with the value and unit, e.g. constant I_A = 0.1 kg*m^2");
+                          "'" + peek().text + "' is a clause of the '" + keyword_ +
+                              "' statement here, so it cannot be the unit of the number before it",
+                          "name the value first, e.g. c = " + t_[i_ - 1].text + " " + peek().text);
     if (!at_end()) {
         throw ScriptError(peek().location,
                           "unexpected " + describe(peek()) + " after " + context,
@@ -171,10 +171,57 @@ UnitText StatementParser::unit() {
     }
 }
 
+// a word that marks a clause of the statement being parsed (`in` of output), or `t`
+bool StatementParser::own_clause_word(std::string_view w) const {
+    if (w == "t") return true;
+    const StatementSpec* spec = keyword_.empty() ? nullptr : find_statement(keyword_);
+    return spec && std::find(spec->clauses.begin(), spec->clauses.end(), w) != spec->clauses.end();
+}
+
+// a known unit name that no clause of this statement or call claims: `m` in `0.1575 m`, but
+// not `in` of `output x in cm` or `sin(`
+bool StatementParser::unit_name_follows(std::size_t ahead) const {
+    const Token& n = peek(ahead);
+    return n.kind == TokenKind::name && find_unit(n.text) && !own_clause_word(n.text) &&
+           !peek(ahead + 1).is("(") && !peek(ahead + 1).is("[");
+}
+
+UnitText StatementParser::unit_after_number() {
+    UnitText u;
+    u.location = peek().location;
+    bool divide = false;
+    for (;;) {
+        UnitText::Factor f;
+        const Token& n = next();
+        f.name = {n.text, n.location};
+        if (peek().is("^") && (peek(1).kind == TokenKind::number ||
+                               (peek(1).is("-") && peek(2).kind == TokenKind::number))) {
+            next();
+            bool minus = accept_punct("-");
+            if (peek().text.find_first_not_of("0123456789") != std::string::npos || peek().text.size() > 2)
+                fail_expected("a small whole number as the power of a unit");
+            f.power = std::stoi(next().text) * (minus ? -1 : 1);
+        }
+        if (divide) f.power = -f.power;
+        u.factors.push_back(f);
+        if ((peek().is("*") || peek().is("/")) && unit_name_follows(1)) {
+            divide = next().text == "/" || divide;
+            continue;
+        }
+        return u;
+    }
+}
+
 Quantity StatementParser::quantity() {
     Quantity q;
     q.value = expression();
-    if (peek().kind == TokenKind::name && !is_clause_word(peek().text)) q.unit = unit();
+    // a lone number's unit is the quantity's unit, read as before: `constant I = 0.1 kg*m^2`
+    if (q.value->kind == Expr::Kind::number && !q.value->unit.empty()) {
+        q.unit = std::move(q.value->unit);
+        q.value->unit = {};
+        return q;
+    }
+    if (peek().kind == TokenKind::name && !own_clause_word(peek().text)) q.unit = unit();
     return q;
 }
 
@@ -294,6 +341,7 @@ ExprPtr StatementParser::primary() {
             node->number = t.number;
             node->number_text = t.text;
             next();
+            if (unit_name_follows(0)) node->unit = unit_after_number();
             return node;
         case TokenKind::zero_vector:
             node->kind = Expr::Kind::zero_vector;
@@ -320,6 +368,7 @@ ExprPtr StatementParser::primary() {
                 next();
                 node->kind = Expr::Kind::index;
                 node->args.push_back(expression());
+                if (accept_punct(",")) node->args.push_back(expression());  // a matrix's row, column
                 expect_punct("]", "after the index of " + node->text);
                 return node;
             }

@@ -79,6 +79,9 @@ private:
     ExprPtr unary();
     ExprPtr power();
     ExprPtr primary();
+    UnitText unit_after_number();
+    bool unit_name_follows(std::size_t ahead) const;
+    bool own_clause_word(std::string_view w) const;  ///< `m/s^2` in `9.81 m/s^2 * Nz>`: known unit names only
 
     const std::vector<Token>& t_;
     std::string_view src_;

@@ -35,6 +35,17 @@ void parse_system(StatementParser& p, Statement& s) {
 
 // ---- meaning -----------------------------------------------------------------------------
 
+void declare_symbol(Interpreter::Impl& m, const PendingSymbol& p) {
+    SymbolTable& table = m.sys->symbols();
+    m.guard(p.name.location, [&] {
+        if (p.keyword == "constant" || p.keyword == "positive")
+            table.add_constant(p.name.text, p.value, p.keyword == "positive");
+        else if (p.keyword == "variable") table.add_variable(p.name.text, p.primes);
+        else if (p.keyword == "specified") table.add_specified(p.name.text, p.primes);
+        else table.add_unknown(p.name.text);
+    });
+}
+
 void run_newtonian(Interpreter::Impl& m, const Statement& s) {
     if (m.sys)
         throw ScriptError(s.location, "the Newtonian frame is already declared (" +
@@ -44,6 +55,9 @@ void run_newtonian(Interpreter::Impl& m, const Statement& s) {
     m.declare_name(n, NameKind::frame);
     m.sys = std::make_unique<System>(n.text);
     m.names[n.text + "_o"] = {NameKind::point, n.location};
+    // the symbols declared before the model, in their order
+    for (const PendingSymbol& p : m.pending_symbols) declare_symbol(m, p);
+    m.pending_symbols.clear();
 }
 
 void run_objects(Interpreter::Impl& m, const Statement& s) {
@@ -76,10 +90,35 @@ void run_objects(Interpreter::Impl& m, const Statement& s) {
     }
 }
 
+// `constant L = 2 m` again in a session: the new value for the numbers from now on
+void redefine_constant(Interpreter::Impl& m, const Declared& d, const SymbolUnits& su,
+                       std::optional<double> value) {
+    SymbolTable& table = m.sys->symbols();
+    const ex& c = table.symbol(d.name.text);
+    if (!value)
+        throw ScriptError(d.name.location, "'" + d.name.text + "' is already a constant",
+                          "give it a new value to change it: constant " + d.name.text + " = ...");
+    const SymbolUnits& old = m.units[d.name.text];
+    if (su.dim.conflicts(old.dim))
+        throw ScriptError(d.quantity.value->location,
+                          "'" + d.name.text + "' is " + describe(old.dim) + ", but the new value is " +
+                              describe(su.dim),
+                          "give the new value in a unit of the same dimension");
+    if (GiNaC::is_a<GiNaC::possymbol>(c) && !(*value > 0))
+        throw ScriptError(d.quantity.value->location, "'" + d.name.text + "' is declared positive",
+                          "give it a value greater than 0");
+    std::optional<double> before = table.value(c);
+    table.set_value(c, *value);
+    std::string was = before ? " (was " + m.format_value(d.name.text, *before).substr(d.name.text.size() + 3) + ")" : "";
+    m.transcript.result(m.format_value(d.name.text, *value) + was +
+                        "; expressions, equations and road-maps keep the symbol " + d.name.text +
+                        " and stand; evaluate, solve ... at, linearize, simulate, inverse and codegen "
+                        "use the new value from now on, and results printed before are not recomputed\n");
+}
+
 void run_symbols(Interpreter::Impl& m, const Statement& s) {
-    System& sys = m.model(s.location);
-    SymbolTable& table = sys.symbols();
     const std::string& k = s.keyword;
+    bool is_constant = k == "constant" || k == "positive";
     for (const Declared& d : s.declared) {
         bool timed = k == "variable" || k == "specified";
         if (d.primes > 0 && !timed)
@@ -90,7 +129,7 @@ void run_symbols(Interpreter::Impl& m, const Statement& s) {
                                                    std::to_string(d.primes) +
                                                    " derivatives; at most 4 are allowed",
                               "declare only the derivatives the equations need (q'' for dynamics)");
-        if (d.quantity.value && k != "constant")
+        if (d.quantity.value && !is_constant)
             throw ScriptError(d.quantity.value->location, "only constants take a value when declared",
                               "give values to " + k + "s in 'solve ... at' or 'evaluate ... at'");
         SymbolUnits su;
@@ -102,16 +141,25 @@ void run_symbols(Interpreter::Impl& m, const Statement& s) {
         }
         if (d.quantity.value) {
             Dimension got = Dimension::open();
-            value = m.number_of(d.quantity, Dimension::open(), "the value of " + d.name.text,
+            value = m.number_of(d.quantity, su.dim, "the value of " + d.name.text,
                                 d.name.location, &got);
+            // units inside the value (constant W = 2 kg * 9.81 m/s^2) give its dimension
+            if (d.quantity.unit.empty() && got.known && !got.is_none()) su.dim = got;
+            if (k == "positive" && !(*value > 0))
+                throw ScriptError(d.quantity.value->location,
+                                  "'" + d.name.text + "' is declared positive, but its value is " +
+                                      format_number(*value),
+                                  "give it a value greater than 0, or declare it with 'constant'");
+        }
+        if (m.session && is_constant && m.sys && m.sys->symbols().contains(d.name.text) &&
+            m.sys->symbols().kind(m.sys->symbols().symbol(d.name.text)) == SymbolKind::constant) {
+            redefine_constant(m, d, su, value);
+            continue;
         }
         m.declare_name(d.name, NameKind::symbol);
-        m.guard(d.name.location, [&] {
-            if (k == "constant") table.add_constant(d.name.text, value);
-            else if (k == "variable") table.add_variable(d.name.text, d.primes);
-            else if (k == "specified") table.add_specified(d.name.text, d.primes);
-            else table.add_unknown(d.name.text);
-        });
+        PendingSymbol p{k, d.name, d.primes, value};
+        if (m.sys) declare_symbol(m, p);
+        else m.pending_symbols.push_back(p);  // before newtonian: declared with the model
         for (int i = 1; i <= d.primes; ++i)
             m.names[d.name.text + std::string(static_cast<std::size_t>(i), '\'')] = {NameKind::symbol,
                                                                                      d.name.location};
@@ -176,25 +224,31 @@ std::vector<StatementSpec> declaration_statements() {
          .forms = {{"`constant` *name* [`=` *value*] [*unit*], ...",
                     "constant g = 9.81 m/s^2, k N/m, c",
                     "`SymbolTable::add_constant`"}},
-         .parse = parse_symbols, .run = run_symbols},
+         .parse = parse_symbols, .run = run_symbols, .needs_model = false},
+        {.keyword = "positive", .family = family,
+         .help = "declares constants known to be greater than 0, so sqrt(L^2) is L",
+         .forms = {{"`positive` *name* [`=` *value*] [*unit*], ...",
+                    "positive L = 0.5 m, m = 2 kg",
+                    "`SymbolTable::add_constant(name, value, true)` (a GiNaC possymbol)"}},
+         .parse = parse_symbols, .run = run_symbols, .needs_model = false},
         {.keyword = "variable", .family = family,
          .help = "declares functions of time (coordinates, speeds) and their derivatives",
          .forms = {{"`variable` *name*`''` [*unit*], ...",
                     "variable qA'', x'' m, u1'",
                     "`SymbolTable::add_variable(name, primes)`"}},
-         .parse = parse_symbols, .run = run_symbols},
+         .parse = parse_symbols, .run = run_symbols, .needs_model = false},
         {.keyword = "specified", .family = family,
          .help = "declares given functions of time and their derivatives",
          .forms = {{"`specified` *name*`''` [*unit*], ...",
                     "specified F' N",
                     "`SymbolTable::add_specified`"}},
-         .parse = parse_symbols, .run = run_symbols},
+         .parse = parse_symbols, .run = run_symbols, .needs_model = false},
         {.keyword = "unknown", .family = family,
          .help = "declares unknowns: load measures and values to solve for",
          .forms = {{"`unknown` *name* [*unit*], ...",
                     "unknown T_A N*m, F_x N",
                     "`SymbolTable::add_unknown`"}},
-         .parse = parse_symbols, .run = run_symbols},
+         .parse = parse_symbols, .run = run_symbols, .needs_model = false},
         {.keyword = "coordinates", .family = family,
          .help = "sets the coordinates road-maps plan with",
          .forms = {{"`coordinates` *variables*",

@@ -73,7 +73,7 @@ void run_rotate(Interpreter::Impl& m, const Statement& s) {
         });
     } else {
         Value v = m.eval(*s.exprs.at("dcm"));
-        if (v.kind != Value::Kind::matrix)
+        if (v.kind != Value::Kind::matrix || v.rows != 3 || v.cols != 3)
             throw ScriptError(s.exprs.at("dcm")->location,
                               "a direction-cosine matrix must be 3 by 3, written [a, b, c; d, e, f; g, h, i]",
                               "separate the rows with ';'");
@@ -150,7 +150,25 @@ void run_frame_rate(Interpreter::Impl& m, const Statement& s) {
     bool acc = s.keyword == "angacc";
     Vector w = m.vector(*s.exprs.at("value"), acc ? pow(T, -2) : pow(T, -1),
                         acc ? "an angular acceleration" : "an angular velocity");
-    m.guard(s.word("in").location, [&] { acc ? B.set_ang_acc(A, w) : B.set_ang_vel(A, w); });
+    const Frame* P = B.parent();
+    if (P == nullptr || P == &A) {
+        m.guard(s.word("in").location, [&] { acc ? B.set_ang_acc(A, w) : B.set_ang_vel(A, w); });
+        return;
+    }
+    // in a frame A other than the parent P, by the addition theorem:
+    //   w_B_P = w_B_A - w_P_A,  alf_B_P = alf_B_A - alf_P_A - w_P_A x w_B_P
+    // which needs P's motion in A not to pass through B
+    for (const Frame* f = &A; f != nullptr; f = f->parent())
+        if (f == &B)
+            throw ScriptError(s.word("in").location,
+                              "'" + A.name() + "' is oriented relative to '" + B.name() + "', so the " +
+                                  (acc ? "angular acceleration" : "angular velocity") + " of " + B.name() +
+                                  " in " + A.name() + " depends on itself",
+                              "give it in " + P->name() + ", the frame " + B.name() + " is oriented relative to");
+    m.guard(s.word("in").location, [&] {
+        if (acc) B.set_ang_acc(*P, w - P->ang_acc_in(A) - cross(P->ang_vel_in(A), B.ang_vel_in(*P)));
+        else B.set_ang_vel(*P, w - P->ang_vel_in(A));
+    });
 }
 
 // ---- constraint --------------------------------------------------------------------------
@@ -247,12 +265,12 @@ std::vector<StatementSpec> kinematics_statements() {
         {.keyword = "angvel", .family = family, .help = "sets a frame's angular velocity in another",
          .forms = {{"`angvel` *B* `in` *A* `=` *vector*",
                     "angvel B in N = wx*Bx> + wy*By>",
-                    "`Frame::set_ang_vel`"}},
+                    "`Frame::set_ang_vel` in B's parent P; in another frame A, w_B_P = w_B_A - w_P_A (addition theorem)"}},
          .clauses = {"in"}, .parse = parse_rate, .run = run_frame_rate},
         {.keyword = "angacc", .family = family, .help = "sets a frame's angular acceleration in another",
          .forms = {{"`angacc` *B* `in` *A* `=` *vector*",
                     "angacc B in N = 0>",
-                    "`Frame::set_ang_acc`"}},
+                    "`Frame::set_ang_acc` in B's parent P; in another frame A, alf_B_P = alf_B_A - alf_P_A - w_P_A x w_B_P"}},
          .clauses = {"in"}, .parse = parse_rate, .run = run_frame_rate},
     };
 }

@@ -38,6 +38,12 @@ std::string linearize_matrix_text(const GiNaC::matrix& A) {
 }
 
 // a complex number as the transcript prints numbers: a, b*i, a + b*i
+std::string linearize_vector_text(const Transcript& t, const Eigen::VectorXd& v) {
+    std::string out;
+    for (Eigen::Index i = 0; i < v.size(); ++i) out += (i ? ", " : "") + t.number(v(i));
+    return out;
+}
+
 std::string complex_text(const Transcript& t, std::complex<double> z) {
     const std::string re = t.number(z.real()), im = t.number(std::abs(z.imag()));
     if (im == "0") return re;
@@ -246,6 +252,75 @@ void run_linearize(Interpreter::Impl& m, const Statement& s) {
                 return eigen_text(m.transcript, table, lin.states, closed, "closed-loop eigenvalues");
             });
         }
+        // ---- the linear-quadratic regulator's gain
+        if (s.expr_lists.count("lqr")) {
+            const Word& g = s.word("gains");
+            if (o.inputs.empty())
+                throw ScriptError(s.word("lqr").location, "the regulator needs inputs", "name them: inputs F");
+            auto it = m.names.find(g.text);
+            if (is_reserved(g.text) || (it != m.names.end() && it->second.kind != NameKind::value))
+                throw ScriptError(g.location, "'" + g.text + "' cannot name the gains", "choose another name");
+            auto weights = [&](const char* role, std::size_t count, const std::string& what, bool strict) {
+                const auto& list = s.expr_lists.at(role);
+                if (list.size() != count)
+                    throw ScriptError(list.front()->location,
+                                      std::to_string(list.size()) + " " + what + " weights for " + std::to_string(count) +
+                                          " " + what + "s",
+                                      "give one weight per " + what + (std::string(role) == "lqr"
+                                                                           ? " (" + linearize_name_list(table, lin.states) + ")"
+                                                                           : " (" + linearize_name_list(table, o.inputs) + ")"));
+                Eigen::VectorXd w(static_cast<Eigen::Index>(count));
+                for (std::size_t i = 0; i < count; ++i) {
+                    Value v = m.eval(*list[i]);
+                    if (v.kind != Kind::scalar)
+                        throw ScriptError(list[i]->location, "a weight must be a number", "write lqr 10, 100, 1, 1 and 0.1");
+                    double d = m.guard(list[i]->location, [&] { return table.evaluate(v.s); },
+                                       "a weight is a number, or constants with values");
+                    if (strict ? !(d > 0) : !(d >= 0))
+                        throw ScriptError(list[i]->location,
+                                          "a weight on " + std::string(strict ? "an input must be greater than 0" : "a state must be 0 or more"),
+                                          strict ? "give each input a positive weight" : "give each state a weight >= 0");
+                    w(static_cast<Eigen::Index>(i)) = d;
+                }
+                return w;
+            };
+            const Eigen::VectorXd q = weights("lqr", lin.states.size(), "state", false);
+            const Eigen::VectorXd r = weights("lqr_inputs", o.inputs.size(), "input", true);
+            Eigen::MatrixXd B = m.guard(n.location, [&] { return linearize_numbers(table, lin.B, {}); }, no_value_hint);
+            Eigen::MatrixXd Q = q.asDiagonal(), R = r.asDiagonal();
+            LqrSolution lqr = m.guard(g.location, [&] { return solve_lqr(A, B, Q, R); });
+            std::vector<ex> gains;
+            out << "\n" << g.text << " = [";
+            for (Eigen::Index i = 0; i < lqr.K.rows(); ++i)
+                for (Eigen::Index j = 0; j < lqr.K.cols(); ++j) {
+                    gains.push_back(lqr.K(i, j));
+                    out << (j ? ", " : i ? "; " : "") << m.transcript.number(lqr.K(i, j));
+                }
+            out << "]: ";
+            const std::size_t ns = lin.states.size();
+            for (std::size_t i = 0; i < o.inputs.size(); ++i) {
+                std::string law;
+                for (std::size_t j = 0; j < ns; ++j)
+                    law += (j ? " + " : "") + g.text + "[" + std::to_string(i * ns + j + 1) + "]*" + table.name(lin.states[j]);
+                out << (i ? ", " : "") << table.name(o.inputs[i]) << " = -(" << law << ")";
+            }
+            // the residual's order of magnitude
+            // (1e-12 or its order above that), so transcripts do not carry round-off digits
+            const int bound = static_cast<int>(std::ceil(std::log10(std::max(lqr.relative_residual, 1e-12))));
+            out << " minimises the integral of x^T Q x + r^T R r (Q = diag(" << linearize_vector_text(m.transcript, q)
+                << "), R = diag(" << linearize_vector_text(m.transcript, r)
+                << ")); the Riccati equation A^T P + P A - P B R^-1 B^T P + Q = 0 holds to 1e" << bound
+                << " relative\n";
+            Value gv;
+            gv.kind = Kind::array;
+            gv.a = gains;
+            m.values[g.text] = gv;
+            m.names[g.text] = {NameKind::value, g.location};
+            Eigen::MatrixXd closed = A - B * lqr.K;
+            out << m.guard(g.location, [&] {
+                return eigen_text(m.transcript, table, lin.states, closed, "closed-loop eigenvalues");
+            });
+        }
         m.transcript.result(out.str());
         return;
     }
@@ -347,6 +422,13 @@ void parse_linearize(StatementParser& p, Statement& s) {
             s.expr_lists["poles"] = p.expression_list();
             p.expect_word("gains", "and a name for the gains (poles -2, -3, -4, -5 gains G)");
             s.words["gains"] = p.name("a name for the gains");
+        } else if (p.at_word("lqr")) {
+            s.words["lqr"] = p.take_word();
+            s.expr_lists["lqr"] = p.expression_list();
+            p.expect_word("and", "and the input weights (lqr 10, 100, 1, 1 and 0.1 gains G)");
+            s.expr_lists["lqr_inputs"] = p.expression_list();
+            p.expect_word("gains", "and a name for the gains (lqr 10, 100, 1, 1 and 0.1 gains G)");
+            s.words["gains"] = p.name("a name for the gains");
         } else if (p.accept_word("for")) {
             s.words["parameter"] = p.name("a constant to sweep");
             p.expect_punct("=", "and its range (for Omega = 0 to 10 step 0.5)");
@@ -358,9 +440,15 @@ void parse_linearize(StatementParser& p, Statement& s) {
         } else if (p.accept_word("to")) {
             s.words["to"] = p.text("the output directory");
         } else {
-            p.fail_expected("'inputs', 'second order', 'poles', 'for' or 'to'");
+            p.fail_expected("'inputs', 'second order', 'poles', 'lqr', 'for' or 'to'");
         }
     }
+    if (s.expr_lists.count("poles") && s.expr_lists.count("lqr"))
+        throw ScriptError(s.word("lqr").location, "one gain per statement: poles or lqr, not both",
+                          "linearize once with poles, and again with lqr");
+    if (s.expr_lists.count("lqr") && s.words.count("parameter"))
+        throw ScriptError(s.word("lqr").location, "a gain is computed at one operating point, not over a sweep",
+                          "linearize once with lqr, and sweep in another statement");
     if (s.expr_lists.count("poles") && s.words.count("parameter"))
         throw ScriptError(s.word("poles").location, "a gain is placed at one operating point, not over a sweep",
                           "linearize once with poles, and sweep in another statement");
@@ -381,10 +469,13 @@ std::vector<StatementSpec> linearize_statements() {
                    {"`linearize` *K* `at` ... `inputs` *r* `poles` *p1, ..., pn* `gains` *G*",
                     "linearize K at th = 0 inputs F poles -2, -3, -4, -5 gains G",
                     "`place_poles` (Ackermann's formula): G such that r = -(G[1]*x1 + ...) places the poles; prints the closed-loop eigenvalues"},
+                   {"`linearize` *K* `at` ... `inputs` *r...* `lqr` *q1, ..., qn* `and` *r1, ..., rm* `gains` *G*",
+                    "linearize K at th = 0 inputs F lqr 10, 100, 1, 1 and 0.1 gains G",
+                    "`solve_lqr` (the Riccati equation's stable solution, residual checked): G minimising the integral of x^T Q x + r^T R r with Q, R diagonal (weights in the states' and inputs' SI units); r_i = -(G[(i-1)n+1]*x1 + ...); prints the closed-loop eigenvalues"},
                    {"`linearize` *K* `at` ... `for` *c* `=` *a* `to` *b* `step` *h* [`to` *\"dir\"*]",
                     "linearize K at q2 = 0, u1 = 0, u2 = Omega, u3 = 0 for Omega = 0 to 10 step 0.5",
                     "a sweep of the constant c: `eigenvalues.csv` (real and imaginary parts), a plot of the real parts, and the values of c where a real part crosses zero (`find_stability_changes`: bisection)"}},
-         .clauses = {"at", "inputs", "second", "poles", "gains", "for", "step", "to"},
+         .clauses = {"at", "inputs", "second", "poles", "lqr", "and", "gains", "for", "step", "to"},
          .parse = parse_linearize, .run = run_linearize},
     };
 }

@@ -26,6 +26,13 @@ const Entry kUnits[] = {
     {"N", 1, Dimension::force()},       {"kN", 1000, Dimension::force()},
     {"J", 1, Dimension::torque()},      {"W", 1, {{2, 1, -3}, true}},
     {"Hz", 1, {{0, 0, -1}, true}},      {"rpm", 2 * std::numbers::pi / 60, {{0, 0, -1}, true}},
+    // US customary units, exact by their definitions (NIST SP 811): the international inch
+    // and foot, the avoirdupois pound mass, the pound force (lbm times standard gravity
+    // 9.80665 m/s^2) and the slug (lbf*s^2/ft)
+    {"in", 0.0254, Dimension::length()},  {"ft", 0.3048, Dimension::length()},
+    {"lbm", 0.45359237, Dimension::mass()},
+    {"lbf", 0.45359237 * 9.80665, Dimension::force()},
+    {"slug", 0.45359237 * 9.80665 / 0.3048, Dimension::mass()},
 };
 
 }  // namespace

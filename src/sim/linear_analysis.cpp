@@ -162,6 +162,116 @@ Eigen::RowVectorXd place_poles(const Eigen::MatrixXd& A, const Eigen::VectorXd& 
     return last_row_of_inverse * phi;
 }
 
+namespace {
+
+// |A^T P + P A - P G P + Q|_F relative to the sum of the terms' norms (G = B R^-1 B^T)
+double riccati_residual(const Eigen::MatrixXd& A, const Eigen::MatrixXd& G, const Eigen::MatrixXd& Q,
+                        const Eigen::MatrixXd& P) {
+    const Eigen::MatrixXd AP = A.transpose() * P, PGP = P * G * P;
+    const double scale = 2 * AP.norm() + PGP.norm() + Q.norm();
+    const double r = (AP + AP.transpose() - PGP + Q).norm();
+    return scale > 0 ? r / scale : r;
+}
+
+// P solving Ac^T P + P Ac = -W, through (1 (x) Ac^T + Ac^T (x) 1) vec(P) = -vec(W)
+Eigen::MatrixXd solve_lyapunov(const Eigen::MatrixXd& Ac, const Eigen::MatrixXd& W) {
+    const Eigen::Index n = Ac.rows();
+    Eigen::MatrixXd L = Eigen::MatrixXd::Zero(n * n, n * n);
+    const Eigen::MatrixXd At = Ac.transpose();
+    for (Eigen::Index i = 0; i < n; ++i)
+        for (Eigen::Index j = 0; j < n; ++j)
+            for (Eigen::Index k = 0; k < n; ++k) {
+                L(i * n + k, i * n + j) += At(k, j);  // 1 (x) Ac^T: block i, row k, column j
+                L(j * n + k, i * n + k) += At(j, i);  // Ac^T (x) 1: block (j, i) times 1
+            }
+    Eigen::VectorXd w = Eigen::Map<const Eigen::VectorXd>(W.data(), n * n);
+    Eigen::VectorXd p = L.partialPivLu().solve(-w);  // nonsingular: Ac is stable
+    Eigen::MatrixXd P = Eigen::Map<Eigen::MatrixXd>(p.data(), n, n);
+    return (P + P.transpose()) / 2;
+}
+
+}  // namespace
+
+LqrSolution solve_lqr(const Eigen::MatrixXd& A, const Eigen::MatrixXd& B, const Eigen::MatrixXd& Q,
+                      const Eigen::MatrixXd& R) {
+    const Eigen::Index n = A.rows(), m = B.cols();
+    if (A.cols() != n || B.rows() != n || Q.rows() != n || Q.cols() != n || R.rows() != m || R.cols() != m ||
+        n == 0 || m == 0)
+        throw ArgumentError("solve_lqr(): A is " + std::to_string(A.rows()) + " x " + std::to_string(A.cols()) +
+                            ", B " + std::to_string(B.rows()) + " x " + std::to_string(B.cols()) + ", Q " +
+                            std::to_string(Q.rows()) + " x " + std::to_string(Q.cols()) + " and R " +
+                            std::to_string(R.rows()) + " x " + std::to_string(R.cols()) +
+                            "; give a square A, B with a row per state, Q n x n and R m x m");
+    for (const Eigen::MatrixXd* M : {&A, &B, &Q, &R})
+        if (!M->allFinite()) throw ArgumentError("solve_lqr(): a matrix holds a number that is not finite");
+    auto symmetric = [](const Eigen::MatrixXd& M) {
+        return (M - M.transpose()).norm() <= 1e-12 * std::max(1.0, M.norm());
+    };
+    if (!symmetric(Q) || !symmetric(R))
+        throw ArgumentError("solve_lqr(): Q and R must be symmetric; give weights on the diagonal");
+    Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> qe(Q);
+    if (qe.eigenvalues().minCoeff() < -1e-12 * std::max(1.0, Q.norm()))
+        throw ArgumentError("solve_lqr(): the state weight Q has a negative eigenvalue (" +
+                            std::to_string(qe.eigenvalues().minCoeff()) + "); give weights >= 0");
+    Eigen::LLT<Eigen::MatrixXd> rl(R);
+    if (rl.info() != Eigen::Success || Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(R).eigenvalues().minCoeff() <= 0)
+        throw ArgumentError("solve_lqr(): the input weight R must be positive definite; give weights > 0");
+    const Eigen::MatrixXd Rinv_Bt = rl.solve(B.transpose());
+    const Eigen::MatrixXd G = B * Rinv_Bt;
+
+    // ---- the stable invariant subspace of the Hamiltonian matrix
+    Eigen::MatrixXd H(2 * n, 2 * n);
+    H << A, -G, -Q, -A.transpose();
+    Eigen::ComplexEigenSolver<Eigen::MatrixXd> es(H);
+    if (es.info() != Eigen::Success) throw SolveError("solve_lqr(): the Hamiltonian's eigenvalues did not converge");
+    const double tol = zero_real_part_tolerance(H);  // a double eigenvalue blurs by ~sqrt(eps)
+    std::vector<Eigen::Index> stable;
+    for (Eigen::Index i = 0; i < 2 * n; ++i) {
+        const double re = es.eigenvalues()(i).real();
+        if (std::abs(re) <= tol)
+            throw SolveError("solve_lqr(): the Hamiltonian has the eigenvalue " + std::to_string(re) + " + " +
+                             std::to_string(es.eigenvalues()(i).imag()) +
+                             "i on the imaginary axis: a mode is not stabilisable by the inputs, or Q does "
+                             "not weigh an undamped mode; weigh every state in Q or choose other inputs");
+        if (re < 0) stable.push_back(i);
+    }
+    if (static_cast<Eigen::Index>(stable.size()) != n)
+        throw SolveError("solve_lqr(): the Hamiltonian has " + std::to_string(stable.size()) +
+                         " stable eigenvalues, not " + std::to_string(n));
+    Eigen::MatrixXcd U1(n, n), U2(n, n);
+    for (Eigen::Index j = 0; j < n; ++j) {
+        U1.col(j) = es.eigenvectors().col(stable[static_cast<std::size_t>(j)]).head(n);
+        U2.col(j) = es.eigenvectors().col(stable[static_cast<std::size_t>(j)]).tail(n);
+    }
+    Eigen::FullPivLU<Eigen::MatrixXcd> lu(U1);
+    if (!lu.isInvertible() || !(lu.rcond() > 1e-12))
+        throw SolveError("solve_lqr(): the stable subspace does not determine P (U1 singular, reciprocal "
+                         "condition " + std::to_string(lu.rcond()) + "): (A, B) is not stabilisable");
+    Eigen::MatrixXd P = (U2 * lu.inverse()).real();
+    P = (P + P.transpose()) / 2;
+
+    // ---- Newton-Kleinman refinement: K = R^-1 B^T P, then (A - B K)^T P + P (A - B K) = -(Q + K^T R K)
+    LqrSolution out;
+    double residual = riccati_residual(A, G, Q, P);
+    if (n <= 12) {  // the Kronecker form is n^2 x n^2
+        for (int step = 0; step < 8 && residual > 1e-15; ++step) {
+            const Eigen::MatrixXd K = Rinv_Bt * P;
+            Eigen::MatrixXd next = solve_lyapunov(A - B * K, Q + K.transpose() * R * K);
+            const double r = riccati_residual(A, G, Q, next);
+            if (!(r < residual)) break;
+            P = next, residual = r, ++out.newton_steps;
+        }
+    }
+    if (!(residual < 1e-8))
+        throw SolveError("solve_lqr(): the Riccati residual is " + std::to_string(residual) +
+                         " relative to its terms; the problem is too ill-conditioned (scale the states, or "
+                         "weigh them more evenly)");
+    out.P = P;
+    out.K = Rinv_Bt * P;
+    out.relative_residual = residual;
+    return out;
+}
+
 std::vector<StabilityChange> find_stability_changes(
     const std::function<Eigen::MatrixXd(double)>& A_of, const std::vector<double>& samples) {
     std::vector<StabilityChange> out;

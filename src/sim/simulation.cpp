@@ -419,13 +419,20 @@ SimulationResult run_simulation(const System& sys, const SimulationRequest& requ
         auto it = request.inputs.find(measure);
         loads[measure] = it == request.inputs.end() ? ex(0) : it->second;
     }
+    for (const auto& [symbol, formula] : request.specified) {
+        ALEMBERT_CHECK_ARG(table.owns(symbol) && table.kind(symbol) == SymbolKind::specified,
+                           who + "a value is given for '" + to_string(symbol) +
+                               "', which is not a specified quantity of the model");
+        loads[symbol] = formula;
+    }
     auto run = [&](bool allow_tree) {
         // a tree of bodies in relative coordinates: q'' from the articulated-body recursion (no
         // mass matrix, no solve; its size grows linearly in the bodies), the load measures run-time
         // inputs given by their formulas (they sit inside the recursion's named intermediates, out
         // of reach of a substitution); otherwise the dense equations with the loads substituted
         std::optional<TreeEquations> tree;
-        if (allow_tree && request.constraint_forces.empty() && sys.constraints().empty())
+        if (allow_tree && request.constraint_forces.empty() && sys.constraints().empty() &&
+            request.specified.empty())
             tree = form_tree_equations_if_tree(sys, q);
         std::vector<ex> measures;
         InputFunction input_laws;
@@ -464,6 +471,11 @@ SimulationResult run_simulation(const System& sys, const SimulationRequest& requ
             };
         } else {
             LinearSystem eqs = form_forward_equations(sys, q, request.constraint_forces);
+            if (!request.specified.empty()) {
+                // a specified quantity may sit inside a named intermediate's definition
+                eqs.A = GiNaC::ex_to<GiNaC::matrix>(table.expand_intermediates(eqs.A));
+                eqs.b = GiNaC::ex_to<GiNaC::matrix>(table.expand_intermediates(eqs.b));
+            }
             eqs.A = GiNaC::ex_to<GiNaC::matrix>(eqs.A.subs(loads));
             eqs.b = GiNaC::ex_to<GiNaC::matrix>(eqs.b.subs(loads));
             dynamics.emplace(compile_forward_dynamics(table, eqs, q, {}, request.model, request.make));
@@ -472,9 +484,12 @@ SimulationResult run_simulation(const System& sys, const SimulationRequest& requ
 
         // outputs: the user's, then the checks
         std::vector<OutputSpec> outputs = request.outputs;
-        for (OutputSpec& o : outputs) o.expression = o.expression.subs(loads);
+        const auto expanded = [&](const ex& e) {
+            return request.specified.empty() ? e : table.expand_intermediates(e);
+        };
+        for (OutputSpec& o : outputs) o.expression = expanded(o.expression).subs(loads);
         if (request.checks) {
-            bool conservative = true;
+            bool conservative = request.specified.empty();  // a driven quantity does work
             exmap without_constraint_forces = loads;
             for (const ex& c : request.constraint_forces) without_constraint_forces[c] = 0;
             for (const ex& f : form_generalized_active_forces(sys, q, LoadSelection::nonconservative))
@@ -491,7 +506,7 @@ SimulationResult run_simulation(const System& sys, const SimulationRequest& requ
         }
         OutputFunction out = compile_outputs(table, fd.layout(), outputs, request.make);
         std::vector<EventSpec> event_specs = request.events;
-        for (EventSpec& e : event_specs) e.expression = e.expression.subs(loads);
+        for (EventSpec& e : event_specs) e.expression = expanded(e.expression).subs(loads);
         EventFunction events = compile_events(table, fd.layout(), event_specs, request.make);
 
         // initial values

@@ -59,8 +59,8 @@ void SymbolTable::check_new_name(const std::string& name) const {
                          to_string(info_.at(it->second).kind) + "; choose another name");
 }
 
-ex SymbolTable::make_symbol(const std::string& name, Info i) {
-    ex s = GiNaC::realsymbol(name);
+ex SymbolTable::make_symbol(const std::string& name, Info i, bool positive) {
+    ex s = positive ? ex(GiNaC::possymbol(name)) : ex(GiNaC::realsymbol(name));
     i.name = name;
     if (!GiNaC::is_a<GiNaC::symbol>(i.base)) i.base = s;
     i.index = order_.size();
@@ -70,9 +70,12 @@ ex SymbolTable::make_symbol(const std::string& name, Info i) {
     return s;
 }
 
-ex SymbolTable::add_constant(const std::string& name, std::optional<double> value) {
+ex SymbolTable::add_constant(const std::string& name, std::optional<double> value, bool positive) {
     check_new_name(name);
-    return make_symbol(name, Info{.kind = SymbolKind::constant, .value = value});
+    if (positive && value && !(*value > 0))
+        throw ArgumentError("SymbolTable: the positive constant '" + name + "' is given the value " +
+                            std::to_string(*value) + "; give it a value greater than 0");
+    return make_symbol(name, Info{.kind = SymbolKind::constant, .value = value}, positive);
 }
 
 ex SymbolTable::add_unknown(const std::string& name) {

@@ -83,6 +83,63 @@ TEST(LinearAnalysis, AckermannGainOfTheDoubleIntegratorMatchesHandDerivation) {
                      "cannot steer every state");
 }
 
+TEST(LinearAnalysis, LqrGainOfAScalarSystemMatchesTheQuadraticFormula) {
+    // x' = a x + b r, cost q x^2 + r0 r^2: the Riccati equation 2 a P - b^2 P^2/r0 + q = 0 has
+    // the stabilising root P = r0 (a + sqrt(a^2 + b^2 q/r0))/b^2 and K = b P/r0
+    const double a = 1, b = 2, q = 3, r0 = 0.5;
+    Eigen::MatrixXd A(1, 1), B(1, 1), Q(1, 1), R(1, 1);
+    A << a, B << b, Q << q, R << r0;
+    LqrSolution s = solve_lqr(A, B, Q, R);
+    const double P = r0 * (a + std::sqrt(a * a + b * b * q / r0)) / (b * b);
+    EXPECT_NEAR(s.P(0, 0), P, 1e-13);
+    EXPECT_NEAR(s.K(0, 0), b * P / r0, 1e-13);
+    EXPECT_LT(a - b * s.K(0, 0), 0);
+}
+
+TEST(LinearAnalysis, LqrGainOfTheDoubleIntegratorMatchesHandDerivation) {
+    // x'' = r, Q = 1, R = 1: P = [sqrt 3, 1; 1, sqrt 3], K = (1, sqrt 3) (the Riccati
+    // equation's entries: p12^2 = 1, 2 p12 = p22^2 - 1, p11 = p12 p22)
+    Eigen::MatrixXd A(2, 2), B(2, 1);
+    A << 0, 1, 0, 0;
+    B << 0, 1;
+    LqrSolution s = solve_lqr(A, B, Eigen::MatrixXd::Identity(2, 2), Eigen::MatrixXd::Identity(1, 1));
+    EXPECT_NEAR(s.P(0, 0), std::sqrt(3.0), 1e-13);
+    EXPECT_NEAR(s.P(0, 1), 1, 1e-13);
+    EXPECT_NEAR(s.P(1, 1), std::sqrt(3.0), 1e-13);
+    EXPECT_NEAR(s.K(0, 0), 1, 1e-13);
+    EXPECT_NEAR(s.K(0, 1), std::sqrt(3.0), 1e-13);
+    EXPECT_LT(s.relative_residual, 1e-14);
+    // an input that cannot reach an unstable mode, a weight that is not positive
+    Eigen::MatrixXd one = Eigen::MatrixXd::Identity(1, 1);
+    EXPECT_THROW_MSG(solve_lqr(one, Eigen::MatrixXd::Zero(1, 1), one, one), SolveError, "not stabilisable");
+    // an undamped oscillator no input reaches: the Hamiltonian's eigenvalues +-i
+    Eigen::MatrixXd W(2, 2);
+    W << 0, 1, -1, 0;
+    EXPECT_THROW_MSG(solve_lqr(W, Eigen::MatrixXd::Zero(2, 1), Eigen::MatrixXd::Identity(2, 2), one), SolveError,
+                     "imaginary axis");
+    EXPECT_THROW_MSG(solve_lqr(A, B, Eigen::MatrixXd::Identity(2, 2), Eigen::MatrixXd::Zero(1, 1)), ArgumentError,
+                     "positive definite");
+    EXPECT_THROW_MSG(solve_lqr(A, B, -Eigen::MatrixXd::Identity(2, 2), one), ArgumentError, "negative eigenvalue");
+}
+
+TEST(LinearAnalysis, LqrOfACartPendulumSolvesRiccatiAndStabilises) {
+    // the cart-pendulum below, two inputs (a force on the cart and a torque at the hinge):
+    // the residual of the Riccati equation, recomputed here, is at round-off and A - B K is
+    // stable; P is symmetric positive definite
+    const double M = 1.5, m = 0.3, l = 0.6, g = 9.81;
+    Eigen::MatrixXd A(4, 4), B(4, 2);
+    A << 0, 0, 1, 0, 0, 0, 0, 1, 0, -m * g / M, 0, 0, 0, (M + m) * g / (M * l), 0, 0;
+    B << 0, 0, 0, 0, 1 / M, -1 / (M * l), -1 / (M * l), (M + m) / (M * m * l * l);
+    Eigen::MatrixXd Q = Eigen::Vector4d(10, 100, 1, 1).asDiagonal();
+    Eigen::MatrixXd R = Eigen::Vector2d(0.1, 1).asDiagonal();
+    LqrSolution s = solve_lqr(A, B, Q, R);
+    Eigen::MatrixXd res = A.transpose() * s.P + s.P * A - s.P * B * R.inverse() * B.transpose() * s.P + Q;
+    EXPECT_LT(res.norm(), 1e-9 * s.P.norm());
+    EXPECT_LT((s.K - R.inverse() * B.transpose() * s.P).norm(), 1e-12 * s.K.norm());
+    EXPECT_GT(Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(s.P).eigenvalues().minCoeff(), 0);
+    for (const cd& z : calc_eigen(A - B * s.K).values) EXPECT_LT(z.real(), 0);
+}
+
 TEST(LinearAnalysis, PlacedPolesAreTheClosedLoopEigenvaluesOfACartPendulum) {
     // point-mass pendulum (m, l) on a cart (M), x = (x, th, x', th'), force F on the cart:
     // x'' = (F - m g th)/M, th'' = ((M + m) g th - F)/(M l)

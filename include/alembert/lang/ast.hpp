@@ -11,6 +11,23 @@
 
 namespace alembert::lang {
 
+/// A name as written, with where it is.
+struct Word {
+    std::string text{};
+    Location location{};
+};
+
+/// A unit as written after a number or a declared name: factors with integer powers.
+struct UnitText {
+    struct Factor {
+        Word name{};
+        int power = 1;
+    };
+    std::vector<Factor> factors{};
+    Location location{};
+    bool empty() const { return factors.empty(); }
+};
+
 /// An expression. Sums and products are n-ary (a + b - c is one node), so long flat chains do
 /// not make deep trees; nesting is limited by the parser (Limits::max_nesting).
 struct Expr {
@@ -36,25 +53,9 @@ struct Expr {
     std::vector<std::unique_ptr<Expr>> args{};
     std::vector<bool> inverted{};
     int rows = 0;
+    UnitText unit{};  ///< a number's unit, `0.1575 m` (a number node only; empty: none)
 };
 using ExprPtr = std::unique_ptr<Expr>;
-
-/// A name as written, with where it is.
-struct Word {
-    std::string text{};
-    Location location{};
-};
-
-/// A unit as written after a number or a declared name: factors with integer powers.
-struct UnitText {
-    struct Factor {
-        Word name{};
-        int power = 1;
-    };
-    std::vector<Factor> factors{};
-    Location location{};
-    bool empty() const { return factors.empty(); }
-};
 
 /// A number with an optional unit (`9.81 m/s^2`), or an expression where one is allowed.
 struct Quantity {

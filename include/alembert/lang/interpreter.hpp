@@ -76,6 +76,10 @@ public:
     /// With `model_only`, run() builds the model and skips `simulate`, `inverse` and `codegen`
     /// (the `alembert inverse` and `alembert codegen` commands run the script this way).
     void set_model_only(bool model_only);
+    /// With `session` (the interactive session), declaring a constant again gives it a new
+    /// value: symbolic results keep the symbol and stand, numbers computed from now on use the
+    /// new value, and the session says so. In a script a second declaration is an error.
+    void set_session(bool session);
     /// Inverse dynamics of the model over the motion table `motion_csv` (relative to the
     /// current directory) for every load measure the script declares, written to the output
     /// directory as torques.csv and its plot: `alembert inverse`. `cutoff_hz` 0 turns the

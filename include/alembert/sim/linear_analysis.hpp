@@ -51,6 +51,31 @@ Stability classify_stability(const std::vector<std::complex<double>>& values, do
 Eigen::RowVectorXd place_poles(const Eigen::MatrixXd& A, const Eigen::VectorXd& b,
                                const std::vector<std::complex<double>>& poles);
 
+/// The linear-quadratic regulator of x' = A x + B r: the state feedback r = -K x that
+/// minimises the integral of x^T Q x + r^T R r, with K = R^-1 B^T P and P the stabilising
+/// solution of the continuous algebraic Riccati equation
+///     A^T P + P A - P B R^-1 B^T P + Q = 0.
+struct LqrSolution {
+    Eigen::MatrixXd K{};  ///< the gain, one row per input
+    Eigen::MatrixXd P{};  ///< the Riccati solution (symmetric, positive semi-definite)
+    /// |A^T P + P A - P B R^-1 B^T P + Q|_F over the sum of the terms' norms
+    double relative_residual = 0;
+    int newton_steps = 0;  ///< Newton-Kleinman refinements taken after the first solution
+};
+
+/// Solves the Riccati equation above: P from the stable invariant subspace of the Hamiltonian
+/// matrix H = [A, -B R^-1 B^T; -Q, -A^T] (its eigenvectors for the n eigenvalues with negative
+/// real part, [U1; U2], P = U2 U1^-1), then refined by Newton-Kleinman steps (each a Lyapunov
+/// equation of the closed loop, solved through its Kronecker form, for n <= 12) until the
+/// residual stops falling; the relative residual is checked to be below 1e-8. Eigenvalues of H
+/// within zero_real_part_tolerance(H) of the imaginary axis are refused.
+/// @throws alembert::ArgumentError if the sizes do not fit, Q is not symmetric positive
+///         semi-definite or R not symmetric positive definite; alembert::SolveError if H has
+///         eigenvalues on the imaginary axis or U1 is singular ((A, B) not stabilisable, or a
+///         mode on the imaginary axis that Q does not see), or the residual stays large.
+LqrSolution solve_lqr(const Eigen::MatrixXd& A, const Eigen::MatrixXd& B, const Eigen::MatrixXd& Q,
+                      const Eigen::MatrixXd& R);
+
 /// A change of stability along a parameter p: between two samples of a sweep, refined by
 /// bisection on "the largest real part is above the tolerance" to within 1e-12 (|p| + 1).
 struct StabilityChange {

@@ -153,6 +153,10 @@ struct SimulationRequest {
     /// Values of the other load measures as formulas of t, q, q' (a motor law); a load
     /// measure of the model not given here is zero.
     exmap inputs{};
+    /// Values of specified symbols and of the derivatives of them the model uses, as formulas
+    /// of t, q, q' (a driven base motion x_b = 0.1*sin(2*pi*t), x_b' and x_b''); substituted
+    /// into the equations, outputs and events.
+    exmap specified{};
     /// Initial values (SI) of coordinates q_i and rates q_i'; those not given are 0.
     exmap initial_values{};
     std::vector<OutputSpec> outputs{};

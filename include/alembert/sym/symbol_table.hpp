@@ -79,10 +79,13 @@ public:
     // ---- declaration ---------------------------------------------------------------------
     /// The independent variable t.
     const ex& time() const { return t_; }
-    /// Declares a constant, optionally with a numeric value (SI units).
-    /// @throws alembert::ArgumentError if the name is not an identifier,
-    ///         alembert::ModelError if it is declared already.
-    ex add_constant(const std::string& name, std::optional<double> value = std::nullopt);
+    /// Declares a constant, optionally with a numeric value (SI units). A `positive` one is
+    /// known to GiNaC to be greater than 0 (a possymbol), so sqrt(L^2) is L and |L| is L.
+    /// @throws alembert::ArgumentError if the name is not an identifier or a positive
+    ///         constant's value is not greater than 0, alembert::ModelError if it is declared
+    ///         already.
+    ex add_constant(const std::string& name, std::optional<double> value = std::nullopt,
+                    bool positive = false);
     /// Declares a time-varying variable and its derivatives up to `order` (q, q', ..., q^(order)).
     TimeVariable add_variable(const std::string& name, int order = 2);
     /// Declares a specified (prescribed, known) function of time and its derivatives.
@@ -187,7 +190,7 @@ private:
         std::size_t index = 0;
     };
 
-    ex make_symbol(const std::string& name, Info info);
+    ex make_symbol(const std::string& name, Info info, bool positive = false);
     ex make_intermediate(const ex& definition, const std::string& name);
     TimeVariable add_time_varying(const std::string& name, int order, SymbolKind kind);
     void check_new_name(const std::string& name) const;
