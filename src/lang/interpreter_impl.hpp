@@ -141,8 +141,12 @@ struct Interpreter::Impl {
     void run_codegen(const CodegenRequest& r, Location where);
     // interpreter_report.cpp
     void report(const Statement& s);
-    /// Writes the report of the model so far into `dir`; returns the path of its index.html.
-    std::string write_report_to(const std::string& dir, const exmap& configuration, Location where);
+    void latex(const Statement& s);
+    exmap report_configuration(const Statement& s);
+    /// Writes the report of the model so far into `dir`; returns the path of its index.html
+    /// (of roadmap.tex with settings.latex_only).
+    std::string write_report_to(const std::string& dir, const exmap& configuration, Location where,
+                                const ReportSettings& settings = {});
     /// Records a table simulate or inverse wrote, with the motion behind it when known.
     void record_history(const std::string& title, const Table& table, const MotionSamples* motion);
     ex quantity_expression(const Quantity& q, const Dimension& expected, const std::string& what);
