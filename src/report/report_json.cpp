@@ -10,6 +10,8 @@
 #include <string>
 #include <vector>
 
+#include <Eigen/Eigenvalues>
+
 #include "alembert/error.hpp"
 #include "alembert/report/report.hpp"
 #include "alembert/sym/evaluator.hpp"
@@ -430,6 +432,31 @@ std::string history_json(const ReportContent& c, const ReportHistory& h) {
     return o.done();
 }
 
+// the body drawn in 3D as the ellipsoid of uniform density with its mass and central inertia:
+// semi-axes a_i^2 = 5 (I_j + I_k - I_i) / (2 m) along the principal axes (a thin disk of radius
+// r: a flat ellipse of radius 1.12 r; a slender rod of length L: a needle 0.65 L either side);
+// "null" where the mass or inertia is missing or not a number
+std::string inertia_ellipsoid_json(const System& sys, const Evaluation& ev, const Body& b) {
+    const auto* rigid = dynamic_cast<const RigidBody*>(&b);
+    if (!rigid || !rigid->has_inertia() || !rigid->has_mass() || !rigid->frame()) return "null";
+    (void)sys;
+    const double m = ev.at(rigid->mass());
+    Mat3 I = rigid->inertia().components_in(*rigid->frame());
+    Eigen::Matrix3d A;
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) A(i, j) = ev.at(I(i, j));
+    if (!(m > 0) || !A.allFinite()) return "null";
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(0.5 * (A + A.transpose()));
+    const Eigen::Vector3d l = eig.eigenvalues();
+    std::vector<double> axes, directions;
+    for (int i = 0; i < 3; ++i)
+        axes.push_back(std::sqrt(std::max(0.0, 2.5 * (l.sum() - 2 * l(i)) / m)));
+    if (axes[0] + axes[1] + axes[2] <= 0) return "null";
+    for (int k = 0; k < 3; ++k)
+        for (int i = 0; i < 3; ++i) directions.push_back(eig.eigenvectors()(i, k));  // column k: axis k in B
+    return Obj().add("axes", num_arr(axes)).add("directions", num_arr(directions)).done();
+}
+
 // the positions of the placed points at each sample of the first history with a motion,
 // thinned to at most 400 frames, through one compiled tape
 std::string animation_json(const ReportContent& c, const std::vector<const Point*>& placed) {
@@ -457,7 +484,10 @@ std::string animation_json(const ReportContent& c, const std::vector<const Point
             } catch (const Error&) {
                 continue;  // a frame with no path to N
             }
-            bodies.push_back(Obj().add("name", str(b->name())).add("cm", str(b->cm().name())).done());
+            Obj body;
+            body.add("name", str(b->name())).add("cm", str(b->cm().name()));
+            body.add("ellipsoid", inertia_ellipsoid_json(sys, Evaluation(sys, c.configuration), *b));
+            bodies.push_back(body.done());
             outputs.insert(outputs.end(), axes.begin(), axes.end());
         }
         CompiledExpressions tape;

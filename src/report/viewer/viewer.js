@@ -469,8 +469,24 @@
     scene.add(grid);
     var triadN = new THREE.AxesHelper(0.25 * size);
     scene.add(triadN);
+    // the points that move, and how large the model is in one frame
+    var moving = points.map(function (n, i) {
+      return frames.some(function (f) { return Math.abs(f[3 * i] - frames[0][3 * i]) + Math.abs(f[3 * i + 1] - frames[0][3 * i + 1]) +
+                                                Math.abs(f[3 * i + 2] - frames[0][3 * i + 2]) > 1e-9 * size; });
+    });
+    var extent = 0;
+    frames.forEach(function (f) {
+      var b = new THREE.Box3();
+      points.forEach(function (n, i) { if (moving[i]) b.expandByPoint(at(f, n)); });
+      if (!b.isEmpty()) extent = Math.max(extent, b.getSize(new THREE.Vector3()).length());
+    });
+    // a body's drawn ellipsoid counts in its size (a disk is wider than its points)
+    bodies.forEach(function (b) {
+      if (b.ellipsoid && extent > 0) extent = Math.max(extent, 2 * Math.max.apply(null, b.ellipsoid.axes));
+    });
+    var modelSize = extent > 0 ? Math.min(size, 1.6 * extent) : size;
     // the sticks as thin cylinders, the points as beads, each body's axes as a small triad
-    var radius = 0.012 * size, unitY = new THREE.Vector3(0, 1, 0);
+    var radius = 0.012 * modelSize, unitY = new THREE.Vector3(0, 1, 0);
     var sticks = geo.segments.map(function (seg, k) {
       var m = new THREE.Mesh(new THREE.CylinderGeometry(radius, radius, 1, 12),
                              new THREE.MeshLambertMaterial({color: palette[k % palette.length]}));
@@ -483,19 +499,67 @@
       scene.add(m);
       return m;
     });
-    var triads = bodies.map(function () {
-      var t = new THREE.AxesHelper(0.12 * size);
+    // a body's triad as long as the body (its points' reach from its mass centre)
+    var reach = bodies.map(function (b) {
+      var c = at(frames[0], b.cm), r = 0;
+      geo.segments.forEach(function (seg) {
+        if (seg.body !== b.name) return;
+        r = Math.max(r, at(frames[0], seg.from).distanceTo(c), at(frames[0], seg.to).distanceTo(c));
+      });
+      return Math.max(r, 0.06 * (extent || size));
+    });
+    var triads = bodies.map(function (b, i) {
+      var t = new THREE.AxesHelper(reach[i]);
       t.matrixAutoUpdate = false;
       scene.add(t);
       return t;
     });
+    // each rigid body as its inertia ellipsoid (uniform density, same mass and central inertia),
+    // translucent, turning with the body: a disk shows as a disk, a rod as a needle
+    var shells = bodies.map(function (b, i) {
+      if (!b.ellipsoid) return null;
+      var e = b.ellipsoid, d = e.directions, thin = 0.02 * modelSize;
+      var m = new THREE.Mesh(new THREE.SphereGeometry(1, 32, 16),
+                             new THREE.MeshLambertMaterial({color: palette[i % palette.length], transparent: true, opacity: 0.35}));
+      m.matrixAutoUpdate = false;
+      // principal axes (columns of d, in the body's frame) scaled by the semi-axes
+      m.userData.shape = new THREE.Matrix4().set(
+        d[0] * Math.max(e.axes[0], thin), d[3] * Math.max(e.axes[1], thin), d[6] * Math.max(e.axes[2], thin), 0,
+        d[1] * Math.max(e.axes[0], thin), d[4] * Math.max(e.axes[1], thin), d[7] * Math.max(e.axes[2], thin), 0,
+        d[2] * Math.max(e.axes[0], thin), d[5] * Math.max(e.axes[1], thin), d[8] * Math.max(e.axes[2], thin), 0,
+        0, 0, 0, 1);
+      m.userData.body = b.name;
+      scene.add(m);
+      return m;
+    });
+    // where each mass centre goes: a faint trace over the whole motion
+    if (frames.length > 1)
+      bodies.forEach(function (b, i) {
+        var g = new THREE.BufferGeometry().setFromPoints(frames.map(function (f) { return at(f, b.cm); }));
+        scene.add(new THREE.Line(g, new THREE.LineBasicMaterial({color: palette[i % palette.length], transparent: true, opacity: 0.45})));
+      });
+    // a model that travels far (a rolling disk) is followed by the camera
+    var follow = null;
+    if (extent > 0 && extent < size / 3) {
+      var lab = el("label", {"class": "follow"}, parent, " follow the model");
+      follow = el("input", {type: "checkbox", checked: "checked", id: "view-follow"});
+      lab.insertBefore(follow, lab.firstChild);
+      follow.addEventListener("change", function () { show(current); });
+    }
     var camera = new THREE.PerspectiveCamera(35, W / H, size / 100, size * 100);
-    function place() {
+    function place(f) {
       var ct = Math.cos(view.turn), st = Math.sin(view.turn), ce = Math.cos(view.tilt), se = Math.sin(view.tilt);
       var d = new THREE.Vector3().addScaledVector(e1, ce * ct).addScaledVector(e2, ce * st).addScaledVector(up, se);
-      camera.position.copy(centre).addScaledVector(d, 2.2 * size);
+      var c = centre, r = size;
+      if (follow && follow.checked) {
+        var b = new THREE.Box3();
+        points.forEach(function (n, i) { if (moving[i]) b.expandByPoint(at(f, n)); });
+        c = b.getCenter(new THREE.Vector3());
+        r = modelSize;
+      }
+      camera.position.copy(c).addScaledVector(d, 2.2 * r);
       camera.up.copy(up);
-      camera.lookAt(centre);
+      camera.lookAt(c);
     }
     var current = 0;
     function show(k) {
@@ -516,8 +580,9 @@
         // columns: the body's x, y, z axes in N
         triads[i].matrix.set(f[o], f[o + 3], f[o + 6], c.x, f[o + 1], f[o + 4], f[o + 7], c.y,
                              f[o + 2], f[o + 5], f[o + 8], c.z, 0, 0, 0, 1);
+        if (shells[i]) shells[i].matrix.multiplyMatrices(triads[i].matrix, shells[i].userData.shape);
       });
-      place();
+      place(f);
       renderer.render(scene, camera);
       canvas.setAttribute("data-frame", k);
       canvas.setAttribute("data-view", view.turn.toFixed(2) + " " + view.tilt.toFixed(2));
@@ -543,6 +608,7 @@
     canvas.alembertInk = ink;
     canvas.setAttribute("data-sticks", sticks.length);
     canvas.setAttribute("data-bodies", bodies.length);
+    canvas.setAttribute("data-shells", shells.filter(function (x) { return x; }).length);
     return {show: show, canvas: canvas};
   }
 
@@ -717,6 +783,12 @@
       expect(play.textContent === "play", "pause stops it");
     }
     el("pre", {id: "alembert-exercise"}, document.body, out.join("\n"));
+    // the 3D view as drawn at the start (the browser test saves and checks it)
+    if (canvas) {
+      var slider0 = document.getElementById("time-slider");
+      if (slider0) { slider0.value = 0; slider0.dispatchEvent(new Event("input")); }
+      el("pre", {id: "alembert-3d"}, document.body, canvas.toDataURL("image/png"));
+    }
   }
   if (!failed && window.location.hash === "#exercise") {
     try { exercise(); } catch (e) { fail("exercising the controls failed: " + e); }
