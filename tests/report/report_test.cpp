@@ -229,9 +229,24 @@ TEST(Report, TheAnimationCarriesEachBodysAxesForThe3DView) {
     h.motion = {{0, 1.5707963267948966}, {0, 0}, {0, 0}};
     s.content.histories.push_back(h);
     const std::string json = render_report_json(s.content);
-    EXPECT_NE(json.find("\"bodies\":[{\"name\":\"A\",\"cm\":\"Acm\"},{\"name\":\"B\",\"cm\":\"Bcm\"},"
-                        "{\"name\":\"C\",\"cm\":\"Ccm\"}]"),
-              std::string::npos);
+    EXPECT_NE(json.find("\"bodies\":[{\"name\":\"A\",\"cm\":\"Acm\",\"ellipsoid\":{"), std::string::npos);
+    EXPECT_NE(json.find("{\"name\":\"C\",\"cm\":\"Ccm\",\"ellipsoid\":{"), std::string::npos);
+    // A's inertia is I_A about Az alone (a segment in the plane): its uniform ellipsoid is the
+    // flat ellipse a^2 = 5 (I_A + 0 - 0) / (2 m_A) in the x-y plane, no thickness along Az
+    const SymbolTable& st = s.m.system.symbols();
+    const double I_A = *st.value(st.symbol("I_A")), m_A = *st.value(st.symbol("m_A"));
+    const std::size_t shell = json.find("\"ellipsoid\":", json.find("\"bodies\":[{\"name\":\"A\""));
+    std::vector<double> axes = numbers_after(json, "\"axes\":", shell);
+    const std::vector<double> directions = numbers_after(json, "\"directions\":", shell);
+    ASSERT_EQ(axes.size(), 3u);
+    ASSERT_EQ(directions.size(), 9u);
+    std::vector<double> sorted = axes;
+    std::sort(sorted.begin(), sorted.end());
+    EXPECT_NEAR(sorted[0], 0, 1e-6);
+    EXPECT_NEAR(sorted[1], std::sqrt(2.5 * I_A / m_A), 1e-5);
+    EXPECT_NEAR(sorted[2], std::sqrt(2.5 * I_A / m_A), 1e-5);
+    const int flat = static_cast<int>(std::min_element(axes.begin(), axes.end()) - axes.begin());
+    EXPECT_NEAR(std::abs(directions[3 * flat + 2]), 1.0, 1e-6);  // the flat axis is along Az
     // gravity -g Ny: up is +Ny
     EXPECT_NE(json.find("\"up\":[0,"), std::string::npos);
     const std::size_t anim = json.find("\"animation\":");
