@@ -13,6 +13,7 @@ packages=(
   libjs-katex                  # HTML reports typeset their equations with KaTeX (inlined)
   libjs-three                  # HTML reports show motion in 3D with three.js (inlined)
   chromium                     # the tests open the HTML report in headless Chromium
+  texlive-latex-base texlive-pictures  # the tests compile the reports' LaTeX (TikZ diagrams)
 )
 
 missing=()
