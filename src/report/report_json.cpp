@@ -1,16 +1,15 @@
 // SPDX-License-Identifier: MIT
 // The report's data: model, road-map rows with their free-body diagrams, histories, motion.
+#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <array>
-#include <map>
 #include <cmath>
 #include <cstdio>
 #include <exception>
+#include <map>
 #include <set>
 #include <string>
 #include <vector>
-
-#include <Eigen/Eigenvalues>
 
 #include "alembert/error.hpp"
 #include "alembert/report/report.hpp"
@@ -229,8 +228,9 @@ std::string geometry_json(const System& sys, const Evaluation& ev,
         segs.push_back(
             Obj().add("body", str(s.body)).add("from", str(s.from)).add("to", str(s.to)).done());
     // "up" in the 3D view: against gravity, else Ny for planar models and Nz for others
-    std::vector<double> up = sys.gravity().is_zero() ? std::vector<double>{0, *planar ? 1.0 : 0, *planar ? 0 : 1.0}
-                                                      : ev.in_newtonian(-sys.gravity());
+    std::vector<double> up = sys.gravity().is_zero()
+                                 ? std::vector<double>{0, *planar ? 1.0 : 0, *planar ? 0 : 1.0}
+                                 : ev.in_newtonian(-sys.gravity());
     Obj o;
     o.add("planar", *planar ? "true" : "false").add("points", arr(pts)).add("segments", arr(segs));
     o.add("up", num_arr(up));
@@ -246,14 +246,16 @@ struct DiagramLoad {
 };
 
 /// The loads of one free-body diagram, as the viewer and the TikZ picture draw them.
-std::vector<DiagramLoad> diagram_loads(const System& sys, const Evaluation& ev, const RoadmapRow& r) {
+std::vector<DiagramLoad> diagram_loads(const System& sys, const Evaluation& ev,
+                                       const RoadmapRow& r) {
     std::vector<DiagramLoad> loads;
     const BodySet& S = r.system;
     for (const Load& l : sys.loads()) {
         if (!member(S, l.on) || member(S, l.from)) continue;
         std::string label = l.label.empty() ? (l.kind == LoadKind::force ? "F" : "T") : l.label;
         if (l.kind == LoadKind::force)
-            loads.push_back({"force", label, l.point, ev.in_newtonian(l.vector), has_unknown(sys, l.vector)});
+            loads.push_back(
+                {"force", label, l.point, ev.in_newtonian(l.vector), has_unknown(sys, l.vector)});
         else
             loads.push_back({"torque", label, torque_point(sys, l.on), ev.in_newtonian(l.vector),
                              has_unknown(sys, l.vector)});
@@ -261,7 +263,8 @@ std::vector<DiagramLoad> diagram_loads(const System& sys, const Evaluation& ev, 
     if (!sys.gravity().is_zero())
         for (const Body* b : S)
             if (b->has_mass())
-                loads.push_back({"gravity", b->name() + " g", &b->cm(), ev.in_newtonian(sys.gravity()), false});
+                loads.push_back(
+                    {"gravity", b->name() + " g", &b->cm(), ev.in_newtonian(sys.gravity()), false});
     for (const Point* p : sys.points()) {
         if (!member(S, p->owner()) || !p->located_from()) continue;
         const Point* from = p->located_from();
@@ -401,7 +404,8 @@ std::string row_json(const System& sys, const Evaluation& ev, const RoadmapRow& 
 constexpr std::size_t kMaxPlotRows = 2000;
 
 bool plotted(const ReportContent& c, const std::string& name) {
-    return c.plotted.empty() || std::find(c.plotted.begin(), c.plotted.end(), name) != c.plotted.end();
+    return c.plotted.empty() ||
+           std::find(c.plotted.begin(), c.plotted.end(), name) != c.plotted.end();
 }
 
 std::string history_json(const ReportContent& c, const ReportHistory& h) {
@@ -453,7 +457,8 @@ std::string inertia_ellipsoid_json(const System& sys, const Evaluation& ev, cons
         axes.push_back(std::sqrt(std::max(0.0, 2.5 * (l.sum() - 2 * l(i)) / m)));
     if (axes[0] + axes[1] + axes[2] <= 0) return "null";
     for (int k = 0; k < 3; ++k)
-        for (int i = 0; i < 3; ++i) directions.push_back(eig.eigenvectors()(i, k));  // column k: axis k in B
+        for (int i = 0; i < 3; ++i)
+            directions.push_back(eig.eigenvectors()(i, k));  // column k: axis k in B
     return Obj().add("axes", num_arr(axes)).add("directions", num_arr(directions)).done();
 }
 
@@ -486,7 +491,8 @@ std::string animation_json(const ReportContent& c, const std::vector<const Point
             }
             Obj body;
             body.add("name", str(b->name())).add("cm", str(b->cm().name()));
-            body.add("ellipsoid", inertia_ellipsoid_json(sys, Evaluation(sys, c.configuration), *b));
+            body.add("ellipsoid",
+                     inertia_ellipsoid_json(sys, Evaluation(sys, c.configuration), *b));
             bodies.push_back(body.done());
             outputs.insert(outputs.end(), axes.begin(), axes.end());
         }
@@ -571,7 +577,6 @@ std::string set_words(const BodySet& S) {
     return s + "\\}";
 }
 
-
 // ---- the free-body diagram in TikZ ---------------------------------------------------------
 
 std::string cm(double v) {
@@ -590,8 +595,9 @@ std::array<double, 2> project(const std::vector<double>& p, bool planar) {
     return {x, ce * p[1] + se * z};
 }
 
-std::string tikz_diagram(const System& sys, const Evaluation& ev, const std::vector<const Point*>& placed,
-                         bool planar, const RoadmapRow& r) {
+std::string tikz_diagram(const System& sys, const Evaluation& ev,
+                         const std::vector<const Point*>& placed, bool planar,
+                         const RoadmapRow& r) {
     std::map<const Point*, std::array<double, 2>> at;
     std::vector<const Point*> order;  // the model's order, for the same output run to run
     double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
@@ -637,8 +643,9 @@ std::string tikz_diagram(const System& sys, const Evaluation& ev, const std::vec
         auto it = at.find(l.at);
         if (it == at.end()) continue;
         const std::array<double, 2> p = it->second;
-        const std::string colour =
-            l.kind == "gravity" ? "green!50!black" : l.unknown ? "red!75!black" : "blue!70!black";
+        const std::string colour = l.kind == "gravity" ? "green!50!black"
+                                   : l.unknown         ? "red!75!black"
+                                                       : "blue!70!black";
         const std::string label = "{" + tex_text(l.label) + "}";
         t += "% load: " + tex_text(l.label) + "\n";
         double ux = 0, uy = 0;
@@ -647,30 +654,36 @@ std::string tikz_diagram(const System& sys, const Evaluation& ev, const std::vec
             if (!planar) axes.push_back({0, 0, 1});
             for (const auto& e : axes)
                 if (unit(e, &ux, &uy))
-                    t += "\\draw[->, " + colour + "] " + xy(p) + " -- ++(" + cm(0.7 * arrow * ux) + "," +
-                         cm(0.7 * arrow * uy) + ");\n";
+                    t += "\\draw[->, " + colour + "] " + xy(p) + " -- ++(" + cm(0.7 * arrow * ux) +
+                         "," + cm(0.7 * arrow * uy) + ");\n";
             t += "\\node[" + colour + ", below right] at " + xy(p) + " " + label + ";\n";
         } else if (l.kind == "torque" && planar) {
             // an arc about the point, counterclockwise for a +z torque
             const bool ccw = l.vector.size() < 3 || l.vector[2] >= 0;
             const double a0 = ccw ? -1.0 : 2.6;
-            t += "\\draw[->, " + colour + "] " + shifted(p, 0.45 * std::cos(a0), 0.45 * std::sin(a0)) +
-                 " arc[start angle=" + (ccw ? "-57" : "149") + ", end angle=" + (ccw ? "149" : "-57") +
-                 ", radius=0.45] node[above] " + label + ";\n";
+            t += "\\draw[->, " + colour + "] " +
+                 shifted(p, 0.45 * std::cos(a0), 0.45 * std::sin(a0)) +
+                 " arc[start angle=" + (ccw ? "-57" : "149") +
+                 ", end angle=" + (ccw ? "149" : "-57") + ", radius=0.45] node[above] " + label +
+                 ";\n";
         } else if (unit(l.vector, &ux, &uy)) {
             const std::string tip = "++(" + cm(arrow * ux) + "," + cm(arrow * uy) + ")";
             if (l.kind == "gravity")
-                t += "\\draw[->, " + colour + "] " + xy(p) + " -- " + tip + " node[right] " + label + ";\n";
+                t += "\\draw[->, " + colour + "] " + xy(p) + " -- " + tip + " node[right] " +
+                     label + ";\n";
             else if (l.kind == "torque")  // in space: a double-headed arrow along the torque
-                t += "\\draw[->>, " + colour + "] " + xy(p) + " -- " + tip + " node[right] " + label + ";\n";
+                t += "\\draw[->>, " + colour + "] " + xy(p) + " -- " + tip + " node[right] " +
+                     label + ";\n";
             else
-                t += "\\draw[->, " + colour + "] " + shifted(p, -arrow * ux, -arrow * uy) + " node[above] " +
-                     label + " -- " + xy(p) + ";\n";
+                t += "\\draw[->, " + colour + "] " + shifted(p, -arrow * ux, -arrow * uy) +
+                     " node[above] " + label + " -- " + xy(p) + ";\n";
         } else {
-            t += "\\draw[" + colour + "] " + xy(p) + " circle (0.2) node[above right] " + label + ";\n";
+            t += "\\draw[" + colour + "] " + xy(p) + " circle (0.2) node[above right] " + label +
+                 ";\n";
         }
     }
-    if (r.about && at.count(r.about)) t += "\\draw " + xy(at[r.about]) + " circle (2.5pt) node[below left] {$O$};\n";
+    if (r.about && at.count(r.about))
+        t += "\\draw " + xy(at[r.about]) + " circle (2.5pt) node[below left] {$O$};\n";
     double ux = 0, uy = 0;
     const std::vector<double> u = ev.in_newtonian(r.direction);
     const bool in_plane = unit(u, &ux, &uy) && (!planar || std::hypot(u[0], u[1]) > 0.2);
@@ -678,7 +691,8 @@ std::string tikz_diagram(const System& sys, const Evaluation& ev, const std::vec
         t += "\\draw[->, violet] (-0.8,-0.8) -- ++(" + cm(0.8 * ux) + "," + cm(0.8 * uy) +
              ") node[right] {$\\hat u$};\n";
     else
-        t += "\\draw[violet] (-0.8,-0.8) circle (0.12) node[right=3pt] {$\\hat u$ out of the page};\n"
+        t += "\\draw[violet] (-0.8,-0.8) circle (0.12) node[right=3pt] {$\\hat u$ out of the "
+             "page};\n"
              "\\fill[violet] (-0.8,-0.8) circle (0.03);\n";
     t += "\\end{tikzpicture}\n";
     return t;
@@ -725,7 +739,8 @@ std::string render_report_latex(const ReportContent& c) {
         if (r.motion == Motion::constraint) continue;
         t += "\\paragraph{$S = " + set_words(r.system) + "$ for $" + to_latex(r.variable) + "$.}";
         for (std::size_t i = 0; i < r.fbd.size(); ++i) t += (i ? "; " : " ") + tex_text(r.fbd[i]);
-        t += ".\n\n\\begin{center}\n" + tikz_diagram(sys, ev, placed, planar, r) + "\\end{center}\n\n";
+        t += ".\n\n\\begin{center}\n" + tikz_diagram(sys, ev, placed, planar, r) +
+             "\\end{center}\n\n";
     }
     t += "\\subsection*{Equations}\n";
     for (const RoadmapRow& r : c.rows) {
@@ -752,18 +767,21 @@ std::vector<ReportCheck> calc_report_checks(const ReportContent& c) {
                 double scale = 0, change = 0;
                 for (double e : v) scale = std::max(scale, std::abs(e));
                 for (double e : v) change = std::max(change, std::abs(e - v.front()));
-                ReportCheck r{"energy", "energy", h.title, scale > 0 ? change / scale : change, "", false, ""};
+                ReportCheck r{"energy", "energy", h.title, scale > 0 ? change / scale : change,
+                              "",       false,    ""};
                 r.passed = r.value <= 1e-6;
                 char buf[200];
                 std::snprintf(buf, sizeof buf,
-                              "energy %.6g %s at the start; its largest change is %.3g of its largest magnitude",
+                              "energy %.6g %s at the start; its largest change is %.3g of its "
+                              "largest magnitude",
                               v.front(), t.units[k].empty() ? "J" : t.units[k].c_str(), r.value);
                 r.summary = buf;
                 out.push_back(r);
             } else if (t.names[k].rfind("drift_", 0) == 0) {
                 double worst = 0;
                 for (double e : v) worst = std::max(worst, std::abs(e));
-                ReportCheck r{"constraint", t.names[k], h.title, worst, t.units[k], worst <= 1e-6, ""};
+                ReportCheck r{"constraint", t.names[k],    h.title, worst,
+                              t.units[k],   worst <= 1e-6, ""};
                 char buf[200];
                 std::snprintf(buf, sizeof buf, "constraint %s: largest residual %.3g%s%s",
                               t.names[k].substr(6).c_str(), worst, t.units[k].empty() ? "" : " ",
@@ -777,21 +795,24 @@ std::vector<ReportCheck> calc_report_checks(const ReportContent& c) {
                        const std::string& what) {
         ReportCheck r{kind, name, "random states", d, "", d <= 1e-8, ""};
         char buf[240];
-        std::snprintf(buf, sizeof buf, "%s: largest scaled difference %.3g at %d random states", what.c_str(),
-                      d, states);
+        std::snprintf(buf, sizeof buf, "%s: largest scaled difference %.3g at %d random states",
+                      what.c_str(), d, states);
         r.summary = buf;
         out.push_back(r);
     };
     if (c.methods)
-        for (std::size_t k = 0; k < c.methods->methods.size() && k < c.methods->differences.size(); ++k)
+        for (std::size_t k = 0; k < c.methods->methods.size() && k < c.methods->differences.size();
+             ++k)
             if (k > 0 || c.methods->methods.size() == 1)
-                compare("methods", c.methods->methods[k], c.methods->differences[k], c.methods->states,
-                        c.methods->methods[k] + " vs the road-map (q'')");
+                compare("methods", c.methods->methods[k], c.methods->differences[k],
+                        c.methods->states, c.methods->methods[k] + " vs the road-map (q'')");
     if (c.reactions)
-        for (std::size_t k = 0; k < c.reactions->measures.size() && k < c.reactions->differences.size(); ++k)
-            compare("reactions", to_string(c.reactions->measures[k]), c.reactions->differences[k],
-                    c.reactions->states,
-                    "reaction " + to_string(c.reactions->measures[k]) + ": road-map vs Newton-Euler");
+        for (std::size_t k = 0;
+             k < c.reactions->measures.size() && k < c.reactions->differences.size(); ++k)
+            compare(
+                "reactions", to_string(c.reactions->measures[k]), c.reactions->differences[k],
+                c.reactions->states,
+                "reaction " + to_string(c.reactions->measures[k]) + ": road-map vs Newton-Euler");
     return out;
 }
 

@@ -107,7 +107,8 @@ TEST(Report, HistoriesArePlottedAndTheirMotionAnimated) {
     s.content.histories.push_back(h);
     const std::string json = render_report_json(s.content);
     EXPECT_NE(json.find("\"title\":\"inverse "
-                        "dynamics\",\"rows\":3,\"plotted_rows\":3,\"time\":[0,0.5,1],\"time_unit\":\"s\",\"series\":[{"
+                        "dynamics\",\"rows\":3,\"plotted_rows\":3,\"time\":[0,0.5,1],\"time_unit\":"
+                        "\"s\",\"series\":[{"
                         "\"name\":\"T_A\",\"unit\":\"N*m\","
                         "\"values\":[1,2,3]}]"),
               std::string::npos);
@@ -117,7 +118,8 @@ TEST(Report, HistoriesArePlottedAndTheirMotionAnimated) {
 }
 
 // the values of the JSON array after `key` (from `from` on), as numbers
-std::vector<double> numbers_after(const std::string& json, const std::string& key, std::size_t from = 0) {
+std::vector<double> numbers_after(const std::string& json, const std::string& key,
+                                  std::size_t from = 0) {
     std::size_t at = json.find(key, from);
     EXPECT_NE(at, std::string::npos) << key;
     if (at == std::string::npos) return {};
@@ -147,7 +149,8 @@ TEST(Report, LongHistoriesAreThinnedForPlottingKeepingTheEndsAndTheExtremes) {
     ASSERT_NE(at, std::string::npos);
     const std::vector<double> t = numbers_after(json, "\"time\":", at);
     const std::vector<double> x = numbers_after(json, "\"values\":", at);
-    const std::vector<double> y = numbers_after(json, "\"values\":", json.find("\"name\":\"y\"", at));
+    const std::vector<double> y =
+        numbers_after(json, "\"values\":", json.find("\"name\":\"y\"", at));
     ASSERT_EQ(t.size(), x.size());
     ASSERT_EQ(t.size(), y.size());
     EXPECT_LE(t.size(), 2002u);
@@ -155,7 +158,7 @@ TEST(Report, LongHistoriesAreThinnedForPlottingKeepingTheEndsAndTheExtremes) {
     EXPECT_EQ(t.front(), 0);
     EXPECT_EQ(t.back(), 100);
     EXPECT_TRUE(std::is_sorted(t.begin(), t.end()));
-    EXPECT_EQ(*std::max_element(y.begin(), y.end()), 5.0);                // the one-row spike
+    EXPECT_EQ(*std::max_element(y.begin(), y.end()), 5.0);  // the one-row spike
     EXPECT_NEAR(t[std::max_element(y.begin(), y.end()) - y.begin()], 61.234, 1e-9);
     // x = sin(t/10) over 0..100 s: its greatest value 1 and least -1 are kept (to 6 digits)
     EXPECT_NEAR(*std::max_element(x.begin(), x.end()), 1.0, 1e-6);
@@ -191,7 +194,7 @@ TEST(Report, ChecksMeasureEnergyDriftAndTheMethodsCompared) {
     h.table.add_column("drift_loop", "m");
     h.table.columns[0] = {0, 1, 2, 3};
     h.table.columns[1] = {10, 10 + 2e-9, 10 - 4e-9, 10};  // changes by 4e-10 of its largest
-    h.table.columns[2] = {0, 3e-7, -2e-3, 0};              // a drift of 2 mm fails the check
+    h.table.columns[2] = {0, 3e-7, -2e-3, 0};             // a drift of 2 mm fails the check
     s.content.histories.push_back(h);
     s.content.methods = compare_methods(s.m.system, s.m.q);
     std::vector<ReportCheck> checks = calc_report_checks(s.content);
@@ -214,8 +217,9 @@ TEST(Report, ChecksMeasureEnergyDriftAndTheMethodsCompared) {
     ASSERT_GE(s.content.methods->methods.size(), 4u);
     EXPECT_EQ(methods, s.content.methods->methods.size() - 1);
     const std::string json = render_report_json(s.content);
-    EXPECT_NE(json.find("\"checks\":[{\"kind\":\"energy\",\"name\":\"energy\",\"source\":\"simulation\""),
-              std::string::npos);
+    EXPECT_NE(
+        json.find("\"checks\":[{\"kind\":\"energy\",\"name\":\"energy\",\"source\":\"simulation\""),
+        std::string::npos);
 }
 
 TEST(Report, TheAnimationCarriesEachBodysAxesForThe3DView) {
@@ -229,7 +233,8 @@ TEST(Report, TheAnimationCarriesEachBodysAxesForThe3DView) {
     h.motion = {{0, 1.5707963267948966}, {0, 0}, {0, 0}};
     s.content.histories.push_back(h);
     const std::string json = render_report_json(s.content);
-    EXPECT_NE(json.find("\"bodies\":[{\"name\":\"A\",\"cm\":\"Acm\",\"ellipsoid\":{"), std::string::npos);
+    EXPECT_NE(json.find("\"bodies\":[{\"name\":\"A\",\"cm\":\"Acm\",\"ellipsoid\":{"),
+              std::string::npos);
     EXPECT_NE(json.find("{\"name\":\"C\",\"cm\":\"Ccm\",\"ellipsoid\":{"), std::string::npos);
     // A's inertia is I_A about Az alone (a segment in the plane): its uniform ellipsoid is the
     // flat ellipse a^2 = 5 (I_A + 0 - 0) / (2 m_A) in the x-y plane, no thickness along Az
@@ -266,7 +271,8 @@ TEST(Report, ThreeJsIsInlinedOnlyWhereThereIsA3DView) {
     fs::create_directories(dir);
     std::ofstream(dir / "three.min.js") << "var THREE_MARKER = 1;";
     // planar and no motion: no 3D view, no three.js
-    EXPECT_EQ(render_report_html(s.content, "", dir.string()).find("THREE_MARKER"), std::string::npos);
+    EXPECT_EQ(render_report_html(s.content, "", dir.string()).find("THREE_MARKER"),
+              std::string::npos);
     ReportHistory h;
     h.title = "simulation";
     h.table.add_column("t", "s");
@@ -274,7 +280,8 @@ TEST(Report, ThreeJsIsInlinedOnlyWhereThereIsA3DView) {
     h.coordinates = s.m.q;
     h.motion = {{0, 1}, {0, 0}, {0, 0}};
     s.content.histories.push_back(h);
-    EXPECT_NE(render_report_html(s.content, "", dir.string()).find("THREE_MARKER"), std::string::npos);
+    EXPECT_NE(render_report_html(s.content, "", dir.string()).find("THREE_MARKER"),
+              std::string::npos);
     fs::remove_all(dir);
 }
 
@@ -372,8 +379,9 @@ TEST(ReportLatex, TheRoadmapTableTheLoadsAndTheEquationsForAPaper) {
         std::string::npos)
         << tex;
     EXPECT_NE(
-        tex.find("\\paragraph{$S = \\{C\\}$ for $T_{C}$.} T\\_C on C from B (unknown); gravity at Ccm; "
-                 "joint force at C\\_o from B (unknown)."),
+        tex.find(
+            "\\paragraph{$S = \\{C\\}$ for $T_{C}$.} T\\_C on C from B (unknown); gravity at Ccm; "
+            "joint force at C\\_o from B (unknown)."),
         std::string::npos);
     // one TikZ picture per row, each with an arrow per load on S: {A,B,C}: T_A, 3 weights, the
     // ground's force at A_o; {B,C}: T_B, 2 weights, A's force; {C}: T_C, its weight, B's force
