@@ -75,6 +75,7 @@ struct InverseRequest {
     std::string unitless_unit{};  ///< how to read coordinate columns without a unit ("": refuse non-SI)
     bool compiled = false;
     std::string dir{};
+    std::vector<Word> plotted{};  ///< `plot` names; `plot none` is the single word none
 };
 
 /// Code generation: from a `codegen` statement or `alembert codegen`.

@@ -120,6 +120,10 @@ PlotResult plot_csv(const Table& table, const std::string& csv_path, const std::
     }
 
     PlotResult result;
+    if (options.skip) {
+        result.message = "not asked for (plot none)";
+        return result;
+    }
     if (!gnuplot_available()) {
         result.message = "plot not drawn: gnuplot ('" + gnuplot_program() +
                          "') was not found; install it (Debian: apt install gnuplot-nox) or set "
