@@ -332,6 +332,29 @@ def examples(cli, source, work, browser):
         else:
             check(False, "%s: a screenshot was taken" % name)
 
+
+def options(cli, source, work, browser):
+    """alembert report's options: --plot chooses the series, --no-plots drops them, --check
+    adds the methods and the joint reactions compared, each check passing."""
+    model = os.path.join(source, "examples", "sit_to_stand", "model.alb")
+    for args, series, checked in ((["--plot", "T_A,T_B", "--check"], 2, True), (["--no-plots"], 0, False)):
+        out = os.path.join(work, "options" + "".join(a.strip("-").replace(",", "_") for a in args))
+        shutil.rmtree(out, ignore_errors=True)
+        r = subprocess.run([cli, "report", model, "--out", out] + args, capture_output=True, text=True, timeout=600)
+        check(r.returncode == 0, "report %s exits 0 (stderr: %s)" % (" ".join(args), r.stderr.strip()[:300]))
+        dom, console = open_page(browser, "file://" + os.path.abspath(os.path.join(out, "index.html")))
+        check(dom.status == "ready" and not dom.errors.strip() and not console,
+              "report %s: the viewer finished without errors" % " ".join(args))
+        check(dom.series == series and dom.plots == (1 if series else 0),
+              "report %s: %d series plotted (%d)" % (" ".join(args), series, dom.series))
+        kinds = [k for k, _ in dom.checks]
+        if checked:
+            check(kinds.count("methods") >= 3 and kinds.count("reactions") == 6 and all(ok for _, ok in dom.checks),
+                  "report %s: the methods and the six reaction measures compared, all passing (%s)"
+                  % (" ".join(args), dom.checks))
+        else:
+            check("methods" not in kinds, "report %s: no methods compared unless asked" % " ".join(args))
+
 def spatial(cli, source, work, browser):
     """A spatial model: drawn in a projection the user turns, every equation typeset."""
     out = os.path.join(work, "spatial")
@@ -444,6 +467,7 @@ def main():
         dark = sum(1 for g in gray if g < 128) / len(gray)
         check(w == 1280 and var > 100 and 0.002 < dark < 0.5,
               "the screenshot is not blank (%dx%d, variance %.0f, %.1f%% dark)" % (w, h, var, 100 * dark))
+    options(cli, source, work, browser)
     spatial(cli, source, work, browser)
     three_d(cli, source, work, browser)
     examples(cli, source, work, browser)
