@@ -316,6 +316,8 @@ def examples(cli, source, work, browser):
         series = sum(len(h["series"]) for h in data["histories"])
         check(dom.plots == len(data["histories"]) and dom.series == series,
               "%s: a plot per history with its series (%d plots, %d series)" % (name, dom.plots, dom.series))
+        if not data["geometry"]["planar"]:
+            check(dom.canvas is not None, "%s: a spatial model is shown in the 3D view" % name)
         if data["animation"]:
             check(dom.anim == 1 and dom.play and dom.slider and (dom.canvas is not None or data["geometry"]["planar"]),
                   "%s: the animation with play and the time slider" % name)
