@@ -12,7 +12,9 @@ packages=(
   clang libclang-rt-14-dev  # the sanitizer pass builds the fuzz target (docs/fuzzing.md)
   python3-numpy python3-scipy  # the tests run the generated Python
   libjs-katex                  # HTML reports typeset their equations with KaTeX (inlined)
+  libjs-three                  # HTML reports show motion in 3D with three.js (inlined)
   chromium                     # the tests open the HTML report in headless Chromium
+  texlive-latex-base texlive-pictures  # the tests compile the reports' LaTeX (TikZ diagrams)
 )
 
 missing=()

@@ -207,6 +207,8 @@ int print_roadmap(const RoadmapOptions& o) {
 struct ReportOptions {
     std::string file;
     std::string out;
+    alembert::lang::ReportSettings settings;
+    bool no_plots = false;
 };
 
 int write_report_command(const ReportOptions& o) {
@@ -216,8 +218,13 @@ int write_report_command(const ReportOptions& o) {
     Interpreter interp(discard, std::cerr, false);
     interp.set_output_dir(o.out);
     RunStatus s = interp.run(text, display_name(o.file));
-    if (s == RunStatus::ok) s = interp.write_report(o.out);
-    if (s == RunStatus::ok) std::cout << "wrote " << (std::filesystem::path(o.out) / "index.html").string() << "\n";
+    alembert::lang::ReportSettings settings = o.settings;
+    settings.plots = !o.no_plots;
+    if (s == RunStatus::ok) s = interp.write_report(o.out, settings);
+    if (s == RunStatus::ok)
+        std::cout << "wrote "
+                  << (std::filesystem::path(o.out) / (settings.latex_only ? "roadmap.tex" : "index.html")).string()
+                  << "\n";
     return exit_status(s);
 }
 
@@ -451,6 +458,13 @@ int main(int argc, char** argv) {
              c.add_option("MODEL", report_opts.file, "the script; '-' reads standard input")->required();
              c.add_option("--out", report_opts.out,
                           "directory for index.html (and the files of simulate and inverse)")->required();
+             c.add_flag("--latex", report_opts.settings.latex_only,
+                        "write only roadmap.tex: the road-map table, TikZ free-body diagrams and the equations");
+             c.add_flag("--check", report_opts.settings.check,
+                        "compare the road-map with Kane, Lagrange and Newton-Euler (and the joint reactions) in the checks");
+             c.add_flag("--no-plots", report_opts.no_plots, "leave the time histories unplotted");
+             c.add_option("--plot", report_opts.settings.plotted,
+                          "the columns to plot (repeat or separate by commas; default: all)")->delimiter(',');
          },
          [&] { return write_report_command(report_opts); }},
     };

@@ -3,6 +3,7 @@
 #include "alembert/eom/roadmap.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <sstream>
 
 #include "alembert/eom/inertia_forces.hpp"
@@ -229,7 +230,9 @@ ex readable(const System& sys, const ex& e) {
     return acc.empty() ? simplify(e) : collect_in(simplify(e), acc);
 }
 
-std::string json_escape(const std::string& s) {
+}  // namespace
+
+std::string json_escape(const std::string& s, bool for_script) {
     std::string o;
     for (char ch : s) {
         switch (ch) {
@@ -237,6 +240,9 @@ std::string json_escape(const std::string& s) {
             case '\\': o += "\\\\"; break;
             case '\n': o += "\\n"; break;
             case '\t': o += "\\t"; break;
+            case '<': o += for_script ? "\\u003c" : "<"; break;
+            case '>': o += for_script ? "\\u003e" : ">"; break;
+            case '&': o += for_script ? "\\u0026" : "&"; break;
             default:
                 if (static_cast<unsigned char>(ch) < 0x20) {
                     char buf[8];
@@ -249,8 +255,6 @@ std::string json_escape(const std::string& s) {
     }
     return o;
 }
-
-}  // namespace
 
 std::string format_roadmap_table(const System& sys, const std::vector<RoadmapRow>& rows) {
     const std::vector<std::string> head{"variable", "translate/rotate", "direction",

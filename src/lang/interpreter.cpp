@@ -114,9 +114,9 @@ RunStatus Interpreter::run_codegen(const std::string& language, const std::strin
     });
 }
 
-RunStatus Interpreter::write_report(const std::string& dir) {
+RunStatus Interpreter::write_report(const std::string& dir, const ReportSettings& settings) {
     Impl& m = *impl_;
-    return run_command(m, m.script_file, [&] { (void)m.write_report_to(dir, {}, {1, 1}); });
+    return run_command(m, m.script_file, [&] { (void)m.write_report_to(dir, {}, {1, 1}, settings); });
 }
 
 RunStatus Interpreter::run(std::string_view source, const std::string& file, int first_line) {

@@ -92,6 +92,7 @@ struct InverseRequest {
     std::string unitless_unit{};  ///< how to read coordinate columns without a unit ("": refuse non-SI)
     bool compiled = false;
     std::string dir{};
+    std::vector<Word> plotted{};  ///< `plot` names; `plot none` is the single word none
 };
 
 /// Code generation: from a `codegen` statement or `alembert codegen`.
@@ -160,8 +161,12 @@ struct Interpreter::Impl {
     void run_codegen(const CodegenRequest& r, Location where);
     // interpreter_report.cpp
     void report(const Statement& s);
-    /// Writes the report of the model so far into `dir`; returns the path of its index.html.
-    std::string write_report_to(const std::string& dir, const exmap& configuration, Location where);
+    void latex(const Statement& s);
+    exmap report_configuration(const Statement& s);
+    /// Writes the report of the model so far into `dir`; returns the path of its index.html
+    /// (of roadmap.tex with settings.latex_only).
+    std::string write_report_to(const std::string& dir, const exmap& configuration, Location where,
+                                const ReportSettings& settings = {});
     /// Records a table simulate or inverse wrote, with the motion behind it when known.
     void record_history(const std::string& title, const Table& table, const MotionSamples* motion);
     ex quantity_expression(const Quantity& q, const Dimension& expected, const std::string& what);

@@ -73,6 +73,28 @@ std::string format_table(const Table& t, int digits, std::size_t max_rows = 11) 
     return out.str();
 }
 
+// the `plot` clause of simulate and inverse: `plot none`, or columns of the table (its first,
+// the time, excepted)
+PlotOptions plot_options_of(const Statement& s, const std::vector<std::string>& columns) {
+    PlotOptions o;
+    if (!s.lists.count("plot")) return o;
+    const std::vector<Word>& plot = s.lists.at("plot");
+    if (plot.size() == 1 && plot.front().text == "none") {
+        o.skip = true;
+        return o;
+    }
+    for (const Word& w : plot) {
+        if (std::find(columns.begin() + (columns.empty() ? 0 : 1), columns.end(), w.text) == columns.end()) {
+            std::string list;
+            for (std::size_t k = 1; k < columns.size(); ++k) list += (k > 1 ? ", " : "") + columns[k];
+            throw ScriptError(w.location, "'" + w.text + "' is not a column of the table",
+                              "plot some of: " + list + " (or 'plot none')");
+        }
+        o.y.push_back(w.text);
+    }
+    return o;
+}
+
 std::string file_list(const PlotResult& plot, const std::string& csv) {
     namespace fs = std::filesystem;
     std::string out = fs::path(csv).filename().string();
@@ -395,7 +417,8 @@ void Interpreter::Impl::simulate(const Statement& s) {
     SimulationResult res = guard(s.location, [&] { return run_simulation(sys, r); },
                                  "check the initial values and the loads; a singular mass matrix "
                                  "means the coordinates do not fix the model's configuration");
-    PlotResult plot = guard(s.location, [&] { return write_table_and_plot(res.table, dir, "simulation"); });
+    PlotOptions plot_options = plot_options_of(s, res.table.names);
+    PlotResult plot = guard(s.location, [&] { return write_table_and_plot(res.table, dir, "simulation", plot_options); });
     record_history("simulation", res.table, nullptr);
     std::ostringstream out;
     out << "simulated t = " << transcript.number(r.options.t_initial) << " to " << transcript.number(res.t_end) << " s";
@@ -464,6 +487,7 @@ void Interpreter::Impl::inverse(const Statement& s) {
     }
     r.compiled = s.flag("compiled");
     r.dir = output_path(s);
+    if (s.lists.count("plot")) r.plotted = s.lists.at("plot");
     run_inverse(r, s.location);
 }
 
@@ -476,6 +500,15 @@ void Interpreter::Impl::run_inverse(const InverseRequest& r, Location where) {
     InverseDynamics id = guard(where, [&] { return compile_inverse_dynamics(sys, q, r.loads, script_name, make); },
                                "list as many load measures as the model has coordinates, one acting at each joint");
     InverseAnalysisOptions opts;
+    {
+        Statement plot;  // the `plot` clause against the load measures' columns
+        if (!r.plotted.empty()) plot.lists["plot"] = r.plotted;
+        std::vector<std::string> columns{"t"};
+        for (const ex& x : r.loads) columns.push_back(table.name(x));
+        PlotOptions p = plot_options_of(plot, columns);
+        opts.plotted = p.y;
+        opts.plot = !p.skip;
+    }
     opts.filter.cutoff_hz = r.cutoff_hz;
     opts.filter.unitless_unit = r.unitless_unit;
     // the units the coordinates are declared in, against which a motion table's columns are read
@@ -746,6 +779,7 @@ void parse_run(StatementParser& p, Statement& s) {
             if (p.accept_word("cutoff")) s.quantities["cutoff"] = p.quantity();
         } else if (k == "codegen" && p.accept_word("name")) s.words["name"] = p.name("an identifier for the files");
         else if (k != "codegen" && p.accept_word("compiled")) s.flags["compiled"] = true;
+        else if (k != "codegen" && p.accept_word("plot")) s.lists["plot"] = p.name_list("a column to plot, or none");
         else if (p.accept_word("to")) s.words["to"] = p.text("the output directory");
         else p.fail_expected(k == "simulate" ? "'compiled' or 'to'"
                              : k == "inverse" ? "'for', 'from', 'compiled' or 'to'"
@@ -756,12 +790,15 @@ void parse_run(StatementParser& p, Statement& s) {
                           "write inverse for T_A, T_B");
 }
 
-// report [at q = value, ...] [to "dir"]
+// report [at q = value, ...] [plot names | plot none] [check] [to "dir"]; latex [at ...] [to "dir"]
 void parse_report(StatementParser& p, Statement& s) {
+    const bool report = s.keyword == "report";
     while (!p.at_end()) {
         if (p.accept_word("at")) s.bindings["at"] = p.bindings("a coordinate");
+        else if (report && p.accept_word("plot")) s.lists["plot"] = p.name_list("a column to plot, or none");
+        else if (report && p.accept_word("check")) s.flags["check"] = true;
         else if (p.accept_word("to")) s.words["to"] = p.text("the output directory");
-        else p.fail_expected("'at' or 'to'");
+        else p.fail_expected(report ? "'at', 'plot', 'check' or 'to'" : "'at' or 'to'");
     }
 }
 
@@ -824,10 +861,10 @@ std::vector<StatementSpec> number_statements() {
          .run = [](M& m, const Statement& s) { m.add_event(s); }},
         {.keyword = "simulate", .family = family,
          .help = "integrates the equations of motion; writes a table and its plots",
-         .forms = {{"`simulate` [`compiled`] [`to` *\"dir\"*]",
+         .forms = {{"`simulate` [`compiled`] [`plot` *columns* \\| `plot none`] [`to` *\"dir\"*]",
                     "simulate to \"fall\"",
-                    "`run_simulation`, then `write_table_and_plot(..., \"simulation\")`: `simulation.csv`, `.png`, `.svg`; prints a table of about ten rows, the energy check (conservative models: an `energy` column) and the drift of each constraint"}},
-         .clauses = {"compiled", "to"}, .parse = parse_run,
+                    "`run_simulation`, then `write_table_and_plot(..., \"simulation\")`: `simulation.csv`, `.png`, `.svg`; prints a table of about ten rows, the energy check (conservative models: an `energy` column) and the drift of each constraint; `plot` chooses the columns drawn, `plot none` draws none (runs over 4000 rows are drawn from rows keeping each column's extremes)"}},
+         .clauses = {"compiled", "plot", "to"}, .parse = parse_run,
          .run = [](M& m, const Statement& s) { m.simulate(s); }},
         {.keyword = "motion", .family = family,
          .help = "prescribes coordinates as formulas of time, for inverse",
@@ -837,20 +874,26 @@ std::vector<StatementSpec> number_statements() {
          .parse = parse_motion, .run = [](M& m, const Statement& s) { m.set_prescribed_motion(s); }},
         {.keyword = "inverse", .family = family,
          .help = "inverse dynamics over the prescribed motion or a motion table",
-         .forms = {{"`inverse for` *loads* [`to` *\"dir\"*]",
+         .forms = {{"`inverse for` *loads* [`plot` *loads* \\| `plot none`] [`to` *\"dir\"*]",
                     "inverse for T_A, T_B, T_C",
                     "`compile_inverse_dynamics` + `run_inverse_dynamics` over the prescribed motion, sampled every output step to the final time: `torques.csv`, `.png`, `.svg`"},
-                   {"`inverse for` *loads* `from` *\"file.csv\"* [`cutoff` *f*] [`compiled`] [`to` *\"dir\"*]",
+                   {"`inverse for` *loads* `from` *\"file.csv\"* [`cutoff` *f*] [`compiled`] [`plot` ...] [`to` *\"dir\"*]",
                     "inverse for T_A, T_B, T_C from \"motion.csv\" cutoff 6 Hz",
                     "the same over a motion table (columns `t [s]` and one per coordinate, units in the header), filtered at f (default 6 Hz; 0: none) and differentiated"}},
-         .clauses = {"for", "from", "cutoff", "compiled", "to"}, .parse = parse_run,
+         .clauses = {"for", "from", "cutoff", "compiled", "plot", "to"}, .parse = parse_run,
          .run = [](M& m, const Statement& s) { m.inverse(s); }},
         {.keyword = "report", .family = family,
          .help = "writes an HTML report: road-map with free-body diagrams, equations, plots, motion",
-         .forms = {{"`report` [`at` *q = value, ...*] [`to` *\"dir\"*]",
+         .forms = {{"`report` [`at` *q = value, ...*] [`plot` *columns* \\| `plot none`] [`check`] [`to` *\"dir\"*]",
                     "report at qA = 20 deg, qB = -70 deg, qC = 60 deg to \"report\"",
-                    "`write_report`: `index.html` (self-contained; KaTeX's fonts in `fonts/`) and `roadmap.tex` (the table, loads and equations for LaTeX) with the model, the last road-map (or the planned one) with each row's free-body diagram drawn at the `at` configuration (default: the first sample of the motion, else the initial values), the equations typeset, the tables simulate and inverse wrote as plots, and the motion animated"}},
-         .clauses = {"at", "to"}, .parse = parse_report, .run = [](M& m, const Statement& s) { m.report(s); }},
+                    "`write_report`: `index.html` (self-contained; KaTeX's fonts in `fonts/`) and `roadmap.tex` (the table, TikZ free-body diagrams and equations for LaTeX) with the model, the last road-map (or the planned one) with each row's free-body diagram drawn at the `at` configuration (default: the first sample of the motion, else the initial values), the equations typeset, the tables simulate and inverse wrote as plots (`plot` chooses the columns, `plot none` skips them; long runs thinned to about 2000 rows keeping their extremes), the motion animated (in 3D, turned by dragging), and the checks (energy, constraint drift; with `check`, `compare_methods` and `compare_reactions`)"}},
+         .clauses = {"at", "plot", "check", "to"}, .parse = parse_report, .run = [](M& m, const Statement& s) { m.report(s); }},
+        {.keyword = "latex", .family = family,
+         .help = "writes the road-map, its free-body diagrams and equations as a LaTeX document",
+         .forms = {{"`latex` [`at` *q = value, ...*] [`to` *\"dir\"*]",
+                    "latex at qA = 20 deg, qB = -70 deg, qC = 60 deg to \"paper\"",
+                    "`write_report_latex`: `roadmap.tex` alone (article, amsmath, TikZ): the road-map table, each row's free-body diagram drawn in TikZ at the `at` configuration with its loads listed, and the equations with the intermediates they use"}},
+         .clauses = {"at", "to"}, .parse = parse_report, .run = [](M& m, const Statement& s) { m.latex(s); }},
         {.keyword = "codegen", .family = family,
          .help = "generates C, C++, MATLAB or Python code for the model's equations",
          .forms = {{"`codegen` *c\\|cpp\\|matlab\\|python* [`name` *N*] [`for` *loads*] [`to` *\"dir\"*]",

@@ -38,7 +38,7 @@ void Interpreter::Impl::record_history(const std::string& title, const Table& ta
 }
 
 std::string Interpreter::Impl::write_report_to(const std::string& dir, const exmap& configuration,
-                                               Location where) {
+                                               Location where, const ReportSettings& settings) {
     System& sys = model(where);
     ReportContent c;
     c.system = &sys;
@@ -79,11 +79,38 @@ std::string Interpreter::Impl::write_report_to(const std::string& dir, const exm
     for (const auto& [x, v] : configuration) c.configuration[x] = v;
     for (const auto& [name, u] : units)
         if (u.display) c.units[name] = u.display->text;
+    c.plot_histories = settings.plots;
+    c.plotted = settings.plotted;
+    for (const std::string& name : settings.plotted) {
+        bool found = false;
+        for (const ReportHistory& h : histories)
+            found = found || std::find(h.table.names.begin() + (h.table.names.empty() ? 0 : 1), h.table.names.end(),
+                                       name) != h.table.names.end();
+        if (!found)
+            throw ScriptError(where, "'" + name + "' is not a column of the tables simulate and inverse wrote",
+                              "plot columns of their tables (simulation.csv, torques.csv)");
+    }
+    if (settings.check && !settings.latex_only && !c.coordinates.empty()) {
+        // the methods compared at random states; what cannot be compared is said, not fatal
+        try {
+            c.methods = compare_methods(sys, c.coordinates);
+        } catch (const Error& e) {
+            c.notes.push_back(std::string("The methods were not compared: ") + e.what());
+        }
+        if (!sys.joint_reactions().empty()) {
+            try {
+                c.reactions = compare_reactions(sys, c.coordinates);
+            } catch (const Error& e) {
+                c.notes.push_back(std::string("The joint reactions were not compared: ") + e.what());
+            }
+        }
+    }
+    if (settings.latex_only) return guard(where, [&] { return alembert::write_report_latex(c, dir); });
     return guard(where, [&] { return alembert::write_report(c, dir); });
 }
 
-void Interpreter::Impl::report(const Statement& s) {
-    if (model_only) return;
+// the `at` clause: values of coordinates and rates only
+exmap Interpreter::Impl::report_configuration(const Statement& s) {
     exmap at = s.bindings.count("at") ? bindings(s.bindings.at("at"), "in 'at'") : exmap{};
     for (const auto& [x, v] : at) {
         const SymbolTable& st = model(s.location).symbols();
@@ -92,9 +119,53 @@ void Interpreter::Impl::report(const Statement& s) {
                               "'" + to_string(x) + "' is not a coordinate or rate",
                               "give values to coordinates (report at qA = 20 deg)");
     }
-    (void)write_report_to(output_path(s), at, s.location);
+    return at;
+}
+
+void Interpreter::Impl::report(const Statement& s) {
+    if (model_only) return;
+    const exmap at = report_configuration(s);
+    ReportSettings settings;
+    settings.check = s.flag("check");
+    if (s.lists.count("plot")) {
+        const std::vector<Word>& plot = s.lists.at("plot");
+        if (plot.size() == 1 && plot.front().text == "none") {
+            settings.plots = false;
+        } else {
+            // each name a column of a table simulate or inverse wrote
+            std::vector<std::string> columns;
+            for (const ReportHistory& h : histories)
+                for (std::size_t k = 1; k < h.table.names.size(); ++k)
+                    if (std::find(columns.begin(), columns.end(), h.table.names[k]) == columns.end())
+                        columns.push_back(h.table.names[k]);
+            for (const Word& w : plot) {
+                if (std::find(columns.begin(), columns.end(), w.text) != columns.end()) {
+                    settings.plotted.push_back(w.text);
+                    continue;
+                }
+                std::string list;
+                for (const std::string& c : columns) list += (list.empty() ? "" : ", ") + c;
+                throw ScriptError(w.location,
+                                  "'" + w.text + "' is not a column of the tables simulate and inverse wrote",
+                                  columns.empty() ? std::string("run simulate or inverse before report, or write "
+                                                                "'plot none'")
+                                                  : "plot some of: " + list + " (or 'plot none')");
+            }
+        }
+    }
+    (void)write_report_to(output_path(s), at, s.location, settings);
     transcript.result("wrote " + (s.has_word("to") ? s.word("to").text + "/" : std::string()) +
                       "index.html");
+}
+
+void Interpreter::Impl::latex(const Statement& s) {
+    if (model_only) return;
+    const exmap at = report_configuration(s);
+    ReportSettings settings;
+    settings.latex_only = true;
+    (void)write_report_to(output_path(s), at, s.location, settings);
+    transcript.result("wrote " + (s.has_word("to") ? s.word("to").text + "/" : std::string()) +
+                      "roadmap.tex");
 }
 
 }  // namespace alembert::lang

@@ -14,48 +14,6 @@
 
 namespace alembert {
 
-namespace report_detail {
-
-std::string json_escape(const std::string& s) {
-    std::string o;
-    for (char ch : s) {
-        switch (ch) {
-            case '"':
-                o += "\\\"";
-                break;
-            case '\\':
-                o += "\\\\";
-                break;
-            case '\n':
-                o += "\\n";
-                break;
-            case '\t':
-                o += "\\t";
-                break;
-            case '<':
-                o += "\\u003c";
-                break;
-            case '>':
-                o += "\\u003e";
-                break;
-            case '&':
-                o += "\\u0026";
-                break;
-            default:
-                if (static_cast<unsigned char>(ch) < 0x20) {
-                    char buf[8];
-                    std::snprintf(buf, sizeof buf, "\\u%04x", ch);
-                    o += buf;
-                } else {
-                    o += ch;
-                }
-        }
-    }
-    return o;
-}
-
-}  // namespace report_detail
-
 namespace {
 
 namespace fs = std::filesystem;
@@ -118,13 +76,24 @@ std::string default_katex_dir() {
     return ALEMBERT_KATEX_DIR;
 }
 
-std::string render_report_html(const ReportContent& content, const std::string& katex_dir) {
+std::string default_three_dir() {
+    if (const char* env = std::getenv("ALEMBERT_THREE_DIR"); env && *env) return env;
+    return ALEMBERT_THREE_DIR;
+}
+
+std::string render_report_html(const ReportContent& content, const std::string& katex_dir,
+                               const std::string& three_dir) {
     const std::string json = render_report_json(content);
     const fs::path katex(katex_dir);
     const std::string katex_js = katex_dir.empty() ? "" : read_text(katex / "katex.min.js");
     const std::string katex_css = katex_dir.empty() ? "" : read_text(katex / "katex.min.css");
+    // three.js only where there is a 3D view: a motion, or a spatial model
+    const bool view3d = json.find("\"animation\":null") == std::string::npos ||
+                        json.find("\"planar\":false") != std::string::npos;
+    const std::string three_js =
+        three_dir.empty() || !view3d ? "" : read_text(fs::path(three_dir) / "three.min.js");
     std::string page;
-    page.reserve(json.size() + katex_js.size() + katex_css.size() + 64000);
+    page.reserve(json.size() + katex_js.size() + katex_css.size() + three_js.size() + 64000);
     page += "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n";
     page += "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n";
     page += "<meta name=\"generator\" content=\"Alembert\">\n";
@@ -132,6 +101,7 @@ std::string render_report_html(const ReportContent& content, const std::string& 
     if (!katex_css.empty()) page += "<style>\n" + katex_css + "\n</style>\n";
     page += "<style>\n" + std::string(report_detail::kViewerStyle) + "</style>\n";
     if (!katex_js.empty()) page += "<script>\n" + katex_js + "\n</script>\n";
+    if (!three_js.empty()) page += "<script>\n" + three_js + "\n</script>\n";
     page += "</head>\n<body>\n";
     page += "<div id=\"alembert-status\" data-status=\"loading\">loading the report...</div>\n";
     page += "<pre id=\"alembert-errors\"></pre>\n<main id=\"report\"></main>\n";
@@ -139,6 +109,28 @@ std::string render_report_html(const ReportContent& content, const std::string& 
     page += "<script>\n" + std::string(report_detail::kViewerScript) + "</script>\n";
     page += "</body>\n</html>\n";
     return page;
+}
+
+namespace {
+
+fs::path report_directory(const std::string& dir, const char* caller) {
+    const fs::path out(dir);
+    std::error_code ec;
+    fs::create_directories(out, ec);
+    if (ec || !fs::is_directory(out))
+        throw ArgumentError(std::string(caller) + ": cannot create the directory '" + dir + "' (" +
+                            (ec ? ec.message() : std::string("a file is in the way")) +
+                            "); choose another --out or remove the file");
+    return out;
+}
+
+}  // namespace
+
+std::string write_report_latex(const ReportContent& content, const std::string& dir) {
+    const std::string tex = render_report_latex(content);
+    const fs::path path = report_directory(dir, "write_report_latex()") / "roadmap.tex";
+    write_atomically(path, tex, "write_report_latex()");
+    return path.string();
 }
 
 std::string write_report(const ReportContent& content, const std::string& dir) {
@@ -151,7 +143,10 @@ std::string write_report(const ReportContent& content, const std::string& dir) {
                             "); choose another --out or remove the file");
     const std::string katex = default_katex_dir();
     const bool have_katex = fs::is_regular_file(fs::path(katex) / "katex.min.js", ec);
-    const std::string page = render_report_html(content, have_katex ? katex : "");
+    const std::string three = default_three_dir();
+    const bool have_three = fs::is_regular_file(fs::path(three) / "three.min.js", ec);
+    const std::string page =
+        render_report_html(content, have_katex ? katex : "", have_three ? three : "");
     // KaTeX's stylesheet names its fonts relative to the page: fonts/KaTeX_*.woff2
     if (have_katex) {
         fs::create_directories(out / "fonts", ec);

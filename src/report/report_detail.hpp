@@ -6,9 +6,6 @@
 
 namespace alembert::report_detail {
 
-/// `s` as the inside of a JSON string; '<' escaped too, so the JSON can sit in a <script>.
-std::string json_escape(const std::string& s);
-
 /// The viewer's script and style (src/report/viewer), compiled in.
 extern const char* const kViewerScript;
 extern const char* const kViewerStyle;

@@ -1,9 +1,12 @@
 // SPDX-License-Identifier: MIT
 // The report's data: model, road-map rows with their free-body diagrams, histories, motion.
+#include <Eigen/Eigenvalues>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <exception>
+#include <map>
 #include <set>
 #include <string>
 #include <vector>
@@ -29,7 +32,8 @@ std::string num(double v) {
     return buf;
 }
 
-std::string str(const std::string& s) { return "\"" + report_detail::json_escape(s) + "\""; }
+// inside the page's <script>: '<', '>' and '&' escaped too
+std::string str(const std::string& s) { return "\"" + json_escape(s, true) + "\""; }
 
 struct Obj {
     std::string s = "{";
@@ -223,45 +227,65 @@ std::string geometry_json(const System& sys, const Evaluation& ev,
     for (const Segment& s : segments_of(sys, placed))
         segs.push_back(
             Obj().add("body", str(s.body)).add("from", str(s.from)).add("to", str(s.to)).done());
+    // "up" in the 3D view: against gravity, else Ny for planar models and Nz for others
+    std::vector<double> up = sys.gravity().is_zero()
+                                 ? std::vector<double>{0, *planar ? 1.0 : 0, *planar ? 0 : 1.0}
+                                 : ev.in_newtonian(-sys.gravity());
     Obj o;
     o.add("planar", *planar ? "true" : "false").add("points", arr(pts)).add("segments", arr(segs));
+    o.add("up", num_arr(up));
     return o.done();
 }
 
-/// The loads of one free-body diagram, as the viewer draws them.
-std::string diagram_json(const System& sys, const Evaluation& ev, const RoadmapRow& r) {
-    std::vector<std::string> loads;
-    auto load = [&](const std::string& kind, const std::string& label, const Point* at,
-                    const std::vector<double>& dir, bool unknown) {
-        Obj o;
-        o.add("kind", str(kind)).add("label", str(label)).add("at", str(at->name()));
-        o.add("vector", num_arr(dir)).add("unknown", unknown ? "true" : "false");
-        loads.push_back(o.done());
-    };
+/// One arrow of a free-body diagram: a load external to S at its point.
+struct DiagramLoad {
+    std::string kind, label;  ///< kind: force, torque, gravity, joint
+    const Point* at = nullptr;
+    std::vector<double> vector{};  ///< in N at the configuration (empty for a joint)
+    bool unknown = false;
+};
+
+/// The loads of one free-body diagram, as the viewer and the TikZ picture draw them.
+std::vector<DiagramLoad> diagram_loads(const System& sys, const Evaluation& ev,
+                                       const RoadmapRow& r) {
+    std::vector<DiagramLoad> loads;
     const BodySet& S = r.system;
     for (const Load& l : sys.loads()) {
         if (!member(S, l.on) || member(S, l.from)) continue;
         std::string label = l.label.empty() ? (l.kind == LoadKind::force ? "F" : "T") : l.label;
         if (l.kind == LoadKind::force)
-            load("force", label, l.point, ev.in_newtonian(l.vector), has_unknown(sys, l.vector));
+            loads.push_back(
+                {"force", label, l.point, ev.in_newtonian(l.vector), has_unknown(sys, l.vector)});
         else
-            load("torque", label, torque_point(sys, l.on), ev.in_newtonian(l.vector),
-                 has_unknown(sys, l.vector));
+            loads.push_back({"torque", label, torque_point(sys, l.on), ev.in_newtonian(l.vector),
+                             has_unknown(sys, l.vector)});
     }
     if (!sys.gravity().is_zero())
         for (const Body* b : S)
             if (b->has_mass())
-                load("gravity", b->name() + " g", &b->cm(), ev.in_newtonian(sys.gravity()), false);
+                loads.push_back(
+                    {"gravity", b->name() + " g", &b->cm(), ev.in_newtonian(sys.gravity()), false});
     for (const Point* p : sys.points()) {
         if (!member(S, p->owner()) || !p->located_from()) continue;
         const Point* from = p->located_from();
         // a declared reaction's measures, drawn above, stand for the joint's force
         if (member(S, from->owner()) || sys.find_joint_reaction(*p, from->owner(), p->owner()))
             continue;
-        load("joint", "from " + ground_or(sys, from->owner()), p, {}, true);
+        loads.push_back({"joint", "from " + ground_or(sys, from->owner()), p, {}, true});
+    }
+    return loads;
+}
+
+std::string diagram_json(const System& sys, const Evaluation& ev, const RoadmapRow& r) {
+    std::vector<std::string> loads;
+    for (const DiagramLoad& l : diagram_loads(sys, ev, r)) {
+        Obj o;
+        o.add("kind", str(l.kind)).add("label", str(l.label)).add("at", str(l.at->name()));
+        o.add("vector", num_arr(l.vector)).add("unknown", l.unknown ? "true" : "false");
+        loads.push_back(o.done());
     }
     std::vector<std::string> names;
-    for (const Body* b : S) names.push_back(b->name());
+    for (const Body* b : r.system) names.push_back(b->name());
     Obj o;
     o.add("system", str_arr(names)).add("about", str(r.about ? r.about->name() : ""));
     o.add("direction", num_arr(ev.in_newtonian(r.direction))).add("loads", arr(loads));
@@ -375,33 +399,67 @@ std::string row_json(const System& sys, const Evaluation& ev, const RoadmapRow& 
     return o.done();
 }
 
-// every k-th row (and the last), so that long runs plot quickly: at most kMaxPlotRows
+// long runs are thinned for plotting to about kMaxPlotRows rows that keep each series'
+// extremes (calc_plot_rows)
 constexpr std::size_t kMaxPlotRows = 2000;
 
-std::vector<double> thinned(const std::vector<double>& v) {
-    const std::size_t step = std::max<std::size_t>(1, (v.size() + kMaxPlotRows - 1) / kMaxPlotRows);
-    if (step == 1) return v;
-    std::vector<double> out;
-    for (std::size_t k = 0; k < v.size(); k += step) out.push_back(v[k]);
-    if ((v.size() - 1) % step != 0) out.push_back(v.back());
-    return out;
+bool plotted(const ReportContent& c, const std::string& name) {
+    return c.plotted.empty() ||
+           std::find(c.plotted.begin(), c.plotted.end(), name) != c.plotted.end();
 }
 
-std::string history_json(const ReportHistory& h) {
-    std::vector<std::string> series;
+std::string history_json(const ReportContent& c, const ReportHistory& h) {
+    // the time and the series chosen for plotting
+    Table shown;
     const Table& t = h.table;
-    for (std::size_t c = 1; c < t.columns.size(); ++c)
+    for (std::size_t k = 0; k < t.columns.size(); ++k)
+        if (k == 0 || plotted(c, t.names[k])) {
+            shown.names.push_back(t.names[k]);
+            shown.units.push_back(t.units[k]);
+            shown.columns.push_back(t.columns[k]);
+        }
+    if (shown.columns.size() < 2) return "";
+    shown = calc_table_rows(shown, calc_plot_rows(shown, kMaxPlotRows));
+    std::vector<std::string> series;
+    for (std::size_t k = 1; k < shown.columns.size(); ++k)
         series.push_back(Obj()
-                             .add("name", str(t.names[c]))
-                             .add("unit", str(t.units[c]))
-                             .add("values", num_arr(thinned(t.columns[c])))
+                             .add("name", str(shown.names[k]))
+                             .add("unit", str(shown.units[k]))
+                             .add("values", num_arr(shown.columns[k]))
                              .done());
     Obj o;
     o.add("title", str(h.title)).add("rows", num(static_cast<double>(t.row_count())));
-    o.add("time", t.columns.empty() ? "[]" : num_arr(thinned(t.columns[0])));
-    o.add("time_unit", str(t.units.empty() ? "" : t.units[0]));
+    o.add("plotted_rows", num(static_cast<double>(shown.row_count())));
+    o.add("time", num_arr(shown.columns[0]));
+    o.add("time_unit", str(shown.units[0]));
     o.add("series", arr(series));
     return o.done();
+}
+
+// the body drawn in 3D as the ellipsoid of uniform density with its mass and central inertia:
+// semi-axes a_i^2 = 5 (I_j + I_k - I_i) / (2 m) along the principal axes (a thin disk of radius
+// r: a flat ellipse of radius 1.12 r; a slender rod of length L: a needle 0.65 L either side);
+// "null" where the mass or inertia is missing or not a number
+std::string inertia_ellipsoid_json(const System& sys, const Evaluation& ev, const Body& b) {
+    const auto* rigid = dynamic_cast<const RigidBody*>(&b);
+    if (!rigid || !rigid->has_inertia() || !rigid->has_mass() || !rigid->frame()) return "null";
+    (void)sys;
+    const double m = ev.at(rigid->mass());
+    Mat3 I = rigid->inertia().components_in(*rigid->frame());
+    Eigen::Matrix3d A;
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) A(i, j) = ev.at(I(i, j));
+    if (!(m > 0) || !A.allFinite()) return "null";
+    Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(0.5 * (A + A.transpose()));
+    const Eigen::Vector3d l = eig.eigenvalues();
+    std::vector<double> axes, directions;
+    for (int i = 0; i < 3; ++i)
+        axes.push_back(std::sqrt(std::max(0.0, 2.5 * (l.sum() - 2 * l(i)) / m)));
+    if (axes[0] + axes[1] + axes[2] <= 0) return "null";
+    for (int k = 0; k < 3; ++k)
+        for (int i = 0; i < 3; ++i)
+            directions.push_back(eig.eigenvectors()(i, k));  // column k: axis k in B
+    return Obj().add("axes", num_arr(axes)).add("directions", num_arr(directions)).done();
 }
 
 // the positions of the placed points at each sample of the first history with a motion,
@@ -415,6 +473,28 @@ std::string animation_json(const ReportContent& c, const std::vector<const Point
         for (const Point* p : placed) {
             Col3 x = p->pos_from(sys.origin()).components_in(sys.newtonian());
             for (int i = 0; i < 3; ++i) outputs.push_back(x[i]);
+        }
+        // then each rigid body's axes in N (the 3D view turns a triad with the body)
+        std::vector<std::string> bodies;
+        for (const Body* b : sys.bodies()) {
+            if (!b->frame() || b->frame() == &sys.newtonian()) continue;
+            std::vector<ex> axes;
+            try {
+                for (int k = 0; k < 3; ++k) {
+                    Col3 e{0, 0, 0};
+                    e[k] = 1;
+                    Col3 x = Vector(*b->frame(), e).components_in(sys.newtonian());
+                    for (int i = 0; i < 3; ++i) axes.push_back(x[i]);
+                }
+            } catch (const Error&) {
+                continue;  // a frame with no path to N
+            }
+            Obj body;
+            body.add("name", str(b->name())).add("cm", str(b->cm().name()));
+            body.add("ellipsoid",
+                     inertia_ellipsoid_json(sys, Evaluation(sys, c.configuration), *b));
+            bodies.push_back(body.done());
+            outputs.insert(outputs.end(), axes.begin(), axes.end());
         }
         CompiledExpressions tape;
         try {
@@ -435,7 +515,8 @@ std::string animation_json(const ReportContent& c, const std::vector<const Point
         std::vector<std::string> names;
         for (const Point* p : placed) names.push_back(p->name());
         Obj o;
-        o.add("source", str(h.title)).add("points", str_arr(names)).add("time", arr(times));
+        o.add("source", str(h.title)).add("points", str_arr(names)).add("bodies", arr(bodies));
+        o.add("time", arr(times));
         o.add("frames", arr(frames));
         return o.done();
     }
@@ -496,6 +577,127 @@ std::string set_words(const BodySet& S) {
     return s + "\\}";
 }
 
+// ---- the free-body diagram in TikZ ---------------------------------------------------------
+
+std::string cm(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.3f", std::abs(v) < 5e-4 ? 0.0 : v);
+    return buf;
+}
+
+// the page's projection: planar models in their plane, others turned 0.6 rad about Ny and
+// tilted 0.35 rad (the viewer's default view); TikZ's y points up
+std::array<double, 2> project(const std::vector<double>& p, bool planar) {
+    if (p.size() < 3) return {0, 0};
+    if (planar) return {p[0], p[1]};
+    const double ct = std::cos(0.6), st = std::sin(0.6), ce = std::cos(0.35), se = std::sin(0.35);
+    const double x = ct * p[0] + st * p[2], z = -st * p[0] + ct * p[2];
+    return {x, ce * p[1] + se * z};
+}
+
+std::string tikz_diagram(const System& sys, const Evaluation& ev,
+                         const std::vector<const Point*>& placed, bool planar,
+                         const RoadmapRow& r) {
+    std::map<const Point*, std::array<double, 2>> at;
+    std::vector<const Point*> order;  // the model's order, for the same output run to run
+    double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
+    for (const Point* p : placed) {
+        std::array<double, 2> q = project(ev.in_newtonian(p->pos_from(sys.origin())), planar);
+        if (!std::isfinite(q[0]) || !std::isfinite(q[1])) continue;
+        at[p] = q;
+        order.push_back(p);
+        for (int k = 0; k < 2; ++k) lo[k] = std::min(lo[k], q[k]), hi[k] = std::max(hi[k], q[k]);
+    }
+    if (at.empty()) return "";
+    const double size = std::max({hi[0] - lo[0], hi[1] - lo[1], 1e-9});
+    const double scale = 5.0 / size, arrow = 1.3;  // the model 5 cm across; arrows 1.3 cm
+    auto xy = [&](const std::array<double, 2>& q) {
+        return "(" + cm(scale * (q[0] - lo[0])) + "," + cm(scale * (q[1] - lo[1])) + ")";
+    };
+    auto shifted = [&](const std::array<double, 2>& q, double dx, double dy) {
+        return "(" + cm(scale * (q[0] - lo[0]) + dx) + "," + cm(scale * (q[1] - lo[1]) + dy) + ")";
+    };
+    auto unit = [&](const std::vector<double>& v, double* ux, double* uy) {
+        std::array<double, 2> d = project(v, planar);
+        const double n = std::hypot(d[0], d[1]);
+        if (!(n > 1e-12) || !std::isfinite(n)) return false;
+        *ux = d[0] / n, *uy = d[1] / n;
+        return true;
+    };
+    auto find = [&](const std::string& name) -> const Point* {
+        for (const Point* p : order)
+            if (p->name() == name) return p;
+        return nullptr;
+    };
+    std::string t = "\\begin{tikzpicture}[>=stealth, every node/.style={font=\\scriptsize}]\n";
+    for (const Segment& seg : segments_of(sys, placed)) {
+        const Point *a = find(seg.from), *b = find(seg.to);
+        if (!a || !b) continue;
+        const bool in_s = std::any_of(r.system.begin(), r.system.end(),
+                                      [&](const Body* x) { return x->name() == seg.body; });
+        t += "\\draw[" + std::string(in_s ? "line width=1.6pt" : "line width=1.2pt, black!25") +
+             ", line cap=round] " + xy(at[a]) + " -- " + xy(at[b]) + ";\n";
+    }
+    for (const Point* p : order) t += "\\fill " + xy(at[p]) + " circle (0.8pt);\n";
+    for (const DiagramLoad& l : diagram_loads(sys, ev, r)) {
+        auto it = at.find(l.at);
+        if (it == at.end()) continue;
+        const std::array<double, 2> p = it->second;
+        const std::string colour = l.kind == "gravity" ? "green!50!black"
+                                   : l.unknown         ? "red!75!black"
+                                                       : "blue!70!black";
+        const std::string label = "{" + tex_text(l.label) + "}";
+        t += "% load: " + tex_text(l.label) + "\n";
+        double ux = 0, uy = 0;
+        if (l.kind == "joint") {
+            std::vector<std::vector<double>> axes{{1, 0, 0}, {0, 1, 0}};
+            if (!planar) axes.push_back({0, 0, 1});
+            for (const auto& e : axes)
+                if (unit(e, &ux, &uy))
+                    t += "\\draw[->, " + colour + "] " + xy(p) + " -- ++(" + cm(0.7 * arrow * ux) +
+                         "," + cm(0.7 * arrow * uy) + ");\n";
+            t += "\\node[" + colour + ", below right] at " + xy(p) + " " + label + ";\n";
+        } else if (l.kind == "torque" && planar) {
+            // an arc about the point, counterclockwise for a +z torque
+            const bool ccw = l.vector.size() < 3 || l.vector[2] >= 0;
+            const double a0 = ccw ? -1.0 : 2.6;
+            t += "\\draw[->, " + colour + "] " +
+                 shifted(p, 0.45 * std::cos(a0), 0.45 * std::sin(a0)) +
+                 " arc[start angle=" + (ccw ? "-57" : "149") +
+                 ", end angle=" + (ccw ? "149" : "-57") + ", radius=0.45] node[above] " + label +
+                 ";\n";
+        } else if (unit(l.vector, &ux, &uy)) {
+            const std::string tip = "++(" + cm(arrow * ux) + "," + cm(arrow * uy) + ")";
+            if (l.kind == "gravity")
+                t += "\\draw[->, " + colour + "] " + xy(p) + " -- " + tip + " node[right] " +
+                     label + ";\n";
+            else if (l.kind == "torque")  // in space: a double-headed arrow along the torque
+                t += "\\draw[->>, " + colour + "] " + xy(p) + " -- " + tip + " node[right] " +
+                     label + ";\n";
+            else
+                t += "\\draw[->, " + colour + "] " + shifted(p, -arrow * ux, -arrow * uy) +
+                     " node[above] " + label + " -- " + xy(p) + ";\n";
+        } else {
+            t += "\\draw[" + colour + "] " + xy(p) + " circle (0.2) node[above right] " + label +
+                 ";\n";
+        }
+    }
+    if (r.about && at.count(r.about))
+        t += "\\draw " + xy(at[r.about]) + " circle (2.5pt) node[below left] {$O$};\n";
+    double ux = 0, uy = 0;
+    const std::vector<double> u = ev.in_newtonian(r.direction);
+    const bool in_plane = unit(u, &ux, &uy) && (!planar || std::hypot(u[0], u[1]) > 0.2);
+    if (in_plane)
+        t += "\\draw[->, violet] (-0.8,-0.8) -- ++(" + cm(0.8 * ux) + "," + cm(0.8 * uy) +
+             ") node[right] {$\\hat u$};\n";
+    else
+        t += "\\draw[violet] (-0.8,-0.8) circle (0.12) node[right=3pt] {$\\hat u$ out of the "
+             "page};\n"
+             "\\fill[violet] (-0.8,-0.8) circle (0.03);\n";
+    t += "\\end{tikzpicture}\n";
+    return t;
+}
+
 }  // namespace
 
 std::string render_report_latex(const ReportContent& c) {
@@ -507,7 +709,7 @@ std::string render_report_latex(const ReportContent& c) {
     std::string t;
     t += "% Generated by Alembert from the model '" + c.title + "'; regenerate rather than edit.\n";
     t += "\\documentclass[a4paper]{article}\n\\usepackage{amsmath}\n\\usepackage[margin=2cm]{"
-         "geometry}\n";
+         "geometry}\n\\usepackage{tikz}\n";
     t += "\\begin{document}\n\\section*{MG road-map of " + tex_text(c.title) + "}\n\n";
     t += "Each equation is $E = \\text{applied} - \\text{inertial} = 0$; the free-body diagram of "
          "$S$ lists the loads "
@@ -526,14 +728,21 @@ std::string render_report_latex(const ReportContent& c) {
              (r.about ? tex_text(r.about->name()) : "--") + " & " +
              (extra.empty() ? "none" : extra) + " \\\\\n";
     }
-    t += "\\hline\n\\end{tabular}\n\n\\subsection*{Free-body diagrams}\n\\begin{itemize}\n";
+    t += "\\hline\n\\end{tabular}\n\n\\subsection*{Free-body diagrams}\n";
+    t += "Unknown loads in red, known in blue, gravity in green; $O$ is the about point and "
+         "$\\hat u$ the direction.\n\n";
+    Evaluation ev(sys, c.configuration);
+    const std::vector<const Point*> placed = placed_points(sys);
+    bool planar = true;
+    (void)geometry_json(sys, ev, placed, &planar);
     for (const RoadmapRow& r : c.rows) {
         if (r.motion == Motion::constraint) continue;
-        t += "\\item $S = " + set_words(r.system) + "$ (for $" + to_latex(r.variable) + "$):";
+        t += "\\paragraph{$S = " + set_words(r.system) + "$ for $" + to_latex(r.variable) + "$.}";
         for (std::size_t i = 0; i < r.fbd.size(); ++i) t += (i ? "; " : " ") + tex_text(r.fbd[i]);
-        t += ".\n";
+        t += ".\n\n\\begin{center}\n" + tikz_diagram(sys, ev, placed, planar, r) +
+             "\\end{center}\n\n";
     }
-    t += "\\end{itemize}\n\n\\subsection*{Equations}\n";
+    t += "\\subsection*{Equations}\n";
     for (const RoadmapRow& r : c.rows) {
         t += "\\[ E_{" + to_latex(r.variable) + "}: \\quad " +
              equation_tex(readable_equation(sys, r.equation), r.variable) + " \\]\n";
@@ -547,6 +756,85 @@ std::string render_report_latex(const ReportContent& c) {
     return t;
 }
 
+std::vector<ReportCheck> calc_report_checks(const ReportContent& c) {
+    std::vector<ReportCheck> out;
+    for (const ReportHistory& h : c.histories) {
+        const Table& t = h.table;
+        for (std::size_t k = 0; k < t.columns.size(); ++k) {
+            const std::vector<double>& v = t.columns[k];
+            if (v.empty()) continue;
+            if (t.names[k] == "energy") {
+                double scale = 0, change = 0;
+                for (double e : v) scale = std::max(scale, std::abs(e));
+                for (double e : v) change = std::max(change, std::abs(e - v.front()));
+                ReportCheck r{"energy", "energy", h.title, scale > 0 ? change / scale : change,
+                              "",       false,    ""};
+                r.passed = r.value <= 1e-6;
+                char buf[200];
+                std::snprintf(buf, sizeof buf,
+                              "energy %.6g %s at the start; its largest change is %.3g of its "
+                              "largest magnitude",
+                              v.front(), t.units[k].empty() ? "J" : t.units[k].c_str(), r.value);
+                r.summary = buf;
+                out.push_back(r);
+            } else if (t.names[k].rfind("drift_", 0) == 0) {
+                double worst = 0;
+                for (double e : v) worst = std::max(worst, std::abs(e));
+                ReportCheck r{"constraint", t.names[k],    h.title, worst,
+                              t.units[k],   worst <= 1e-6, ""};
+                char buf[200];
+                std::snprintf(buf, sizeof buf, "constraint %s: largest residual %.3g%s%s",
+                              t.names[k].substr(6).c_str(), worst, t.units[k].empty() ? "" : " ",
+                              t.units[k].c_str());
+                r.summary = buf;
+                out.push_back(r);
+            }
+        }
+    }
+    auto compare = [&](const std::string& kind, const std::string& name, double d, int states,
+                       const std::string& what) {
+        ReportCheck r{kind, name, "random states", d, "", d <= 1e-8, ""};
+        char buf[240];
+        std::snprintf(buf, sizeof buf, "%s: largest scaled difference %.3g at %d random states",
+                      what.c_str(), d, states);
+        r.summary = buf;
+        out.push_back(r);
+    };
+    if (c.methods)
+        for (std::size_t k = 0; k < c.methods->methods.size() && k < c.methods->differences.size();
+             ++k)
+            if (k > 0 || c.methods->methods.size() == 1)
+                compare("methods", c.methods->methods[k], c.methods->differences[k],
+                        c.methods->states, c.methods->methods[k] + " vs the road-map (q'')");
+    if (c.reactions)
+        for (std::size_t k = 0;
+             k < c.reactions->measures.size() && k < c.reactions->differences.size(); ++k)
+            compare(
+                "reactions", to_string(c.reactions->measures[k]), c.reactions->differences[k],
+                c.reactions->states,
+                "reaction " + to_string(c.reactions->measures[k]) + ": road-map vs Newton-Euler");
+    return out;
+}
+
+namespace {
+
+std::string checks_json(const ReportContent& c) {
+    std::vector<std::string> items;
+    for (const ReportCheck& r : calc_report_checks(c))
+        items.push_back(Obj()
+                            .add("kind", str(r.kind))
+                            .add("name", str(r.name))
+                            .add("source", str(r.source))
+                            .add("value", num(r.value))
+                            .add("unit", str(r.unit))
+                            .add("passed", r.passed ? "true" : "false")
+                            .add("summary", str(r.summary))
+                            .done());
+    return arr(items);
+}
+
+}  // namespace
+
 std::string render_report_json(const ReportContent& c) {
     if (!c.system)
         throw ArgumentError(
@@ -559,7 +847,11 @@ std::string render_report_json(const ReportContent& c) {
     std::string geometry = geometry_json(sys, ev, placed, &planar);
     std::vector<std::string> rows, histories, config;
     for (const RoadmapRow& r : c.rows) rows.push_back(row_json(sys, ev, r));
-    for (const ReportHistory& h : c.histories) histories.push_back(history_json(h));
+    if (c.plot_histories)
+        for (const ReportHistory& h : c.histories) {
+            std::string one = history_json(c, h);
+            if (!one.empty()) histories.push_back(one);
+        }
     for (const TimeVariable& q : c.coordinates) {
         auto it = ev.values.find(q.symbol());
         double v =
@@ -573,6 +865,7 @@ std::string render_report_json(const ReportContent& c) {
         .add("model", model_json(c));
     o.add("configuration", arr(config)).add("geometry", geometry).add("roadmap", arr(rows));
     o.add("histories", arr(histories)).add("animation", animation_json(c, placed));
+    o.add("checks", checks_json(c));
     return o.done();
 }
 

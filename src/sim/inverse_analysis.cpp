@@ -164,6 +164,8 @@ InverseAnalysisReport run_inverse_dynamics(const InverseDynamics& id, const Moti
     report.loads = calc_inverse_dynamics(id, motion, options);
     PlotOptions plot;
     plot.title = options.title.empty() ? "inverse dynamics of '" + id.model() + "'" : options.title;
+    plot.y = options.plotted;
+    plot.skip = !options.plot;
     const std::string stem = inverse_dynamics_file_stem(
         std::vector<std::string>(report.loads.units.begin() + 1, report.loads.units.end()));
     report.plot = write_table_and_plot(report.loads, out_dir, stem, plot);

@@ -23,6 +23,9 @@ namespace alembert {
 
 namespace {
 
+// the most rows a plot draws (calc_plot_rows): a 900-pixel-wide panel shows no more
+constexpr std::size_t kPlotRows = 4000;
+
 // gnuplot strings in single quotes: a quote is doubled
 std::string gp_quoted(const std::string& s) {
     std::string q = "'";
@@ -117,6 +120,10 @@ PlotResult plot_csv(const Table& table, const std::string& csv_path, const std::
     }
 
     PlotResult result;
+    if (options.skip) {
+        result.message = "not asked for (plot none)";
+        return result;
+    }
     if (!gnuplot_available()) {
         result.message = "plot not drawn: gnuplot ('" + gnuplot_program() +
                          "') was not found; install it (Debian: apt install gnuplot-nox) or set "
@@ -127,6 +134,40 @@ PlotResult plot_csv(const Table& table, const std::string& csv_path, const std::
     if (ys.empty()) {
         result.message = "plot not drawn: the table has no columns to draw";
         return result;
+    }
+
+    // gnuplot draws into temporary files renamed into place once both are complete, so an
+    // interrupted or failed run leaves no empty or partial plot
+    namespace fs = std::filesystem;
+    const std::string stamp = ".tmp" + std::to_string(static_cast<long>(::getpid()));
+    auto temporary_for = [&](const std::string& suffix) {
+        const fs::path target(output_base + suffix);
+        return (target.parent_path() / ("." + target.filename().string() + stamp)).string();
+    };
+    TemporaryFile png(temporary_for(".png")), svg(temporary_for(".svg"));
+    TemporaryFile err(temporary_for(".gnuplot-errors"));
+    // a long run is drawn from a thinned copy that keeps each curve's extremes: a plot cannot
+    // show more points than it has pixels, and gnuplot writing every row of a million-row run
+    // into the SVG took most of the run's time
+    TemporaryFile thinned(temporary_for(".csv"));
+    std::string data_path = csv_path;
+    std::size_t xc_drawn = xc;
+    std::map<std::size_t, std::size_t> y_drawn;
+    for (std::size_t c : ys) y_drawn[c] = c;
+    if (table.row_count() > kPlotRows) {
+        std::vector<std::size_t> keep(ys.begin(), ys.end());
+        keep.insert(keep.begin(), xc);
+        Table drawn;
+        for (std::size_t c : keep) {
+            drawn.names.push_back(table.names[c]);
+            drawn.units.push_back(table.units[c]);
+            drawn.columns.push_back(table.columns[c]);
+        }
+        write_csv(calc_table_rows(drawn, calc_plot_rows(drawn, kPlotRows)), thinned.path());
+        data_path = thinned.path();
+        // the thinned copy holds x, then the y columns in order
+        xc_drawn = 0;
+        for (std::size_t i = 0; i < ys.size(); ++i) y_drawn[ys[i]] = i + 1;
     }
 
     // the gnuplot script: one multiplot per terminal, one panel per unit
@@ -144,8 +185,8 @@ PlotResult plot_csv(const Table& table, const std::string& csv_path, const std::
         body += "plot ";
         bool first = true;
         for (std::size_t c : by_unit[unit]) {
-            body += (first ? "" : ", ") + gp_quoted(csv_path) + " every ::1 using " +
-                    std::to_string(xc + 1) + ":" + std::to_string(c + 1) +
+            body += (first ? "" : ", ") + gp_quoted(data_path) + " every ::1 using " +
+                    std::to_string(xc_drawn + 1) + ":" + std::to_string(y_drawn[c] + 1) +
                     " with lines lw 2 title " + gp_quoted(table.names[c]);
             first = false;
         }
@@ -153,16 +194,6 @@ PlotResult plot_csv(const Table& table, const std::string& csv_path, const std::
     }
     body += "unset multiplot\n";
     const std::string height = std::to_string(300 + 300 * rows);
-    // gnuplot draws into temporary files renamed into place once both are complete, so an
-    // interrupted or failed run leaves no empty or partial plot
-    namespace fs = std::filesystem;
-    const std::string stamp = ".tmp" + std::to_string(static_cast<long>(::getpid()));
-    auto temporary_for = [&](const std::string& suffix) {
-        const fs::path target(output_base + suffix);
-        return (target.parent_path() / ("." + target.filename().string() + stamp)).string();
-    };
-    TemporaryFile png(temporary_for(".png")), svg(temporary_for(".svg"));
-    TemporaryFile err(temporary_for(".gnuplot-errors"));
     std::string script = panels;
     script += "set terminal pngcairo size 900," + height + " font 'sans,10' noenhanced\n";
     script += "set output " + gp_quoted(png.path()) + "\n" + body;

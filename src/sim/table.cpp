@@ -4,6 +4,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <charconv>
 #include <cmath>
@@ -249,6 +250,52 @@ Table read_csv(const std::string& path) {
         throw ArgumentError(path + ":" + std::to_string(line_no) + ": the file has a header " +
                             "but no rows of numbers");
     return table;
+}
+
+std::vector<std::size_t> calc_plot_rows(const Table& table, std::size_t max_rows) {
+    const std::size_t n = table.row_count();
+    std::vector<std::size_t> rows;
+    const std::size_t series = table.columns.size() > 1 ? table.columns.size() - 1 : 1;
+    const std::size_t runs = std::max<std::size_t>(1, max_rows / (2 * series));
+    if (n <= std::max<std::size_t>(max_rows, 2) || n <= 2 * runs) {
+        for (std::size_t r = 0; r < n; ++r) rows.push_back(r);
+        return rows;
+    }
+    rows.push_back(0);
+    for (std::size_t k = 0; k < runs; ++k) {
+        // rows [begin, end) of run k
+        const std::size_t begin = k * n / runs, end = (k + 1) * n / runs;
+        std::vector<std::size_t> picked;
+        for (std::size_t c = 1; c < table.columns.size(); ++c) {
+            const std::vector<double>& v = table.columns[c];
+            std::size_t lo = begin, hi = begin;
+            for (std::size_t r = begin; r < end; ++r) {
+                if (v[r] < v[lo]) lo = r;
+                if (v[r] > v[hi]) hi = r;
+            }
+            picked.push_back(lo);
+            picked.push_back(hi);
+        }
+        if (picked.empty()) picked.push_back(begin);
+        std::sort(picked.begin(), picked.end());
+        for (std::size_t r : picked)
+            if (r != rows.back()) rows.push_back(r);
+    }
+    if (rows.back() != n - 1) rows.push_back(n - 1);
+    return rows;
+}
+
+Table calc_table_rows(const Table& table, const std::vector<std::size_t>& rows) {
+    Table out;
+    out.names = table.names;
+    out.units = table.units;
+    for (const std::vector<double>& column : table.columns) {
+        std::vector<double> v;
+        v.reserve(rows.size());
+        for (std::size_t r : rows) v.push_back(column[r]);
+        out.columns.push_back(std::move(v));
+    }
+    return out;
 }
 
 }  // namespace alembert

@@ -16,6 +16,13 @@ import tempfile
 import zlib
 
 failures = []
+# headless Chromium draws WebGL (the 3D view) in software; saying so keeps its console quiet
+WEBGL = ["--enable-unsafe-swiftshader"]
+# what the page's #exercise mode does with the controls, by the words of each step
+EXERCISE = ["unticking a series hides it", "ticking it shows it again", "the cursor reads values",
+            "dragging zooms into a time range", "show all zooms out again", "the 3D view is drawn",
+            "dragging turns the 3D view", "the time slider moves the model", "the time slider moves the 3D view",
+            "play starts the animation", "pause stops it"]
 
 
 def check(ok, what):
@@ -53,6 +60,13 @@ class Dom(html.parser.HTMLParser):
         self.play = False
         self.slider = False
         self.in_errors = False
+        self.rows = 0            # road-map rows (div.row)
+        self.constraint_rows = 0  # rows without a diagram (constraint rows)
+        self.canvas = None       # the 3D view's attributes
+        self.checks = []         # (kind, passed) per row of the checks panel
+        self.exercise = ""
+        self.image3d = ""
+        self.in_pre = None
 
     def classes(self, attrs):
         return set((dict(attrs).get("class") or "").split())
@@ -66,6 +80,14 @@ class Dom(html.parser.HTMLParser):
             self.status = a.get("data-status")
         if a.get("id") == "alembert-errors":
             self.in_errors = True
+        if tag == "pre" and a.get("id") in ("alembert-exercise", "alembert-3d"):
+            self.in_pre = a.get("id")
+        if tag == "div" and "row" in c:
+            self.rows += 1
+        if tag == "canvas" and "view3d" in c:
+            self.canvas = a
+        if tag == "tr" and a.get("data-kind"):
+            self.checks.append((a.get("data-kind"), "passed" in c))
         if tag == "svg" and "fbd" in c:
             self.fbds.append([int(a.get("data-loads", "-1")), 0])
         if tag == "g" and "load" in c and self.inside("svg", "fbd"):
@@ -100,13 +122,21 @@ class Dom(html.parser.HTMLParser):
                 break
         if tag == "pre":
             self.in_errors = False
+            self.in_pre = None
 
     def handle_data(self, data):
         if self.in_errors:
             self.errors += data
+        if self.in_pre == "alembert-exercise":
+            self.exercise += data
+        if self.in_pre == "alembert-3d":
+            self.image3d += data
+
         hidden = self.inside("annotation") or self.inside("script") or self.inside("style")
         if not hidden and "\\" in data:
             self.text_backslashes += 1
+        if not hidden and "no free-body diagram" in data:
+            self.constraint_rows += 1
 
 
 def png_pixels(path):
@@ -151,6 +181,182 @@ def png_pixels(path):
     return width, height, gray
 
 
+
+def console_lines(stderr):
+    """The page's console messages in Chromium's log, without the notes of its software GL
+    driver about its own speed ("GL Driver Message ... GPU stall due to ReadPixels"), which
+    are Chromium's, not the page's."""
+    return [l for l in stderr.splitlines() if "CONSOLE" in l and "GL Driver Message" not in l]
+
+
+def check_exercise(steps, expected, who):
+    """Every expected control was worked and did what it should."""
+    for want in expected:
+        found = [s for s in steps if want in s]
+        check(bool(found) and all(s.startswith("ok ") for s in found), "%s: control: %s (%s)" % (who, want, found))
+    for step in steps:
+        if not step.startswith("ok "):
+            check(False, "%s: control: %s" % (who, step))
+
+
+def page_data(index):
+    """The report's data as the page embeds it."""
+    import json
+    with open(index, encoding="utf-8") as f:
+        page = f.read()
+    start = page.index('id="alembert-data">') + len('id="alembert-data">')
+    return json.loads(page[start:page.index("</script>", start)])
+
+
+def open_page(browser, url, extra=()):
+    """Chromium's DOM of the page after its scripts, and its console lines."""
+    profile = tempfile.mkdtemp(prefix="alembert-chromium-")
+    try:
+        r = subprocess.run([browser, "--headless", "--disable-gpu", "--no-sandbox", "--user-data-dir=" + profile,
+                            "--hide-scrollbars", "--enable-logging=stderr", "--v=0", "--virtual-time-budget=3000"]
+                           + WEBGL + list(extra) + ["--dump-dom", url], capture_output=True, text=True, timeout=120)
+    finally:
+        shutil.rmtree(profile, ignore_errors=True)
+    dom = Dom()
+    dom.feed(r.stdout)
+    return dom, console_lines(r.stderr)
+
+
+def not_blank(png, who, min_dark=0.002):
+    w, h, gray = png_pixels(png)
+    mean = sum(gray) / len(gray)
+    var = sum((g - mean) ** 2 for g in gray) / len(gray)
+    dark = sum(1 for g in gray if g < 200) / len(gray)
+    check(var > 30 and min_dark < dark < 0.7, "%s: the picture is not blank (%dx%d, variance %.0f, %.1f%% drawn)"
+          % (who, w, h, var, 100 * dark))
+
+
+def three_d(cli, source, work, browser):
+    """Models in the 3D view: the four-bar swinging, a rolling disk, a spatial chain. Each is
+    drawn (sticks, bodies as their inertia ellipsoids), turns when dragged, follows the time
+    slider, and its checks pass: energy kept, constraints held, the methods agree."""
+    import base64
+    for name, kinds_expected in (("four_bar_motion", ["energy", "constraint", "methods"]),
+                                 ("rolling_disk_motion", ["energy", "constraint"]),
+                                 ("spatial_chain_motion", ["energy", "methods"])):
+        out = os.path.join(work, name)
+        shutil.rmtree(out, ignore_errors=True)
+        os.makedirs(out)
+        script = os.path.join(source, "tests", "report", name + ".alb")
+        r = subprocess.run([cli, "run", "-q", script, "--out", out], capture_output=True, text=True, timeout=300)
+        check(r.returncode == 0, "%s: the script writes its report (stderr: %s)" % (name, r.stderr.strip()[:300]))
+        index = os.path.join(out, "index.html")
+        if r.returncode != 0:
+            continue
+        data = page_data(index)
+        dom, console = open_page(browser, "file://" + os.path.abspath(index) + "#exercise")
+        check(dom.status == "ready" and not dom.errors.strip() and not console,
+              "%s: the viewer finished without errors (%r %s)" % (name, dom.errors.strip()[:200], console[:2]))
+        check(dom.canvas is not None, "%s: the 3D view is on the page" % name)
+        if dom.canvas is None:
+            continue
+        bodies = [b for b in data["animation"]["bodies"] if b["ellipsoid"]]
+        check(dom.canvas.get("data-sticks") == str(len(data["geometry"]["segments"])) and
+              dom.canvas.get("data-shells") == str(len(bodies)) and len(bodies) >= 1,
+              "%s: a stick per segment and an ellipsoid per rigid body (%s, %s)"
+              % (name, dom.canvas.get("data-sticks"), dom.canvas.get("data-shells")))
+        check_exercise(dom.exercise.strip().splitlines(),
+                       ["the 3D view is drawn", "dragging turns the 3D view", "the time slider moves the 3D view",
+                        "dragging zooms into a time range", "play starts the animation"], name)
+        if dom.image3d.startswith("data:image/png;base64,"):
+            png = os.path.join(out, "view3d.png")
+            with open(png, "wb") as f:
+                f.write(base64.b64decode(dom.image3d.split(",", 1)[1]))
+            not_blank(png, name + ": 3D view")
+        else:
+            check(False, "%s: the 3D view's picture was written" % name)
+        kinds = [k for k, _ in dom.checks]
+        check(set(kinds) == set(kinds_expected), "%s: the checks shown are %s (%s)" % (name, kinds_expected, kinds))
+        check(all(ok for _, ok in dom.checks) and len(dom.checks) > 0, "%s: every check passes (%s)" % (name, dom.checks))
+        if "methods" in kinds_expected:
+            check(kinds.count("methods") >= 3, "%s: Kane, Lagrange and Newton-Euler compared (%s)" % (name, kinds))
+
+
+def examples(cli, source, work, browser):
+    """Every example's report: written, drawn without errors, one free-body diagram per
+    road-map row with an arrow per load on S, every equation typeset, plots and animation
+    where the script computed histories, a screenshot that is not blank."""
+    import time
+    folder = os.path.join(source, "examples")
+    for name in sorted(os.listdir(folder)):
+        model = os.path.join(folder, name, "model.alb")
+        if not os.path.isfile(model):
+            continue
+        out = os.path.join(work, "examples", name)
+        shutil.rmtree(out, ignore_errors=True)
+        start = time.monotonic()
+        r = subprocess.run([cli, "report", model, "--out", out], capture_output=True, text=True, timeout=600)
+        seconds = time.monotonic() - start
+        check(r.returncode == 0, "%s: alembert report exits 0 in %.2f s (stderr: %s)" % (name, seconds, r.stderr.strip()[:300]))
+        index = os.path.join(out, "index.html")
+        if r.returncode != 0 or not os.path.isfile(index):
+            continue
+        data = page_data(index)
+        url = "file://" + os.path.abspath(index)
+        dom, console = open_page(browser, url)
+        check(dom.status == "ready" and not dom.errors.strip(), "%s: the viewer finished without errors (%r)"
+              % (name, dom.errors.strip()[:300]))
+        check(not console, "%s: no console messages (%s)" % (name, console[:2]))
+        rows = len(data["roadmap"])
+        drawn = [f for f in dom.fbds]
+        with_diagram = sum(1 for row in data["roadmap"] if row["diagram"])
+        check(dom.rows == rows and len(drawn) == with_diagram and dom.constraint_rows == rows - with_diagram,
+              "%s: one free-body diagram per road-map row (%d rows, %d diagrams, %d constraint rows)"
+              % (name, rows, len(drawn), dom.constraint_rows))
+        expected = [len(row["diagram"]["loads"]) for row in data["roadmap"] if row["diagram"]]
+        check([f[1] for f in drawn] == expected and all(n > 0 for n in expected),
+              "%s: an arrow per load on S %s" % (name, [f[1] for f in drawn]))
+        check(dom.equations >= rows and dom.katex == dom.equations and dom.raw == 0 and dom.text_backslashes == 0,
+              "%s: every equation typeset by KaTeX (%d of %d)" % (name, dom.katex, dom.equations))
+        series = sum(len(h["series"]) for h in data["histories"])
+        check(dom.plots == len(data["histories"]) and dom.series == series,
+              "%s: a plot per history with its series (%d plots, %d series)" % (name, dom.plots, dom.series))
+        if not data["geometry"]["planar"]:
+            check(dom.canvas is not None, "%s: a spatial model is shown in the 3D view" % name)
+        if data["animation"]:
+            check(dom.anim == 1 and dom.play and dom.slider and (dom.canvas is not None or data["geometry"]["planar"]),
+                  "%s: the animation with play and the time slider" % name)
+        profile = tempfile.mkdtemp(prefix="alembert-chromium-")
+        shot = os.path.join(out, "screenshot.png")
+        try:
+            subprocess.run([browser, "--headless", "--disable-gpu", "--no-sandbox", "--user-data-dir=" + profile,
+                            "--hide-scrollbars", "--virtual-time-budget=3000", "--window-size=1280,1600",
+                            "--screenshot=" + shot, url] + WEBGL, capture_output=True, text=True, timeout=120)
+        finally:
+            shutil.rmtree(profile, ignore_errors=True)
+        if os.path.isfile(shot):
+            not_blank(shot, name + ": screenshot")
+        else:
+            check(False, "%s: a screenshot was taken" % name)
+
+
+def options(cli, source, work, browser):
+    """alembert report's options: --plot chooses the series, --no-plots drops them, --check
+    adds the methods and the joint reactions compared, each check passing."""
+    model = os.path.join(source, "examples", "sit_to_stand", "model.alb")
+    for args, series, checked in ((["--plot", "T_A,T_B", "--check"], 2, True), (["--no-plots"], 0, False)):
+        out = os.path.join(work, "options" + "".join(a.strip("-").replace(",", "_") for a in args))
+        shutil.rmtree(out, ignore_errors=True)
+        r = subprocess.run([cli, "report", model, "--out", out] + args, capture_output=True, text=True, timeout=600)
+        check(r.returncode == 0, "report %s exits 0 (stderr: %s)" % (" ".join(args), r.stderr.strip()[:300]))
+        dom, console = open_page(browser, "file://" + os.path.abspath(os.path.join(out, "index.html")))
+        check(dom.status == "ready" and not dom.errors.strip() and not console,
+              "report %s: the viewer finished without errors" % " ".join(args))
+        check(dom.series == series and dom.plots == (1 if series else 0),
+              "report %s: %d series plotted (%d)" % (" ".join(args), series, dom.series))
+        kinds = [k for k, _ in dom.checks]
+        if checked:
+            check(kinds.count("methods") >= 3 and kinds.count("reactions") == 6 and all(ok for _, ok in dom.checks),
+                  "report %s: the methods and the six reaction measures compared, all passing (%s)"
+                  % (" ".join(args), dom.checks))
+        else:
+            check("methods" not in kinds, "report %s: no methods compared unless asked" % " ".join(args))
+
 def spatial(cli, source, work, browser):
     """A spatial model: drawn in a projection the user turns, every equation typeset."""
     out = os.path.join(work, "spatial")
@@ -162,7 +368,7 @@ def spatial(cli, source, work, browser):
     profile = tempfile.mkdtemp(prefix="alembert-chromium-")
     try:
         dump = subprocess.run([browser, "--headless", "--disable-gpu", "--no-sandbox", "--user-data-dir=" + profile,
-                               "--virtual-time-budget=3000", "--dump-dom",
+                               "--virtual-time-budget=3000"] + WEBGL + ["--dump-dom",
                                "file://" + os.path.abspath(os.path.join(out, "index.html"))],
                               capture_output=True, text=True, timeout=90)
     finally:
@@ -213,7 +419,7 @@ def main():
 
     profile = tempfile.mkdtemp(prefix="alembert-chromium-")
     flags = [browser, "--headless", "--disable-gpu", "--no-sandbox", "--user-data-dir=" + profile,
-             "--hide-scrollbars", "--enable-logging=stderr", "--v=0", "--virtual-time-budget=3000"]
+             "--hide-scrollbars", "--enable-logging=stderr", "--v=0", "--virtual-time-budget=3000"] + WEBGL
     url = "file://" + os.path.abspath(index)
     try:
         dump = subprocess.run(flags + ["--dump-dom", url], capture_output=True, text=True, timeout=90)
@@ -223,7 +429,7 @@ def main():
         worked = subprocess.run(flags + ["--dump-dom", url + "#exercise"], capture_output=True, text=True, timeout=90)
     finally:
         shutil.rmtree(profile, ignore_errors=True)
-    console = [l for l in dump.stderr.splitlines() if "CONSOLE" in l]
+    console = console_lines(dump.stderr)
     check(not console, "no console messages (%s)" % " | ".join(console[:3]))
 
     dom = Dom()
@@ -253,9 +459,7 @@ def main():
     # the time slider, play and pause
     start = worked.stdout.find('<pre id="alembert-exercise">')
     steps = worked.stdout[start:worked.stdout.find("</pre>", start)].split(">", 1)[-1].splitlines() if start >= 0 else []
-    check(len(steps) == 6, "the controls were exercised (%d steps)" % len(steps))
-    for step in steps:
-        check(step.startswith("ok "), "control: " + step)
+    check_exercise(steps, EXERCISE, "sit-to-stand")
 
     check(os.path.isfile(shot) and os.path.getsize(shot) > 20000, "a screenshot was taken")
     if os.path.isfile(shot):
@@ -265,7 +469,10 @@ def main():
         dark = sum(1 for g in gray if g < 128) / len(gray)
         check(w == 1280 and var > 100 and 0.002 < dark < 0.5,
               "the screenshot is not blank (%dx%d, variance %.0f, %.1f%% dark)" % (w, h, var, 100 * dark))
+    options(cli, source, work, browser)
     spatial(cli, source, work, browser)
+    three_d(cli, source, work, browser)
+    examples(cli, source, work, browser)
     print("report: %s" % index)
     return 1 if failures else 0
 

@@ -4,11 +4,14 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 
+#include "alembert/eom/cross_check.hpp"
 #include "alembert/eom/planner.hpp"
 #include "alembert/error.hpp"
 #include "alembert/mech/sample_models.hpp"
@@ -104,7 +107,8 @@ TEST(Report, HistoriesArePlottedAndTheirMotionAnimated) {
     s.content.histories.push_back(h);
     const std::string json = render_report_json(s.content);
     EXPECT_NE(json.find("\"title\":\"inverse "
-                        "dynamics\",\"rows\":3,\"time\":[0,0.5,1],\"time_unit\":\"s\",\"series\":[{"
+                        "dynamics\",\"rows\":3,\"plotted_rows\":3,\"time\":[0,0.5,1],\"time_unit\":"
+                        "\"s\",\"series\":[{"
                         "\"name\":\"T_A\",\"unit\":\"N*m\","
                         "\"values\":[1,2,3]}]"),
               std::string::npos);
@@ -113,24 +117,172 @@ TEST(Report, HistoriesArePlottedAndTheirMotionAnimated) {
     EXPECT_NE(json.find("\"time\":[0,0.5,1],\"frames\":[[", anim), std::string::npos);
 }
 
-TEST(Report, LongHistoriesAreThinnedForPlottingKeepingTheEnds) {
+// the values of the JSON array after `key` (from `from` on), as numbers
+std::vector<double> numbers_after(const std::string& json, const std::string& key,
+                                  std::size_t from = 0) {
+    std::size_t at = json.find(key, from);
+    EXPECT_NE(at, std::string::npos) << key;
+    if (at == std::string::npos) return {};
+    std::size_t begin = json.find('[', at) + 1, end = json.find(']', begin);
+    std::vector<double> out;
+    std::stringstream cells(json.substr(begin, end - begin));
+    for (std::string cell; std::getline(cells, cell, ',');) out.push_back(std::stod(cell));
+    return out;
+}
+
+TEST(Report, LongHistoriesAreThinnedForPlottingKeepingTheEndsAndTheExtremes) {
     SitToStand s;
     ReportHistory h;
     h.title = "simulation";
     h.table.add_column("t", "s");
     h.table.add_column("x", "m");
+    h.table.add_column("y", "m");
+    // a smooth x and a y that is 0 but for one row: the spike must survive thinning
     for (int k = 0; k <= 100000; ++k) {
         h.table.columns[0].push_back(k * 1e-3);
-        h.table.columns[1].push_back(k);
+        h.table.columns[1].push_back(std::sin(k * 1e-4));
+        h.table.columns[2].push_back(k == 61234 ? 5.0 : 0.0);
     }
     s.content.histories.push_back(h);
     const std::string json = render_report_json(s.content);
-    std::size_t at = json.find("\"title\":\"simulation\",\"rows\":100001,\"time\":[0,0.051,0.102,");
+    std::size_t at = json.find("\"title\":\"simulation\",\"rows\":100001,\"plotted_rows\":");
     ASSERT_NE(at, std::string::npos);
-    const std::size_t begin = json.find('[', at), end = json.find(']', at);
-    // every 51st of 100001 rows is 1961 samples, and the last row: 1962 values
-    EXPECT_EQ(count(json.substr(begin, end - begin), ",") + 1, 1962u);
-    EXPECT_NE(json.find(",100]", at), std::string::npos);
+    const std::vector<double> t = numbers_after(json, "\"time\":", at);
+    const std::vector<double> x = numbers_after(json, "\"values\":", at);
+    const std::vector<double> y =
+        numbers_after(json, "\"values\":", json.find("\"name\":\"y\"", at));
+    ASSERT_EQ(t.size(), x.size());
+    ASSERT_EQ(t.size(), y.size());
+    EXPECT_LE(t.size(), 2002u);
+    EXPECT_GE(t.size(), 1000u);
+    EXPECT_EQ(t.front(), 0);
+    EXPECT_EQ(t.back(), 100);
+    EXPECT_TRUE(std::is_sorted(t.begin(), t.end()));
+    EXPECT_EQ(*std::max_element(y.begin(), y.end()), 5.0);  // the one-row spike
+    EXPECT_NEAR(t[std::max_element(y.begin(), y.end()) - y.begin()], 61.234, 1e-9);
+    // x = sin(t/10) over 0..100 s: its greatest value 1 and least -1 are kept (to 6 digits)
+    EXPECT_NEAR(*std::max_element(x.begin(), x.end()), 1.0, 1e-6);
+    EXPECT_NEAR(*std::min_element(x.begin(), x.end()), -1.0, 1e-6);
+}
+
+TEST(Report, PlotControlChoosesTheSeriesOrSkipsThePlots) {
+    SitToStand s;
+    ReportHistory h;
+    h.title = "simulation";
+    for (const char* n : {"t", "qA", "qB", "energy"}) h.table.add_column(n, "");
+    for (auto& c : h.table.columns) c = {0, 1, 2};
+    s.content.histories.push_back(h);
+    s.content.plotted = {"qB"};
+    std::string json = render_report_json(s.content);
+    const std::size_t from = json.find("\"histories\":");
+    const std::string plots = json.substr(from, json.find("\"animation\":", from) - from);
+    EXPECT_NE(plots.find("\"series\":[{\"name\":\"qB\""), std::string::npos);
+    EXPECT_EQ(plots.find("\"name\":\"qA\""), std::string::npos);
+    EXPECT_EQ(plots.find("\"name\":\"energy\""), std::string::npos);
+    s.content.plotted.clear();
+    s.content.plot_histories = false;
+    json = render_report_json(s.content);
+    EXPECT_NE(json.find("\"histories\":[]"), std::string::npos);
+}
+
+TEST(Report, ChecksMeasureEnergyDriftAndTheMethodsCompared) {
+    SitToStand s;
+    ReportHistory h;
+    h.title = "simulation";
+    h.table.add_column("t", "s");
+    h.table.add_column("energy", "J");
+    h.table.add_column("drift_loop", "m");
+    h.table.columns[0] = {0, 1, 2, 3};
+    h.table.columns[1] = {10, 10 + 2e-9, 10 - 4e-9, 10};  // changes by 4e-10 of its largest
+    h.table.columns[2] = {0, 3e-7, -2e-3, 0};             // a drift of 2 mm fails the check
+    s.content.histories.push_back(h);
+    s.content.methods = compare_methods(s.m.system, s.m.q);
+    std::vector<ReportCheck> checks = calc_report_checks(s.content);
+    ASSERT_GE(checks.size(), 2u);
+    EXPECT_EQ(checks[0].kind, "energy");
+    EXPECT_NEAR(checks[0].value, 4e-9 / (10 + 2e-9), 1e-15);
+    EXPECT_TRUE(checks[0].passed);
+    EXPECT_EQ(checks[1].kind, "constraint");
+    EXPECT_EQ(checks[1].value, 2e-3);
+    EXPECT_EQ(checks[1].unit, "m");
+    EXPECT_FALSE(checks[1].passed);
+    // every other method against the road-map (Kane, Lagrange, Newton-Euler, ...), within 1e-8
+    std::size_t methods = 0;
+    for (const ReportCheck& c : checks)
+        if (c.kind == "methods") {
+            ++methods;
+            EXPECT_TRUE(c.passed) << c.summary;
+            EXPECT_LT(c.value, 1e-8);
+        }
+    ASSERT_GE(s.content.methods->methods.size(), 4u);
+    EXPECT_EQ(methods, s.content.methods->methods.size() - 1);
+    const std::string json = render_report_json(s.content);
+    EXPECT_NE(
+        json.find("\"checks\":[{\"kind\":\"energy\",\"name\":\"energy\",\"source\":\"simulation\""),
+        std::string::npos);
+}
+
+TEST(Report, TheAnimationCarriesEachBodysAxesForThe3DView) {
+    SitToStand s;
+    ReportHistory h;
+    h.title = "simulation";
+    h.table.add_column("t", "s");
+    h.table.columns[0] = {0, 1};
+    h.coordinates = s.m.q;
+    // qA = 0 then pi/2: A's x axis turns from Nx to Ny
+    h.motion = {{0, 1.5707963267948966}, {0, 0}, {0, 0}};
+    s.content.histories.push_back(h);
+    const std::string json = render_report_json(s.content);
+    EXPECT_NE(json.find("\"bodies\":[{\"name\":\"A\",\"cm\":\"Acm\",\"ellipsoid\":{"),
+              std::string::npos);
+    EXPECT_NE(json.find("{\"name\":\"C\",\"cm\":\"Ccm\",\"ellipsoid\":{"), std::string::npos);
+    // A's inertia is I_A about Az alone (a segment in the plane): its uniform ellipsoid is the
+    // flat ellipse a^2 = 5 (I_A + 0 - 0) / (2 m_A) in the x-y plane, no thickness along Az
+    const SymbolTable& st = s.m.system.symbols();
+    const double I_A = *st.value(st.symbol("I_A")), m_A = *st.value(st.symbol("m_A"));
+    const std::size_t shell = json.find("\"ellipsoid\":", json.find("\"bodies\":[{\"name\":\"A\""));
+    std::vector<double> axes = numbers_after(json, "\"axes\":", shell);
+    const std::vector<double> directions = numbers_after(json, "\"directions\":", shell);
+    ASSERT_EQ(axes.size(), 3u);
+    ASSERT_EQ(directions.size(), 9u);
+    std::vector<double> sorted = axes;
+    std::sort(sorted.begin(), sorted.end());
+    EXPECT_NEAR(sorted[0], 0, 1e-6);
+    EXPECT_NEAR(sorted[1], std::sqrt(2.5 * I_A / m_A), 1e-5);
+    EXPECT_NEAR(sorted[2], std::sqrt(2.5 * I_A / m_A), 1e-5);
+    const int flat = static_cast<int>(std::min_element(axes.begin(), axes.end()) - axes.begin());
+    EXPECT_NEAR(std::abs(directions[3 * flat + 2]), 1.0, 1e-6);  // the flat axis is along Az
+    // gravity -g Ny: up is +Ny
+    EXPECT_NE(json.find("\"up\":[0,"), std::string::npos);
+    const std::size_t anim = json.find("\"animation\":");
+    const std::vector<double> frame1 = numbers_after(json, "],[", json.find("\"frames\":", anim));
+    const std::size_t points = frame1.size() - 27;  // 3 per point, then 9 per body
+    ASSERT_EQ(points % 3, 0u);
+    // A's axes at qA = pi/2: x along Ny, y along -Nx, z along Nz
+    const std::vector<double> A(frame1.begin() + points, frame1.begin() + points + 9);
+    const std::vector<double> expected{0, 1, 0, -1, 0, 0, 0, 0, 1};
+    for (int k = 0; k < 9; ++k) EXPECT_NEAR(A[k], expected[k], 1e-6) << k;
+}
+
+TEST(Report, ThreeJsIsInlinedOnlyWhereThereIsA3DView) {
+    SitToStand s;
+    namespace fs = std::filesystem;
+    const fs::path dir = fs::temp_directory_path() / "alembert_three";
+    fs::create_directories(dir);
+    std::ofstream(dir / "three.min.js") << "var THREE_MARKER = 1;";
+    // planar and no motion: no 3D view, no three.js
+    EXPECT_EQ(render_report_html(s.content, "", dir.string()).find("THREE_MARKER"),
+              std::string::npos);
+    ReportHistory h;
+    h.title = "simulation";
+    h.table.add_column("t", "s");
+    h.table.columns[0] = {0, 1};
+    h.coordinates = s.m.q;
+    h.motion = {{0, 1}, {0, 0}, {0, 0}};
+    s.content.histories.push_back(h);
+    EXPECT_NE(render_report_html(s.content, "", dir.string()).find("THREE_MARKER"),
+              std::string::npos);
+    fs::remove_all(dir);
 }
 
 TEST(Report, SameContentGivesTheSameBytes) {
@@ -227,9 +379,19 @@ TEST(ReportLatex, TheRoadmapTableTheLoadsAndTheEquationsForAPaper) {
         std::string::npos)
         << tex;
     EXPECT_NE(
-        tex.find("\\item $S = \\{C\\}$ (for $T_{C}$): T\\_C on C from B (unknown); gravity at Ccm; "
-                 "joint force at C\\_o from B (unknown)."),
+        tex.find(
+            "\\paragraph{$S = \\{C\\}$ for $T_{C}$.} T\\_C on C from B (unknown); gravity at Ccm; "
+            "joint force at C\\_o from B (unknown)."),
         std::string::npos);
+    // one TikZ picture per row, each with an arrow per load on S: {A,B,C}: T_A, 3 weights, the
+    // ground's force at A_o; {B,C}: T_B, 2 weights, A's force; {C}: T_C, its weight, B's force
+    EXPECT_EQ(count(tex, "\\begin{tikzpicture}"), 3u);
+    std::vector<std::size_t> loads;
+    for (std::size_t at = tex.find("\\begin{tikzpicture}"); at != std::string::npos;
+         at = tex.find("\\begin{tikzpicture}", at + 1))
+        loads.push_back(count(tex.substr(at, tex.find("\\end{tikzpicture}", at) - at), "% load: "));
+    EXPECT_EQ(loads, (std::vector<std::size_t>{5, 4, 3}));
+    EXPECT_EQ(count(tex, "node[below left] {$O$}"), 3u);  // each about point marked
     EXPECT_EQ(count(tex, "\\[ E_{T_{"), 3u);
     EXPECT_EQ(count(tex, "\\begin{aligned}"), count(tex, "\\end{aligned}"));
     EXPECT_NE(tex.find("\\end{document}"), std::string::npos);

@@ -52,6 +52,32 @@ TEST(PlotCsv, DrawsPngAndSvgWithOnePanelPerUnit) {
     fs::remove_all(dir);
 }
 
+TEST(PlotCsv, LongRunsAreDrawnFromAThinnedCopyThatKeepsTheSpikes) {
+    if (!gnuplot_available()) GTEST_SKIP() << "gnuplot is not installed";
+    const fs::path dir = scratch();
+    // 200000 rows, one of them a spike to 1000: every row in the CSV, about 4000 in the plot
+    Table t;
+    t.add_column("t", "s");
+    t.add_column("x", "m");
+    for (int i = 0; i < 200000; ++i) {
+        t.columns[0].push_back(1e-3 * i);
+        t.columns[1].push_back(i == 123457 ? 1000.0 : 0.001 * (i % 97));
+    }
+    PlotResult r = write_table_and_plot(t, dir.string(), "long");
+    ASSERT_TRUE(r.drawn) << r.message;
+    EXPECT_EQ(read_csv((dir / "long.csv").string()).row_count(), 200000u);
+    std::ifstream svg(dir / "long.svg");
+    std::string text((std::istreambuf_iterator<char>(svg)), std::istreambuf_iterator<char>());
+    // the y axis reaches the spike: gnuplot labels it 1000
+    EXPECT_NE(text.find(" 1000</text>"), std::string::npos);
+    // every row drawn would take several MB of path; the thinned copy well under one
+    EXPECT_LT(text.size(), 1000000u);
+    // no temporary left beside the plot
+    for (const auto& entry : fs::directory_iterator(dir))
+        EXPECT_EQ(entry.path().filename().string().find(".tmp"), std::string::npos) << entry.path();
+    fs::remove_all(dir);
+}
+
 TEST(PlotCsv, WithoutGnuplotSaysWhatToInstallAndKeepsTheCsv) {
     const fs::path dir = scratch();
     ::setenv("ALEMBERT_GNUPLOT", "/nonexistent/gnuplot", 1);

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <cmath>
 #include <fstream>
@@ -138,6 +139,49 @@ TEST(Table, AnUnwritablePathIsAnArgumentError) {
     t.add_column("t", "s");
     EXPECT_THROW_MSG(write_csv(t, "/nonexistent-dir/x.csv"), ArgumentError,
                      "write_csv(): cannot write '/nonexistent-dir/x.csv'");
+}
+
+}  // namespace
+}  // namespace alembert
+
+namespace alembert {
+namespace {
+
+TEST(PlotRows, ShortTablesKeepEveryRowLongOnesTheirEndsAndEachStretchsExtremes) {
+    Table t;
+    t.add_column("t", "s");
+    t.add_column("a", "");
+    t.add_column("b", "");
+    for (int k = 0; k < 10; ++k) {
+        t.columns[0].push_back(k);
+        t.columns[1].push_back(k);
+        t.columns[2].push_back(-k);
+    }
+    EXPECT_EQ(calc_plot_rows(t, 10).size(), 10u);
+    // 100000 rows, 400 wanted: 400 / (2 x 2 series) = 100 stretches of 1000 rows; a rises
+    // inside each stretch except for a dip at row 12345, b is a single spike at row 77777
+    for (auto& c : t.columns) c.clear();
+    for (int k = 0; k < 100000; ++k) {
+        t.columns[0].push_back(k);
+        t.columns[1].push_back(k == 12345 ? -1e9 : k % 1000);
+        t.columns[2].push_back(k == 77777 ? 1e9 : 0);
+    }
+    const std::vector<std::size_t> rows = calc_plot_rows(t, 400);
+    EXPECT_LE(rows.size(), 402u);
+    EXPECT_EQ(rows.front(), 0u);
+    EXPECT_EQ(rows.back(), 99999u);
+    EXPECT_TRUE(std::is_sorted(rows.begin(), rows.end()));
+    EXPECT_EQ(std::adjacent_find(rows.begin(), rows.end()), rows.end());  // no row twice
+    EXPECT_NE(std::find(rows.begin(), rows.end(), 12345u), rows.end());
+    EXPECT_NE(std::find(rows.begin(), rows.end(), 77777u), rows.end());
+    // each stretch's top of a (row 1000 k + 999) is kept
+    for (std::size_t k = 0; k < 100; ++k)
+        EXPECT_NE(std::find(rows.begin(), rows.end(), 1000 * k + 999), rows.end()) << k;
+    const Table thin = calc_table_rows(t, rows);
+    EXPECT_EQ(thin.names, t.names);
+    EXPECT_EQ(thin.row_count(), rows.size());
+    EXPECT_EQ(*std::min_element(thin.columns[1].begin(), thin.columns[1].end()), -1e9);
+    EXPECT_EQ(*std::max_element(thin.columns[2].begin(), thin.columns[2].end()), 1e9);
 }
 
 }  // namespace

@@ -72,4 +72,9 @@ std::string format_roadmap_table(const System& sys, const std::vector<RoadmapRow
 /// The road-map as JSON: an array of row objects with the same fields as the table.
 std::string format_roadmap_json(const System& sys, const std::vector<RoadmapRow>& rows);
 
+/// `s` as the inside of a JSON string (quotes, backslashes and control characters escaped).
+/// With `for_script`, '<', '>' and '&' are written as \u003c, \u003e and \u0026 too, so the
+/// JSON can sit inside an HTML <script> element (the report embeds its data that way).
+std::string json_escape(const std::string& s, bool for_script = false);
+
 }  // namespace alembert

@@ -34,6 +34,15 @@ enum class RunStatus {
 /// The interpreter never throws at the user: an error in a statement (lexical, syntactic, a
 /// dimension mismatch, or an alembert::Error from the library) becomes a Diagnostic printed to
 /// the error stream with the offending line and a caret, and run() stops there.
+/// What a report shows beyond the model (the `report` statement's clauses, `alembert report`'s
+/// options).
+struct ReportSettings {
+    bool latex_only = false;            ///< write roadmap.tex alone (`latex`, --latex)
+    bool check = false;                 ///< compare the methods and reactions (`check`, --check)
+    bool plots = true;                  ///< plot the histories (`plot none`, --no-plots)
+    std::vector<std::string> plotted{};  ///< the columns plotted (`plot qA, T_A`); empty: all
+};
+
 class Interpreter {
 public:
     /// Transcripts go to `out`, diagnostics to `err`. With `echo`, statements are echoed.
@@ -92,8 +101,9 @@ public:
     /// directory, named `name` (empty: the script's name): `alembert codegen`.
     RunStatus run_codegen(const std::string& language, const std::string& name);
     /// The HTML report of the model run so far (the `report` statement's work) written to
-    /// `dir`/index.html: `alembert report`. Errors go to `err`.
-    RunStatus write_report(const std::string& dir);
+    /// `dir`/index.html: `alembert report`; with `settings.latex_only` only `dir`/roadmap.tex
+    /// (the `latex` statement's work). Errors go to `err`.
+    RunStatus write_report(const std::string& dir, const ReportSettings& settings = {});
     /// The model built so far, or nullptr before `newtonian`.
     const System* system() const;
 

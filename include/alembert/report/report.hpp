@@ -3,9 +3,11 @@
 #pragma once
 
 #include <map>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "alembert/eom/cross_check.hpp"
 #include "alembert/eom/roadmap.hpp"
 #include "alembert/sim/table.hpp"
 
@@ -35,7 +37,32 @@ struct ReportContent {
     std::vector<ReportHistory> histories{};
     /// Remarks shown at the top of the page (why there is no road-map, ...).
     std::vector<std::string> notes{};
+    /// Plot the histories at all; and which of their columns (by name; empty: every one).
+    bool plot_histories = true;
+    std::vector<std::string> plotted{};
+    /// The cross-checks between methods, when they were run (alembert::compare_methods,
+    /// alembert::compare_reactions).
+    std::optional<MethodComparison> methods{};
+    std::optional<ReactionComparison> reactions{};
 };
+
+/// One line of the report's checks panel.
+struct ReportCheck {
+    std::string kind{};     ///< "energy", "constraint", "methods", "reactions"
+    std::string name{};     ///< what was checked: "energy", "drift_loop_x", "Kane", "F_Ac"
+    std::string source{};   ///< the history it came from ("simulation"), or "random states"
+    double value = 0;       ///< the measure: relative energy change, largest residual, difference
+    std::string unit{};     ///< the measure's unit ("" for relative measures)
+    bool passed = false;    ///< value within the bound below
+    std::string summary{};  ///< one sentence for the reader
+};
+
+/// The checks a report shows, from what was computed: for each history with an `energy`
+/// column, its largest change from the start relative to its largest magnitude (passed below
+/// 1e-6); for each `drift_*` column, the largest |residual| (passed below 1e-6 in its unit);
+/// for the method and reaction comparisons when run, each method's or measure's largest
+/// scaled difference (passed below 1e-8).
+std::vector<ReportCheck> calc_report_checks(const ReportContent& content);
 
 /// The report as one HTML page: the content as JSON inside the page and the fixed viewer
 /// (src/report/viewer) inlined, with KaTeX's script and style when `katex_dir` holds them.
@@ -43,19 +70,29 @@ struct ReportContent {
 /// configuration: for each row, the loads external to S (as describe_free_body_diagram lists
 /// them; gravity one arrow per mass centre), the about point and the direction.
 /// @throws alembert::ArgumentError if the content has no system.
-std::string render_report_html(const ReportContent& content, const std::string& katex_dir);
+/// With `three_dir` holding three.min.js (Debian's libjs-three) and a motion or a spatial
+/// model to show, three.js is inlined too and the page adds a 3D view the reader turns.
+std::string render_report_html(const ReportContent& content, const std::string& katex_dir,
+                               const std::string& three_dir = "");
 
 /// The content's data alone, as the JSON the page embeds (deterministic key and row order).
 std::string render_report_json(const ReportContent& content);
 
-/// The road-map as a LaTeX document (article, amsmath) for a paper or a homework solution: the
-/// table in the seed's columns, each row's free-body diagram as the list of its loads, and the
-/// equations, one display each, with the named intermediates they use defined after them.
+/// The road-map as a LaTeX document (article, amsmath, tikz) for a paper or a homework
+/// solution: the table in the seed's columns; each row's free-body diagram drawn in TikZ as the
+/// page draws it (the model's sticks at the configuration, S in ink and the rest grey, each load
+/// on S as an arrow at its point, the about point and the direction; spatial models in the
+/// page's default oblique view), with its loads listed; and the equations, one display each,
+/// with the named intermediates they use defined after them.
 std::string render_report_latex(const ReportContent& content);
 
 /// Where KaTeX is read from: $ALEMBERT_KATEX_DIR if set, else the build's default (Debian's
 /// libjs-katex, /usr/share/javascript/katex).
 std::string default_katex_dir();
+
+/// Where three.js is read from: $ALEMBERT_THREE_DIR if set, else the build's default (Debian's
+/// libjs-three, /usr/share/javascript/three).
+std::string default_three_dir();
 
 /// Writes DIR/index.html (and KaTeX's fonts in DIR/fonts/) and DIR/roadmap.tex
 /// (render_report_latex), each written to a temporary and
@@ -63,6 +100,11 @@ std::string default_katex_dir();
 /// how to install it. Returns the path of index.html.
 /// @throws alembert::ArgumentError naming DIR if it cannot be created or written.
 std::string write_report(const ReportContent& content, const std::string& dir);
+
+/// Writes DIR/roadmap.tex alone (render_report_latex), to a temporary and renamed; DIR is
+/// created if needed. Returns its path.
+/// @throws alembert::ArgumentError naming DIR if it cannot be created or written.
+std::string write_report_latex(const ReportContent& content, const std::string& dir);
 
 /// `e` as TeX: terms and factors in a deterministic order (sorted by their printed form),
 /// products as \frac where there are negative powers, sin and cos as \sin and \cos, primes

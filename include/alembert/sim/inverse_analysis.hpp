@@ -23,6 +23,9 @@ struct InverseAnalysisOptions {
     std::vector<std::string> units{};
     /// Title of the plot; empty: "inverse dynamics of '<model>'".
     std::string title{};
+    /// The columns plotted (empty: every load measure) and whether to plot at all.
+    std::vector<std::string> plotted{};
+    bool plot = true;
     /// Largest residual (SI: m, rad, m/s) the motion may leave in a constraint of the model
     /// (InverseDynamics::constraint_names) at any sample; beyond it the motion is refused.
     double constraint_tolerance = 1e-6;

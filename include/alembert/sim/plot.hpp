@@ -17,6 +17,8 @@ struct PlotOptions {
     /// The columns to draw; empty: every column but x. Columns sharing a unit share a panel
     /// (one panel per unit, stacked), so angles and energies are not squeezed onto one axis.
     std::vector<std::string> y{};
+    /// Draw nothing (a script's `plot none`): plot_csv returns at once, `drawn` false.
+    bool skip = false;
 };
 
 /// What plotting did.
@@ -32,6 +34,8 @@ std::string gnuplot_program();
 /// True if gnuplot_program() runs.
 bool gnuplot_available();
 
+/// A table longer than a plot needs (more than 4000 rows) is drawn from a thinned copy that
+/// keeps each column's extremes (calc_plot_rows), written beside the plot and removed after.
 /// Draws columns of `table`, whose numbers are in the CSV file `csv_path` (as write_csv wrote
 /// it), into `output_base`.png (pngcairo, 900x600 per panel row) and `output_base`.svg with
 /// gnuplot. gnuplot was chosen over MathGL and PLplot because Debian's gnuplot-nox is one small

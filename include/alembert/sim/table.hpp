@@ -40,6 +40,17 @@ struct Table {
     std::size_t column_index(const std::string& name) const;
 };
 
+/// The rows of `table` to draw when a plot needs at most about `max_rows` of them: every row
+/// if there are no more than that; else the first and last rows and, in each of
+/// max_rows / (2 (columns - 1)) runs of consecutive rows, the rows where each column but the
+/// first (the time) takes its least and its greatest value. So a thinned curve keeps its
+/// extremes (a spike one row wide survives), in increasing row order, with at most
+/// max_rows + 2 rows. O(rows x columns).
+std::vector<std::size_t> calc_plot_rows(const Table& table, std::size_t max_rows);
+
+/// `table` restricted to `rows` (as calc_plot_rows gives them), same names and units.
+Table calc_table_rows(const Table& table, const std::vector<std::size_t>& rows);
+
 /// Writes `table` as CSV: a header row "name [unit]" per column (a name alone when the unit
 /// is empty), then one row per sample. With `digits` 0 (the default) each number is written
 /// in the shortest form that reads back as the same double (at most 17 significant digits:

@@ -224,6 +224,52 @@
       table(sec, ["unknown", "unit"], m.unknowns.map(function (u) { return [u.name, u.unit]; }));
   }
 
+  // the drawn free-body diagrams, [box, row]; a spatial model's turn when dragged
+  var diagrams = [];
+  function redrawDiagrams(data) {
+    diagrams.forEach(function (d) {
+      var old = d[0].querySelector("svg.fbd");
+      if (old) d[0].removeChild(old);
+      drawDiagram(d[0], data, d[1]);
+    });
+    ["turn", "tilt"].forEach(function (c) {
+      var input = document.getElementById("view-" + c);
+      if (input) input.value = view[c];
+    });
+  }
+  function turnable(data) {
+    if (data.geometry.planar) return;
+    var drag = null;
+    document.addEventListener("mousedown", function (e) {
+      if (e.target.closest && e.target.closest("svg.fbd")) { drag = [e.clientX, e.clientY]; e.preventDefault(); }
+    });
+    window.addEventListener("mouseup", function () { drag = null; });
+    window.addEventListener("mousemove", function (e) {
+      if (!drag) return;
+      view.turn -= 0.01 * (e.clientX - drag[0]);
+      view.tilt = Math.max(-1.5, Math.min(1.5, view.tilt + 0.01 * (e.clientY - drag[1])));
+      drag = [e.clientX, e.clientY];
+      redrawDiagrams(data);
+    });
+  }
+
+  // ---- checks: energy, constraint drift, methods compared ---------------------------------
+  function checks(main, data) {
+    if (!data.checks || !data.checks.length) return;
+    var sec = el("section", {id: "checks"}, main);
+    el("h2", {}, sec, "Checks");
+    var t = table(sec, ["check", "of", "from", "measure", "verdict"], [], "data checks");
+    var body = t.querySelector("tbody");
+    data.checks.forEach(function (c) {
+      var tr = el("tr", {"class": c.passed ? "passed" : "failed", "data-kind": c.kind}, body);
+      el("td", {}, tr, c.kind);
+      el("td", {}, tr, c.name);
+      el("td", {}, tr, c.source);
+      el("td", {}, tr, fmt(c.value) + (c.unit ? " " + c.unit : ""));
+      el("td", {title: c.summary}, tr, (c.passed ? "\u2713 " : "\u2717 ") + c.summary);
+    });
+  }
+
   function roadmap(main, data) {
     var sec = el("section", {id: "roadmap"}, main);
     el("h2", {}, sec, "MG road-map");
@@ -239,7 +285,7 @@
       table(card, head, [cells], "data roadmap-row");
       var body = el("div", {"class": "row-body"}, card);
       var pic = el("div", {"class": "fbd-box"}, body);
-      if (row.diagram) drawDiagram(pic, data, row);
+      if (row.diagram) { drawDiagram(pic, data, row); diagrams.push([pic, row]); }
       else el("p", {"class": "note"}, pic, "constraint " + row.constraint + ": no free-body diagram");
       var eq = el("div", {"class": "eq-box"}, body);
       el("div", {"class": "eq-name"}, eq, "E_" + row.variable + ":");
@@ -261,10 +307,13 @@
     for (var v = Math.ceil(lo / step) * step; v <= hi + 1e-9 * span; v += step) out.push(Math.abs(v) < 1e-12 * span ? 0 : v);
     return out;
   }
+  var plotCount = 0;
   function plot(parent, h) {
+    ++plotCount;
     var W = 720, H = 300, ml = 60, mr = 20, mt = 16, mb = 40;
     var fig = el("figure", {"class": "plot"}, parent);
-    el("figcaption", {}, fig, h.title);
+    el("figcaption", {}, fig, h.title + (h.plotted_rows < h.rows ? " (" + h.rows + " rows, " + h.plotted_rows +
+       " plotted: each stretch of the run keeps its least and greatest values)" : ""));
     var s = svg("svg", {"class": "plot-svg", viewBox: "0 0 " + W + " " + H, width: W, height: H}, fig);
     var shown = h.series.map(function () { return true; });
     var readout = el("div", {"class": "readout"}, fig, "move over the plot to read values");
@@ -275,14 +324,33 @@
       lab.appendChild(document.createTextNode(" " + ser.name + (ser.unit ? " [" + ser.unit + "]" : "")));
       box.addEventListener("change", function () { shown[k] = box.checked; draw(); });
     });
-    var t = h.time, x0 = t[0], x1 = t[t.length - 1] === x0 ? x0 + 1 : t[t.length - 1];
-    var cursor = null;
+    var t = h.time, full0 = t[0], full1 = t[t.length - 1] === full0 ? full0 + 1 : t[t.length - 1];
+    var x0 = full0, x1 = full1;
+    var cursor = null, band = null;
+    var zoomBar = el("div", {"class": "zoom"}, fig);
+    var reset = el("button", {type: "button", "class": "zoom-reset", disabled: "disabled"}, zoomBar, "show all");
+    el("span", {"class": "note"}, zoomBar, " drag across the plot to zoom into a time range; double-click or \u201cshow all\u201d to zoom out");
+    reset.addEventListener("click", function () { zoomTo(full0, full1); });
+    function zoomTo(a, b) {
+      if (!(b > a)) return;
+      x0 = Math.max(full0, a); x1 = Math.min(full1, b);
+      if (x0 === full0 && x1 === full1) reset.setAttribute("disabled", "disabled");
+      else reset.removeAttribute("disabled");
+      fig.setAttribute("data-range", fmt(x0) + " " + fmt(x1));
+      draw();
+    }
+    function timeAt(e) {
+      var r = s.getBoundingClientRect(), x = (e.clientX - r.left) * W / r.width;
+      return x0 + (x - ml) / (W - ml - mr) * (x1 - x0);
+    }
     function draw() {
       while (s.firstChild) s.removeChild(s.firstChild);
       var lo = Infinity, hi = -Infinity;
       h.series.forEach(function (ser, k) {
         if (!shown[k]) return;
-        ser.values.forEach(function (v) { if (v !== null) { lo = Math.min(lo, v); hi = Math.max(hi, v); } });
+        ser.values.forEach(function (v, i) {
+          if (v !== null && t[i] >= x0 && t[i] <= x1) { lo = Math.min(lo, v); hi = Math.max(hi, v); }
+        });
       });
       if (!isFinite(lo)) { lo = -1; hi = 1; }
       if (hi === lo) { hi += 1; lo -= 1; }
@@ -298,19 +366,39 @@
         svg("text", {x: X(v), y: H - mb + 16, "text-anchor": "middle"}, axes, fmt(v));
       });
       svg("text", {x: (W + ml) / 2, y: H - 6, "text-anchor": "middle"}, axes, "t" + (h.time_unit ? " [" + h.time_unit + "]" : ""));
+      var clip = "clip-" + plotCount;
+      svg("rect", {x: ml, y: mt, width: W - ml - mr, height: H - mt - mb}, svg("clipPath", {id: clip}, s));
       h.series.forEach(function (ser, k) {
         if (!shown[k]) return;
         var pts = [];
-        ser.values.forEach(function (v, i) { if (v !== null) pts.push(X(t[i]).toFixed(2) + "," + Y(v).toFixed(2)); });
+        ser.values.forEach(function (v, i) {
+          // the rows in view and one on either side, so lines reach the edges
+          if (v !== null && (i + 1 < t.length ? t[i + 1] >= x0 : true) && (i > 0 ? t[i - 1] <= x1 : true))
+            pts.push(X(t[i]).toFixed(2) + "," + Y(v).toFixed(2));
+        });
         svg("polyline", {points: pts.join(" "), fill: "none", stroke: palette[k % palette.length], "stroke-width": 1.8,
-                         "class": "series", "data-series": ser.name}, s);
+                         "class": "series", "data-series": ser.name, "clip-path": "url(#" + clip + ")"}, s);
       });
       cursor = svg("line", {x1: -10, x2: -10, y1: mt, y2: H - mb, "class": "cursor"}, s);
+      band = svg("rect", {x: 0, y: mt, width: 0, height: H - mt - mb, "class": "zoom-band"}, s);
       s.X = X;
     }
+    var dragFrom = null;
+    s.addEventListener("mousedown", function (e) { dragFrom = timeAt(e); e.preventDefault(); });
+    window.addEventListener("mouseup", function (e) {
+      if (dragFrom === null) return;
+      var a = dragFrom, b = timeAt(e);
+      dragFrom = null;
+      band.setAttribute("width", 0);
+      if (Math.abs(b - a) > 0.01 * (x1 - x0)) zoomTo(Math.min(a, b), Math.max(a, b));
+    });
+    s.addEventListener("dblclick", function () { zoomTo(full0, full1); });
     s.addEventListener("mousemove", function (e) {
-      var r = s.getBoundingClientRect(), x = (e.clientX - r.left) * W / r.width;
-      var tv = x0 + (x - ml) / (W - ml - mr) * (x1 - x0), best = 0;
+      var tv = timeAt(e), best = 0;
+      if (dragFrom !== null) {
+        var xa = s.X(Math.max(x0, Math.min(x1, dragFrom))), xb = s.X(Math.max(x0, Math.min(x1, tv)));
+        band.setAttribute("x", Math.min(xa, xb)); band.setAttribute("width", Math.abs(xb - xa));
+      }
       t.forEach(function (v, i) { if (Math.abs(v - tv) < Math.abs(t[best] - tv)) best = i; });
       cursor.setAttribute("x1", s.X(t[best])); cursor.setAttribute("x2", s.X(t[best]));
       readout.textContent = "t = " + fmt(t[best]) + h.series.filter(function (ser, k) { return shown[k]; }).map(function (ser) {
@@ -325,12 +413,220 @@
     data.histories.forEach(function (h) { plot(sec, h); });
   }
 
+  // ---- the 3D view (three.js, when the report inlines it) ------------------------------------
+  // frames: arrays of the points' positions (x, y, z each) then the bodies' axes (9 each);
+  // the camera circles the model: view.turn about "up", view.tilt above the ground plane
+  function view3d(parent, data, points, bodies, frames) {
+    if (!window.THREE) return null;
+    var THREE = window.THREE, W = 560, H = 420;
+    var renderer;
+    try {
+      renderer = new THREE.WebGLRenderer({antialias: true, preserveDrawingBuffer: true});
+    } catch (e) {
+      el("p", {"class": "note"}, parent, "The 3D view needs WebGL, which this browser does not offer.");
+      return null;
+    }
+    renderer.setPixelRatio(1);
+    renderer.setSize(W, H);
+    renderer.setClearColor(0xffffff, 1);
+    var canvas = renderer.domElement;
+    canvas.className = "view3d";
+    canvas.setAttribute("title", "drag to turn the view");
+    parent.appendChild(canvas);
+    var geo = data.geometry, index = {};
+    points.forEach(function (n, i) { index[n] = i; });
+    var V = function (a) { return new THREE.Vector3(a[0], a[1], a[2]); };
+    var at = function (f, name) { var i = 3 * index[name]; return new THREE.Vector3(f[i], f[i + 1], f[i + 2]); };
+    // where the model goes over the whole motion
+    var box = new THREE.Box3();
+    frames.forEach(function (f) { for (var i = 0; i < 3 * points.length; i += 3)
+      if (isFinite(f[i]) && isFinite(f[i + 1]) && isFinite(f[i + 2])) box.expandByPoint(new THREE.Vector3(f[i], f[i + 1], f[i + 2])); });
+    if (box.isEmpty()) box.expandByPoint(new THREE.Vector3(0, 0, 0));
+    var centre = box.getCenter(new THREE.Vector3()), size = Math.max(box.getSize(new THREE.Vector3()).length(), 1e-3);
+    var up = V(geo.up || [0, 1, 0]);
+    if (up.length() < 1e-12) up.set(0, 1, 0);
+    up.normalize();
+    // two directions across "up": the N axis least along it, made square to it, and their cross
+    var axes = [new THREE.Vector3(1, 0, 0), new THREE.Vector3(0, 1, 0), new THREE.Vector3(0, 0, 1)];
+    axes.sort(function (a, b) { return Math.abs(a.dot(up)) - Math.abs(b.dot(up)); });
+    var e1 = axes[0].clone().addScaledVector(up, -axes[0].dot(up)).normalize(), e2 = new THREE.Vector3().crossVectors(up, e1);
+    if (geo.planar) { e1 = new THREE.Vector3(0, 0, 1).addScaledVector(up, -up.z).normalize(); e2 = new THREE.Vector3().crossVectors(up, e1); }
+
+    var scene = new THREE.Scene();
+    scene.add(new THREE.AmbientLight(0xffffff, 0.55));
+    var sun = new THREE.DirectionalLight(0xffffff, 0.6);
+    sun.position.copy(up).multiplyScalar(3 * size).addScaledVector(e1, size);
+    scene.add(sun);
+    // the ground: a grid across "up" through the lowest point, and N's axes at N_o
+    var low = Infinity;
+    frames.forEach(function (f) { for (var i = 0; i < 3 * points.length; i += 3) {
+      var d = f[i] * up.x + f[i + 1] * up.y + f[i + 2] * up.z;
+      if (isFinite(d)) low = Math.min(low, d); } });
+    if (!isFinite(low)) low = 0;
+    var grid = new THREE.GridHelper(2 * size, 10, 0xbbbbbb, 0xe2e2e2);
+    grid.quaternion.setFromUnitVectors(new THREE.Vector3(0, 1, 0), up);
+    grid.position.copy(centre).addScaledVector(up, low - centre.dot(up));
+    scene.add(grid);
+    var triadN = new THREE.AxesHelper(0.25 * size);
+    scene.add(triadN);
+    // the points that move, and how large the model is in one frame
+    var moving = points.map(function (n, i) {
+      return frames.some(function (f) { return Math.abs(f[3 * i] - frames[0][3 * i]) + Math.abs(f[3 * i + 1] - frames[0][3 * i + 1]) +
+                                                Math.abs(f[3 * i + 2] - frames[0][3 * i + 2]) > 1e-9 * size; });
+    });
+    var extent = 0;
+    frames.forEach(function (f) {
+      var b = new THREE.Box3();
+      points.forEach(function (n, i) { if (moving[i]) b.expandByPoint(at(f, n)); });
+      if (!b.isEmpty()) extent = Math.max(extent, b.getSize(new THREE.Vector3()).length());
+    });
+    // a body's drawn ellipsoid counts in its size (a disk is wider than its points)
+    bodies.forEach(function (b) {
+      if (b.ellipsoid && extent > 0) extent = Math.max(extent, 2 * Math.max.apply(null, b.ellipsoid.axes));
+    });
+    var modelSize = extent > 0 ? Math.min(size, 1.6 * extent) : size;
+    // the sticks as thin cylinders, the points as beads, each body's axes as a small triad
+    var radius = 0.012 * modelSize, unitY = new THREE.Vector3(0, 1, 0);
+    var sticks = geo.segments.map(function (seg, k) {
+      var m = new THREE.Mesh(new THREE.CylinderGeometry(radius, radius, 1, 12),
+                             new THREE.MeshLambertMaterial({color: palette[k % palette.length]}));
+      m.userData = seg;
+      scene.add(m);
+      return m;
+    });
+    var beads = points.map(function () {
+      var m = new THREE.Mesh(new THREE.SphereGeometry(1.6 * radius, 12, 8), new THREE.MeshLambertMaterial({color: 0x333333}));
+      scene.add(m);
+      return m;
+    });
+    // a body's triad as long as the body (its points' reach from its mass centre)
+    var reach = bodies.map(function (b) {
+      var c = at(frames[0], b.cm), r = 0;
+      geo.segments.forEach(function (seg) {
+        if (seg.body !== b.name) return;
+        r = Math.max(r, at(frames[0], seg.from).distanceTo(c), at(frames[0], seg.to).distanceTo(c));
+      });
+      return Math.max(r, 0.06 * (extent || size));
+    });
+    var triads = bodies.map(function (b, i) {
+      var t = new THREE.AxesHelper(reach[i]);
+      t.matrixAutoUpdate = false;
+      scene.add(t);
+      return t;
+    });
+    // each rigid body as its inertia ellipsoid (uniform density, same mass and central inertia),
+    // translucent, turning with the body: a disk shows as a disk, a rod as a needle
+    var shells = bodies.map(function (b, i) {
+      if (!b.ellipsoid) return null;
+      var e = b.ellipsoid, d = e.directions, thin = 0.02 * modelSize;
+      var m = new THREE.Mesh(new THREE.SphereGeometry(1, 32, 16),
+                             new THREE.MeshLambertMaterial({color: palette[i % palette.length], transparent: true, opacity: 0.35}));
+      m.matrixAutoUpdate = false;
+      // principal axes (columns of d, in the body's frame) scaled by the semi-axes
+      m.userData.shape = new THREE.Matrix4().set(
+        d[0] * Math.max(e.axes[0], thin), d[3] * Math.max(e.axes[1], thin), d[6] * Math.max(e.axes[2], thin), 0,
+        d[1] * Math.max(e.axes[0], thin), d[4] * Math.max(e.axes[1], thin), d[7] * Math.max(e.axes[2], thin), 0,
+        d[2] * Math.max(e.axes[0], thin), d[5] * Math.max(e.axes[1], thin), d[8] * Math.max(e.axes[2], thin), 0,
+        0, 0, 0, 1);
+      m.userData.body = b.name;
+      scene.add(m);
+      return m;
+    });
+    // where each mass centre goes: a faint trace over the whole motion
+    if (frames.length > 1)
+      bodies.forEach(function (b, i) {
+        var g = new THREE.BufferGeometry().setFromPoints(frames.map(function (f) { return at(f, b.cm); }));
+        scene.add(new THREE.Line(g, new THREE.LineBasicMaterial({color: palette[i % palette.length], transparent: true, opacity: 0.45})));
+      });
+    // a model that travels far (a rolling disk) is followed by the camera
+    var follow = null;
+    if (extent > 0 && extent < size / 3) {
+      var lab = el("label", {"class": "follow"}, parent, " follow the model");
+      follow = el("input", {type: "checkbox", checked: "checked", id: "view-follow"});
+      lab.insertBefore(follow, lab.firstChild);
+      follow.addEventListener("change", function () { show(current); });
+    }
+    var camera = new THREE.PerspectiveCamera(35, W / H, size / 100, size * 100);
+    function place(f) {
+      var ct = Math.cos(view.turn), st = Math.sin(view.turn), ce = Math.cos(view.tilt), se = Math.sin(view.tilt);
+      var d = new THREE.Vector3().addScaledVector(e1, ce * ct).addScaledVector(e2, ce * st).addScaledVector(up, se);
+      var c = centre, r = size;
+      if (follow && follow.checked) {
+        var b = new THREE.Box3();
+        points.forEach(function (n, i) { if (moving[i]) b.expandByPoint(at(f, n)); });
+        c = b.getCenter(new THREE.Vector3());
+        r = modelSize;
+      }
+      camera.position.copy(c).addScaledVector(d, 2.2 * r);
+      camera.up.copy(up);
+      camera.lookAt(c);
+    }
+    var current = 0;
+    function show(k) {
+      current = k;
+      var f = frames[k];
+      geo.segments.forEach(function (seg, j) {
+        var a = at(f, seg.from), b = at(f, seg.to), d = b.clone().sub(a), n = d.length();
+        var m = sticks[j];
+        m.visible = isFinite(n) && n > 1e-12;
+        if (!m.visible) return;
+        m.position.copy(a).addScaledVector(d, 0.5);
+        m.quaternion.setFromUnitVectors(unitY, d.divideScalar(n));
+        m.scale.set(1, n, 1);
+      });
+      points.forEach(function (n, i) { beads[i].position.copy(at(f, n)); });
+      bodies.forEach(function (b, i) {
+        var o = 3 * points.length + 9 * i, c = at(f, b.cm);
+        // columns: the body's x, y, z axes in N
+        triads[i].matrix.set(f[o], f[o + 3], f[o + 6], c.x, f[o + 1], f[o + 4], f[o + 7], c.y,
+                             f[o + 2], f[o + 5], f[o + 8], c.z, 0, 0, 0, 1);
+        if (shells[i]) shells[i].matrix.multiplyMatrices(triads[i].matrix, shells[i].userData.shape);
+      });
+      place(f);
+      renderer.render(scene, camera);
+      canvas.setAttribute("data-frame", k);
+      canvas.setAttribute("data-view", view.turn.toFixed(2) + " " + view.tilt.toFixed(2));
+    }
+    // dragging turns the view
+    var drag = null;
+    canvas.addEventListener("mousedown", function (e) { drag = [e.clientX, e.clientY]; e.preventDefault(); });
+    window.addEventListener("mouseup", function () { drag = null; });
+    canvas.addEventListener("mousemove", function (e) {
+      if (!drag) return;
+      view.turn -= 0.01 * (e.clientX - drag[0]);
+      view.tilt = Math.max(-1.5, Math.min(1.5, view.tilt + 0.01 * (e.clientY - drag[1])));
+      drag = [e.clientX, e.clientY];
+      show(current);
+    });
+    // how much of the canvas is drawn on (the browser test reads it)
+    function ink() {
+      var gl = renderer.getContext(), px = new Uint8Array(W * H * 4), n = 0;
+      gl.readPixels(0, 0, W, H, gl.RGBA, gl.UNSIGNED_BYTE, px);
+      for (var i = 0; i < px.length; i += 4) if (px[i] < 200 || px[i + 1] < 200 || px[i + 2] < 200) ++n;
+      return n / (W * H);
+    }
+    canvas.alembertInk = ink;
+    canvas.setAttribute("data-sticks", sticks.length);
+    canvas.setAttribute("data-bodies", bodies.length);
+    canvas.setAttribute("data-shells", shells.filter(function (x) { return x; }).length);
+    return {show: show, canvas: canvas};
+  }
+
   function animation(main, data) {
-    var a = data.animation;
-    if (!a) return;
+    var a = data.animation, geo = data.geometry;
+    if (!a) {
+      // a spatial model without a motion: its configuration in 3D
+      if (geo.planar || !window.THREE) return;
+      var still = el("section", {id: "animation"}, main);
+      el("h2", {}, still, "The model in 3D (drag to turn)");
+      var v = view3d(still, data, geo.points.map(function (p) { return p.name; }), [],
+                     [[].concat.apply([], geo.points.map(function (p) { return p.at; }))]);
+      if (v) v.show(0);
+      return;
+    }
     var sec = el("section", {id: "animation"}, main);
     el("h2", {}, sec, "Motion (" + a.source + ")");
-    var geo = data.geometry, project = projector(geo.planar), index = {};
+    var project = projector(geo.planar), index = {};
     a.points.forEach(function (n, i) { index[n] = i; });
     var pointAt = function (frame, name) { var i = 3 * index[name]; return [frame[i], frame[i + 1], frame[i + 2]]; };
     var all = [];
@@ -338,7 +634,11 @@
     var box = bounds(all, project), pad = 0.15 * box.size;
     var view = [box.x - pad, box.y - pad, box.w + 2 * pad, box.h + 2 * pad];
     var k = 420 / Math.max(view[2], view[3]);
-    var s = svg("svg", {"class": "anim", viewBox: view.join(" "), width: k * view[2], height: k * view[3]}, sec);
+    var stage = el("div", {"class": "stage"}, sec);
+    var s = svg("svg", {"class": "anim", viewBox: view.join(" "), width: k * view[2], height: k * view[3]}, stage);
+    var three = view3d(stage, data, a.points, a.bodies || [], a.frames);
+    // a spatial model is shown in 3D alone when three.js is there
+    if (three && !geo.planar) s.style.display = "none";
     var g = svg("g", {}, s);
     svg("line", {x1: view[0], x2: view[0] + view[2], y1: project([0, 0, 0])[1], y2: project([0, 0, 0])[1], "class": "ground"}, g);
     var lines = geo.segments.map(function (seg, k) {
@@ -357,6 +657,7 @@
       });
       label.textContent = "t = " + fmt(a.time[k]) + " s";
       slider.value = k;
+      if (three) three.show(k);
     }
     var playing = false, start = 0, t0 = 0;
     function tick(now) {
@@ -392,20 +693,24 @@
       [["turn", -3.1416, 3.1416], ["tilt", -1.5, 1.5]].forEach(function (c) {
         var lab = el("label", {}, turn, c[0] + " ");
         var input = el("input", {type: "range", min: c[1], max: c[2], step: 0.01, value: view[c[0]], id: "view-" + c[0]}, lab);
-        input.addEventListener("change", function () { view[c[0]] = Number(input.value); render(data, main); });
+        input.addEventListener("input", function () { view[c[0]] = Number(input.value); redrawDiagrams(data); });
       });
     }
     if (!window.katex)
       el("p", {"class": "warning"}, main, "KaTeX was not found when this report was written, so equations show as TeX; " +
          "install Debian's libjs-katex (or set ALEMBERT_KATEX_DIR) and write the report again.");
     data.notes.forEach(function (n) { el("p", {"class": "warning"}, main, n); });
+    diagrams = [];
     if (data.roadmap.length) roadmap(main, data);
     animation(main, data);
     histories(main, data);
+    checks(main, data);
     model(main, data);
   }
   try {
-    render(JSON.parse(document.getElementById("alembert-data").textContent), document.getElementById("report"));
+    var data = JSON.parse(document.getElementById("alembert-data").textContent);
+    render(data, document.getElementById("report"));
+    turnable(data);
   } catch (e) {
     fail("the report could not be drawn: " + (e && e.stack ? e.stack : e));
   }
@@ -427,13 +732,48 @@
       var plotSvg = fig.querySelector("svg"), r = plotSvg.getBoundingClientRect();
       plotSvg.dispatchEvent(new MouseEvent("mousemove", {clientX: r.left + r.width / 2, clientY: r.top + r.height / 2}));
       expect(/^t = .+, .+ = /.test(fig.querySelector(".readout").textContent), "the cursor reads values");
+      // zoom: drag from a quarter to a half of the plot's width; the time axis then starts later
+      var ticks = function () { return Array.prototype.map.call(fig.querySelectorAll("g.axes text[text-anchor=middle]"),
+                                                                 function (n) { return n.textContent; }).join(" "); };
+      var before = ticks();
+      r = plotSvg.getBoundingClientRect();
+      plotSvg.dispatchEvent(new MouseEvent("mousedown", {clientX: r.left + 0.3 * r.width, clientY: r.top + 0.5 * r.height, bubbles: true}));
+      plotSvg.dispatchEvent(new MouseEvent("mousemove", {clientX: r.left + 0.6 * r.width, clientY: r.top + 0.5 * r.height, bubbles: true}));
+      window.dispatchEvent(new MouseEvent("mouseup", {clientX: r.left + 0.6 * r.width, clientY: r.top + 0.5 * r.height}));
+      var range = (fig.getAttribute("data-range") || "").split(" ").map(Number);
+      expect(ticks() !== before && range.length === 2 && range[0] > 0 && range[1] > range[0], "dragging zooms into a time range (" +
+             fig.getAttribute("data-range") + ")");
+      fig.querySelector("button.zoom-reset").click();
+      expect(ticks() === before, "show all zooms out again");
+    }
+    var canvas = document.querySelector("canvas.view3d");
+    if (canvas) {
+      var inkBefore = canvas.alembertInk(), viewBefore = canvas.getAttribute("data-view");
+      expect(inkBefore > 0.002 && inkBefore < 0.6, "the 3D view is drawn (" + (100 * inkBefore).toFixed(1) + "% ink)");
+      var cr = canvas.getBoundingClientRect();
+      canvas.dispatchEvent(new MouseEvent("mousedown", {clientX: cr.left + 100, clientY: cr.top + 100}));
+      canvas.dispatchEvent(new MouseEvent("mousemove", {clientX: cr.left + 160, clientY: cr.top + 130}));
+      window.dispatchEvent(new MouseEvent("mouseup", {}));
+      expect(canvas.getAttribute("data-view") !== viewBefore && canvas.alembertInk() > 0.002, "dragging turns the 3D view (" +
+             viewBefore + " to " + canvas.getAttribute("data-view") + ")");
+    }
+    var fbd = document.querySelector("svg.fbd");
+    if (fbd && document.getElementById("view-turn")) {
+      var turnBefore = document.getElementById("view-turn").value, fr = fbd.getBoundingClientRect();
+      fbd.dispatchEvent(new MouseEvent("mousedown", {clientX: fr.left + 50, clientY: fr.top + 50, bubbles: true}));
+      window.dispatchEvent(new MouseEvent("mousemove", {clientX: fr.left + 90, clientY: fr.top + 60}));
+      window.dispatchEvent(new MouseEvent("mouseup", {}));
+      expect(document.getElementById("view-turn").value !== turnBefore && document.querySelectorAll("svg.fbd").length === diagrams.length,
+             "dragging a free-body diagram turns every diagram");
     }
     var slider = document.getElementById("time-slider");
     if (slider) {
       var stick = document.querySelector("svg.anim line.stick"), x0 = stick.getAttribute("x2");
+      var frame0 = canvas ? canvas.getAttribute("data-frame") : null;
       slider.value = slider.max;
       slider.dispatchEvent(new Event("input"));
       expect(stick.getAttribute("x2") !== x0, "the time slider moves the model");
+      if (canvas) expect(canvas.getAttribute("data-frame") !== frame0, "the time slider moves the 3D view");
       var play = document.getElementById("play");
       slider.value = 0;
       slider.dispatchEvent(new Event("input"));
@@ -443,6 +783,12 @@
       expect(play.textContent === "play", "pause stops it");
     }
     el("pre", {id: "alembert-exercise"}, document.body, out.join("\n"));
+    // the 3D view as drawn at the start (the browser test saves and checks it)
+    if (canvas) {
+      var slider0 = document.getElementById("time-slider");
+      if (slider0) { slider0.value = 0; slider0.dispatchEvent(new Event("input")); }
+      el("pre", {id: "alembert-3d"}, document.body, canvas.toDataURL("image/png"));
+    }
   }
   if (!failed && window.location.hash === "#exercise") {
     try { exercise(); } catch (e) { fail("exercising the controls failed: " + e); }

@@ -1,0 +1,83 @@
+#!/usr/bin/env python3
+# SPDX-License-Identifier: MIT
+"""LaTeX out for every example: `alembert report MODEL --latex` writes roadmap.tex alone, with
+the road-map table (a line per row), a TikZ free-body diagram per row that has one (an arrow
+per load on S, as many as the HTML report draws), every row's equation and the document's end;
+where pdflatex is installed (Debian's texlive-latex-base and texlive-pictures;
+scripts/install_deps.sh installs them) each document is compiled and must give a PDF.
+
+usage: latex_test.py ALEMBERT_CLI SOURCE_DIR WORK_DIR"""
+import json
+import os
+import re
+import shutil
+import subprocess
+import sys
+
+failures = []
+
+
+def check(ok, what):
+    print(("ok   " if ok else "FAIL ") + what)
+    if not ok:
+        failures.append(what)
+
+
+def main():
+    if len(sys.argv) != 4:
+        print(__doc__)
+        return 2
+    cli, source, work = sys.argv[1:]
+    pdflatex = shutil.which("pdflatex")
+    if not pdflatex:
+        print("latex: pdflatex is not installed (Debian: apt-get install texlive-latex-base texlive-pictures); "
+              "checking the documents' structure only")
+    folder = os.path.join(source, "examples")
+    for name in sorted(os.listdir(folder)):
+        model = os.path.join(folder, name, "model.alb")
+        if not os.path.isfile(model):
+            continue
+        out = os.path.join(work, name)
+        shutil.rmtree(out, ignore_errors=True)
+        r = subprocess.run([cli, "report", model, "--latex", "--out", out], capture_output=True, text=True, timeout=600)
+        check(r.returncode == 0, "%s: alembert report --latex exits 0 (stderr: %s)" % (name, r.stderr.strip()[:300]))
+        tex_path = os.path.join(out, "roadmap.tex")
+        check(os.path.isfile(tex_path) and not os.path.exists(os.path.join(out, "index.html")),
+              "%s: roadmap.tex written, and no page" % name)
+        if not os.path.isfile(tex_path):
+            continue
+        with open(tex_path, encoding="utf-8") as f:
+            tex = f.read()
+        # the same model's data, as the HTML report holds it, says what the document must hold
+        page_dir = os.path.join(work, name + "_page")
+        shutil.rmtree(page_dir, ignore_errors=True)
+        subprocess.run([cli, "report", model, "--out", page_dir], capture_output=True, text=True, timeout=600)
+        with open(os.path.join(page_dir, "index.html"), encoding="utf-8") as f:
+            page = f.read()
+        start = page.index('id="alembert-data">') + len('id="alembert-data">')
+        data = json.loads(page[start:page.index("</script>", start)])
+        rows = data["roadmap"]
+        table = tex[tex.find("\\begin{tabular}"):tex.find("\\end{tabular}")]
+        check(table.count("\\\\\n") == len(rows) + 1, "%s: the table has a line per row (%d rows)" % (name, len(rows)))
+        equations = re.findall(r"\\\[ E_\{(.*?)\}: \\quad \\begin\{aligned\}", tex)
+        check(len(equations) == len(rows) and tex.count("\\begin{aligned}") == tex.count("\\end{aligned}"),
+              "%s: every row's equation is there (%d of %d)" % (name, len(equations), len(rows)))
+        check([e for e in equations] == [r["variable_tex"] for r in rows],
+              "%s: the equations in the rows' order" % name)
+        pictures = [tex[a:tex.find("\\end{tikzpicture}", a)] for a in
+                    [m.start() for m in re.finditer(r"\\begin\{tikzpicture\}", tex)]]
+        loads = [len(r["diagram"]["loads"]) for r in rows if r["diagram"]]
+        check([p.count("% load: ") for p in pictures] == loads,
+              "%s: a TikZ diagram per row with an arrow per load on S %s" % (name, loads))
+        check(tex.rstrip().endswith("\\end{document}"), "%s: the document ends" % name)
+        if pdflatex:
+            r = subprocess.run([pdflatex, "-interaction=nonstopmode", "-halt-on-error", "roadmap.tex"], cwd=out,
+                               capture_output=True, text=True, timeout=300)
+            errors = [l for l in r.stdout.splitlines() if l.startswith("!")]
+            check(r.returncode == 0 and os.path.isfile(os.path.join(out, "roadmap.pdf")),
+                  "%s: pdflatex compiles it (%s)" % (name, errors[:3]))
+    return 1 if failures else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
