@@ -24,7 +24,40 @@ Value array_value(std::vector<ex> a) {
     return v;
 }
 
+// "z3 = ..." for the intermediates `shown` names, then "E[i]: 0 = ..." for each equation
+std::string format_equation_lines(const System* sys, const std::string& name, const std::vector<ex>& shown) {
+    std::string out = sys ? format_intermediates(sys->symbols(), shown) : std::string();
+    for (std::size_t i = 0; i < shown.size(); ++i)
+        out += name + "[" + std::to_string(i + 1) + "]: 0 = " + to_string(shown[i]) + "\n";
+    return out;
+}
+
+// the measures of a value, for the intermediates its printed form names
+std::vector<ex> measures_of(const Value& v) {
+    std::vector<ex> out;
+    if (v.kind == Kind::scalar) out.push_back(v.s);
+    else if (v.kind == Kind::array) out = v.a;
+    else if (v.kind == Kind::vector) v.v.map([&](const ex& x) { out.push_back(x); return x; });
+    else if (v.kind == Kind::matrix) out.assign(v.m.m.begin(), v.m.m.end());
+    return out;
+}
+
 }  // namespace
+
+// Equations print as a person reads them: short intermediates written out, the result
+// simplified and collected in the symbols it is solved for (calc_readable), and every
+// intermediate still named defined first (format_intermediates).
+void Interpreter::Impl::print_equations(const std::string& name, const std::vector<ex>& eqs) {
+    std::vector<ex> shown = eqs;
+    if (sys)
+        for (ex& e : shown) e = calc_readable(sys->symbols(), e);
+    transcript.result(format_equation_lines(sys.get(), name, shown));
+}
+
+// the definitions of the intermediates `v` names, before it is printed
+std::string Interpreter::Impl::definitions_for(const Value& v) const {
+    return sys ? format_intermediates(sys->symbols(), measures_of(v)) : std::string();
+}
 
 void Interpreter::Impl::assign(const Statement& s) {
     const Word& target = s.word("target");
@@ -56,7 +89,7 @@ void Interpreter::Impl::assign(const Statement& s) {
     if (!want_vector) names[target.text] = {NameKind::value, target.location};
     values[key] = v;
     if (v.kind == Kind::array) print_equations(target.text, v.a);
-    else transcript.result(key + " = " + print(v));
+    else transcript.result(definitions_for(v) + key + " = " + print(v));
 }
 
 void Interpreter::Impl::show(const Statement& s) {
@@ -78,7 +111,7 @@ void Interpreter::Impl::show(const Statement& s) {
             values[name] = v;
             if (v.kind == Kind::scalar) names[name] = {NameKind::value, e.location};
         }
-        transcript.result(name + " = " + print(v));
+        transcript.result(definitions_for(v) + name + " = " + print(v));
         return;
     }
     if (e.kind == Expr::Kind::name && v.kind == Kind::array) return print_equations(e.text, v.a);
@@ -89,8 +122,21 @@ void Interpreter::Impl::show(const Statement& s) {
         label = e.text + "[" + to_string(eval(*e.args[0]).s) +
                 (e.args.size() > 1 ? ", " + to_string(eval(*e.args[1]).s) : std::string()) + "] = ";
     else label = "= ";
-    transcript.result(label + print(v));
+    transcript.result(definitions_for(v) + label + print(v));
 }
+
+namespace {
+// a road-map's table with short intermediates of its equations written out and the others
+// defined before it
+std::string format_readable_roadmap(const System& m, std::vector<RoadmapRow> rows) {
+    std::vector<ex> shown;
+    for (RoadmapRow& r : rows) {
+        r.equation = calc_inlined_intermediates(m.symbols(), r.equation);
+        shown.push_back(r.equation);
+    }
+    return format_intermediates(m.symbols(), shown) + format_roadmap_table(m, rows);
+}
+}  // namespace
 
 void Interpreter::Impl::roadmap(const Statement& s) {
     System& m = model(s.location);
@@ -102,7 +148,7 @@ void Interpreter::Impl::roadmap(const Statement& s) {
                               "plan one with 'roadmap " + n.text + " for x, y' or add rows with 'row " +
                                   n.text + " for x ...'");
         last_roadmap = n.text;
-        transcript.result("MG road-map " + n.text + "\n" + format_roadmap_table(m, it->second.rows));
+        transcript.result("MG road-map " + n.text + "\n" + format_readable_roadmap(m, it->second.rows));
         return;
     }
     if (names.count(n.text) && !roadmaps.count(n.text)) declare_name(n, NameKind::value);
@@ -117,7 +163,7 @@ void Interpreter::Impl::roadmap(const Statement& s) {
     values[n.text] = array_value(residuals_of(rows));
     last_roadmap = n.text;
     transcript.result("MG road-map " + n.text + " (" + (analysis == Analysis::statics ? "statics" : "dynamics") +
-                      ")\n" + guard(n.location, [&] { return format_roadmap_table(m, rows); }));
+                      ")\n" + guard(n.location, [&] { return format_readable_roadmap(m, rows); }));
 }
 
 void Interpreter::Impl::row(const Statement& s) {
@@ -149,8 +195,9 @@ void Interpreter::Impl::row(const Statement& s) {
     rm.rows.push_back(r);
     values[n.text] = array_value(residuals_of(rm.rows));
     last_roadmap = n.text;
-    transcript.result(n.text + "[" + std::to_string(rm.rows.size()) + "] for " + to_string(r.variable) +
-                      ": 0 = " + to_string(r.equation));
+    ex shown = calc_readable(m.symbols(), r.equation);
+    transcript.result(format_intermediates(m.symbols(), {shown}) + n.text + "[" + std::to_string(rm.rows.size()) +
+                      "] for " + to_string(r.variable) + ": 0 = " + to_string(shown));
 }
 
 void Interpreter::Impl::methods(const Statement& s) {
@@ -300,6 +347,7 @@ void Interpreter::Impl::solve(const Statement& s) {
                 if (shown) std::fprintf(stderr, "\r\033[K");
                 throw;
             }
+            out = format_intermediates(table, x);
             for (std::size_t i = 0; i < xs.size(); ++i) out += printed[i] + " = " + to_string(x[i]) + "\n";
         }
     }
@@ -390,6 +438,36 @@ void parse_evaluate(StatementParser& p, Statement& s) {
     if (p.accept_word("at")) s.bindings["at"] = p.bindings("a symbol");
 }
 
+void parse_simplify(StatementParser& p, Statement& s) {
+    s.words["name"] = p.name("the equations to simplify (simplify K)");
+}
+
+// simplify E: E's equations rewritten equal in meaning, simplified, collected in the symbols
+// they are solved for and with common factors taken out; printed and kept under E
+void run_simplify(Interpreter::Impl& m, const Statement& s) {
+    System& sys = m.model(s.location);
+    const Word& n = s.word("name");
+    auto it = m.values.find(n.text);
+    if (it == m.values.end() || it->second.kind != Value::Kind::array) {
+        if (!m.names.count(n.text))
+            throw ScriptError(n.location, "there are no equations named '" + n.text + "'",
+                              "form them first with kane, lagrange or roadmap, or assign a list");
+        throw ScriptError(n.location, "'" + n.text + "' is not a list of equations",
+                          "simplify takes equations formed by kane, lagrange or roadmap; for one "
+                          "expression write simplify(" + n.text + ")");
+    }
+    std::vector<ex> eqs = it->second.a;
+    m.guard(n.location, [&] {
+        for (ex& e : eqs) e = calc_readable(sys.symbols(), e, true);
+        return 0;
+    });
+    it->second.a = eqs;
+    // equations of motion stay known as such (linearize takes them), now in the new form
+    auto formed = m.formed.find(n.text);
+    if (formed != m.formed.end() && formed->second.residuals.size() == eqs.size()) formed->second.residuals = eqs;
+    m.transcript.result(format_equation_lines(&sys, n.text, eqs));
+}
+
 void parse_digits(StatementParser& p, Statement& s) { s.quantities["digits"] = p.quantity(); }
 
 // digits N: the significant digits of the numbers printed from here on
@@ -447,6 +525,12 @@ std::vector<StatementSpec> equation_statements() {
                     "lagrange Lg for qA, qB",
                     "`form_lagrange_equations`; prints `Lg[1]: 0 = ...`"}},
          .clauses = {"for"}, .parse = parse_method, .run = [](M& m, const Statement& s) { m.methods(s); }},
+        {.keyword = "simplify", .family = equations,
+         .help = "simplifies equations: angle sums folded, collected in the accelerations, common factors out",
+         .forms = {{"`simplify` *E*",
+                    "simplify K",
+                    "`calc_readable(table, e, factor = true)` on each equation: `simplify`, collected in the accelerations and unknowns, terms grouped by their time-varying factors, common factors out (`factor_common`); E keeps the result, equal in meaning; prints `K[1]: 0 = ...`"}},
+         .parse = parse_simplify, .run = run_simplify},
         {.keyword = "solve", .family = solving,
          .help = "solves equations symbolically, numerically, or for an equilibrium from a guess",
          .forms = {{"`solve` *E* `for` *x...*",

@@ -654,11 +654,4 @@ std::string Interpreter::Impl::print(const Value& v) const {
     return "";
 }
 
-void Interpreter::Impl::print_equations(const std::string& name, const std::vector<ex>& eqs) {
-    std::string out;
-    for (std::size_t i = 0; i < eqs.size(); ++i)
-        out += name + "[" + std::to_string(i + 1) + "]: 0 = " + to_string(eqs[i]) + "\n";
-    transcript.result(out);
-}
-
 }  // namespace alembert::lang

@@ -220,6 +220,7 @@ struct Interpreter::Impl {
     // ---- output ----------------------------------------------------------------------------
     std::string print(const Value& v) const;
     void print_equations(const std::string& name, const std::vector<ex>& eqs);
+    std::string definitions_for(const Value& v) const;
 
     /// Runs `f`, turning library and GiNaC exceptions into a ScriptError at `where`.
     template <class F>

@@ -7,6 +7,8 @@
 #include <sstream>
 #include <vector>
 
+#include "alembert/sym/simplify.hpp"
+
 namespace alembert {
 
 using namespace GiNaC;
@@ -264,5 +266,12 @@ Printed p(const ex& e) {
 std::string to_string(const ex& e) { return p(e).text; }
 
 void print(std::ostream& os, const ex& e) { os << to_string(e); }
+
+std::string format_intermediates(const SymbolTable& table, const std::vector<ex>& printed) {
+    std::string out;
+    for (const auto& [z, d] : calc_used_intermediates(table, printed))
+        out += to_string(z) + " = " + to_string(d) + "\n";
+    return out;
+}
 
 }  // namespace alembert

@@ -6,7 +6,10 @@
 #include <complex>
 #include <algorithm>
 #include <map>
+#include <numbers>
+#include <optional>
 #include <random>
+#include <set>
 
 #include "alembert/sym/print.hpp"
 #include "alembert/sym/symbol_table.hpp"
@@ -289,7 +292,282 @@ struct BottomUp : map_function {
 
 ex simplify(const ex& e) {
     BottomUp f;
+    return f(fold_angle_shifts(e));
+}
+
+namespace {
+
+// k where t = k*Pi/2: Pi times a rational, or a decimal number within 1e-12 of a multiple
+std::optional<long> quarter_turns(const ex& t) {
+    if (!t.has(Pi)) {
+        if (!is_a<numeric>(t) || !ex_to<numeric>(t).is_real() || ex_to<numeric>(t).is_rational())
+            return std::nullopt;
+        const double k = ex_to<numeric>(t).to_double() / (std::numbers::pi / 2);
+        if (std::abs(k) > 1e6 || std::abs(k - std::round(k)) > 1e-12 * std::max(1.0, std::abs(k)))
+            return std::nullopt;
+        return static_cast<long>(std::round(k));
+    }
+    ex c = t / Pi;
+    if (!is_a<numeric>(c) || !ex_to<numeric>(c).is_rational()) return std::nullopt;
+    numeric k = ex_to<numeric>(c) * 2;
+    if (!k.is_integer() || abs(k) > 1000000) return std::nullopt;
+    return k.to_long();
+}
+
+// sin, cos or tan of x + k*Pi/2 without the shift; `e` itself if it has none
+ex fold_shift(const ex& e) {
+    if (!is_a<function>(e) || e.nops() != 1 || !is_a<add>(e.op(0))) return e;
+    const std::string& name = ex_to<function>(e).get_name();
+    if (name != "sin" && name != "cos" && name != "tan") return e;
+    const ex& arg = e.op(0);
+    for (std::size_t i = 0; i < arg.nops(); ++i) {
+        std::optional<long> k = quarter_turns(arg.op(i));
+        if (!k) continue;
+        const ex x = arg - arg.op(i);
+        const long r = ((*k % 4) + 4) % 4;
+        if (name == "tan") {
+            if (r % 2 != 0) continue;  // tan(x + Pi/2) = -1/tan(x) is no shorter
+            return fold_shift(tan(x));
+        }
+        static const int sin_sign[4] = {1, 1, -1, -1}, cos_sign[4] = {1, -1, -1, 1};
+        const bool same = r % 2 == 0;  // sin stays sin for even quarter turns
+        if (name == "sin") return sin_sign[r] * fold_shift(same ? sin(x) : cos(x));
+        return cos_sign[r] * fold_shift(same ? cos(x) : sin(x));
+    }
+    return e;
+}
+
+struct AngleShifts : map_function {
+    ex operator()(const ex& e) override {
+        if (is_a<symbol>(e) || is_a<numeric>(e)) return e;
+        return fold_shift(e.map(*this));
+    }
+};
+
+}  // namespace
+
+ex fold_angle_shifts(const ex& e) {
+    AngleShifts f;
     return f(e);
+}
+
+namespace {
+
+// the common factor of the terms of the sum `s`: numeric content (negative when every term
+// is) and each base dividing every term, at its lowest power (all positive or all negative)
+ex common_factor(const ex& s) {
+    std::map<ex, int, ex_is_less> common;
+    numeric num = 0, den = 1;
+    bool all_negative = true, first = true;
+    for (std::size_t i = 0; i < s.nops(); ++i) {
+        Term t = split(s.op(i));
+        if (!t.c.is_rational()) return 1;
+        num = gcd(num, abs(t.c.numer()));
+        den = lcm(den, t.c.denom());
+        if (!t.c.is_negative()) all_negative = false;
+        std::map<ex, int, ex_is_less> here;
+        for (const auto& [b, n] : factors(t.rest))
+            if (!b.is_equal(1)) here[b] += n;
+        if (first) {
+            common = here;
+            first = false;
+            continue;
+        }
+        for (auto it = common.begin(); it != common.end();) {
+            auto h = here.find(it->first);
+            if (h == here.end() || (h->second > 0) != (it->second > 0)) {
+                it = common.erase(it);
+                continue;
+            }
+            it->second = it->second > 0 ? std::min(it->second, h->second)
+                                        : std::max(it->second, h->second);
+            ++it;
+        }
+    }
+    ex f = all_negative ? -num / den : num / den;
+    if (num.is_zero()) f = 1;
+    for (const auto& [b, n] : common) f *= pow(b, n);
+    return f;
+}
+
+ex take_common(const ex& s) {
+    if (!is_a<add>(s)) return s;
+    ex f = common_factor(s);
+    if (f.is_equal(1) || is_a<numeric>(f)) return s;  // GiNaC spreads a number over a sum
+    ex inner = 0;
+    for (std::size_t i = 0; i < s.nops(); ++i) inner += s.op(i) / f;
+    return f * inner;
+}
+
+struct CommonFactors : map_function {
+    ex operator()(const ex& e) override {
+        if (is_a<symbol>(e) || is_a<numeric>(e)) return e;
+        return take_common(e.map(*this));
+    }
+};
+
+}  // namespace
+
+ex factor_common(const ex& e) {
+    CommonFactors f;
+    return f(e);
+}
+
+std::vector<ex> solve_level_symbols(const SymbolTable& table, const ex& e) {
+    const exset present = symbols_of(e);
+    std::vector<ex> out;
+    for (SymbolKind k : {SymbolKind::variable, SymbolKind::specified, SymbolKind::unknown})
+        for (const ex& s : table.symbols(k))
+            if (present.count(s) && table.is_solve_level(s)) out.push_back(s);
+    return out;
+}
+
+namespace {
+
+// the intermediates of a table written out where short, and equations made readable
+class Readable {
+public:
+    Readable(const SymbolTable& table, std::size_t inline_ops) : t_(table), inline_ops_(inline_ops) {}
+
+    // `e` with every intermediate whose written-out definition is short replaced by it
+    ex write_out(const ex& e) {
+        exmap m;
+        for (const ex& s : symbols_of(e)) {
+            if (!is_intermediate(s)) continue;
+            ex r = inlined(s);
+            if (!r.is_equal(s)) m[s] = r;
+        }
+        return m.empty() ? e : e.subs(m, subs_options::no_pattern);
+    }
+
+    ex readable(const ex& e, bool factor) {
+        ex x = write_out(e);
+        if (count_ops(x) > kReadableSimplifyOps || estimate_expansion_terms(x) > 20000) return x;
+        x = simplify(x);
+        std::vector<ex> acc = solve_level_symbols(t_, x);
+        if (!acc.empty()) x = collected(x, acc, factor);
+        else if (factor) x = grouped(x);
+        return factor ? factor_common(x) : x;
+    }
+
+    bool is_intermediate(const ex& s) const {
+        return t_.owns(s) && t_.kind(s) == SymbolKind::intermediate;
+    }
+
+private:
+    ex inlined(const ex& z) {
+        auto it = memo_.find(z);
+        if (it != memo_.end()) return it->second;
+        ex d = write_out(t_.definition(z));
+        ex r = count_ops(d) <= inline_ops_ ? d : z;
+        memo_.emplace(z, r);
+        return r;
+    }
+
+    // sum_k c_k x_k + r with c_k and r simplified, when x is linear in the x_k; collect_in
+    // (coefficients only) otherwise
+    ex collected(const ex& x, const std::vector<ex>& acc, bool group) const {
+        ex xe = expand(x);
+        exmap zero;
+        for (const ex& a : acc) zero[a] = 0;
+        auto part = [&](const ex& p) { return group ? grouped(simplify(p)) : simplify(p); };
+        ex out = 0;
+        for (const ex& a : acc) {
+            if (xe.degree(a) > 1) return collect_in(x, acc);
+            ex c = xe.coeff(a, 1);
+            for (const ex& b : acc)
+                if (c.has(b)) return collect_in(x, acc);
+            out += part(c) * a;
+        }
+        return out + part(xe.subs(zero, subs_options::no_pattern));
+    }
+
+    // True if `s` stays the same in time (a constant, or a symbol of no table)
+    bool is_fixed(const ex& s) const {
+        return !t_.owns(s) || t_.kind(s) == SymbolKind::constant;
+    }
+
+    // the terms of a sum gathered by the factors they share that vary in time: first by their
+    // functions (sin(qB)), then by the rest (qA'*qB'), each group's constant coefficient with
+    // its common factors out: sin(qB)*L_A*(L_B*m_C + d_B*m_B)*(2*qA'*qB' + qB'^2)
+    ex grouped(const ex& e) const {
+        if (!is_a<add>(e)) return e;
+        // term = constant part * function part * other varying part
+        struct Split {
+            ex constant = 1, functions = 1, others = 1;
+        };
+        auto split_term = [&](const ex& t) {
+            Split p;
+            Term nt = split(t);
+            p.constant = nt.c;
+            for (const auto& [b, n] : factors(nt.rest)) {
+                bool fixed = true;
+                for (const ex& sym : symbols_of(b)) fixed = fixed && is_fixed(sym);
+                ex f = pow(b, n);
+                if (fixed) p.constant *= f;
+                else if (is_a<function>(b)) p.functions *= f;
+                else p.others *= f;
+            }
+            return p;
+        };
+        std::map<ex, std::map<ex, ex, ex_is_less>, ex_is_less> groups;  // functions -> others -> constant
+        for (std::size_t i = 0; i < e.nops(); ++i) {
+            Split p = split_term(e.op(i));
+            groups[p.functions][p.others] += p.constant;
+        }
+        ex out = 0;
+        for (const auto& [functions, by_others] : groups) {
+            ex inner = 0;
+            for (const auto& [others, constant] : by_others) inner += factor_common(constant) * others;
+            out += functions * factor_common(inner);
+        }
+        return count_ops(out) < count_ops(e) ? out : e;
+    }
+
+    const SymbolTable& t_;
+    std::size_t inline_ops_;
+    std::map<ex, ex, ex_is_less> memo_;
+};
+
+}  // namespace
+
+ex calc_readable(const SymbolTable& table, const ex& e, bool factor, std::size_t inline_ops) {
+    Readable r(table, inline_ops);
+    return r.readable(e, factor);
+}
+
+ex calc_inlined_intermediates(const SymbolTable& table, const ex& e, std::size_t inline_ops) {
+    Readable r(table, inline_ops);
+    return r.write_out(e);
+}
+
+std::vector<std::pair<ex, ex>> calc_used_intermediates(const SymbolTable& table,
+                                                       const std::vector<ex>& printed,
+                                                       std::size_t inline_ops) {
+    Readable r(table, inline_ops);
+    std::map<ex, std::size_t, ex_is_less> position;
+    const std::vector<ex>& all = table.intermediates();
+    for (std::size_t i = 0; i < all.size(); ++i) position.emplace(all[i], i);
+    std::map<std::size_t, std::pair<ex, ex>> used;  // by dependency order
+    std::vector<ex> work;
+    auto visit = [&](const ex& e) {
+        for (const ex& s : symbols_of(e))
+            if (r.is_intermediate(s) && !used.count(position.at(s))) {
+                used.emplace(position.at(s), std::make_pair(s, ex(0)));
+                work.push_back(s);
+            }
+    };
+    for (const ex& e : printed) visit(e);
+    while (!work.empty()) {
+        ex z = work.back();
+        work.pop_back();
+        ex d = r.readable(table.definition(z), false);
+        used.at(position.at(z)).second = d;
+        visit(d);
+    }
+    std::vector<std::pair<ex, ex>> out;
+    for (auto& [i, zd] : used) out.push_back(zd);
+    return out;
 }
 
 ex collect_in(const ex& e, const std::vector<ex>& syms) {

@@ -6,6 +6,7 @@
 
 #include <ostream>
 #include <string>
+#include <vector>
 
 namespace alembert {
 
@@ -19,5 +20,12 @@ std::string to_string(const ex& e);
 
 /// Streams `to_string(e)`.
 void print(std::ostream& os, const ex& e);
+
+class SymbolTable;
+
+/// The definitions a reader needs before `printed`: one line "z3 = ..." for each intermediate
+/// of `table` that `printed` names, directly or through another definition, in dependency order
+/// (calc_used_intermediates, definitions made readable with calc_readable); empty if none.
+std::string format_intermediates(const SymbolTable& table, const std::vector<ex>& printed);
 
 }  // namespace alembert

@@ -6,11 +6,14 @@
 #include <ginac/ginac.h>
 
 #include <cstddef>
+#include <utility>
 #include <vector>
 
 namespace alembert {
 
 using GiNaC::ex;
+
+class SymbolTable;
 
 /// Number of arithmetic operations of `e` counted as a tree: n-1 for a sum or product of n
 /// operands, one per power and per function call (how operation counts are reported).
@@ -29,13 +32,52 @@ double estimate_expansion_terms(const ex& e);
 /// The expanded result is returned only when it has fewer operations than `e`.
 ex trig_simplify(const ex& e);
 
-/// Mechanics simplification: trigonometric simplification, plus rational normalisation when
-/// `e` has symbolic denominators; returns whichever form has the fewest operations.
+/// `e` with every sin, cos and tan of an angle shifted by a multiple of Pi/2 written without
+/// the shift: sin(x + Pi) = -sin(x), cos(x - Pi/2) = sin(x), tan(x + Pi) = tan(x). A shift
+/// written as a decimal number (180 deg) counts when it is a multiple of Pi/2 to 1e-12.
+ex fold_angle_shifts(const ex& e);
+
+/// Mechanics simplification: angle shifts by multiples of Pi/2 folded, trigonometric
+/// simplification, plus rational normalisation when `e` has symbolic denominators; returns
+/// whichever form has the fewest operations.
 ex simplify(const ex& e);
+
+/// `e` with the factors common to all its terms taken out: numeric content and every base
+/// (symbol, function, sum) that divides each term, to its lowest power, so that
+/// L*m*a + L*m*b prints L*m*(a + b). Applied to the sums inside products too (the
+/// coefficients of a collected form). Equal to `e` in meaning; no expansion.
+ex factor_common(const ex& e);
 
 /// `e` collected in the listed symbols (e.g. the accelerations qA'', qB''), each coefficient
 /// simplified.
 ex collect_in(const ex& e, const std::vector<ex>& symbols);
+
+/// The symbols of `e` an equation of motion is solved for (SymbolTable::is_solve_level:
+/// highest declared derivatives, unknowns), in `table`'s declaration order.
+std::vector<ex> solve_level_symbols(const SymbolTable& table, const ex& e);
+
+/// Largest number of operations of an expression that calc_readable simplifies; larger ones
+/// are printed as formed (simplifying them costs more than it shortens).
+inline constexpr std::size_t kReadableSimplifyOps = 4000;
+
+/// An equation as a person reads it: intermediates of `table` whose definitions (with their own
+/// short intermediates written out) take at most `inline_ops` operations are written out, the
+/// result simplified (simplify) and collected in the symbols it is solved for, and, with
+/// `factor`, common factors taken out of it and of each coefficient (factor_common). Equal to
+/// `e` in meaning. Intermediates left in the result are listed by calc_used_intermediates.
+ex calc_readable(const SymbolTable& table, const ex& e, bool factor = false,
+                 std::size_t inline_ops = 40);
+
+/// `e` with the intermediates of `table` whose written-out definitions take at most
+/// `inline_ops` operations written out (as calc_readable does), nothing else changed.
+ex calc_inlined_intermediates(const SymbolTable& table, const ex& e, std::size_t inline_ops = 40);
+
+/// The intermediates a reader of `printed` (forms returned by calc_readable with the same
+/// `inline_ops`) must be shown, with their readable definitions, in dependency order: each
+/// definition uses only intermediates listed before it.
+std::vector<std::pair<ex, ex>> calc_used_intermediates(const SymbolTable& table,
+                                                       const std::vector<ex>& printed,
+                                                       std::size_t inline_ops = 40);
 
 /// True if `a` and `b` are equal in meaning: their simplified difference is zero, or (for
 /// identities the simplifier does not reach) they agree to a relative `tol` at several
