@@ -686,7 +686,7 @@ private:
         for (char c : stem)
             if (std::isalnum(static_cast<unsigned char>(c)) || c == '_') name += c;
         if (name.empty() || std::isdigit(static_cast<unsigned char>(name.front()))) name = "dynamics";
-        tail_codegen_.push_back("codegen " + lang + " name " + name);
+        tail_codegen_.push_back({st.where, "codegen " + lang + " name " + name});
     }
 
     Text scalar(const Expr& e) {
@@ -746,6 +746,7 @@ private:
             auto s = split(std::string_view(lhs.text), fr, fr);
             if (!s) fail(lhs.where, "'" + lhs.text + "' is not a direction cosine matrix name",
                          "write N_A = [...] with two declared frames, or use SIMPROT");
+            parent_[s->second] = s->first;
             return emit("rotate " + s->second + " from " + s->first + " dcm " + matrix(st.rhs));
         }
         Text r = scalar(st.rhs);
@@ -814,8 +815,7 @@ private:
                 if (auto s = split(name.substr(2), pt, fr))
                     return emit("acceleration " + s->first + " in " + s->second + " = " + vec(st.rhs).s);
             if (key.rfind("W_", 0) == 0)
-                if (auto s = split(name.substr(2), fr, fr))
-                    return emit("angvel " + s->first + " in " + s->second + " = " + vec(st.rhs).s);
+                if (auto s = split(name.substr(2), fr, fr)) return angular_velocity(s->first, s->second, vec(st.rhs));
             if (key.rfind("ALF_", 0) == 0)
                 if (auto s = split(name.substr(4), fr, fr))
                     return emit("angacc " + s->first + " in " + s->second + " = " + vec(st.rhs).s);
@@ -860,6 +860,7 @@ private:
             nargs(4, "SIMPROT(A, B, 3, Q1)");
             std::string a = frame_name(e.args[0]), b = frame_name(e.args[1]);
             std::string axis = simprot_axis(e.args[2], a, b);
+            parent_[b] = a;
             return emit("rotate " + b + " from " + a + " about " + axis + " by " + scalar(e.args[3]).s);
         }
         if (f == "V2PTS" || f == "V1PT" || f == "A2PTS") {
@@ -924,6 +925,15 @@ private:
         emit(expr(e).s);
     }
 
+    // W_B_A> = w>: Alembert sets a frame's angular velocity in the frame it is oriented from
+    // (its parent P), so in another frame A it becomes w> - W_P_A>
+    void angular_velocity(const std::string& b, const std::string& a, const Text& w) {
+        auto it = parent_.find(b);
+        if (it == parent_.end() || it->second == a) return emit("angvel " + b + " in " + a + " = " + w.s);
+        const std::string& p = it->second;
+        emit("angvel " + b + " in " + p + " = " + w.s + " - angvel(" + p + ", " + a + ")");
+    }
+
     std::string frame_or_body(const Expr& e) { return frame_name(e); }
 
     std::string simprot_axis(const Expr& ax, const std::string& a, const std::string& b) {
@@ -971,9 +981,6 @@ private:
             report(Severity::error, kane_where_, "constraints (DEPENDENT[...]) without speeds are not translated",
                    "declare speeds U with MOTIONVARIABLES and kinematical equations Q1' = U1");
         }
-        // Kane's equations (and the code generated from them) take second derivatives of the
-        // coordinates
-        for (const std::string& q : coordinates) primes_[q] = std::max(primes_[q], 2);
         return s;
     }
 
@@ -998,7 +1005,9 @@ private:
         if (!variables_.empty()) {
             std::vector<std::string> parts;
             for (const std::string& v : variables_) {
-                int p = std::max({primes_[v], used_primes_[v], 1});
+                // Kane's equations, their linearization and generated code take the second
+                // derivatives of coordinates and the first of speeds: two primes serve both
+                int p = std::max({primes_[v], used_primes_[v], 2});
                 parts.push_back(v + std::string(static_cast<std::size_t>(p), '\''));
             }
             s += "variable " + join(parts) + "\n";
@@ -1020,11 +1029,19 @@ private:
         if (!abs_tol_.empty() || !rel_tol_.empty())
             s += "tolerance" + (abs_tol_.empty() ? "" : " abs " + abs_tol_) + (rel_tol_.empty() ? "" : " rel " + rel_tol_) + "\n";
         for (const std::string& l : tail_outputs_) s += l + "\n";
-        for (const std::string& l : tail_codegen_) {
-            if (!kane_at_)
-                report(Severity::error, {1, 1}, "CODE DYNAMICS() without KANE()",
+        for (const auto& [where, l] : tail_codegen_) {
+            if (!kane_at_) {
+                report(Severity::error, where, "CODE DYNAMICS() without KANE()",
                        "form Kane's equations (ZERO = FR() + FRSTAR(), KANE()) before generating code");
-            s += l + "\n";
+            } else if (!kinematics_.empty()) {
+                // Alembert generates code with the coordinates' rates as the speeds
+                not_translated(where, "CODE DYNAMICS()",
+                               "Alembert's codegen takes the coordinates' rates as the speeds, and this model has "
+                               "speeds of its own (kinematical equations such as " + kinematics_.front().coordinate +
+                                   "' = ...)");
+            } else {
+                s += l + "\n";
+            }
         }
     }
 
@@ -1034,6 +1051,7 @@ private:
     std::map<std::string, Entry> names_{};                  // key: upper case
     std::map<std::string, std::string> implicit_points_{};  // NO, BO (upper case) -> N_o, Bcm
     std::map<std::string, int> labels_{};
+    std::map<std::string, std::string> parent_{};  // frame -> the frame it is oriented from
     std::string newtonian_{};
     std::vector<std::string> frames_lines_{};
     std::vector<std::vector<ConstantDecl>> constants_{};
@@ -1049,7 +1067,8 @@ private:
     std::vector<std::string> constraints_{}, dependent_{};
     std::map<std::string, std::string> initial_{};
     std::vector<std::string> initial_order_{};
-    std::vector<std::string> tail_inputs_{}, tail_outputs_{}, tail_codegen_{};
+    std::vector<std::string> tail_inputs_{}, tail_outputs_{};
+    std::vector<std::pair<Location, std::string>> tail_codegen_{};
     std::map<std::string, std::string> tail_settings_{};
     std::string abs_tol_{}, rel_tol_{};
     int outputs_ = 0;
