@@ -111,10 +111,11 @@ public:
                 t.text = "?";
             }
             out.push_back(std::move(t));
+            after_last_ = here();
         }
         Token e;
         e.kind = Token::Kind::end;
-        e.where = here();
+        e.where = out.empty() ? here() : after_last_;  // just after the statement's last token
         out.push_back(e);
         return out.size() > 1;
     }
@@ -157,6 +158,7 @@ private:
     std::string_view s_;
     std::size_t i_ = 0;
     int line_ = 1, col_ = 1;
+    Location after_last_{};
     std::vector<std::size_t> line_start_{0};
 };
 
@@ -180,7 +182,9 @@ public:
         return "'" + t.text + std::string(static_cast<std::size_t>(t.primes), '\'') + (t.vector ? ">" : "") + "'";
     }
     void expect(const char* s) {
-        if (!is_symbol(s)) fail(peek(), std::string("expected '") + s + "' but found " + describe(peek()));
+        if (!is_symbol(s))
+            fail(peek(), std::string("expected '") + s + "' but found " + describe(peek()),
+                 "close each bracket that is opened, and separate arguments with ','");
         take();
     }
 

@@ -46,6 +46,7 @@ struct Entry {
     Kind kind = Kind::scalar;
     std::string name{};  // the Alembert spelling
     Location where{};
+    bool numeric = false;  // a scalar or vector the file assigned from numbers alone
 };
 
 // A translated expression: its Alembert text, whether it is a vector, its precedence
@@ -54,6 +55,7 @@ struct Text {
     std::string s{};
     bool vector = false;
     int prec = 5;
+    bool numeric = false;  // numbers and unit vectors only: no quantity with a dimension
 };
 
 // A declared constant: its declaration group (one `constant` line each) and its value.
@@ -224,7 +226,8 @@ private:
         }
         if (w == "POINTS" || w == "POINT") {
             each(Kind::point, [&](const Declarator& d, const Entry&) { no_primes(d); });
-            frames_lines_.push_back("point " + join(line));
+            // written at the end, when V2PTS has told which bodies they are fixed on
+            frames_lines_.push_back("\x01" + join(line, "\x01"));
             return;
         }
         if (w == "CONSTANTS" || w == "CONSTANT") {
@@ -281,8 +284,13 @@ private:
 
     Text expr(const Expr& e) {
         switch (e.kind) {
-            case Expr::Kind::number: return {number_text(e, "a number"), false, 5};
-            case Expr::Kind::name: return e.vector ? Text{vector_name(e), true, 5} : Text{scalar_name(e), false, 5};
+            case Expr::Kind::number: return {number_text(e, "a number"), false, 5, true};
+            case Expr::Kind::name: {
+                resolved_numeric_ = false;
+                Text t = e.vector ? Text{vector_name(e), true, 5} : Text{scalar_name(e), false, 5};
+                t.numeric = resolved_numeric_;
+                return t;
+            }
             case Expr::Kind::call: return call(e);
             case Expr::Kind::index:
                 fail(e.where, "the array element '" + e.text + "[...]' is not translated",
@@ -290,7 +298,7 @@ private:
             case Expr::Kind::unary: {
                 Text a = expr(e.args[0]);
                 if (e.text == "+") return a;
-                return {"-" + paren(a, 4), a.vector, 3};
+                return {"-" + paren(a, 4), a.vector, 3, a.numeric};
             }
             case Expr::Kind::binary: return binary(e);
             case Expr::Kind::matrix:
@@ -302,8 +310,14 @@ private:
     }
 
     Text binary(const Expr& e) {
+        Text t = binary_text(e);
+        t.numeric = last_operands_numeric_;
+        return t;
+    }
+    Text binary_text(const Expr& e) {
         Text a = expr(e.args[0]);
         Text b = expr(e.args[1]);
+        last_operands_numeric_ = a.numeric && b.numeric;
         const std::string& op = e.text;
         if (op == "+" || op == "-") {
             if (a.vector != b.vector)
@@ -329,6 +343,12 @@ private:
     }
 
     Text call(const Expr& e) {
+        bool numeric = true;  // every argument numeric (each translated once)
+        Text t = call_text(e, numeric);
+        t.numeric = numeric;
+        return t;
+    }
+    Text call_text(const Expr& e, bool& numeric) {
         std::string f = upper(e.text);
         auto args = [&](std::size_t lo, std::size_t hi) {
             if (e.args.size() < lo || e.args.size() > hi)
@@ -339,11 +359,13 @@ private:
         };
         auto scalar_arg = [&](std::size_t i) {
             Text t = expr(e.args[i]);
+            numeric = numeric && t.numeric;
             if (t.vector) fail(e.args[i].where, e.text + "() takes a scalar here, not a vector");
             return t;
         };
         auto vector_arg = [&](std::size_t i) {
             Text t = expr(e.args[i]);
+            numeric = numeric && t.numeric;
             if (!t.vector) fail(e.args[i].where, e.text + "() takes a vector here (a name ending in '>')");
             return t;
         };
@@ -374,12 +396,14 @@ private:
         if (f == "EXPRESS") {
             args(2, 2);
             Text v = expr(e.args[0]);
+            numeric = v.numeric;
             if (!v.vector) return v;  // a scalar is the same in every frame
             return {"express(" + v.s + ", " + frame_name(e.args[1]) + ")", true, 5};
         }
         if (f == "DT") {
             args(1, 2);
             Text v = expr(e.args[0]);
+            numeric = v.numeric;
             if (v.vector) {
                 if (e.args.size() != 2) fail(e.where, "DT of a vector needs the frame: DT(v>, N)");
                 return {"dt(" + v.s + ", " + frame_name(e.args[1]) + ")", true, 5};
@@ -401,13 +425,17 @@ private:
         if (!en) {
             std::string key = upper(e.text);
             if (key == "T") return "t" + primes;
-            if (key == "PI" && e.primes == 0) return "pi";
+            if (key == "PI" && e.primes == 0) {
+                resolved_numeric_ = true;
+                return "pi";
+            }
             fail(e.where, "'" + e.text + "' is not declared",
                  "declare it (CONSTANTS, VARIABLES, ...) or assign it before this line");
         }
         switch (en->kind) {
             case Kind::constant:
             case Kind::scalar:
+                resolved_numeric_ = en->numeric;
                 if (e.primes) fail(e.where, "'" + e.text + "' is " + kind_word(en->kind) + "; it has no derivative",
                                    "declare it with VARIABLES to give it derivatives");
                 return en->name;
@@ -479,13 +507,21 @@ private:
     // the file assigned.
     std::string vector_name(const Expr& e) {
         if (e.primes) fail(e.where, "a prime on a vector name", "write DT(v>, N) for the derivative of a vector");
-        if (e.text == "0") return "0>";
-        if (const Entry* en = find(e.text); en && en->kind == Kind::vector) return en->name + ">";
+        if (e.text == "0") {
+            resolved_numeric_ = true;
+            return "0>";
+        }
+        if (const Entry* en = find(e.text); en && en->kind == Kind::vector) {
+            resolved_numeric_ = en->numeric;
+            return en->name + ">";
+        }
         std::string key = upper(e.text);
         char last = key.back();
         if (last >= '1' && last <= '3')
-            if (auto f = frame_of(std::string_view(e.text).substr(0, e.text.size() - 1)))
+            if (auto f = frame_of(std::string_view(e.text).substr(0, e.text.size() - 1))) {
+                resolved_numeric_ = true;
                 return *f + std::string(1, "xyz"[last - '1']) + ">";
+            }
         auto pt = [this](std::string_view n) { return point_of(n); };
         auto fr = [this](std::string_view n) { return frame_of(n); };
         std::string_view rest(e.text);
@@ -509,6 +545,7 @@ private:
     void emit(std::string line) { model_.push_back(std::move(line)); }
 
     void translate(const Statement& st) {
+        statement_where_ = st.where;
         switch (st.kind) {
             case Statement::Kind::declaration: return;
             case Statement::Kind::list: return list(st);
@@ -528,8 +565,7 @@ private:
                     fail(it.where, "MASS takes a body or a particle before '='", "write MASS A = MA");
                 if (!it.has_value) fail(it.where, "the mass of '" + it.lhs.text + "' is missing", "write MASS " + it.lhs.text + " = M");
                 if (!it.unit.empty()) fail(it.where, "a unit in MASS", "give units in INPUT");
-                Text m = scalar(it.value);
-                emit("mass " + en->name + " = " + m.s);
+                emit("mass " + en->name + " = " + dimensioned(scalar(it.value), "m_" + en->name));
             }
             return;
         }
@@ -546,7 +582,7 @@ private:
             for (std::size_t i = 1; i < st.items.size(); ++i) {
                 if (st.items[i].has_value || !st.items[i].unit.empty())
                     fail(st.items[i].where, "an inertia measure must be a scalar expression");
-                m.push_back(scalar(st.items[i].lhs).s);
+                m.push_back(dimensioned(scalar(st.items[i].lhs), "I" + std::to_string(i) + "_" + body));
             }
             emit("inertia " + body + " = " + join(m));
             return;
@@ -732,7 +768,9 @@ private:
         }
         if (en) {
             if (en->kind == Kind::scalar) {
-                emit(en->name + " = " + scalar(st.rhs).s);
+                Text r = scalar(st.rhs);
+                names_[upper(lhs.text)].numeric = r.numeric;
+                emit(en->name + " = " + r.s);
                 return;
             }
             if (en->kind == Kind::newtonian || en->kind == Kind::frame || en->kind == Kind::body)
@@ -751,6 +789,7 @@ private:
         }
         Text r = scalar(st.rhs);
         const Entry& ne = add(lhs.text, Kind::scalar, lhs.where);
+        names_[upper(lhs.text)].numeric = r.numeric;
         emit(ne.name + " = " + r.s);
     }
 
@@ -807,29 +846,54 @@ private:
         if (!existing) {
             if (key.rfind("P_", 0) == 0)
                 if (auto s = split(name.substr(2), pt, pt))
-                    return emit("translate " + s->second + " from " + s->first + " by " + vec(st.rhs).s);
+                    return emit("translate " + s->second + " from " + s->first + " by " +
+                                dimensioned(vec(st.rhs), "r_" + s->second));
             if (key.rfind("V_", 0) == 0)
                 if (auto s = split(name.substr(2), pt, fr))
-                    return emit("velocity " + s->first + " in " + s->second + " = " + vec(st.rhs).s);
+                    return emit("velocity " + s->first + " in " + s->second + " = " +
+                                dimensioned(vec(st.rhs), "v_" + s->first));
             if (key.rfind("A_", 0) == 0)
                 if (auto s = split(name.substr(2), pt, fr))
-                    return emit("acceleration " + s->first + " in " + s->second + " = " + vec(st.rhs).s);
+                    return emit("acceleration " + s->first + " in " + s->second + " = " +
+                                dimensioned(vec(st.rhs), "a_" + s->first));
             if (key.rfind("W_", 0) == 0)
-                if (auto s = split(name.substr(2), fr, fr)) return angular_velocity(s->first, s->second, vec(st.rhs));
+                if (auto s = split(name.substr(2), fr, fr))
+                    return angular_velocity(s->first, s->second, dimensioned_text(vec(st.rhs), "w_" + s->first));
             if (key.rfind("ALF_", 0) == 0)
                 if (auto s = split(name.substr(4), fr, fr))
-                    return emit("angacc " + s->first + " in " + s->second + " = " + vec(st.rhs).s);
+                    return emit("angacc " + s->first + " in " + s->second + " = " +
+                                dimensioned(vec(st.rhs), "alf_" + s->first));
             if (key.rfind("FORCE_", 0) == 0)
-                if (auto p = point_of(name.substr(6))) return force(*p, std::nullopt, vec(st.rhs).s);
+                if (auto p = point_of(name.substr(6)))
+                    return force(*p, std::nullopt, dimensioned(vec(st.rhs), "f_" + *p));
             if (key.rfind("TORQUE_", 0) == 0)
-                if (auto b = bd(name.substr(7))) return torque(*b, std::nullopt, vec(st.rhs).s);
+                if (auto b = bd(name.substr(7)))
+                    return torque(*b, std::nullopt, dimensioned(vec(st.rhs), "tau_" + *b));
+            // a name of Autolev's own form whose points or frames are not declared is a mistake,
+            // not a new vector
+            static const std::pair<const char*, const char*> forms[] = {
+                {"P_", "a position: P_O_P> needs two declared points"},
+                {"V_", "a velocity: V_P_N> needs a declared point and frame"},
+                {"A_", "an acceleration: A_P_N> needs a declared point and frame"},
+                {"W_", "an angular velocity: W_B_N> needs two declared frames or bodies"},
+                {"ALF_", "an angular acceleration: ALF_B_N> needs two declared frames or bodies"},
+                {"FORCE_", "a force: FORCE_P> needs a declared point or particle"},
+                {"TORQUE_", "a torque: TORQUE_B> needs a declared frame or body"}};
+            for (const auto& [prefix, meaning] : forms)
+                if (key.rfind(prefix, 0) == 0)
+                    fail(lhs.where, "'" + lhs.text + ">' has the form of " + meaning,
+                         "declare the points and frames it names (POINTS, FRAMES, BODIES), or give the vector "
+                         "another name");
             Text r = vec(st.rhs);
             const Entry& ne = add(lhs.text, Kind::vector, lhs.where);
+            names_[key].numeric = r.numeric;
             return emit(ne.name + "> = " + r.s);
         }
         if (existing->kind != Kind::vector)
             fail(lhs.where, "'" + lhs.text + "' is " + kind_word(existing->kind) + ", not a vector");
-        emit(existing->name + "> = " + vec(st.rhs).s);
+        Text r = vec(st.rhs);
+        names_[key].numeric = r.numeric;
+        emit(existing->name + "> = " + r.s);
     }
 
     std::string label(const std::string& base) {
@@ -839,6 +903,10 @@ private:
         return l;
     }
     void force(const std::string& on, const std::optional<std::string>& from, const std::string& v) {
+        std::vector<std::string> at{on};
+        if (from) at.push_back(*from);
+        for (const std::string& x : at)
+            if (find(x) && find(x)->kind == Kind::point) forced_points_.emplace_back(x, statement_where_);
         std::string l = label("F_" + on);
         emit("force " + l + " on " + on + (from ? " from " + *from : "") + " = " + v);
     }
@@ -868,6 +936,10 @@ private:
             std::string n = frame_name(e.args[0]), b = frame_name(e.args[1]);
             std::string p = point_name(e.args[2]), q = point_name(e.args[3]);
             std::string what = f == "A2PTS" ? "acceleration " : "velocity ";
+            if (f == "V2PTS") {  // both points are fixed on B: forces there act on B
+                for (const std::string& x : {p, q})
+                    if (find(x) && find(x)->kind == Kind::point && !point_body_.count(x)) point_body_[x] = b;
+            }
             return emit(what + q + " in " + n + " from " + p + (f == "V1PT" ? " moving on " : " fixed on ") + b);
         }
         if (f == "A1PT")
@@ -878,7 +950,7 @@ private:
             if (e.args.size() > 1)
                 fail(e.args[1].where, "GRAVITY on some bodies only is not translated",
                      "Alembert's gravity acts on every body and particle; apply FORCE() to these instead");
-            return emit("gravity " + vec(e.args[0]).s);
+            return emit("gravity " + dimensioned(vec(e.args[0]), "g_" + newtonian_));
         }
         if (f == "FORCE" || f == "TORQUE") {
             nargs(2, f == "FORCE" ? "FORCE(P, v>) or FORCE(P/Q, v>)" : "TORQUE(B, v>) or TORQUE(A/B, v>)");
@@ -892,7 +964,7 @@ private:
             } else {
                 on = object(at);
             }
-            std::string v = vec(e.args[1]).s;
+            std::string v = dimensioned(vec(e.args[1]), (f == "FORCE" ? "f_" : "tau_") + on);
             return f == "FORCE" ? force(on, from, v) : torque(on, from, v);
         }
         if (f == "KANE") {
@@ -923,6 +995,26 @@ private:
             return;
         }
         emit(expr(e).s);
+    }
+
+    // Unit-less values: Autolev's numbers have no units, while Alembert checks that a mass is
+    // a mass, a position a length, and so on. An expression of numbers alone (no constant or
+    // variable, whose dimension is open) in such a place becomes a constant without a unit: a
+    // number is the constant's value (MASS P = 2: m_P = 2), anything else is scaled by a
+    // constant equal to 1 (P_O_P> = N1>: r_P*(Nx>) with r_P = 1).
+    std::string dimensioned(const Text& t, const std::string& base) { return dimensioned_text(t, base).s; }
+    Text dimensioned_text(const Text& t, const std::string& base) {
+        if (!t.numeric || t.s == "0" || t.s == "0>") return t;
+        std::string name = base;
+        for (int k = 2; find(name) || extra_names_.count(name); ++k) name = base + "_" + std::to_string(k);
+        extra_names_.insert({name, 0});
+        bool plain_number = !t.vector && t.s.find_first_not_of("0123456789.e-+") == std::string::npos;
+        if (plain_number) {
+            extra_constants_.push_back(name + " = " + t.s);
+            return {name, false, 5, false};
+        }
+        extra_constants_.push_back(name + " = 1");
+        return {name + "*" + (t.prec <= 3 ? "(" + t.s + ")" : t.s), t.vector, 2, false};
     }
 
     // W_B_A> = w>: Alembert sets a frame's angular velocity in the frame it is oriented from
@@ -985,6 +1077,14 @@ private:
     }
 
     void assemble() {
+        for (const auto& [p, where] : forced_points_) {
+            auto it = point_body_.find(p);
+            const Entry* body = it == point_body_.end() ? nullptr : find(it->second);
+            if (!body || body->kind != Kind::body)
+                report(Severity::error, where, "the force at point '" + p + "' acts on no body",
+                       "Alembert applies forces at points fixed on a body: say which body '" + p +
+                           "' is fixed on with V2PTS(N, B, O, " + p + "), or apply the force at a particle");
+        }
         if (kane_at_) {
             if (!kinematics_.empty() && dependent_.size() != constraints_.size())
                 report(Severity::error, kane_where_,
@@ -996,12 +1096,34 @@ private:
         std::string& s = out_.script;
         s = "# " + file_ + ", translated from Autolev by alembert import\n";
         if (!newtonian_.empty()) s += "newtonian " + newtonian_ + "\n";
-        for (const std::string& l : frames_lines_) s += l + "\n";
+        for (const std::string& l : frames_lines_) {
+            if (l.empty() || l[0] != '\x01') {
+                s += l + "\n";
+                continue;
+            }
+            // points: those fixed on a body (V2PTS) are declared on it
+            std::vector<std::string> free;
+            std::size_t b = 1;
+            while (b <= l.size()) {
+                std::size_t e = l.find('\x01', b);
+                if (e == std::string::npos) e = l.size();
+                std::string p = l.substr(b, e - b);
+                b = e + 1;
+                auto it = point_body_.find(p);
+                const Entry* body = it == point_body_.end() ? nullptr : find(it->second);
+                if (body && body->kind == Kind::body) s += "point " + p + " on " + body->name + "\n";
+                else free.push_back(p);
+            }
+            if (!free.empty()) s += "point " + join(free) + "\n";
+        }
         for (const auto& group : constants_) {
             std::vector<std::string> parts;
             for (const ConstantDecl& c : group) parts.push_back(c.name + (c.value.empty() ? "" : " = " + c.value + c.unit));
             s += "constant " + join(parts) + "\n";
         }
+        if (!extra_constants_.empty())
+            s += "# numbers where Alembert needs a dimension, as constants without a unit\n"
+                 "constant " + join(extra_constants_) + "\n";
         if (!variables_.empty()) {
             std::vector<std::string> parts;
             for (const std::string& v : variables_) {
@@ -1051,6 +1173,12 @@ private:
     std::map<std::string, Entry> names_{};                  // key: upper case
     std::map<std::string, std::string> implicit_points_{};  // NO, BO (upper case) -> N_o, Bcm
     std::map<std::string, int> labels_{};
+    std::map<std::string, std::string> point_body_{};  // point -> the body V2PTS fixes it on
+    std::vector<std::pair<std::string, Location>> forced_points_{};
+    Location statement_where_{};
+    std::map<std::string, int> extra_names_{};
+    std::vector<std::string> extra_constants_{};  // numbers given a place with a dimension
+    bool resolved_numeric_ = false, last_operands_numeric_ = false;
     std::map<std::string, std::string> parent_{};  // frame -> the frame it is oriented from
     std::string newtonian_{};
     std::vector<std::string> frames_lines_{};
