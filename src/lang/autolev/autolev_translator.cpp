@@ -231,15 +231,19 @@ private:
             return;
         }
         if (w == "CONSTANTS" || w == "CONSTANT") {
-            std::vector<ConstantDecl> group;
-            each(Kind::constant, [&](const Declarator& d, const Entry& e) {
+            // the group is kept even if a later name fails, so the index stays valid
+            constants_.emplace_back();
+            const std::size_t g = constants_.size() - 1;
+            for (const Declarator& d : st.declarators) {
                 no_primes(d);
-                ConstantDecl c{e.name, "", ""};
-                if (d.has_value) c.value = number_text(d.value, "the value of constant '" + d.name + "'");
-                constant_index_[upper(e.name)] = {constants_.size(), group.size()};
-                group.push_back(c);
-            });
-            constants_.push_back(std::move(group));
+                for (const std::string& n : expand(d)) {
+                    ConstantDecl c{"", "", ""};
+                    if (d.has_value) c.value = number_text(d.value, "the value of constant '" + d.name + "'");
+                    c.name = add(n, Kind::constant, d.where).name;
+                    constant_index_[upper(n)] = {g, constants_[g].size()};
+                    constants_[g].push_back(std::move(c));
+                }
+            }
             return;
         }
         if (w == "VARIABLES" || w == "VARIABLE" || w == "MOTIONVARIABLES" || w == "MOTIONVARIABLE") {
@@ -1117,6 +1121,7 @@ private:
             if (!free.empty()) s += "point " + join(free) + "\n";
         }
         for (const auto& group : constants_) {
+            if (group.empty()) continue;
             std::vector<std::string> parts;
             for (const ConstantDecl& c : group) parts.push_back(c.name + (c.value.empty() ? "" : " = " + c.value + c.unit));
             s += "constant " + join(parts) + "\n";

@@ -4,7 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <fstream>
 #include <map>
+#include <random>
 #include <regex>
 #include <sstream>
 #include <string>
@@ -324,6 +326,40 @@ TEST(AutolevImport, EmptyFileGivesAnEmptyScript) {
     EXPECT_TRUE(t.ok());
     EXPECT_TRUE(t.diagnostics.empty());
     run(t.script);
+}
+
+// Damaged models (characters deleted, repeated or replaced at random, from a fixed seed)
+// never make the translator throw or crash: each gives a script or says what is wrong where.
+TEST(AutolevImport, DamagedModelsGiveMessagesNotCrashes) {
+    std::ifstream f(std::string(ALEMBERT_SOURCE_DIR) + "/tests/lang/autolev/models/rolling_disk.al");
+    std::ostringstream buf;
+    buf << f.rdbuf();
+    const std::string model = buf.str();
+    ASSERT_FALSE(model.empty());
+    const std::string alphabet = "%'>()[]{},;=+-*/^:0123456789._ABNQUXYZ \n\x01\xC3";
+    std::mt19937 rng(7);
+    int failures = 0;
+    for (int trial = 0; trial < 3000; ++trial) {
+        std::string s = model;
+        int edits = 1 + static_cast<int>(rng() % 4);
+        for (int k = 0; k < edits && !s.empty(); ++k) {
+            std::size_t at = rng() % s.size();
+            switch (rng() % 3) {
+                case 0: s.erase(at, 1 + rng() % 8); break;
+                case 1: s.insert(at, s.substr(rng() % s.size(), 1 + rng() % 30)); break;
+                default: s[at] = alphabet[rng() % alphabet.size()]; break;
+            }
+        }
+        AutolevTranslation t;
+        EXPECT_NO_THROW(t = translate_autolev(s, "damaged.al"));
+        for (const auto& d : t.diagnostics) {
+            EXPECT_GE(d.location.line, 1);
+            EXPECT_GE(d.location.column, 1);
+            EXPECT_FALSE(d.message.empty());
+        }
+        if (!t.ok()) ++failures;
+    }
+    EXPECT_GT(failures, 100);  // the damage was noticed, not translated silently
 }
 
 }  // namespace
