@@ -144,6 +144,9 @@ TEST(AutolevImport, DirectionCosineMatrixEqualsSimpleRotation) {
     AutolevTranslation b = translate_autolev(dcm, "dcm.al");
     ASSERT_TRUE(a.ok() && b.ok());
     EXPECT_TRUE(contains(b.script, "rotate A from N dcm [cos(Q), -sin(Q), 0; sin(Q), cos(Q), 0; 0, 0, 1]\n")) << b.script;
+    // the matrix's columns are A1>, A2>, A3> in N: A1> turns toward N2> as Q grows
+    EXPECT_NEAR(run(b.script, "evaluate dot(Ax>, Ny>) at Q = 0.3")["="], std::sin(0.3), 1e-15);
+    EXPECT_NEAR(run(a.script, "evaluate dot(Ax>, Ny>) at Q = 0.3")["="], std::sin(0.3), 1e-15);
     for (double q : {-2.0, 0.3, 1.9}) {
         std::string at = "solve K for Q'' at Q = " + std::to_string(q) + ", Q' = 0.4";
         EXPECT_NEAR(run(a.script, at)["Q''"], run(b.script, at)["Q''"], 1e-12);
