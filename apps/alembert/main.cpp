@@ -273,9 +273,9 @@ int import_autolev(const ImportOptions& o) {
         return kUsageError;
     }
     temporary.release();
-    std::size_t warnings = t.diagnostics.size();
+    std::size_t messages = t.diagnostics.size();  // warnings and notes: left out or renamed
     std::cout << "wrote " << o.out;
-    if (warnings) std::cout << " (" << warnings << " note" << (warnings == 1 ? "" : "s") << " above)";
+    if (messages) std::cout << " (" << messages << " message" << (messages == 1 ? "" : "s") << " above)";
     std::cout << "\n";
     return kOk;
 }

@@ -45,7 +45,7 @@ contains "stdin to stdout" "$tmp/out" "kane K for Q1, Q2, Q3 speeds U1, U2, U3"
 printf 'NEWTONIAN N\nPAUSE\nPARTICLES P\n' > "$tmp/warn.al"
 expect "warning" 0 "$alembert" import "$tmp/warn.al" --out "$tmp/warn.alb"
 contains "warning" "$tmp/err" "warn.al:2:1: warning: PAUSE is not translated"
-contains "warning" "$tmp/out" "(1 note above)"
+contains "warning" "$tmp/out" "(1 message above)"
 contains "warning" "$tmp/warn.alb" "particle P"
 
 # an error: file:line:col with the line and a caret, exit 1, the target untouched
