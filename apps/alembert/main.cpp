@@ -21,6 +21,7 @@
 
 #include "alembert/cleanup.hpp"
 #include "alembert/error.hpp"
+#include "alembert/lang/autolev_import.hpp"
 #include "alembert/lang/interpreter.hpp"
 #include "alembert/lang/lexer.hpp"
 #include "alembert/lang/statements.hpp"
@@ -228,6 +229,64 @@ int write_report_command(const ReportOptions& o) {
     return exit_status(s);
 }
 
+// `alembert import`: an Autolev model translated into an Alembert script, written to a
+// temporary beside the target and renamed; what could not be translated goes to stderr
+struct ImportOptions {
+    std::string file;
+    std::string out;
+};
+
+int import_autolev(const ImportOptions& o) {
+    namespace fs = std::filesystem;
+    std::string text;
+    if (!read_script(o.file, text)) return kUsageError;
+    const std::string name = display_name(o.file);
+    alembert::lang::AutolevTranslation t = alembert::lang::translate_autolev(text, name);
+    for (const alembert::lang::Diagnostic& d : t.diagnostics)
+        std::cerr << alembert::lang::format_diagnostic(d, text);
+    if (!t.ok()) {
+        std::cerr << "alembert: '" << name << "' was not translated: fix the errors above (" << o.out
+                  << " is left as it was)\n";
+        return kScriptError;
+    }
+    if (o.out == "-") {
+        std::cout << t.script;
+        return kOk;
+    }
+    const fs::path target(o.out);
+    std::error_code ec;
+    if (fs::is_directory(target, ec)) {
+        std::cerr << "alembert: --out '" << o.out << "' is a directory; name the script to write\n";
+        return kUsageError;
+    }
+    fs::path dir = target.parent_path().empty() ? fs::path(".") : target.parent_path();
+    alembert::TemporaryFile temporary(
+        (dir / ("." + target.filename().string() + ".tmp" + std::to_string(static_cast<long>(::getpid())))).string());
+    {
+        std::ofstream f(temporary.path(), std::ios::binary);
+        f << t.script;
+        f.close();
+        if (!f) {
+            std::cerr << "alembert: cannot write '" << o.out << "' (" << std::strerror(errno)
+                      << "); choose a writable path\n";
+            std::remove(temporary.path().c_str());
+            return kUsageError;
+        }
+    }
+    fs::rename(temporary.path(), target, ec);
+    if (ec) {
+        std::cerr << "alembert: cannot replace '" << o.out << "' (" << ec.message() << ")\n";
+        std::remove(temporary.path().c_str());
+        return kUsageError;
+    }
+    temporary.release();
+    std::size_t messages = t.diagnostics.size();  // warnings and notes: left out or renamed
+    std::cout << "wrote " << o.out;
+    if (messages) std::cout << " (" << messages << " message" << (messages == 1 ? "" : "s") << " above)";
+    std::cout << "\n";
+    return kOk;
+}
+
 // ---- the interactive session ------------------------------------------------------------
 
 // Ctrl-C: while a line is typed, it is dropped and a new prompt shown; while a statement runs,
@@ -398,6 +457,7 @@ int main(int argc, char** argv) {
     RoadmapOptions roadmap_opts;
     ModelCommandOptions inverse_opts, codegen_opts;
     ReportOptions report_opts;
+    ImportOptions import_opts;
     // The subcommand table. Each row adds one subcommand and the function that carries it out,
     // so main() stays a dispatcher.
     struct Subcommand {
@@ -467,6 +527,13 @@ int main(int argc, char** argv) {
                           "the columns to plot (repeat or separate by commas; default: all)")->delimiter(',');
          },
          [&] { return write_report_command(report_opts); }},
+        {"import", "Translate an Autolev model (.al) into an Alembert script (.alb)",
+         [&](CLI::App& c) {
+             c.add_option("MODEL", import_opts.file, "the Autolev file; '-' reads standard input")->required();
+             c.add_option("--out", import_opts.out, "the Alembert script to write ('-': standard output)")
+                 ->required();
+         },
+         [&] { return import_autolev(import_opts); }},
     };
     std::vector<CLI::App*> commands;
     for (const Subcommand& s : table) {

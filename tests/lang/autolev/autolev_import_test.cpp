@@ -1,0 +1,368 @@
+// SPDX-License-Identifier: MIT
+// alembert import: names without regard to case, indexed and implicit declarations,
+// reordering, expressions, and the messages for what cannot be translated.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <random>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "alembert/lang/autolev_import.hpp"
+#include "alembert/lang/interpreter.hpp"
+
+namespace {
+
+using alembert::lang::AutolevTranslation;
+using alembert::lang::Interpreter;
+using alembert::lang::RunStatus;
+using alembert::lang::Severity;
+using alembert::lang::translate_autolev;
+
+bool contains(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
+
+// the translated script runs; returns the numbers it printed as `name = value`
+std::map<std::string, double> run(const std::string& script, const std::string& extra = "") {
+    std::ostringstream out, err;
+    Interpreter interp(out, err, false);
+    interp.set_output_dir(::testing::TempDir());
+    EXPECT_EQ(interp.run(script + "digits 17\n" + extra + "\n", "imported.alb"), RunStatus::ok) << err.str() << script;
+    std::map<std::string, double> values;
+    std::istringstream lines(out.str());
+    std::string line;
+    std::smatch m;
+    static const std::regex assignment(R"(^(\S*) ?= (\S+)$)");
+    int evaluations = 0;
+    while (std::getline(lines, line))
+        if (std::regex_match(line, m, assignment)) {
+            // `evaluate` prints "= value": the n-th is keyed "=#n" (the first also "=")
+            std::string key = m[1].str().empty() ? (++evaluations == 1 ? "=" : "=#" + std::to_string(evaluations))
+                                                 : m[1].str();
+            try {
+                values[key] = std::stod(m[2]);
+            } catch (const std::exception&) {
+                // symbolic
+            }
+        }
+    return values;
+}
+
+const char* const kPendulum = R"(% a rod on a pin, Q from the downward vertical
+NEWTONIAN N
+BODIES A
+CONSTANTS L, M, G
+VARIABLES Q''
+SIMPROT(N, A, 3, Q)
+P_NO_AO> = -L/2*A2>
+V_AO_N> = DT(P_NO_AO>, N)
+MASS A = M
+INERTIA A, 0, 0, M*L^2/12
+GRAVITY(-G*N2>)
+ZERO = FR() + FRSTAR()
+KANE()
+INPUT L = 0.8, M = 1.5, G = 9.81
+)";
+
+TEST(AutolevImport, NamesMatchWithoutRegardToCaseAndKeepTheirDeclaredSpelling) {
+    AutolevTranslation t = translate_autolev(R"(newtonian n
+Bodies Rod
+constants Len, g
+variables q''
+simprot(N, ROD, 3, Q)
+p_no_rodo> = -LEN*rod2>
+v_RODO_n> = dt(P_NO_RODO>, n)
+mass ROD = 2
+inertia rod, 0, 0, 1
+gravity(-G*N2>)
+zero = fr() + frstar()
+kane()
+input LEN = 0.5, G = 9.81
+)",
+                                             "mixed.al");
+    ASSERT_TRUE(t.ok()) << t.script;
+    EXPECT_TRUE(t.diagnostics.empty());
+    EXPECT_TRUE(contains(t.script, "rotate Rod from n about z by q\n")) << t.script;
+    EXPECT_TRUE(contains(t.script, "translate Rodcm from n_o by -Len*Rody>\n")) << t.script;
+    EXPECT_TRUE(contains(t.script, "constant Len = 0.5, g = 9.81\n")) << t.script;
+    // m L^2 q'' + I q'' = -m g L sin(q): q'' = -2*9.81*0.5 sin(q) / (2*0.25 + 1)
+    auto v = run(t.script, "solve K for q'' at q = 0.7, q' = 0");
+    EXPECT_NEAR(v["q''"], -2 * 9.81 * 0.5 * std::sin(0.7) / 1.5, 1e-12);
+}
+
+TEST(AutolevImport, IndexedDeclarationsExpand) {
+    AutolevTranslation t = translate_autolev("NEWTONIAN N\nCONSTANTS L{3}, K{2:4}\nVARIABLES Q{2}'\n"
+                                             "MOTIONVARIABLES' U{3:4}\n",
+                                             "indexed.al");
+    ASSERT_TRUE(t.ok());
+    EXPECT_TRUE(contains(t.script, "constant L1, L2, L3, K2, K3, K4\n")) << t.script;
+    EXPECT_TRUE(contains(t.script, "variable Q1'', Q2'', U3'', U4''\n")) << t.script;
+    run(t.script);
+}
+
+TEST(AutolevImport, DeclarationsAndInputValuesMoveFirst) {
+    // Autolev's order: variables and constants before NEWTONIAN, values at the end
+    AutolevTranslation t = translate_autolev(R"(MOTIONVARIABLES' Q', U'
+CONSTANTS M, G
+NEWTONIAN N
+PARTICLES P
+P_NO_P> = Q*N1>
+V_P_N> = U*N1>
+MASS P = M
+Q' = U
+GRAVITY(-G*N1>)
+ZERO = FR() + FRSTAR()
+KANE()
+INPUT M = 3, G = 10
+INPUT Q = 0.25, U = -1
+INPUT TFINAL = 2, INTEGSTP = 0.05, ABSERR = 1e-9, RELERR = 1e-10
+)",
+                                             "order.al");
+    ASSERT_TRUE(t.ok());
+    std::istringstream lines(t.script);
+    std::string first, second;
+    std::getline(lines, first);  // the comment naming the source
+    std::getline(lines, second);
+    EXPECT_EQ(second, "newtonian N");
+    EXPECT_TRUE(contains(t.script, "constant M = 3, G = 10\n")) << t.script;
+    EXPECT_TRUE(contains(t.script, "initial Q = 0.25, U = -1\n")) << t.script;
+    EXPECT_TRUE(contains(t.script, "final time 2\n")) << t.script;
+    EXPECT_TRUE(contains(t.script, "output step 0.05\n")) << t.script;
+    EXPECT_TRUE(contains(t.script, "tolerance abs 1e-9 rel 1e-10\n")) << t.script;
+    // free fall along -N1>: U' = -G
+    auto v = run(t.script, "solve K for U' at Q = 0, U = 0");
+    EXPECT_NEAR(v["U'"], -10, 1e-12);
+}
+
+TEST(AutolevImport, DirectionCosineMatrixEqualsSimpleRotation) {
+    std::string dcm = kPendulum;
+    dcm.replace(dcm.find("SIMPROT(N, A, 3, Q)"), 19, "N_A = [COS(Q), -SIN(Q), 0; SIN(Q), COS(Q), 0; 0, 0, 1]");
+    AutolevTranslation a = translate_autolev(kPendulum, "simprot.al");
+    AutolevTranslation b = translate_autolev(dcm, "dcm.al");
+    ASSERT_TRUE(a.ok() && b.ok());
+    EXPECT_TRUE(contains(b.script, "rotate A from N dcm [cos(Q), -sin(Q), 0; sin(Q), cos(Q), 0; 0, 0, 1]\n")) << b.script;
+    // the matrix's columns are A1>, A2>, A3> in N: A1> turns toward N2> as Q grows
+    EXPECT_NEAR(run(b.script, "evaluate dot(Ax>, Ny>) at Q = 0.3")["="], std::sin(0.3), 1e-15);
+    EXPECT_NEAR(run(a.script, "evaluate dot(Ax>, Ny>) at Q = 0.3")["="], std::sin(0.3), 1e-15);
+    for (double q : {-2.0, 0.3, 1.9}) {
+        std::string at = "solve K for Q'' at Q = " + std::to_string(q) + ", Q' = 0.4";
+        EXPECT_NEAR(run(a.script, at)["Q''"], run(b.script, at)["Q''"], 1e-12);
+        EXPECT_NEAR(run(a.script, at)["Q''"], -3 * 9.81 * std::sin(q) / (2 * 0.8), 1e-12);
+    }
+}
+
+TEST(AutolevImport, ExpressionsKeepTheirMeaning) {
+    AutolevTranslation t = translate_autolev(R"(NEWTONIAN N
+FRAMES A
+CONSTANTS A1, B, C, D, E
+VARIABLES Q'
+SIMPROT(N, A, 3, Q)
+Z = -(A1 + B)^2/(C*D) - -E + 2^-1
+W = A1/B/C - A1/(B/C) + .5
+R> = 3*A1> - 4*A2>
+S = MAG(R>) + DOT(EXPRESS(R>, N), N1>) + DOT(CROSS(N1>, N2>), N3>)
+INPUT A1 = 1.5, B = 0.5, C = 2, D = 4, E = 3
+)",
+                                             "expr.al");
+    ASSERT_TRUE(t.ok()) << t.diagnostics.front().message;
+    auto v = run(t.script, "evaluate Z at Q = 0\nevaluate W at Q = 0\nevaluate S at Q = 0.5");
+    EXPECT_NEAR(v["="], -4.0 / 8 + 3 + 0.5, 1e-14);
+    EXPECT_NEAR(v["=#2"], 1.5 / 0.5 / 2 - 1.5 / 0.25 + 0.5, 1e-14);
+    EXPECT_NEAR(v["=#3"], 5 + 3 * std::cos(0.5) + 4 * std::sin(0.5) + 1, 1e-14);
+}
+
+TEST(AutolevImport, ForcesTorquesAndPairsBecomeLoads) {
+    AutolevTranslation t = translate_autolev(R"(NEWTONIAN N
+BODIES A, B
+POINTS P
+CONSTANTS F, T
+VARIABLES Q{2}''
+SIMPROT(N, A, 3, Q1)
+SIMPROT(A, B, 3, Q2)
+P_NO_P> = N1>
+V2PTS(N, A, NO, P)
+FORCE(P, F*N2>)
+FORCE(NO/P, F*N1>)
+FORCE_P> = F*N3>
+TORQUE(A, T*N3>)
+TORQUE(A/B, T*A3>)
+TORQUE_B> = -T*N3>
+)",
+                                             "loads.al");
+    ASSERT_TRUE(t.ok());
+    EXPECT_TRUE(contains(t.script, "force F_P on P = F*Ny>\n")) << t.script;
+    EXPECT_TRUE(contains(t.script, "force F_P_2 on P from N_o = F*Nx>\n")) << t.script;
+    EXPECT_TRUE(contains(t.script, "force F_P_3 on P = F*Nz>\n")) << t.script;
+    EXPECT_TRUE(contains(t.script, "torque T_A on A = T*Nz>\n")) << t.script;
+    EXPECT_TRUE(contains(t.script, "torque T_B on B from A = T*Az>\n")) << t.script;
+    EXPECT_TRUE(contains(t.script, "torque T_B_2 on B = -T*Nz>\n")) << t.script;
+    run(t.script);
+}
+
+TEST(AutolevImport, StatementsWithoutCounterpartAreLeftOutWithAWarning) {
+    std::string src = std::string("UNITSYSTEM KG, METER, SEC\nAUTOZ ON\n") + kPendulum + "PAUSE\n";
+    AutolevTranslation t = translate_autolev(src, "extra.al");
+    EXPECT_TRUE(t.ok());
+    ASSERT_EQ(t.diagnostics.size(), 3u);
+    EXPECT_EQ(t.diagnostics[0].severity, Severity::warning);
+    EXPECT_EQ(t.diagnostics[0].location.line, 1);
+    EXPECT_TRUE(contains(t.diagnostics[0].message, "UNITSYSTEM is not translated"));
+    EXPECT_EQ(t.diagnostics[1].location.line, 2);
+    EXPECT_EQ(t.diagnostics[2].location.line, 17);
+    EXPECT_TRUE(contains(t.diagnostics[2].message, "PAUSE"));
+    run(t.script);
+}
+
+TEST(AutolevImport, CodeDynamicsNeedsTheCoordinatesRatesAsSpeeds) {
+    AutolevTranslation a = translate_autolev(std::string(kPendulum) + "CODE DYNAMICS() pendulum.m\n", "a.al");
+    EXPECT_TRUE(a.ok());
+    EXPECT_TRUE(contains(a.script, "codegen matlab name pendulum\n")) << a.script;
+    AutolevTranslation b = translate_autolev(R"(NEWTONIAN N
+PARTICLES P
+MOTIONVARIABLES' Q', U'
+P_NO_P> = Q*N1>
+V_P_N> = U*N1>
+MASS P = 1
+FORCE_P> = -Q*N1>
+Q' = U
+ZERO = FR() + FRSTAR()
+KANE()
+CODE DYNAMICS() spring.c
+)",
+                                             "b.al");
+    EXPECT_TRUE(b.ok());
+    ASSERT_EQ(b.diagnostics.size(), 1u);
+    EXPECT_EQ(b.diagnostics[0].severity, Severity::warning);
+    EXPECT_EQ(b.diagnostics[0].location.line, 11);
+    EXPECT_TRUE(contains(b.diagnostics[0].message, "speeds of its own")) << b.diagnostics[0].message;
+    EXPECT_FALSE(contains(b.script, "codegen"));
+}
+
+// Malformed or untranslatable input: each gives an error at the statement's line and column,
+// and the translation is not ok (the command writes no script).
+struct BadInput {
+    const char* name;
+    std::string source;
+    int line, column;
+    const char* fragment;
+};
+
+class AutolevErrors : public ::testing::TestWithParam<BadInput> {};
+
+void PrintTo(const BadInput& b, std::ostream* os) { *os << b.name; }
+
+TEST_P(AutolevErrors, NamesTheLineColumnAndTheProblem) {
+    const BadInput& b = GetParam();
+    AutolevTranslation t = translate_autolev(b.source, "bad.al");
+    EXPECT_FALSE(t.ok()) << t.script;
+    bool found = false;
+    for (const auto& d : t.diagnostics)
+        if (d.severity == Severity::error && d.location.line == b.line && d.location.column == b.column &&
+            contains(d.message, b.fragment)) {
+            found = true;
+            EXPECT_FALSE(d.hint.empty() && std::string(b.fragment) != "unexpected character") << d.message;
+        }
+    std::string all;
+    for (const auto& d : t.diagnostics)
+        all += std::to_string(d.location.line) + ":" + std::to_string(d.location.column) + ": " + d.message + "\n";
+    EXPECT_TRUE(found) << "expected " << b.line << ":" << b.column << " '" << b.fragment << "', got\n" << all;
+}
+
+const std::string kHead = "NEWTONIAN N\nBODIES A\nPOINTS P\nCONSTANTS L\nVARIABLES Q'', U'\n";  // 5 lines
+
+INSTANTIATE_TEST_SUITE_P(
+    Malformed, AutolevErrors,
+    ::testing::Values(
+        BadInput{"undeclared_name", kHead + "SIMPROT(N, A, 3, QQ)\n", 6, 18, "'QQ' is not declared"},
+        BadInput{"unclosed_bracket", kHead + "SIMPROT(N, A, 3, Q\n", 6, 19, "expected ')'"},
+        BadInput{"dangling_operator", kHead + "X = L +\n", 6, 8, "expected a value but found the end"},
+        BadInput{"argument_count", kHead + "SIMPROT(N, A, 3)\n", 6, 1, "takes 4 arguments, not 3"},
+        BadInput{"unknown_function", kHead + "X = BESSEL(Q)\n", 6, 5, "function 'BESSEL' is not translated"},
+        BadInput{"unknown_statement", kHead + "FROBNICATE ALL\n", 6, 1, "not an Autolev statement"},
+        BadInput{"vector_plus_scalar", kHead + "R> = N1> + L\n", 6, 10, "between a vector and a scalar"},
+        BadInput{"product_of_vectors", kHead + "R> = N1>*N2>\n", 6, 9, "'*' between two vectors"},
+        BadInput{"same_name_other_case", "NEWTONIAN N\nCONSTANTS L, l\n", 2, 14, "'l' is already declared"},
+        BadInput{"assign_a_constant", kHead + "L = 3\n", 6, 1, "'L' is a constant and cannot be assigned"},
+        BadInput{"no_newtonian", "CONSTANTS L\nFRAMES A\n", 1, 1, "no NEWTONIAN frame"},
+        BadInput{"second_newtonian", "NEWTONIAN N\nNEWTONIAN M\n", 2, 1, "a second NEWTONIAN"},
+        BadInput{"input_undeclared", kHead + "INPUT LL = 3\n", 6, 7, "'LL' in INPUT is not declared"},
+        BadInput{"input_not_a_number", kHead + "INPUT L = 2*Q\n", 6, 12, "must be a number"},
+        BadInput{"unknown_unit", kHead + "INPUT L = 3 FURLONG\n", 6, 7, "the unit 'FURLONG' is not translated"},
+        BadInput{"fr_alone", kHead + "X = FR()\n", 6, 5, "FR() is translated only in ZERO"},
+        BadInput{"zero_other", kHead + "ZERO = FR()\n", 6, 8, "ZERO is translated only as"},
+        BadInput{"undeclared_point_in_position", kHead + "P_NO_PP> = L*N1>\n", 6, 1, "has the form of a position"},
+        BadInput{"undefined_vector", kHead + "R> = S1>\n", 6, 6, "the vector 'S1>' is not defined"},
+        BadInput{"mass_of_a_point", kHead + "MASS P = 2\n", 6, 6, "MASS takes a body or a particle"},
+        BadInput{"inertia_count", kHead + "INERTIA A, 1, 2\n", 6, 1, "3 or 6 measures, not 2"},
+        BadInput{"gravity_on_some", kHead + "GRAVITY(-L*N2>, A)\n", 6, 17, "GRAVITY on some bodies only"},
+        BadInput{"dependent_count", kHead + "DEPENDENT[1] = U\nCONSTRAIN(DEPENDENT[U, Q])\n", 7, 1,
+                 "2 dependent speeds for 1 constraints"},
+        BadInput{"kinematics_of_constant", kHead + "L' = U\n", 6, 1, "'L' is not a variable"},
+        BadInput{"point_not_body", kHead + "V2PTS(N, A, P, A)\n", 6, 16, "expected a point"},
+        BadInput{"simprot_axis", kHead + "SIMPROT(N, A, 4, Q)\n", 6, 15, "SIMPROT about this axis"},
+        BadInput{"two_dimensional_index", "NEWTONIAN N\nCONSTANTS I{3,3}\n", 2, 14, "two-dimensional"},
+        BadInput{"too_many_indexed", "NEWTONIAN N\nCONSTANTS I{99999}\n", 2, 13, "more than 1000"},
+        BadInput{"non_ascii", kHead + "X = 2\xC2\xB7L\n", 6, 6, "unexpected character"},
+        BadInput{"nesting", kHead + "X = " + std::string(80, '(') + "L" + std::string(80, ')') + "\n", 6, 69,
+                 "nested more than 64 levels"},
+        BadInput{"force_on_a_loose_point", kHead + "FORCE(P, L*N1>)\n", 6, 1, "acts on no body"},
+        BadInput{"code_without_kane", kHead + "CODE DYNAMICS() x.c\n", 6, 1, "CODE DYNAMICS() without KANE()"},
+        BadInput{"code_fortran", kHead + "CODE DYNAMICS() x.for\n", 6, 1, "'.for' file is not translated"},
+        BadInput{"trailing_tokens", kHead + "KANE() KANE()\n", 6, 8, "after the statement"}),
+    [](const ::testing::TestParamInfo<BadInput>& p) { return p.param.name; });
+
+// One message per bad statement, and the good statements around them still translated.
+TEST(AutolevImport, EveryBadStatementIsReportedInFileOrder) {
+    AutolevTranslation t = translate_autolev(kHead + "X = BESSEL(Q)\nR> = L*N1>\nY = L +\nZ = UNDECLARED\n", "three.al");
+    ASSERT_EQ(t.diagnostics.size(), 3u);
+    EXPECT_EQ(t.diagnostics[0].location.line, 6);
+    EXPECT_EQ(t.diagnostics[1].location.line, 8);
+    EXPECT_EQ(t.diagnostics[2].location.line, 9);
+    EXPECT_TRUE(contains(t.script, "R> = L*Nx>\n"));
+}
+
+TEST(AutolevImport, EmptyFileGivesAnEmptyScript) {
+    AutolevTranslation t = translate_autolev("% nothing but a comment\n\n", "empty.al");
+    EXPECT_TRUE(t.ok());
+    EXPECT_TRUE(t.diagnostics.empty());
+    run(t.script);
+}
+
+// Damaged models (characters deleted, repeated or replaced at random, from a fixed seed)
+// never make the translator throw or crash: each gives a script or says what is wrong where.
+TEST(AutolevImport, DamagedModelsGiveMessagesNotCrashes) {
+    std::ifstream f(std::string(ALEMBERT_SOURCE_DIR) + "/tests/lang/autolev/models/rolling_disk.al");
+    std::ostringstream buf;
+    buf << f.rdbuf();
+    const std::string model = buf.str();
+    ASSERT_FALSE(model.empty());
+    const std::string alphabet = "%'>()[]{},;=+-*/^:0123456789._ABNQUXYZ \n\x01\xC3";
+    std::mt19937 rng(7);
+    int failures = 0;
+    for (int trial = 0; trial < 3000; ++trial) {
+        std::string s = model;
+        int edits = 1 + static_cast<int>(rng() % 4);
+        for (int k = 0; k < edits && !s.empty(); ++k) {
+            std::size_t at = rng() % s.size();
+            switch (rng() % 3) {
+                case 0: s.erase(at, 1 + rng() % 8); break;
+                case 1: s.insert(at, s.substr(rng() % s.size(), 1 + rng() % 30)); break;
+                default: s[at] = alphabet[rng() % alphabet.size()]; break;
+            }
+        }
+        AutolevTranslation t;
+        EXPECT_NO_THROW(t = translate_autolev(s, "damaged.al"));
+        for (const auto& d : t.diagnostics) {
+            EXPECT_GE(d.location.line, 1);
+            EXPECT_GE(d.location.column, 1);
+            EXPECT_FALSE(d.message.empty());
+        }
+        if (!t.ok()) ++failures;
+    }
+    EXPECT_GT(failures, 100);  // the damage was noticed, not translated silently
+}
+
+}  // namespace
