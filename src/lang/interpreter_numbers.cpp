@@ -536,6 +536,13 @@ void Interpreter::Impl::run_codegen(const CodegenRequest& r, Location where) {
     if (q.empty())
         throw ScriptError(where, "the model has no coordinates to generate code for",
                           "declare variables (variable q'') and use them in rotations or translations");
+    for (const TimeVariable& v : q)
+        if (v.order() < 2)
+            throw ScriptError(where, "the coordinate " + v.name() + " has no second derivative declared; generated "
+                                     "code integrates q'' (equations in generalized speeds, as a kane statement's, "
+                                     "are not generated yet)",
+                              "declare it as variable " + v.name() + "'' and give rolling or closed loops as "
+                              "constraint statements");
     std::vector<ex> loads = r.loads.empty() ? table.symbols(SymbolKind::unknown) : r.loads;
     // closed loops and rolling: the unknowns that are neither listed loads nor inputs are the
     // constraint forces, solved for with the accelerations
