@@ -563,7 +563,7 @@ void Interpreter::Impl::run_codegen(const CodegenRequest& r, Location where) {
             throw ScriptError(where, "the model has " + std::to_string(sys.constraints().size()) +
                                          " scalar constraints but " + std::to_string(constraint_forces.size()) +
                                          " unknowns left to hold them",
-                              "give the driving loads with input (input T = 0) or codegen c loads T, so that "
+                              "give the driving loads with input (input T = 0) or codegen c for T, so that "
                               "one unknown force per constraint remains");
     }
     CodegenOptions opts;
