@@ -244,11 +244,29 @@ std::string declarations(const CodePlan& plan, const Dialect& d) {
     const std::string ctx = d.cpp ? "" : "const " + d.name + "_context* c, ";
     const std::string cnst = d.cpp ? " const" : "";
     const std::string solve = plan.symmetric_mass_matrix ? "Cholesky" : "LU with partial pivoting";
-    os << ind << "/* Mass matrix M (nq x nq, row by row) and forcing f of M qpp = f. */\n"
-       << ind << "void " << d.function("mass_forcing") << "(" << ctx
+    const bool constrained = plan.constraint_count() > 0;
+    if (constrained)
+        os << ind << "/* Coefficients A ((nq + nc) x (nq + nc), row by row) and right side b of\n"
+           << ind << "   A x = b, x = (qpp, lambda) with lambda the constraint forces: the equations\n"
+           << ind << "   of motion, then the constraints at the acceleration level. */\n";
+    else
+        os << ind << "/* Mass matrix M (nq x nq, row by row) and forcing f of M qpp = f. */\n";
+    os << ind << "void " << d.function("mass_forcing") << "(" << ctx
        << arguments(plan.mass_forcing) << ")" << cnst << ";\n"
        << ind;
-    if (!plan.accelerations.empty())
+    if (constrained)
+        os << "/* Per constraint its value c (0 for a motion constraint) and its velocity-level\n"
+           << ind << "   value c' (g for a motion constraint g = 0): e[2 i], e[2 i + 1]. */\n"
+           << ind << "void " << d.function("constraint_drift") << "(" << ctx
+           << arguments(plan.constraint_drift) << ")" << cnst << ";\n"
+           << ind << "/* The accelerations qpp and the constraint forces lambda from A x = b (LU with\n"
+           << ind << "   partial pivoting); returns -1 if A is singular. */\n"
+           << ind << "int " << d.function("constrained_dynamics") << "(" << ctx
+           << "double t, const double* q, const double* qp, const double* u, double* qpp, "
+              "double* lambda)" << cnst << ";\n"
+           << ind << "/* Forward dynamics: the accelerations qpp (constrained_dynamics);\n"
+           << ind << "   returns -1 if A is singular. */\n";
+    else if (!plan.accelerations.empty())
         os << "/* The accelerations qpp from the loads u by the articulated-body recursion (no\n"
            << ind << "   mass matrix, no solve). */\n"
            << ind << "void " << d.function("accelerations") << "(" << ctx
@@ -273,8 +291,15 @@ std::string declarations(const CodePlan& plan, const Dialect& d) {
         os << ind << "/* The loads u during a simulation, from t, q and qp. */\n"
            << ind << "void " << d.function("load_laws") << "(" << ctx
            << arguments(plan.load_laws) << ")" << cnst << ";\n";
-    os << ind << "/* Right-hand side of x' = (qp, qpp) for x = (q, qp), loads from load_laws;\n"
-       << ind << "   returns " << (d.cpp ? "false" : "-1") << " if M is singular. */\n"
+    if (constrained)
+        os << ind << "/* Right-hand side of x' = (qp, qpp) for x = (q, qp), loads from load_laws,\n"
+           << ind << "   the constraints stabilised by Baumgarte's method at the rate a =\n"
+           << ind << "   " << d.size("stabilization") << ": c'' + 2 a c' + a^2 c = 0, g' + a g = 0;\n"
+           << ind << "   returns -1 if A is singular. */\n";
+    else
+        os << ind << "/* Right-hand side of x' = (qp, qpp) for x = (q, qp), loads from load_laws;\n"
+           << ind << "   returns " << (d.cpp ? "false" : "-1") << " if M is singular. */\n";
+    os
        << ind << (d.cpp ? "bool " : "int ") << d.function("rhs") << "(" << ctx
        << "double t, const double* x, double* dx)" << cnst << ";\n";
     return os.str();
@@ -289,6 +314,57 @@ std::string forward_and_rhs(const CodePlan& plan, const Dialect& d) {
     const std::string nq = d.size("nq"), nu = d.size("nu");
     const std::string solver = (d.cpp ? "" : d.name + "_") +
                                std::string(plan.symmetric_mass_matrix ? "cholesky_solve" : "lu_solve");
+    const std::size_t nc = plan.constraint_count();
+    if (nc > 0) {
+        // A x = b in x = (qpp, lambda); k = nq + nc unknowns
+        const std::string k = "(" + nq + " + " + d.size("nc") + ")";
+        os << "int " << owner << d.function("constrained_dynamics") << "(" << ctx
+           << "double t, const double* q, const double* qp, const double* u, double* qpp, "
+              "double* lambda)" << cnst << " {\n"
+           << "    double A[" << k << " * " << k << "], b[" << k << "], x[" << k << "];\n"
+           << "    int i;\n"
+           << "    " << d.function("mass_forcing") << "(" << c_arg << "t, q, qp, u, A, b);\n"
+           << "    if (" << solver << "(" << k << ", A, b, x) != 0) return -1;\n"
+           << "    for (i = 0; i < " << nq << "; ++i) qpp[i] = x[i];\n"
+           << "    for (i = 0; i < " << d.size("nc") << "; ++i) lambda[i] = x[" << nq << " + i];\n"
+           << "    return 0;\n}\n\n"
+           << "int " << owner << d.function("forward_dynamics") << "(" << ctx
+           << "double t, const double* q, const double* qp, const double* u, double* qpp)" << cnst
+           << " {\n"
+           << "    double lambda[" << d.size("nc") << "];\n"
+           << "    return " << d.function("constrained_dynamics") << "(" << c_arg
+           << "t, q, qp, u, qpp, lambda);\n}\n\n"
+           << "int " << owner << d.function("rhs") << "(" << ctx
+           << "double t, const double* x, double* dx)" << cnst << " {\n"
+           << "    const double a = " << d.size("stabilization") << ";\n"
+           << "    double A[" << k << " * " << k << "], b[" << k << "], y[" << k << "], e[2 * "
+           << d.size("nc") << "];\n"
+           << "    int i;\n";
+        std::string u = d.null();
+        if (plan.load_count > 0) {
+            os << "    double u[" << nu << "];\n"
+               << "    " << d.function("load_laws") << "(" << c_arg << "t, x, x + " << nq << ", u);\n";
+            u = "u";
+        }
+        os << "    " << d.function("mass_forcing") << "(" << c_arg << "t, x, x + " << nq << ", " << u
+           << ", A, b);\n"
+           << "    " << d.function("constraint_drift") << "(" << c_arg << "t, x, x + " << nq
+           << ", e);\n";
+        for (std::size_t i = 0; i < nc; ++i)
+            if (plan.constraint_kinds[i] == ConstraintKind::configuration)
+                os << "    b[" << nq << " + " << i << "] += 2.0 * a * e[" << 2 * i + 1
+                   << "] + a * a * e[" << 2 * i << "]; /* " << plan.constraint_names[i] << " */\n";
+            else
+                os << "    b[" << nq << " + " << i << "] += a * e[" << 2 * i + 1 << "]; /* "
+                   << plan.constraint_names[i] << " */\n";
+        os << "    if (" << solver << "(" << k << ", A, b, y) != 0) return -1;\n"
+           << "    for (i = 0; i < " << nq << "; ++i) {\n"
+           << "        dx[i] = x[" << nq << " + i];\n"
+           << "        dx[" << nq << " + i] = y[i];\n"
+           << "    }\n"
+           << "    return 0;\n}\n";
+        return os.str();
+    }
     os << (d.cpp ? "bool " : "int ") << owner << d.function("forward_dynamics") << "(" << ctx
        << "double t, const double* q, const double* qp, const double* u, double* qpp)" << cnst
        << " {\n";
@@ -516,6 +592,15 @@ int main(int argc, char** argv) {
 // the sizes, each with a comment listing what it counts
 using detail::names_of;
 
+std::string constraint_list(const CodePlan& plan) {
+    std::string s;
+    for (std::size_t i = 0; i < plan.constraint_names.size(); ++i)
+        s += (i ? ", " : "") + plan.constraint_names[i] +
+             (plan.constraint_kinds[i] == ConstraintKind::configuration ? " (configuration)"
+                                                                         : " (motion)");
+    return s;
+}
+
 std::vector<GeneratedFile> emit_c_family(const CodePlan& plan, const Dialect& d,
                                          const CodePrinter& pr, const IdMap& id,
                                          const std::vector<std::string>& head_lines,
@@ -562,7 +647,16 @@ std::vector<GeneratedFile> emit_c_family(const CodePlan& plan, const Dialect& d,
           << "#define " << d.size("nu") << " " << plan.load_count << " /* loads: "
           << names_of(plan.loads) << " */\n"
           << "#define " << d.size("ny") << " " << plan.outputs.size() << " /* outputs: "
-          << names_of(plan.outputs) << " */\n\n"
+          << names_of(plan.outputs) << " */\n";
+        if (plan.constraint_count() > 0)
+            h << "#define " << d.size("nc") << " " << plan.constraint_count()
+              << " /* constraints: " << constraint_list(plan) << "; their forces: "
+              << names_of(plan.constraint_forces) << " */\n"
+              << "/* The rate [1/s] at which the simulation's right-hand side damps the\n"
+              << "   constraints' drift (Baumgarte); define it before including to change it. */\n"
+              << "#ifndef " << d.size("stabilization") << "\n#define " << d.size("stabilization")
+              << " 10.0\n#endif\n";
+        h << "\n"
           << "/* The model's constants, changeable without generating the code again. */\n"
           << "typedef struct " << d.name << "_parameters {\n";
         for (const CodeSymbol& p : plan.parameters)

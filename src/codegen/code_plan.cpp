@@ -129,6 +129,18 @@ std::vector<const CodeFunction*> CodePlan::functions() const {
     if (!inverse_dynamics.empty()) out.push_back(&inverse_dynamics);
     if (!output_function.empty()) out.push_back(&output_function);
     if (!load_laws.empty()) out.push_back(&load_laws);
+    if (!constraint_drift.empty()) out.push_back(&constraint_drift);
+    return out;
+}
+
+std::vector<CodegenConstraint> differentiate_constraints(SymbolTable& table,
+                                                         const std::vector<Constraint>& constraints) {
+    std::vector<CodegenConstraint> out;
+    for (const Constraint& c : constraints) {
+        CodegenConstraint k{c.name, c.kind, c.residual, table.dt(c.residual), 0};
+        k.acceleration = c.kind == ConstraintKind::configuration ? table.dt(k.rate) : k.rate;
+        out.push_back(std::move(k));
+    }
     return out;
 }
 
@@ -206,10 +218,53 @@ CodePlan plan_code(const SymbolTable& table, const DynamicsEquations& eq,
         return in;
     };
 
+    // ---- constraints: the square system in (q'', constraint forces) ----------------------------
+    const std::size_t nc = eq.constraints.size();
+    if (eq.constraint_forces.size() != nc)
+        throw ArgumentError(std::string(kWho) + ": " + std::to_string(eq.constraint_forces.size()) +
+                            " constraint forces for " + std::to_string(nc) +
+                            " constraints; give one load measure per constraint (the force or "
+                            "torque that holds it), so that the equations and the constraints "
+                            "determine the accelerations and the constraint forces");
+    for (std::size_t i = 0; i < nc; ++i) {
+        const ex& l = eq.constraint_forces[i];
+        if (!table.owns(l) || table.kind(l) != SymbolKind::unknown)
+            throw ArgumentError(std::string(kWho) + ": the constraint force '" + to_string(l) +
+                                "' is not an unknown of the table; declare it with "
+                                "SymbolTable::add_unknown()");
+        for (const ex& u : eq.loads)
+            if (u.is_equal(l))
+                throw ArgumentError(std::string(kWho) + ": '" + to_string(l) + "' is both a load "
+                                    "(an input) and a constraint force (solved for); list it once");
+        plan.constraint_forces.push_back({table.name(l), unit_of(options, table.name(l))});
+        plan.constraint_names.push_back(eq.constraints[i].name);
+        plan.constraint_kinds.push_back(eq.constraints[i].kind);
+    }
+    if (nc > 0 && !eq.accelerations.empty())
+        throw ArgumentError(std::string(kWho) + ": explicit accelerations were given for a model "
+                            "with constraints; leave them out (the constrained system is solved "
+                            "for q'' and the constraint forces)");
+
     // ---- mass matrix and forcing -------------------------------------------------------------
     // given, or split from the compiled residuals (linear in q''): E = f - M q''
     StraightLineProgram mf_program;
-    if (eq.mass_forcing) {
+    if (nc > 0) {
+        // E = (residuals, c'' or g') = b - A x, x = (q'', lambda)
+        std::vector<ex> E = eq.residuals;
+        for (const CodegenConstraint& c : eq.constraints) E.push_back(c.acceleration);
+        StraightLineProgram P = compile(table, symbols({&q, &qp, &eq.loads, &qpp, &eq.constraint_forces}),
+                                        E, compile_options,
+                                        "the equations of motion and the constraints");
+        std::vector<std::size_t> unknowns;
+        for (std::size_t i = 0; i < n + nc; ++i) unknowns.push_back(1 + 2 * n + eq.loads.size() + i);
+        try {
+            mf_program = split_linear(P, unknowns);
+        } catch (const SolveError& e) {
+            throw SolveError(std::string(kWho) + ": the equations and the constraints at the "
+                             "acceleration level are not linear in the accelerations q'' and the "
+                             "constraint forces (" + e.what() + ")");
+        }
+    } else if (eq.mass_forcing) {
         const LinearSystem& D = *eq.mass_forcing;
         if (D.A.rows() != n || D.A.cols() != n || D.b.rows() != n)
             throw ArgumentError(std::string(kWho) + ": the mass matrix given is " +
@@ -239,16 +294,39 @@ CodePlan plan_code(const SymbolTable& table, const DynamicsEquations& eq,
                              "accelerations q'' (" + e.what() + ")");
         }
     }
+    const std::size_t k = n + nc;
     plan.mass_forcing = {.name = "mass_forcing",
-                         .summary = "mass matrix M (row by row) and forcing f of M q'' = f",
+                         .summary = nc ? "coefficients A (row by row) and right side b of A x = b, "
+                                         "x = (qpp, constraint forces): the equations of motion, "
+                                         "then the constraints at the acceleration level"
+                                       : "mass matrix M (row by row) and forcing f of M q'' = f",
                          .arrays = {"q", "qp", "u"},
-                         .results = {"M", "f"},
-                         .result_sizes = {n * n, n},
+                         .results = {nc ? "A" : "M", nc ? "b" : "f"},
+                         .result_sizes = {k * k, k},
                          .program = std::move(mf_program),
                          .input_names = input_names({&q_names, &qp_names, &u_names}),
                          .parameter_names = parameter_names};
     plan.symmetric_mass_matrix =
+        nc == 0 &&
         symmetric_at_random_states(plan.mass_forcing.program, parameter_values(table, parameters), n);
+    if (nc > 0) {
+        // per constraint its value and velocity-level value, for Baumgarte's stabilisation
+        std::vector<ex> e;
+        for (const CodegenConstraint& c : eq.constraints) {
+            e.push_back(c.kind == ConstraintKind::configuration ? c.value : ex(0));
+            e.push_back(c.kind == ConstraintKind::configuration ? c.rate : c.value);
+        }
+        plan.constraint_drift = {
+            .name = "constraint_drift",
+            .summary = "per constraint its value c (0 for a motion constraint) and its "
+                       "velocity-level value c' (g for a motion constraint g = 0)",
+            .arrays = {"q", "qp"},
+            .results = {"e"},
+            .result_sizes = {2 * nc},
+            .program = compile(table, symbols({&q, &qp}), e, compile_options, "the constraints"),
+            .input_names = input_names({&q_names, &qp_names}),
+            .parameter_names = parameter_names};
+    }
 
     // ---- explicit accelerations (articulated-body recursion) ----------------------------------
     if (!eq.accelerations.empty()) {
@@ -274,7 +352,7 @@ CodePlan plan_code(const SymbolTable& table, const DynamicsEquations& eq,
         throw ArgumentError(std::string(kWho) + ": " + std::to_string(eq.inverse_residuals.size()) +
                             " inverse-dynamics residuals for " + std::to_string(eq.loads.size()) +
                             " loads; give one per load (the road-map rows of the loads)");
-    if (!eq.loads.empty() && (eq.loads.size() == n || !eq.inverse_residuals.empty())) {
+    if (nc == 0 && !eq.loads.empty() && (eq.loads.size() == n || !eq.inverse_residuals.empty())) {
         std::vector<ex> u = solve_for_loads(table, eq);
         plan.inverse_dynamics = {
             .name = "inverse_dynamics",

@@ -31,7 +31,7 @@ std::set<std::string> c_words() {
             "atan2", "sinh", "cosh", "tanh", "asinh", "acosh", "atanh", "sincos",
             // names of the generated code
             "t", "q", "qp", "qpp", "u", "M", "f", "y", "h", "p", "c", "x", "dx", "n", "i", "j",
-            "k", "s", "ok"};
+            "k", "s", "ok", "A", "b", "a", "e", "lambda"};
 }
 
 }  // namespace

@@ -43,6 +43,10 @@ GeneratedCode generate_code(const SymbolTable& table, const DynamicsEquations& e
                             Language language, const std::filesystem::path& out_dir,
                             const CodegenOptions& options) {
     // the directory first: a bad path fails before any work
+    if (!equations.constraints.empty() && language != Language::c)
+        throw ArgumentError(std::string("generate_code(): code for models with constraints is "
+                                        "generated in C only, not in ") +
+                            to_string(language) + "; choose the language c");
     detail::ensure_directory(out_dir, "generate_code()");
     CodePlan plan = plan_code(table, equations, options);
     std::vector<GeneratedFile> files = make_emitter(language)->emit(plan);
@@ -62,6 +66,7 @@ GeneratedCode generate_code(const SymbolTable& table, const DynamicsEquations& e
         result.prelude_operations += f->program.operation_count(f->program.prelude);
     result.symmetric_mass_matrix = plan.symmetric_mass_matrix;
     result.inverse_dynamics = !plan.inverse_dynamics.empty();
+    result.constraint_count = plan.constraint_count();
     return result;
 }
 

@@ -607,10 +607,36 @@ void Interpreter::Impl::run_codegen(const CodegenRequest& r, Location where) {
     if (q.empty())
         throw ScriptError(where, "the model has no coordinates to generate code for",
                           "declare variables (variable q'') and use them in rotations or translations");
-    if (!sys.constraints().empty())
-        throw ScriptError(where, "code generation for models with constraints is not available yet",
-                          "generate code for the model without its constraint statements, or use simulate");
+    for (const TimeVariable& v : q)
+        if (v.order() < 2)
+            throw ScriptError(where, "the coordinate " + v.name() + " has no second derivative declared; generated "
+                                     "code integrates q'' (equations in generalized speeds, as a kane statement's, "
+                                     "are not generated yet)",
+                              "declare it as variable " + v.name() + "'' and give rolling or closed loops as "
+                              "constraint statements");
     std::vector<ex> loads = r.loads.empty() ? table.symbols(SymbolKind::unknown) : r.loads;
+    // closed loops and rolling: the unknowns that are neither listed loads nor inputs are the
+    // constraint forces, solved for with the accelerations
+    std::vector<ex> constraint_forces;
+    if (!sys.constraints().empty()) {
+        if (language != Language::c)
+            throw ScriptError(r.language.location, "code for models with constraints is generated in C only",
+                              "write codegen c");
+        std::vector<ex> given;
+        for (const ex& u : table.symbols(SymbolKind::unknown)) {
+            bool listed = r.loads.empty() ? numbers.inputs.count(u) != 0
+                                          : std::any_of(r.loads.begin(), r.loads.end(),
+                                                        [&](const ex& l) { return l.is_equal(u); });
+            (listed ? given : constraint_forces).push_back(u);
+        }
+        loads = given;
+        if (constraint_forces.size() != sys.constraints().size())
+            throw ScriptError(where, "the model has " + std::to_string(sys.constraints().size()) +
+                                         " scalar constraints but " + std::to_string(constraint_forces.size()) +
+                                         " unknowns left to hold them",
+                              "give the driving loads with input (input T = 0) or codegen c for T, so that "
+                              "one unknown force per constraint remains");
+    }
     CodegenOptions opts;
     opts.name = r.name.empty() ? script_name : r.name;
     if (!is_identifier(opts.name))
@@ -655,6 +681,13 @@ void Interpreter::Impl::run_codegen(const CodegenRequest& r, Location where) {
         if (std::any_of(loads.begin(), loads.end(),
                         [&](const ex& x) { return sys.reaction_of(x); }))
             inverse_residuals = residuals_of(plan_roadmap(sys, q, loads));
+        if (!constraint_forces.empty()) {
+            KaneEquations k = form_kane_equations(sys, KaneOptions{.coordinates = q});
+            DynamicsEquations eqs{q, k.residuals, loads};
+            eqs.constraints = differentiate_constraints(sys.symbols(), sys.constraints());
+            eqs.constraint_forces = constraint_forces;
+            return generate_code(table, eqs, language, r.dir, opts);
+        }
         if (std::optional<TreeEquations> t = form_tree_equations_if_tree(sys, q)) {
             tree = true;
             DynamicsEquations eqs{
@@ -670,13 +703,18 @@ void Interpreter::Impl::run_codegen(const CodegenRequest& r, Location where) {
     out << "generated " << language_name[static_cast<int>(language)] << " for '" << opts.name << "': ";
     for (std::size_t i = 0; i < g.files.size(); ++i) out << (i ? ", " : "") << g.files[i].filename().string();
     // (operation counts are left out: they shift by a few with GiNaC's term order from run to run)
-    if (tree)
+    if (g.constraint_count)
+        out << "\n  " << g.constraint_count << " constraints: the equations and the constraints solved for the "
+               "accelerations and " << g.constraint_count << " constraint forces (LU), Baumgarte's stabilisation "
+               "in the simulation";
+    else if (tree)
         out << "\n  recursive formation: mass matrix and forcing, accelerations by the articulated-body "
                "recursion (no solve)";
     else
         out << "\n  mass matrix and forcing (" << (g.symmetric_mass_matrix ? "Cholesky" : "LU")
             << " solve for the accelerations)";
     if (g.inverse_dynamics) out << ", inverse dynamics";
+    else if (g.constraint_count) out << "; no inverse dynamics (a constrained model)";
     else out << "; no inverse dynamics (" << loads.size() << " loads for " << q.size() << " coordinates)";
     if (!opts.outputs.empty()) out << ", " << opts.outputs.size() << " outputs";
     out << ", a simulation program";

@@ -47,12 +47,22 @@ struct CodePlan {
     std::vector<CodeSymbol> loads;
     std::vector<CodeSymbol> parameters;  ///< the parameters the programs read
     std::vector<CodeSymbol> outputs;     ///< the requested outputs
+    /// Constrained models: the constraint forces (unknowns with q''), the constraints' names
+    /// and kinds; the mass_forcing function then gives A ((nq + nc) x (nq + nc)) and b of
+    /// A (qpp, lambda) = b, its last nc rows the constraints at the acceleration level.
+    std::vector<CodeSymbol> constraint_forces;
+    std::vector<std::string> constraint_names;
+    std::vector<ConstraintKind> constraint_kinds;
+    std::size_t constraint_count() const { return constraint_forces.size(); }
     bool symmetric_mass_matrix = false;
     CodeFunction mass_forcing;      ///< inputs t, q, qp, u; results M (row-major), f
     CodeFunction accelerations;     ///< inputs t, q, qp, u; result qpp (empty if not given)
     CodeFunction inverse_dynamics;  ///< inputs t, q, qp, qpp; result u (empty if not formed)
     CodeFunction output_function;   ///< inputs t, q, qp, qpp, u; result y
     CodeFunction load_laws;         ///< inputs t, q, qp; result u (simulation only)
+    /// Constrained models: inputs t, q, qp; result e, per constraint its value c (0 for a
+    /// motion constraint) and its velocity-level value c' (g for a motion constraint).
+    CodeFunction constraint_drift;
     bool simulation = false;
     SimulationSpec simulation_spec{};
 

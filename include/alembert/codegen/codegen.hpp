@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "alembert/eom/equations.hpp"
+#include "alembert/mech/constraint.hpp"
 #include "alembert/sym/symbol_table.hpp"
 
 namespace alembert {
@@ -31,6 +32,25 @@ Language parse_language(std::string_view word);
 
 /// Alembert's version, as the generated files name it ("0.1.0").
 const char* generator_version();
+
+/// A constraint of a closed loop or a rolling contact as the generated code uses it: its value
+/// and derivatives (differentiate_constraints forms them). A configuration constraint
+/// c(q, t) = 0 holds at the acceleration level as c'' = 0, a motion constraint g(q, q', t) = 0
+/// as g' = 0; the generated simulation adds Baumgarte's stabilisation, c'' + 2 a c' + a^2 c = 0
+/// and g' + a g = 0, so drift decays at the rate a.
+struct CodegenConstraint {
+    std::string name;
+    ConstraintKind kind = ConstraintKind::configuration;
+    ex value;         ///< c, or g for a motion constraint
+    ex rate;          ///< c' (linear in q'), or g' (linear in q'') for a motion constraint
+    ex acceleration;  ///< c'' (linear in q''), or g' for a motion constraint
+};
+
+/// The constraints with their time derivatives (SymbolTable::dt, which names intermediates in
+/// `table`, hence not const).
+/// @throws alembert::ModelError if a derivative needs more than the declared order.
+std::vector<CodegenConstraint> differentiate_constraints(SymbolTable& table,
+                                                         const std::vector<Constraint>& constraints);
 
 /// Equations of motion to generate code from: residuals E_i(q, q', q'', loads, t) = 0, one
 /// per coordinate, linear in the accelerations q'' and in the load measures. Road-map rows
@@ -65,6 +85,14 @@ struct DynamicsEquations {
     /// `residuals_of(plan_roadmap(sys, q, loads))` with joint-reaction measures among the
     /// loads); when given, inverse dynamics solves these instead of `residuals`.
     std::vector<ex> inverse_residuals{};
+    /// Closed loops and rolling: the constraints, and the load measures that hold them (a
+    /// loop's pin force, a contact's friction force), one per constraint, which appear in the
+    /// residuals. With constraints the unknowns are x = (q'', constraint forces): the residuals
+    /// and the constraints at the acceleration level form a square system A x = b, linear in
+    /// x, solved per call by LU with partial pivoting (C only; `mass_forcing`, `accelerations`
+    /// and inverse dynamics are not used).
+    std::vector<CodegenConstraint> constraints{};
+    std::vector<ex> constraint_forces{};
 };
 
 /// A quantity the generated code computes on request (an output column of a simulation):
@@ -128,6 +156,7 @@ struct GeneratedCode {
     std::size_t prelude_operations = 0;
     bool symmetric_mass_matrix = false;  ///< Cholesky (true) or LU (false) in forward dynamics
     bool inverse_dynamics = false;       ///< whether inverse dynamics was generated
+    std::size_t constraint_count = 0;    ///< constraints (and constraint forces) of the model
 };
 
 /// Generates standalone code in `language` for `equations` of the model whose symbols are in
