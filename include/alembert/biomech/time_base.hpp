@@ -12,8 +12,7 @@ namespace alembert {
 /// How regularize_time_base treats gaps and irregular sampling.
 struct TimeBaseOptions {
     /// The longest gap (from the last sample before it to the first after) that is filled, in
-    /// seconds. Winter (2009, sec. 3.4.4) fills short gaps by interpolation; a longer one is
-    /// more movement than an interpolation can honestly invent.
+    /// seconds. Short gaps are filled by interpolation; a longer one is more movement than an interpolation can honestly invent.
     double max_gap_s = 0.1;
     /// Time steps that differ from the median step by more than this fraction make the time
     /// base irregular, and the table is resampled.
@@ -45,7 +44,7 @@ struct TimeBaseReport {
 /// Fills the gaps (NaN) of every column of `table` and resamples it on a uniform time base
 /// if its steps are irregular. Method, stated because results depend on it:
 ///  - a gap is filled by a natural cubic spline through all the column's valid samples
-///    (Winter 2009, sec. 3.4.4), which reproduces straight-line motion exactly;
+///    (de Boor, A Practical Guide to Splines, ch. IV), which reproduces straight-line motion;
 ///  - an irregular time base (a step differing from the median step by more than
 ///    options.step_tolerance of it) is resampled at the median step from the first time,
 ///    each column by a natural cubic spline through its samples.
