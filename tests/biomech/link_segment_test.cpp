@@ -133,6 +133,52 @@ TEST(LinkSegment, APendulumNeedsTheMomentOfItsEquationOfMotion) {
     EXPECT_LT(worst_F, 1e-3);
 }
 
+TEST(LinkSegment, TopDownMeetsBottomUpOnConsistentDataAndShowsAPlateError) {
+    // two segments moving arbitrarily (smooth), the lower one on a plate: bottom-up from the
+    // plate gives the top joint's load; top-down from that load must predict the plate's load
+    // back (residual 0). A plate reading 10 N too high shows as a residual of -10 N and its
+    // moment about D.
+    const std::size_t n = 200;
+    const double dt = 0.005;
+    ChainSegment leg, thigh;
+    leg.name = "leg", leg.proximal_joint = "knee", leg.mass = 3, leg.com_fraction = 0.43, leg.inertia = 0.05;
+    thigh.name = "thigh", thigh.proximal_joint = "hip", thigh.mass = 7, thigh.com_fraction = 0.43, thigh.inertia = 0.12;
+    PlanarLoad plate;
+    for (std::size_t k = 0; k < n; ++k) {
+        const double t = dt * static_cast<double>(k);
+        const double ah = 0.1 * std::sin(2 * t), kh = 0.2 + 0.05 * std::cos(3 * t), kv = 0.45 + 0.02 * std::sin(t);
+        const double hh = 0.1 + 0.1 * std::sin(1.5 * t), hv = 0.9;
+        leg.d_h.push_back(ah), leg.d_v.push_back(0.08), leg.p_h.push_back(kh), leg.p_v.push_back(kv);
+        thigh.d_h.push_back(kh), thigh.d_v.push_back(kv), thigh.p_h.push_back(hh), thigh.p_v.push_back(hv);
+        plate.F_h.push_back(20 * std::sin(t)), plate.F_v.push_back(400 + 50 * std::cos(2 * t));
+        plate.p_h.push_back(0.05 + 0.1 * t), plate.p_v.push_back(0.0), plate.M.push_back(1.5);
+    }
+    const std::vector<ChainSegment> chain = {leg, thigh};
+    std::vector<JointLoads> up = calc_inverse_dynamics_bottom_up(chain, dt, &plate, kG);
+    PlanarLoad hip;
+    hip.F_h = up[1].F_h, hip.F_v = up[1].F_v, hip.M = up[1].M;
+    hip.p_h = thigh.p_h, hip.p_v = thigh.p_v;
+    std::vector<JointLoads> down = calc_inverse_dynamics_top_down(chain, dt, &hip, kG);
+    ASSERT_EQ(down.size(), 3u);
+    EXPECT_EQ(down[2].joint, "ground");
+    JointLoads r = calc_top_down_residual(down, leg, &plate);
+    for (std::size_t k = 0; k < n; ++k) {
+        EXPECT_NEAR(r.F_h[k], 0, 1e-9);
+        EXPECT_NEAR(r.F_v[k], 0, 1e-9);
+        EXPECT_NEAR(r.M[k], 0, 1e-9);
+        EXPECT_NEAR(down[0].M[k], up[0].M[k], 1e-9);  // the knee from both ends
+        EXPECT_NEAR(down[0].power[k], up[0].power[k], 1e-9);
+    }
+    // the plate 10 N too high
+    PlanarLoad wrong = plate;
+    for (double& f : wrong.F_v) f += 10;
+    JointLoads bad = calc_top_down_residual(down, leg, &wrong);
+    for (std::size_t k = 0; k < n; k += 50) {
+        EXPECT_NEAR(bad.F_v[k], -10, 1e-9);
+        EXPECT_NEAR(bad.M[k], -(plate.p_h[k] - leg.d_h[k]) * 10, 1e-9);
+    }
+}
+
 TEST(LinkSegment, NormalizingDividesByBodyMass) {
     std::vector<JointLoads> j(1);
     j[0].M = {70}, j[0].F_h = {7}, j[0].F_v = {-14}, j[0].power = {35};

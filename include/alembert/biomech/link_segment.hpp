@@ -66,6 +66,28 @@ std::vector<JointLoads> calc_inverse_dynamics_bottom_up(const std::vector<ChainS
                                                         double dt, const PlanarLoad* external,
                                                         double gravity = 9.81);
 
+/// Top-down inverse dynamics of the same chain: from the proximal segment, whose load at its
+/// proximal joint is `top` (null: a free end, no load), each segment's distal load follows from
+///   F_D = m a_G - m g - F_P,   M_D = I alpha - M_P - (r_P - r_G) x F_P - (r_D - r_G) x F_D,
+/// and is passed down, reversed, to the segment below. Returns the joint loads in the same order
+/// and convention as the bottom-up solution (load on the segment below each joint), then one
+/// more entry, "ground", with the load the data predict on the distal segment at its distal
+/// point D; with a measured external load, the bottom-up and top-down results differ by the
+/// inconsistency of the data (markers, segment parameters, plate): see
+/// calc_top_down_residual.
+/// @throws as calc_inverse_dynamics_bottom_up.
+std::vector<JointLoads> calc_inverse_dynamics_top_down(const std::vector<ChainSegment>& chain,
+                                                       double dt, const PlanarLoad* top,
+                                                       double gravity = 9.81);
+
+/// The residual of the classic consistency check: the external load that the top-down solution
+/// predicts at the distal segment's point D minus the measured one (moved to D: M + (r_CoP -
+/// r_D) x F), per sample, as a JointLoads named "residual" (force and moment; no power).
+/// Zero for consistent data.
+/// @throws alembert::ArgumentError if the lengths differ.
+JointLoads calc_top_down_residual(const std::vector<JointLoads>& top_down,
+                                  const ChainSegment& distal_segment, const PlanarLoad* measured);
+
 /// The loads divided by the body mass (N/kg, N m/kg, W/kg), as gait reports show them.
 /// @throws alembert::ArgumentError if body_mass is not positive.
 void normalize_by_body_mass(std::vector<JointLoads>& loads, double body_mass);
