@@ -87,7 +87,11 @@ int run_inverse_batch(const BatchInverseOptions& o, const char* self) {
         out.ok = WIFEXITED(status) && WEXITSTATUS(status) == 0;
         if (out.ok) {
             try {
-                out.peaks = calc_peaks(read_csv((dir / "loads.csv").string()));
+                // the table inverse wrote: loads.csv, or torques.csv / forces.csv when all of one kind
+                fs::path table = dir / "loads.csv";
+                for (const char* stem : {"torques.csv", "forces.csv"})
+                    if (!fs::exists(table) && fs::exists(dir / stem)) table = dir / stem;
+                out.peaks = calc_peaks(read_csv(table.string()));
             } catch (const Error& e) {
                 out.ok = false, out.message = e.what();
             }
