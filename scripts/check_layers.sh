@@ -1,11 +1,11 @@
 #!/usr/bin/env bash
 # Fails if a lower layer includes a header of a higher (or same-level sibling) layer.
-# Order: sym < vec < mech < eom < {sim, codegen, report} < lang < apps
+# Order: sym < vec < mech < eom < {sim, codegen, report} < biomech < lang < apps
 # (report may also include sim).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-declare -A level=([sym]=0 [vec]=1 [mech]=2 [eom]=3 [sim]=4 [codegen]=4 [report]=4 [lang]=5 [apps]=6)
+declare -A level=([sym]=0 [vec]=1 [mech]=2 [eom]=3 [sim]=4 [codegen]=4 [report]=4 [biomech]=5 [lang]=6 [apps]=7)
 
 allowed() {  # allowed <from> <to>
   local from=$1 to=$2

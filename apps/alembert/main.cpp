@@ -20,6 +20,7 @@
 #include <CLI/CLI.hpp>
 
 #include "alembert/cleanup.hpp"
+#include "batch_inverse.hpp"
 #include "alembert/error.hpp"
 #include "alembert/lang/autolev_import.hpp"
 #include "alembert/lang/interpreter.hpp"
@@ -159,9 +160,21 @@ struct ModelCommandOptions {
     std::string language;
     std::string name;
     LimitOptions limits;
+    unsigned jobs = 1;
+    std::string shard;
 };
 
 int run_model_command(const ModelCommandOptions& o, bool inverse) {
+    // many trials (a pattern, several jobs or a shard): one child process per trial
+    if (inverse && (o.motion.find_first_of("*?[") != std::string::npos || o.jobs != 1 || !o.shard.empty())) {
+        std::error_code ec;
+        const std::string self = std::filesystem::read_symlink("/proc/self/exe", ec).string();
+        if (!check_output_dir(o.out)) return kUsageError;
+        return alembert::cli::run_inverse_batch({.model = o.file, .pattern = o.motion, .out = o.out,
+                                                 .cutoff_hz = o.cutoff_hz, .compiled = o.compiled,
+                                                 .unitless = o.unitless, .jobs = o.jobs, .shard = o.shard},
+                                                ec ? "/proc/self/exe" : self.c_str());
+    }
     std::string text;
     if (!read_script(o.file, text)) return kUsageError;
     if (inverse && !std::filesystem::is_regular_file(o.motion)) {
@@ -490,8 +503,12 @@ int main(int argc, char** argv) {
          [&](CLI::App& c) {
              c.add_option("MODEL", inverse_opts.file, "the script that builds the model")->required();
              c.add_option("--motion", inverse_opts.motion,
-                          "CSV: a column t [s] and one per coordinate, units in the header (qA [deg])")
+                          "CSV: a column t [s] and one per coordinate, units in the header (qA [deg]); "
+                          "a quoted pattern ('trials/*.csv') runs a batch: DIR/<trial>/ and DIR/summary.csv")
                  ->required();
+             c.add_option("--jobs", inverse_opts.jobs, "trials run at once in a batch (0: one per core; default 1)");
+             c.add_option("--shard", inverse_opts.shard,
+                          "I/N: run only task I's share of the trials (0 <= I < N), for cluster array jobs");
              c.add_option("--out", inverse_opts.out, "directory for torques.csv, .png and .svg")->required();
              c.add_option("--cutoff", inverse_opts.cutoff_hz,
                           "low-pass Butterworth cutoff in Hz before differentiating (0: no filter; default 6)")

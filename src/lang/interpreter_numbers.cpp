@@ -10,6 +10,7 @@
 #include <functional>
 #include <sstream>
 
+#include "alembert/biomech/lab_files.hpp"
 #include "alembert/codegen/codegen.hpp"
 #include "alembert/codegen/native.hpp"
 #include "alembert/eom/planner.hpp"
@@ -533,7 +534,19 @@ void Interpreter::Impl::run_inverse(const InverseRequest& r, Location where) {
     }
     InverseAnalysisReport rep;
     std::string span;
-    if (!r.motion_file.empty()) {
+    const std::string ext = std::filesystem::path(r.motion_file).extension().string();
+    if (ext == ".mot" || ext == ".sto") {
+        // an OpenSim motion: inDegrees applies to the rotational coordinates (all but lengths)
+        rep = guard(where, [&] {
+            std::vector<std::string> angles;
+            for (const TimeVariable& v : q)
+                if (!(symbol_dimension(v.name()) == Dimension::length())) angles.push_back(v.name());
+            const Table motion = motion_table_from_storage(read_storage(r.motion_file), angles);
+            return run_inverse_dynamics(
+                id, differentiate_motion(motion, r.motion_file, id.layout().coordinate_names, opts.filter), r.dir, opts);
+        });
+        span = "the motion table " + std::filesystem::path(r.motion_file).filename().string();
+    } else if (!r.motion_file.empty()) {
         rep = guard(where, [&] { return run_inverse_dynamics(id, r.motion_file, r.dir, opts); });
         span = "the motion table " + std::filesystem::path(r.motion_file).filename().string();
     } else {

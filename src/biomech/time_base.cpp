@@ -1,0 +1,185 @@
+// SPDX-License-Identifier: MIT
+// Gap filling and resampling by natural cubic splines, reported.
+#include "alembert/biomech/time_base.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "alembert/error.hpp"
+
+namespace alembert {
+
+namespace {
+
+/// Natural cubic spline through (x_i, y_i), x increasing: second derivatives m_i from the
+/// tridiagonal system h_{i-1} m_{i-1} + 2 (h_{i-1} + h_i) m_i + h_i m_{i+1} = 6 (s_i - s_{i-1}),
+/// m_0 = m_n = 0 (de Boor, A Practical Guide to Splines, ch. IV). Two points: a straight line.
+class NaturalSpline {
+public:
+    NaturalSpline(std::vector<double> x, std::vector<double> y)
+        : x_(std::move(x)), y_(std::move(y)), m_(x_.size(), 0.0) {
+        const std::size_t n = x_.size();
+        if (n < 3) return;
+        // forward sweep of the tridiagonal system (Thomas algorithm) for m_1..m_{n-2}
+        std::vector<double> c(n, 0.0), d(n, 0.0);
+        for (std::size_t i = 1; i + 1 < n; ++i) {
+            const double h0 = x_[i] - x_[i - 1], h1 = x_[i + 1] - x_[i];
+            const double rhs = 6 * ((y_[i + 1] - y_[i]) / h1 - (y_[i] - y_[i - 1]) / h0);
+            const double diag = 2 * (h0 + h1) - h0 * c[i - 1];
+            c[i] = h1 / diag;
+            d[i] = (rhs - h0 * d[i - 1]) / diag;
+        }
+        // back substitution
+        for (std::size_t i = n - 2; i >= 1; --i) m_[i] = d[i] - c[i] * m_[i + 1];
+    }
+
+    double operator()(double xq) const {
+        // the interval [x_k, x_{k+1}] holding xq
+        std::size_t k = static_cast<std::size_t>(
+            std::upper_bound(x_.begin(), x_.end(), xq) - x_.begin());
+        k = std::clamp<std::size_t>(k, 1, x_.size() - 1) - 1;
+        const double h = x_[k + 1] - x_[k], a = (x_[k + 1] - xq) / h, b = (xq - x_[k]) / h;
+        return a * y_[k] + b * y_[k + 1] +
+               ((a * a * a - a) * m_[k] + (b * b * b - b) * m_[k + 1]) * h * h / 6;
+    }
+
+private:
+    std::vector<double> x_, y_, m_;
+};
+
+// the marker a coordinate column belongs to ("R.HEEL.X" -> "R.HEEL"), or the column itself
+std::string gap_name(const std::string& column) {
+    const std::size_t n = column.size();
+    if (n > 2 && column[n - 2] == '.' && (column[n - 1] == 'X' || column[n - 1] == 'Y' || column[n - 1] == 'Z'))
+        return column.substr(0, n - 2);
+    return column;
+}
+
+std::string seconds(double t) {
+    std::ostringstream s;
+    s.precision(6);
+    s << t;
+    return s.str() + " s";
+}
+
+}  // namespace
+
+std::string TimeBaseReport::describe() const {
+    std::ostringstream out;
+    if (gaps.empty() && !resampled) {
+        out << "time base: " << samples_in << " samples at " << rate_hz
+            << " Hz, uniform and without gaps; nothing filled or resampled\n";
+        return out.str();
+    }
+    for (const Gap& g : gaps)
+        out << "gap filled: '" << g.name << "' missing from t = " << seconds(g.t_first)
+            << " to " << seconds(g.t_last) << " (" << g.samples
+            << " samples), filled by a natural cubic spline through its valid samples\n";
+    if (resampled)
+        out << "time base resampled: steps from " << seconds(min_step_s) << " to "
+            << seconds(max_step_s) << " are not uniform; " << samples_in << " samples became "
+            << samples_out << " at " << rate_hz
+            << " Hz (the median step) by a natural cubic spline per column\n";
+    return out.str();
+}
+
+TimeBaseReport regularize_time_base(Table& table, std::size_t time_column,
+                                    const std::string& source, const TimeBaseOptions& options) {
+    TimeBaseReport report;
+    if (time_column >= table.columns.size())
+        throw ArgumentError("regularize_time_base(): " + source + " has no column " +
+                            std::to_string(time_column) + " for time");
+    const double t_factor = parse_unit(table.units[time_column]).factor;
+    std::vector<double> t = table.columns[time_column];
+    for (double& v : t) v *= t_factor;
+    auto where = [&](std::size_t row) {
+        return source + (row < table.lines.size() ? ":" + std::to_string(table.lines[row]) : "") + ": ";
+    };
+    // times present, increasing, at least two
+    const std::size_t n = t.size();
+    report.samples_in = n;
+    if (n < 2) throw ArgumentError(source + ": " + std::to_string(n) + " samples; a trial needs at least 2");
+    for (std::size_t r = 0; r < n; ++r) {
+        if (std::isnan(t[r])) throw ArgumentError(where(r) + "the time is missing; give every row a time");
+        if (r && !(t[r] > t[r - 1]))
+            throw ArgumentError(where(r) + "time " + seconds(t[r]) + " does not come after " +
+                                seconds(t[r - 1]) + "; sort the rows by time and remove repeated rows");
+    }
+    // steps: smallest, largest, median
+    std::vector<double> steps;
+    for (std::size_t r = 1; r < n; ++r) steps.push_back(t[r] - t[r - 1]);
+    report.min_step_s = *std::min_element(steps.begin(), steps.end());
+    report.max_step_s = *std::max_element(steps.begin(), steps.end());
+    std::vector<double> sorted = steps;
+    std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
+    const double h = sorted[sorted.size() / 2];
+    report.rate_hz = 1 / h;
+    const bool irregular = report.max_step_s - h > options.step_tolerance * h ||
+                           h - report.min_step_s > options.step_tolerance * h;
+
+    // each column: find its gaps, check them, fill by a spline through the valid samples
+    for (std::size_t c = 0; c < table.columns.size(); ++c) {
+        if (c == time_column) continue;
+        std::vector<double>& y = table.columns[c];
+        std::vector<double> tv, yv;
+        for (std::size_t r = 0; r < n; ++r)
+            if (!std::isnan(y[r])) tv.push_back(t[r]), yv.push_back(y[r]);
+        if (tv.size() == n && !irregular) continue;
+        const std::string name = gap_name(table.names[c]);
+        if (tv.size() < 2)
+            throw ArgumentError(source + ": '" + name + "' has " + std::to_string(tv.size()) +
+                                " valid samples of " + std::to_string(n) +
+                                "; nothing to interpolate from: drop it or use another trial");
+        for (std::size_t r = 0; r < n;) {
+            if (!std::isnan(y[r])) { ++r; continue; }
+            std::size_t e = r;
+            while (e < n && std::isnan(y[e])) ++e;
+            const Gap gap{name, t[r], t[e - 1], e - r};
+            const std::string range = "'" + name + "' is missing from t = " + seconds(gap.t_first) +
+                                      " to " + seconds(gap.t_last) + " (" + std::to_string(gap.samples) + " samples)";
+            if (r == 0 || e == n)
+                throw ArgumentError(where(r == 0 ? 0 : n - 1) + range + ", at the " +
+                                    (r == 0 ? "start" : "end") +
+                                    " of the trial, where no interpolation is possible; trim the "
+                                    "trial to where the marker is seen, or drop it");
+            if (t[e] - t[r - 1] > options.max_gap_s)
+                throw ArgumentError(where(r) + range + ", a gap of " + seconds(t[e] - t[r - 1]) +
+                                    ", longer than the " + seconds(options.max_gap_s) +
+                                    " that may be filled by interpolation; fill it in the capture "
+                                    "software, raise the largest gap, or trim the trial");
+            const bool known = std::any_of(report.gaps.begin(), report.gaps.end(), [&](const Gap& g) {
+                return g.name == gap.name && g.t_first == gap.t_first && g.t_last == gap.t_last;
+            });
+            if (!known) report.gaps.push_back(gap);
+            r = e;
+        }
+        const NaturalSpline spline(tv, yv);
+        for (std::size_t r = 0; r < n; ++r)
+            if (std::isnan(y[r])) y[r] = spline(t[r]);
+    }
+
+    // an irregular time base: resample every column at the median step
+    report.samples_out = n;
+    if (irregular) {
+        report.resampled = true;
+        const std::size_t m = static_cast<std::size_t>(std::floor((t.back() - t.front()) / h + 1e-9)) + 1;
+        std::vector<double> grid(m);
+        for (std::size_t k = 0; k < m; ++k) grid[k] = t.front() + static_cast<double>(k) * h;
+        for (std::size_t c = 0; c < table.columns.size(); ++c) {
+            std::vector<double> y(m);
+            if (c == time_column) {
+                for (std::size_t k = 0; k < m; ++k) y[k] = grid[k] / t_factor;
+            } else {
+                const NaturalSpline spline(t, table.columns[c]);
+                for (std::size_t k = 0; k < m; ++k) y[k] = spline(grid[k]);
+            }
+            table.columns[c] = std::move(y);
+        }
+        table.lines.clear();
+        report.samples_out = m;
+    }
+    return report;
+}
+
+}  // namespace alembert

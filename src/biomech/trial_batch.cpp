@@ -1,0 +1,111 @@
+// SPDX-License-Identifier: MIT
+// Trial patterns, shards and batch summaries.
+#include "alembert/biomech/trial_batch.hpp"
+
+#include <glob.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+
+#include "alembert/cleanup.hpp"
+#include "alembert/error.hpp"
+
+namespace alembert {
+
+namespace {
+
+std::string csv_cell(const std::string& text) {
+    if (text.find_first_of(",\"\n") == std::string::npos) return text;
+    std::string out = "\"";
+    for (char c : text) {
+        if (c == '"') out += '"';
+        out += c == '\n' ? ' ' : c;
+    }
+    return out + "\"";
+}
+
+}  // namespace
+
+std::vector<std::string> expand_trial_pattern(const std::string& pattern) {
+    if (pattern.find_first_of("*?[") == std::string::npos) return {pattern};
+    glob_t g{};
+    const int rc = ::glob(pattern.c_str(), 0, nullptr, &g);
+    std::vector<std::string> files;
+    for (std::size_t i = 0; rc == 0 && i < g.gl_pathc; ++i) files.emplace_back(g.gl_pathv[i]);
+    ::globfree(&g);
+    if (files.empty())
+        throw ArgumentError("expand_trial_pattern(): '" + pattern +
+                            "' matches no file; check the directory and quote the pattern so the "
+                            "shell passes it on");
+    std::sort(files.begin(), files.end());
+    return files;
+}
+
+Shard parse_shard(const std::string& text) {
+    Shard s;
+    char slash = 0, extra = 0;
+    if (std::sscanf(text.c_str(), "%d %c %d %c", &s.index, &slash, &s.count, &extra) != 3 || slash != '/' ||
+        s.count < 1 || s.index < 0 || s.index >= s.count)
+        throw ArgumentError("parse_shard(): '" + text +
+                            "' is not a shard; write I/N with 0 <= I < N (task I of N, e.g. "
+                            "$SLURM_ARRAY_TASK_ID/100)");
+    return s;
+}
+
+std::vector<std::string> select_shard(const std::vector<std::string>& trials, Shard shard) {
+    std::vector<std::string> out;
+    for (std::size_t i = 0; i < trials.size(); ++i)
+        if (static_cast<int>(i % static_cast<std::size_t>(shard.count)) == shard.index) out.push_back(trials[i]);
+    return out;
+}
+
+std::vector<Peak> calc_peaks(const Table& result) {
+    if (result.row_count() == 0) throw ArgumentError("calc_peaks(): the result table has no rows");
+    std::vector<Peak> peaks;
+    for (std::size_t c = 1; c < result.columns.size(); ++c) {
+        Peak p;
+        p.quantity = result.names[c] + (result.units[c].empty() ? "" : " [" + result.units[c] + "]");
+        for (std::size_t r = 0; r < result.row_count(); ++r)
+            if (std::fabs(result.columns[c][r]) > std::fabs(p.value) || r == 0) {
+                p.value = result.columns[c][r];
+                p.t = result.columns[0][r];
+            }
+        peaks.push_back(p);
+    }
+    return peaks;
+}
+
+void write_batch_summary(const std::vector<TrialOutcome>& outcomes, const std::string& path) {
+    namespace fs = std::filesystem;
+    const fs::path target(path);
+    TemporaryFile temporary((target.parent_path() / ("." + target.filename().string() + ".tmp" +
+                                                     std::to_string(static_cast<long>(::getpid()))))
+                                .string());
+    std::FILE* f = std::fopen(temporary.path().c_str(), "w");
+    if (!f)
+        throw ArgumentError("write_batch_summary(): cannot write '" + path + "' (" + std::strerror(errno) +
+                            "); create its directory or choose a writable path");
+    std::fputs("trial,status,quantity,peak,t_peak,message\n", f);
+    for (const TrialOutcome& o : outcomes) {
+        if (!o.ok) {
+            std::fprintf(f, "%s,failed,,,,%s\n", csv_cell(o.trial).c_str(), csv_cell(o.message).c_str());
+            continue;
+        }
+        for (const Peak& p : o.peaks)
+            std::fprintf(f, "%s,ok,%s,%s,%s,\n", csv_cell(o.trial).c_str(), csv_cell(p.quantity).c_str(),
+                         format_csv_number(p.value).c_str(), format_csv_number(p.t).c_str());
+    }
+    const bool ok = std::ferror(f) == 0;
+    if (std::fclose(f) != 0 || !ok) throw ArgumentError("write_batch_summary(): writing '" + path + "' failed (disk full?)");
+    std::error_code ec;
+    fs::rename(temporary.path(), target, ec);
+    if (ec) throw ArgumentError("write_batch_summary(): cannot replace '" + path + "' (" + ec.message() + ")");
+    temporary.release();
+}
+
+}  // namespace alembert

@@ -1,0 +1,48 @@
+#!/usr/bin/env bash
+# `alembert inverse MODEL --motion 'trials/*.csv' --jobs 2`: three trials, one malformed; the
+# good ones finish, the bad one is named in the summary, and two shards cover the trials once.
+# Usage: batch_cli_test.sh ALEMBERT SOURCE_DIR
+set -euo pipefail
+alembert=$1
+src=$2
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cd "$work"
+mkdir trials
+cp "$src/examples/sit_to_stand_inverse/motion.csv" trials/a.csv
+head -80 trials/a.csv > trials/b.csv
+{ head -5 trials/a.csv; echo "0.05,-25,abc,-129.9"; sed -n 7,40p trials/a.csv; } > trials/bad.csv
+model="$src/examples/sit_to_stand/model.alb"
+fail() { echo "batch_cli_test: $*" >&2; exit 1; }
+
+# the whole batch, two at a time: exit 1 for the one failure, the others complete
+status=0
+"$alembert" inverse "$model" --motion 'trials/*.csv' --jobs 2 --out all > all.txt || status=$?
+[[ $status == 1 ]] || fail "exit status $status, expected 1 (one trial failed)"
+grep -q "^3 trials: 2 ok, 1 failed; summary in all/summary.csv$" all.txt || fail "counts: $(cat all.txt)"
+grep -q "^failed: trials/bad.csv: .*trials/bad.csv:6: cell 3 ('qB') is 'abc', not a finite number" all.txt ||
+  fail "the failure is not named: $(cat all.txt)"
+[[ -s all/a/loads.csv && -s all/b/loads.csv ]] || fail "the good trials wrote no loads.csv"
+[[ $(grep -c '^trials/a.csv,ok,' all/summary.csv) == 9 ]] || fail "trial a: 9 peaks expected"
+[[ $(grep -c '^trials/b.csv,ok,' all/summary.csv) == 9 ]] || fail "trial b: 9 peaks expected"
+grep -q '^trials/bad.csv,failed,,,,' all/summary.csv || fail "no failed row for bad.csv"
+
+# two shards, as two tasks of a cluster array job: every trial once, same numbers
+for i in 0 1; do
+  "$alembert" inverse "$model" --motion 'trials/*.csv' --shard "$i/2" --out "shard$i" > "shard$i.txt" || true
+done
+cut -d, -f1 shard0/summary.csv shard1/summary.csv | grep -v '^trial$' | sort -u > seen.txt
+printf 'trials/a.csv\ntrials/b.csv\ntrials/bad.csv\n' > want.txt
+diff -u want.txt seen.txt || fail "the shards do not cover the trials once"
+if cut -d, -f1 shard0/summary.csv | sort -u | grep -qxFf <(cut -d, -f1 shard1/summary.csv | grep -v '^trial$' | sort -u); then
+  fail "a trial ran in both shards"
+fi
+diff <(grep '^trials/a.csv' all/summary.csv) <(grep -h '^trials/a.csv' shard0/summary.csv shard1/summary.csv) ||
+  fail "trial a's peaks differ between the batch and its shard"
+
+# a bad shard and a pattern that matches nothing are usage errors
+status=0; "$alembert" inverse "$model" --motion 'trials/*.csv' --shard 2/2 --out x 2> err.txt || status=$?
+[[ $status == 2 ]] && grep -q "write I/N with 0 <= I < N" err.txt || fail "bad shard: status $status, $(cat err.txt)"
+status=0; "$alembert" inverse "$model" --motion 'none/*.trc' --out x 2> err.txt || status=$?
+[[ $status == 2 ]] && grep -q "matches no file" err.txt || fail "empty pattern: status $status, $(cat err.txt)"
+echo "batch_cli_test: OK"
