@@ -13,6 +13,8 @@ packages=(
   libjs-katex                  # HTML reports typeset their equations with KaTeX (inlined)
   chromium                     # the tests open the HTML report in headless Chromium
 )
+# Not installed here (CI does without them): the peers of bench/spatial_peers_bench,
+#   libmujoco-dev libqhull-dev libdart-dev libsimbody-dev
 
 missing=()
 for p in "${packages[@]}"; do

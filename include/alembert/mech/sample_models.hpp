@@ -62,6 +62,14 @@ SampleModel make_mass_spring_damper();
 /// m_B = 2, m_C = 1.5 kg, g = 9.81. q = {qA, qB, qC}; unknowns = {T, F_x, F_y}.
 SampleModel make_four_bar();
 
+/// The KUKA LBR iiwa 14, a 7-joint spatial arm, with the joint origins, masses, mass
+/// centres and principal central inertias of its public URDF (RobotLocomotion/drake,
+/// iiwa14_no_collision.urdf): link B_i turns by q_i about the z axis of the joint frame J_i,
+/// which is fixed in link B_{i-1} (N for i = 1, the base being fixed) at the URDF joint origin
+/// (xyz in B_{i-1}, rpy exact multiples of pi/2); B_i's frame is the URDF link frame. Gravity
+/// -g Nz (g = 9.81), no joint damping; joint torques T_i B_iz on B_i from B_{i-1} (unknowns).
+SampleModel make_kuka_iiwa14();
+
 /// A built model with chosen speeds and motion constraints, in the terms of Kane's method.
 struct SampleNonholonomicModel {
     System system;
