@@ -68,7 +68,11 @@ struct KaneOptions {
     /// u~_a present. The constraint forces are added as loads with unknown measures. The
     /// u~_a are zero in the motion; their equations F~_a + F~_a* = 0 give the forces.
     std::vector<ex> auxiliary_speeds{};
-    /// Simplify the results (alembert::simplify; the residuals collected in the u').
+    /// Simplify the results (alembert::simplify; the residuals collected in the u'). Off,
+    /// nothing is normalised or simplified: the motion constraints are solved by elimination
+    /// (detail::solve_by_elimination), with named intermediates when they are large, as they
+    /// are when on but the constraints are too large for closed-form solving (the Whipple
+    /// bicycle's front contact forms in about two seconds off).
     bool simplify = true;
 };
 
