@@ -536,6 +536,10 @@ KaneEquations form_kane_equations(const System& sys, const KaneOptions& o) {
                                                 static_cast<unsigned>(ind.size()));
     out.auxiliary_constraint_coefficients =
         GiNaC::matrix(static_cast<unsigned>(m), static_cast<unsigned>(na));
+    // constraints too large to solve in closed form leave results that simplification would
+    // normalise at great cost (every entry over the pivots' intermediates): past such a solve
+    // nothing is simplified, as with simplify = false
+    bool large_constraints = false;
     if (m > 0) {
         // the speeds and auxiliary speeds a constraint may hold (Kane 1985, sec. 5.7: the
         // auxiliary motion must leave every listed constraint satisfied)
@@ -583,7 +587,8 @@ KaneEquations form_kane_equations(const System& sys, const KaneOptions& o) {
             std::string(kFn) +
             "the motion constraints cannot be solved for the dependent speeds; name other "
             "dependent speeds (their coefficient matrix must be invertible)";
-        if (o.simplify && !detail::is_large(Adep, rhs)) {
+        large_constraints = detail::is_large(Adep, rhs);
+        if (o.simplify && !large_constraints) {
             // small systems: solved in closed form, each entry normalised and simplified
             GiNaC::matrix X = detail::solve_by_blocks(Adep, rhs, o.dependent_speeds, singular);
             for (unsigned s = 0; s < m; ++s) {
@@ -628,18 +633,20 @@ KaneEquations form_kane_equations(const System& sys, const KaneOptions& o) {
         }
     }
 
+    const bool tidy = o.simplify && !large_constraints;
+
     // ---- coordinate rates and dependent-speed rates in the independent speeds
     exmap rate_map;  // q' -> k(q, u_r, t) with the dependent speeds replaced
     for (std::size_t i = 0; i < n; ++i) {
         ex k = chosen ? substitute(st, kmap.at(qd[i]), depmap) : substitute(st, qd[i], depmap);
-        k = maybe_simplify(k, o.simplify && m > 0);
+        k = maybe_simplify(k, tidy && m > 0);
         out.coordinate_rates.push_back(k);
         if (!k.is_equal(qd[i])) rate_map[qd[i]] = k;
     }
     exmap elim = depmap;  // u_s -> ..., u_s' -> ...
     Substitution by_rates(st, rate_map);
     for (std::size_t s = 0; s < m; ++s) {
-        ex g = maybe_simplify(by_rates(st.dt(out.dependent_speed_values[s])), o.simplify);
+        ex g = maybe_simplify(by_rates(st.dt(out.dependent_speed_values[s])), tidy);
         out.dependent_speed_rates.push_back(g);
         elim[dep_rates[s]] = g;
     }
@@ -709,8 +716,8 @@ KaneEquations form_kane_equations(const System& sys, const KaneOptions& o) {
         }
     }
     for (std::size_t r = 0; r < p; ++r) {
-        out.unconstrained_active_forces.push_back(maybe_simplify(F[r], o.simplify));
-        out.unconstrained_inertia_forces.push_back(maybe_simplify(Fs[r], o.simplify));
+        out.unconstrained_active_forces.push_back(maybe_simplify(F[r], tidy));
+        out.unconstrained_inertia_forces.push_back(maybe_simplify(Fs[r], tidy));
     }
 
     // ---- Kane's elimination: F~_r = F_r + sum_s F_s A_sr, likewise F~_r*
@@ -725,11 +732,11 @@ KaneEquations form_kane_equations(const System& sys, const KaneOptions& o) {
             Ft += Asr * F[si];
             Fst += Asr * Fs[si];
         }
-        Ft = maybe_simplify(by_elim(Ft), o.simplify);
-        Fst = maybe_simplify(by_elim(Fst), o.simplify);
+        Ft = maybe_simplify(by_elim(Ft), tidy);
+        Fst = maybe_simplify(by_elim(Fst), tidy);
         out.active_forces.push_back(Ft);
         out.inertia_forces.push_back(Fst);
-        out.residuals.push_back(o.simplify ? collect_in(Ft + Fst, ind_rates) : Ft + Fst);
+        out.residuals.push_back(tidy ? collect_in(Ft + Fst, ind_rates) : Ft + Fst);
     }
 
     // ---- auxiliary equations: F~_a = F_a + sum_s F_s C_sa, likewise F~_a*, at u~ = u~' = 0
@@ -742,7 +749,7 @@ KaneEquations form_kane_equations(const System& sys, const KaneOptions& o) {
             Ft += Csa * F[si];
             Fst += Csa * Fs[si];
         }
-        ex Ea = maybe_simplify(by_aux0(by_elim(Ft + Fst)), o.simplify);
+        ex Ea = maybe_simplify(by_aux0(by_elim(Ft + Fst)), tidy);
         // an auxiliary motion that moves no loaded point and no mass brings out nothing
         if (equal(Ea, 0))
             throw ModelError(
@@ -761,7 +768,7 @@ KaneEquations form_kane_equations(const System& sys, const KaneOptions& o) {
     for (unsigned j = 0; j < ind.size(); ++j) {
         bool used = false;
         for (unsigned i = 0; i < ind.size(); ++i) {
-            if (o.simplify) out.dynamics.A(i, j) = simplify(out.dynamics.A(i, j));
+            if (tidy) out.dynamics.A(i, j) = simplify(out.dynamics.A(i, j));
             used = used || !out.dynamics.A(i, j).is_zero();
         }
         if (!used)
@@ -769,7 +776,7 @@ KaneEquations form_kane_equations(const System& sys, const KaneOptions& o) {
                              "' moves no mass (its rate appears in no equation); check the "
                              "kinematic equations and the velocities that should hold it");
     }
-    if (o.simplify)
+    if (tidy)
         for (unsigned i = 0; i < ind.size(); ++i)
             out.dynamics.b(i, 0) = simplify(out.dynamics.b(i, 0));
     return out;

@@ -71,8 +71,9 @@ struct KaneOptions {
     /// Simplify the results (alembert::simplify; the residuals collected in the u'). Off,
     /// nothing is normalised or simplified: the motion constraints are solved by elimination
     /// (detail::solve_by_elimination), with named intermediates when they are large, as they
-    /// are when on but the constraints are too large for closed-form solving (the Whipple
-    /// bicycle's front contact forms in about two seconds off).
+    /// are when on but the constraints are too large for closed-form solving; past such a
+    /// solve nothing is simplified either way (the Whipple bicycle's front contact: the
+    /// equations form in about two seconds).
     bool simplify = true;
 };
 
