@@ -16,6 +16,8 @@ packages=(
   chromium                     # the tests open the HTML report in headless Chromium
   texlive-latex-base texlive-pictures  # the tests compile the reports' LaTeX (TikZ diagrams)
 )
+# Not installed here (CI does without them): the peers of bench/spatial_peers_bench,
+#   libmujoco-dev libqhull-dev libdart-dev libsimbody-dev
 
 missing=()
 for p in "${packages[@]}"; do

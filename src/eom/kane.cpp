@@ -3,7 +3,12 @@
 // motion constraints (Kane's elimination) and auxiliary speeds.
 #include "alembert/eom/kane.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <limits>
 #include <map>
+#include <optional>
 #include <numeric>
 #include <string>
 
@@ -132,20 +137,61 @@ void require_distinct(const SymbolTable& st, const std::vector<ex>& xs, const st
                                     list + "; list it once");
 }
 
-// e with `m` applied, through named intermediates that depend on a replaced symbol
-ex substitute(const SymbolTable& st, const ex& e, const exmap& m) {
-    if (m.empty()) return e;
-    for (const ex& s : symbols_of(e)) {
-        if (!st.owns(s) || st.kind(s) != SymbolKind::intermediate) continue;
-        for (const auto& kv : m)
-            if (st.depends_on(s, kv.first)) return st.expand_intermediates(e).subs(m);
+// `e` with the replacements `m` applied. An intermediate z whose definition depends on a
+// replaced symbol is redefined once per substitution (memoized), as a new intermediate
+// z~ = definition(z) with `m` applied, instead of expanding every intermediate into the
+// expression: a chain of intermediates (velocities and their rates, the dependent speeds
+// solved by elimination) then substitutes in time linear in its length. Redefinitions that
+// hold solve-level symbols (accelerations) keep them explicit (SymbolTable::name_if_large).
+class Substitution {
+public:
+    Substitution(SymbolTable& st, const exmap& m) : st_(st), m_(m) {
+        for (const auto& kv : m_) keys_.push_back(kv.first);
     }
-    return e.subs(m);
-}
+    ex operator()(const ex& e) {
+        if (m_.empty()) return e;
+        exmap z_map = m_;
+        bool changed = false;
+        for (const ex& s : symbols_of(e)) {
+            if (m_.count(s)) changed = true;
+            if (!st_.owns(s) || st_.kind(s) != SymbolKind::intermediate) continue;
+            ex r = redefine(s);
+            if (!r.is_equal(s)) {
+                z_map[s] = r;
+                changed = true;
+            }
+        }
+        return changed ? e.subs(z_map, GiNaC::subs_options::no_pattern) : e;
+    }
+    Vector operator()(const Vector& v) {
+        if (m_.empty()) return v;
+        return v.map([&](const ex& e) { return (*this)(e); });
+    }
 
-Vector substitute(const SymbolTable& st, const Vector& v, const exmap& m) {
-    if (m.empty()) return v;
-    return v.map([&](const ex& e) { return substitute(st, e, m); });
+private:
+    ex redefine(const ex& z) {
+        auto it = memo_.find(z);
+        if (it != memo_.end()) return it->second;
+        bool depends = false;
+        for (const ex& k : keys_) depends = depends || st_.depends_on(z, k);
+        ex r = z;
+        if (depends) {
+            ex d = (*this)(st_.definition(z));
+            r = d.is_equal(st_.definition(z)) ? z : st_.name_if_large(d, 4);
+        }
+        memo_.emplace(z, r);
+        return r;
+    }
+    SymbolTable& st_;
+    const exmap& m_;
+    std::vector<ex> keys_;
+    std::map<ex, ex, GiNaC::ex_is_less> memo_;
+};
+
+ex substitute(SymbolTable& st, const ex& e, const exmap& m) { return Substitution(st, m)(e); }
+
+Vector substitute(SymbolTable& st, const Vector& v, const exmap& m) {
+    return Substitution(st, m)(v);
 }
 
 // residuals E_i linear in x, as A x = b (E = b - A x); `what` names one equation in messages
@@ -248,6 +294,124 @@ GiNaC::matrix solve_by_blocks(const GiNaC::matrix& A, const GiNaC::matrix& B,
         }
         for (unsigned a = 0; a < m; ++a)
             for (unsigned j = 0; j < k; ++j) X(c[a], j) = simplify(GiNaC::normal(Xb(a, j)));
+    }
+    return X;
+}
+
+}  // namespace detail
+
+namespace {
+
+// values for the pivot choice: every variable, specified and t at 0 (the reference
+// configuration, where models are usually linearized), constants at their values, or at
+// fixed pseudo-random values in [0.5, 1.5] when they have none; `scatter` moves everything
+// to pseudo-random values instead (a pivot that vanishes at the reference configuration)
+exmap pivot_point(const SymbolTable& st, const GiNaC::exset& leaves, bool scatter) {
+    exmap at;
+    std::uint64_t seed = 0x9e3779b97f4a7c15ULL;
+    auto next = [&]() {
+        seed ^= seed << 13, seed ^= seed >> 7, seed ^= seed << 17;
+        return 0.5 + static_cast<double>(seed % 1000003) / 1000003.0;
+    };
+    for (const ex& s : leaves) {
+        double random = next();
+        if (scatter) {
+            at[s] = random;
+            continue;
+        }
+        std::optional<double> v = st.owns(s) ? st.value(s) : std::nullopt;
+        if (st.owns(s) && st.kind(s) == SymbolKind::constant)
+            at[s] = v ? *v : random;
+        else
+            at[s] = 0;
+    }
+    return at;
+}
+
+double magnitude_at(const SymbolTable& st, const ex& e, const exmap& at) {
+    try {
+        return std::abs(st.evaluate(e, at));
+    } catch (const std::exception&) {
+        return 0;  // not finite there (a division by zero): not a usable pivot
+    }
+}
+
+}  // namespace
+
+namespace detail {
+
+bool is_large(const GiNaC::matrix& A, const GiNaC::matrix& B) {
+    constexpr std::size_t kLargeOps = 400;  // beyond this, closed-form solving swells
+    std::size_t ops = 0;
+    for (const GiNaC::matrix* M : {&A, &B})
+        for (unsigned i = 0; i < M->rows(); ++i)
+            for (unsigned j = 0; j < M->cols(); ++j) ops += count_ops((*M)(i, j));
+    return ops > kLargeOps;
+}
+
+GiNaC::matrix solve_by_elimination(SymbolTable& st, const GiNaC::matrix& A,
+                                   const GiNaC::matrix& B, const std::vector<ex>& unknowns,
+                                   const std::string& what) {
+    // entries larger than this are named, in large systems; small ones stay written out
+    const std::size_t kNameOps =
+        is_large(A, B) ? 6 : std::numeric_limits<std::size_t>::max();
+    const unsigned n = A.rows(), k = B.cols();
+    ALEMBERT_ASSERT(A.cols() == n && B.rows() == n && unknowns.size() == n);
+    GiNaC::exset leaves;
+    for (unsigned i = 0; i < n; ++i)
+        for (unsigned j = 0; j < n; ++j)
+            for (const ex& s : st.calc_leaf_symbols(A(i, j))) leaves.insert(s);
+    const exmap reference = pivot_point(st, leaves, false);
+    const exmap scattered = pivot_point(st, leaves, true);
+    std::vector<std::vector<ex>> a(n, std::vector<ex>(n)), b(n, std::vector<ex>(k));
+    for (unsigned i = 0; i < n; ++i) {
+        for (unsigned j = 0; j < n; ++j) a[i][j] = st.name_if_large(A(i, j), kNameOps);
+        for (unsigned j = 0; j < k; ++j) b[i][j] = st.name_if_large(B(i, j), kNameOps);
+    }
+    // forward elimination, rows pivoted on the largest magnitude at the reference
+    // configuration (at scattered values when every candidate vanishes there)
+    std::vector<unsigned> row(n);
+    std::iota(row.begin(), row.end(), 0u);
+    for (unsigned c = 0; c < n; ++c) {
+        unsigned best = n;
+        double best_value = 0;
+        for (const exmap* at : {&reference, &scattered}) {
+            for (unsigned i = c; i < n; ++i) {
+                double v = magnitude_at(st, a[row[i]][c], *at);
+                if (v > best_value) best = i, best_value = v;
+            }
+            if (best_value > 1e-9) break;
+            best = n, best_value = 0;
+        }
+        if (best == n)
+            throw SolveError(what + ": the equations for " + to_string_list(unknowns) +
+                             " have a singular coefficient matrix (no pivot for '" +
+                             to_string(unknowns[c]) + "')");
+        std::swap(row[c], row[best]);
+        const std::vector<ex>& p = a[row[c]];
+        const ex& pb = p[c];
+        for (unsigned i = c + 1; i < n; ++i) {
+            std::vector<ex>& r = a[row[i]];
+            if (r[c].is_zero()) continue;
+            ex f = st.name_if_large(r[c] / pb, kNameOps);
+            for (unsigned j = c + 1; j < n; ++j)
+                if (!p[j].is_zero()) r[j] = st.name_if_large(r[j] - f * p[j], kNameOps);
+            for (unsigned j = 0; j < k; ++j)
+                if (!b[row[c]][j].is_zero())
+                    b[row[i]][j] = st.name_if_large(b[row[i]][j] - f * b[row[c]][j], kNameOps);
+            r[c] = 0;
+        }
+    }
+    // back substitution
+    GiNaC::matrix X(n, k);
+    for (unsigned c = n; c-- > 0;) {
+        const std::vector<ex>& p = a[row[c]];
+        for (unsigned j = 0; j < k; ++j) {
+            ex v = b[row[c]][j];
+            for (unsigned l = c + 1; l < n; ++l)
+                if (!p[l].is_zero()) v -= p[l] * X(l, j);
+            X(c, j) = st.name_if_large(v / p[c], kNameOps);
+        }
     }
     return X;
 }
@@ -372,6 +536,10 @@ KaneEquations form_kane_equations(const System& sys, const KaneOptions& o) {
                                                 static_cast<unsigned>(ind.size()));
     out.auxiliary_constraint_coefficients =
         GiNaC::matrix(static_cast<unsigned>(m), static_cast<unsigned>(na));
+    // constraints too large to solve in closed form leave results that simplification would
+    // normalise at great cost (every entry over the pivots' intermediates): past such a solve
+    // nothing is simplified, as with simplify = false
+    bool large_constraints = false;
     if (m > 0) {
         // the speeds and auxiliary speeds a constraint may hold (Kane 1985, sec. 5.7: the
         // auxiliary motion must leave every listed constraint satisfied)
@@ -414,37 +582,71 @@ KaneEquations form_kane_equations(const System& sys, const KaneOptions& o) {
                                     "' appears in no motion constraint; name a speed that the "
                                     "constraints hold");
         }
-        GiNaC::matrix X = detail::solve_by_blocks(
-            Adep, rhs, o.dependent_speeds,
-            std::string(kFn) +
-                "the motion constraints cannot be solved for the dependent speeds; name other "
-                "dependent speeds (their coefficient matrix must be invertible)");
         // u_s = sum A_sr u_r + sum C_sa u~_a + B_s; the motion itself has u~ = 0
-        for (unsigned s = 0; s < m; ++s) {
-            ex value = na == 0 ? X(s, 0) : maybe_simplify(X(s, 0).subs(aux0), o.simplify);
-            depmap[o.dependent_speeds[s]] = value;
-            out.dependent_speed_values.push_back(value);
-            for (unsigned r = 0; r < ind.size(); ++r)
-                out.constraint_coefficients(s, r) =
-                    simplify(X(s, 0).diff(GiNaC::ex_to<GiNaC::symbol>(ind[r])));
-            for (unsigned a = 0; a < na; ++a)
-                out.auxiliary_constraint_coefficients(s, a) = simplify(
-                    X(s, 0).diff(GiNaC::ex_to<GiNaC::symbol>(o.auxiliary_speeds[a])));
+        const std::string singular =
+            std::string(kFn) +
+            "the motion constraints cannot be solved for the dependent speeds; name other "
+            "dependent speeds (their coefficient matrix must be invertible)";
+        large_constraints = detail::is_large(Adep, rhs);
+        if (o.simplify && !large_constraints) {
+            // small systems: solved in closed form, each entry normalised and simplified
+            GiNaC::matrix X = detail::solve_by_blocks(Adep, rhs, o.dependent_speeds, singular);
+            for (unsigned s = 0; s < m; ++s) {
+                ex value = na == 0 ? X(s, 0) : maybe_simplify(X(s, 0).subs(aux0), o.simplify);
+                depmap[o.dependent_speeds[s]] = value;
+                out.dependent_speed_values.push_back(value);
+                for (unsigned r = 0; r < ind.size(); ++r)
+                    out.constraint_coefficients(s, r) =
+                        simplify(X(s, 0).diff(GiNaC::ex_to<GiNaC::symbol>(ind[r])));
+                for (unsigned a = 0; a < na; ++a)
+                    out.auxiliary_constraint_coefficients(s, a) = simplify(
+                        X(s, 0).diff(GiNaC::ex_to<GiNaC::symbol>(o.auxiliary_speeds[a])));
+            }
+        } else {
+            // large systems, or no simplification asked for: elimination with named
+            // intermediates, one right-hand side per independent and auxiliary speed plus
+            // the rest, so A_sr and C_sa come out directly and nothing is normalised
+            const unsigned k = static_cast<unsigned>(ind.size() + na + 1);
+            GiNaC::matrix R(static_cast<unsigned>(m), k);
+            for (unsigned i = 0; i < m; ++i) {
+                for (unsigned r = 0; r < ind.size(); ++r)
+                    R(i, r) = -A(i, static_cast<unsigned>(index_of(UA, ind[r])));
+                for (unsigned a = 0; a < na; ++a)
+                    R(i, static_cast<unsigned>(ind.size()) + a) =
+                        -A(i, static_cast<unsigned>(index_of(UA, o.auxiliary_speeds[a])));
+                R(i, k - 1) = b(i, 0);
+            }
+            GiNaC::matrix X =
+                detail::solve_by_elimination(st, Adep, R, o.dependent_speeds, singular);
+            for (unsigned s = 0; s < m; ++s) {
+                ex value = X(s, k - 1);
+                for (unsigned r = 0; r < ind.size(); ++r) {
+                    out.constraint_coefficients(s, r) = X(s, r);
+                    value += X(s, r) * ind[r];
+                }
+                for (unsigned a = 0; a < na; ++a)
+                    out.auxiliary_constraint_coefficients(s, a) =
+                        X(s, static_cast<unsigned>(ind.size()) + a);
+                depmap[o.dependent_speeds[s]] = value;
+                out.dependent_speed_values.push_back(value);
+            }
         }
     }
+
+    const bool tidy = o.simplify && !large_constraints;
 
     // ---- coordinate rates and dependent-speed rates in the independent speeds
     exmap rate_map;  // q' -> k(q, u_r, t) with the dependent speeds replaced
     for (std::size_t i = 0; i < n; ++i) {
         ex k = chosen ? substitute(st, kmap.at(qd[i]), depmap) : substitute(st, qd[i], depmap);
-        k = maybe_simplify(k, o.simplify && m > 0);
+        k = maybe_simplify(k, tidy && m > 0);
         out.coordinate_rates.push_back(k);
         if (!k.is_equal(qd[i])) rate_map[qd[i]] = k;
     }
     exmap elim = depmap;  // u_s -> ..., u_s' -> ...
+    Substitution by_rates(st, rate_map);
     for (std::size_t s = 0; s < m; ++s) {
-        ex g = maybe_simplify(substitute(st, st.dt(out.dependent_speed_values[s]), rate_map),
-                              o.simplify);
+        ex g = maybe_simplify(by_rates(st.dt(out.dependent_speed_values[s])), tidy);
         out.dependent_speed_rates.push_back(g);
         elim[dep_rates[s]] = g;
     }
@@ -454,10 +656,11 @@ KaneEquations form_kane_equations(const System& sys, const KaneOptions& o) {
     allowed.insert(o.auxiliary_speeds.begin(), o.auxiliary_speeds.end());
     std::map<const Point*, Vector> vel;
     std::map<const Frame*, Vector> angvel;
+    Substitution by_k(st, kmap), by_aux0(st, aux0);
     auto vel_of = [&](const Point* P) -> const Vector& {
         auto it = vel.find(P);
         if (it != vel.end()) return it->second;
-        Vector v = substitute(st, P->vel_in(N), kmap);
+        Vector v = by_k(P->vel_in(N));
         check_rates(st, v, allowed, "the velocity of point '" + P->name() + "' in '" +
                                         N.name() + "'");
         return vel.emplace(P, std::move(v)).first->second;
@@ -465,7 +668,7 @@ KaneEquations form_kane_equations(const System& sys, const KaneOptions& o) {
     auto angvel_of = [&](const Frame* B) -> const Vector& {
         auto it = angvel.find(B);
         if (it != angvel.end()) return it->second;
-        Vector w = substitute(st, B->ang_vel_in(N), kmap);
+        Vector w = by_k(B->ang_vel_in(N));
         check_rates(st, w, allowed, "the angular velocity of frame '" + B->name() + "' in '" +
                                         N.name() + "'");
         return angvel.emplace(B, std::move(w)).first->second;
@@ -496,14 +699,14 @@ KaneEquations form_kane_equations(const System& sys, const KaneOptions& o) {
     // ---- generalized inertia forces F_r* = sum v_r . R* + w_r . T*, at zero auxiliary speeds
     for (const Body* b : sys.bodies()) {
         const Vector& v = vel_of(&b->cm());
-        Vector a = substitute(st, substitute(st, v, aux0).dt_in(N), kmap);
+        Vector a = by_k(by_aux0(v).dt_in(N));
         Vector Rstar = -(b->mass() * a);
         Vector w, Tstar;
         if (const auto* rb = dynamic_cast<const RigidBody*>(b)) {
             const Frame& B = *rb->frame();
             w = angvel_of(&B);
-            Vector w0 = substitute(st, w, aux0);
-            Vector alpha = substitute(st, w0.dt_in(B), kmap);
+            Vector w0 = by_aux0(w);
+            Vector alpha = by_k(w0.dt_in(B));
             const Dyadic& I = rb->inertia();
             Tstar = -(dot(I, alpha) + cross(w0, dot(I, w0)));
         }
@@ -513,11 +716,12 @@ KaneEquations form_kane_equations(const System& sys, const KaneOptions& o) {
         }
     }
     for (std::size_t r = 0; r < p; ++r) {
-        out.unconstrained_active_forces.push_back(maybe_simplify(F[r], o.simplify));
-        out.unconstrained_inertia_forces.push_back(maybe_simplify(Fs[r], o.simplify));
+        out.unconstrained_active_forces.push_back(maybe_simplify(F[r], tidy));
+        out.unconstrained_inertia_forces.push_back(maybe_simplify(Fs[r], tidy));
     }
 
     // ---- Kane's elimination: F~_r = F_r + sum_s F_s A_sr, likewise F~_r*
+    Substitution by_elim(st, elim);
     for (std::size_t r = 0; r < ind.size(); ++r) {
         std::size_t ri = index_of(U, ind[r]);
         ex Ft = F[ri], Fst = Fs[ri];
@@ -528,11 +732,11 @@ KaneEquations form_kane_equations(const System& sys, const KaneOptions& o) {
             Ft += Asr * F[si];
             Fst += Asr * Fs[si];
         }
-        Ft = maybe_simplify(substitute(st, Ft, elim), o.simplify);
-        Fst = maybe_simplify(substitute(st, Fst, elim), o.simplify);
+        Ft = maybe_simplify(by_elim(Ft), tidy);
+        Fst = maybe_simplify(by_elim(Fst), tidy);
         out.active_forces.push_back(Ft);
         out.inertia_forces.push_back(Fst);
-        out.residuals.push_back(o.simplify ? collect_in(Ft + Fst, ind_rates) : Ft + Fst);
+        out.residuals.push_back(tidy ? collect_in(Ft + Fst, ind_rates) : Ft + Fst);
     }
 
     // ---- auxiliary equations: F~_a = F_a + sum_s F_s C_sa, likewise F~_a*, at u~ = u~' = 0
@@ -545,7 +749,7 @@ KaneEquations form_kane_equations(const System& sys, const KaneOptions& o) {
             Ft += Csa * F[si];
             Fst += Csa * Fs[si];
         }
-        ex Ea = maybe_simplify(substitute(st, substitute(st, Ft + Fst, elim), aux0), o.simplify);
+        ex Ea = maybe_simplify(by_aux0(by_elim(Ft + Fst)), tidy);
         // an auxiliary motion that moves no loaded point and no mass brings out nothing
         if (equal(Ea, 0))
             throw ModelError(
@@ -564,7 +768,7 @@ KaneEquations form_kane_equations(const System& sys, const KaneOptions& o) {
     for (unsigned j = 0; j < ind.size(); ++j) {
         bool used = false;
         for (unsigned i = 0; i < ind.size(); ++i) {
-            if (o.simplify) out.dynamics.A(i, j) = simplify(out.dynamics.A(i, j));
+            if (tidy) out.dynamics.A(i, j) = simplify(out.dynamics.A(i, j));
             used = used || !out.dynamics.A(i, j).is_zero();
         }
         if (!used)
@@ -572,7 +776,7 @@ KaneEquations form_kane_equations(const System& sys, const KaneOptions& o) {
                              "' moves no mass (its rate appears in no equation); check the "
                              "kinematic equations and the velocities that should hold it");
     }
-    if (o.simplify)
+    if (tidy)
         for (unsigned i = 0; i < ind.size(); ++i)
             out.dynamics.b(i, 0) = simplify(out.dynamics.b(i, 0));
     return out;

@@ -2,6 +2,7 @@
 // Linearization of first-order implicit equations about an operating point.
 #include "alembert/eom/linearize.hpp"
 
+#include <map>
 #include <string>
 
 #include "alembert/error.hpp"
@@ -53,6 +54,85 @@ struct SignDerivatives : GiNaC::map_function {
 ex with_sign_derivatives(const ex& e) {
     SignDerivatives f;
     return f(e);
+}
+
+// A value and its first partial derivatives (by target symbol) at one point.
+struct Jet {
+    ex value;
+    std::map<ex, ex, GiNaC::ex_is_less> d;
+};
+
+// Values and first derivatives of expressions at a point, taken through the intermediates of
+// `table` without expanding them (forward mode): each intermediate reachable from the
+// expressions is visited once in dependency order, its value and derivatives formed from
+// its definition and those of the intermediates it uses. The cost is linear in the total size
+// of the definitions, where expanding a chain of intermediates first can be exponential.
+class PointJets {
+public:
+    PointJets(const SymbolTable& table, const exmap& point, const std::vector<ex>& targets,
+              const std::vector<ex>& roots)
+        : table_(table), point_(point), targets_(targets.begin(), targets.end()) {
+        GiNaC::exset needed;
+        std::vector<ex> stack(roots.begin(), roots.end());
+        while (!stack.empty()) {
+            ex cur = stack.back();
+            stack.pop_back();
+            for (const ex& s : symbols_of(cur))
+                if (table_.owns(s) && table_.kind(s) == SymbolKind::intermediate &&
+                    needed.insert(s).second)
+                    stack.push_back(table_.definition(s));
+        }
+        for (const ex& z : table_.intermediates())
+            if (needed.count(z)) z_.emplace(z, jet(table_.definition(z)));
+    }
+    Jet jet(const ex& e) const {
+        exmap at;
+        std::vector<ex> syms;
+        for (const ex& s : symbols_of(e)) {
+            syms.push_back(s);
+            auto z = z_.find(s);
+            if (z != z_.end()) {
+                at[s] = z->second.value;
+            } else {
+                auto p = point_.find(s);
+                if (p != point_.end()) at[s] = p->second;
+            }
+        }
+        Jet out{tidy(e.subs(at)), {}};
+        for (const ex& s : syms) {
+            const bool target = targets_.count(s) != 0;
+            auto z = z_.find(s);
+            if (!target && (z == z_.end() || z->second.d.empty())) continue;
+            ex partial = with_sign_derivatives(e.diff(sym(s)).subs(at));
+            if (partial.is_zero()) continue;
+            if (target) out.d[s] += partial;
+            if (z != z_.end())
+                for (const auto& [t, dz] : z->second.d) out.d[t] += partial * dz;
+        }
+        for (auto& [t, d] : out.d) d = tidy(d);
+        return out;
+    }
+
+private:
+    // polynomials in the symbols left (a forward speed kept symbolic) expanded, so values
+    // stay flat sums instead of nesting intermediate by intermediate
+    static ex tidy(const ex& e) {
+        if (GiNaC::is_a<GiNaC::numeric>(e)) return e;
+        GiNaC::lst vars;
+        for (const ex& s : symbols_of(e)) vars.append(s);
+        return e.is_polynomial(vars) ? GiNaC::expand(e) : e;
+    }
+    const SymbolTable& table_;
+    const exmap& point_;
+    GiNaC::exset targets_;
+    std::map<ex, Jet, GiNaC::ex_is_less> z_;
+};
+
+bool holds_intermediates(const SymbolTable& table, const std::vector<ex>& es) {
+    for (const ex& e : es)
+        for (const ex& s : symbols_of(e))
+            if (table.owns(s) && table.kind(s) == SymbolKind::intermediate) return true;
+    return false;
 }
 
 }  // namespace
@@ -135,43 +215,82 @@ LinearizedEquations linearize(const SymbolTable& table, const FirstOrderEquation
                                 "'; give the states only, the rates follow from the equations");
     const exmap& op = options.operating_point;
 
-    // ---- M x_f' = b: the rates at the operating point
-    std::vector<ex> E;
-    for (const ex& e : eqs.residuals) E.push_back(table.expand_intermediates(e));
-    exmap free0;
-    for (const ex& r : free) free0[r] = 0;
-    GiNaC::matrix M(static_cast<unsigned>(F), static_cast<unsigned>(F)),
-        b(static_cast<unsigned>(F), 1);
-    for (unsigned i = 0; i < F; ++i) {
-        for (unsigned j = 0; j < F; ++j) {
-            ex a = E[i].diff(sym(free[j]));
-            for (const ex& r : free)
-                if (a.has(r))
-                    throw SolveError(kLinearize + "equation " + std::to_string(i + 1) +
-                                     " is not linear in the rate '" + to_string(free[j]) +
-                                     "' (its coefficient holds '" + to_string(r) + "')");
-            M(i, j) = -a.subs(op);
-        }
-        b(i, 0) = E[i].subs(free0).subs(op);
-    }
     const std::string singular =
         kLinearize +
         "the equations cannot be solved for the rates at the operating point "
         "(singular mass matrix there); choose another operating point or coordinates";
-    GiNaC::matrix xf0 = detail::solve_by_blocks(M, b, free, singular);
-    exmap at_op = op;  // states, inputs and rates at the operating point
-    for (unsigned j = 0; j < F; ++j) at_op[free[j]] = xf0(j, 0);
-
-    // ---- M [A_f B_f] = [dE/dx dE/dr] at the operating point
     const std::size_t R = options.inputs.size();
+    GiNaC::matrix M(static_cast<unsigned>(F), static_cast<unsigned>(F)),
+        b(static_cast<unsigned>(F), 1);
     GiNaC::matrix J(static_cast<unsigned>(F), static_cast<unsigned>(N + R));
-    for (unsigned i = 0; i < F; ++i) {
-        for (unsigned j = 0; j < N; ++j)
-            J(i, j) = with_sign_derivatives(E[i].diff(sym(x[j])).subs(at_op));
-        for (unsigned k = 0; k < R; ++k)
-            J(i, static_cast<unsigned>(N) + k) =
-                with_sign_derivatives(E[i].diff(sym(options.inputs[k])).subs(at_op));
+    exmap free0;
+    for (const ex& r : free) free0[r] = 0;
+    GiNaC::matrix xf0;
+    exmap at_op = op;  // states, inputs and rates at the operating point
+    if (holds_intermediates(table, eqs.residuals)) {
+        // ---- through the intermediates, at the operating point (forward mode): M x_f' = b
+        // with the rates zero, then [dE/dx dE/dr] with the rates there
+        exmap at_zero = op;
+        for (const ex& r : free) at_zero[r] = 0;
+        PointJets zero(table, at_zero, free, eqs.residuals);
+        for (unsigned i = 0; i < F; ++i) {
+            Jet e = zero.jet(eqs.residuals[i]);
+            for (unsigned j = 0; j < F; ++j) {
+                auto d = e.d.find(free[j]);
+                M(i, j) = d == e.d.end() ? ex(0) : -d->second;
+            }
+            b(i, 0) = e.value;
+        }
+        xf0 = detail::solve_by_blocks(M, b, free, singular);
+        for (unsigned j = 0; j < F; ++j) at_op[free[j]] = xf0(j, 0);
+        std::vector<ex> targets = x;
+        targets.insert(targets.end(), options.inputs.begin(), options.inputs.end());
+        targets.insert(targets.end(), free.begin(), free.end());
+        PointJets there(table, at_op, targets, eqs.residuals);
+        for (unsigned i = 0; i < F; ++i) {
+            Jet e = there.jet(eqs.residuals[i]);
+            auto d_of = [&](const ex& t) {
+                auto d = e.d.find(t);
+                return d == e.d.end() ? ex(0) : d->second;
+            };
+            for (unsigned j = 0; j < N; ++j) J(i, j) = d_of(x[j]);
+            for (unsigned k = 0; k < R; ++k)
+                J(i, static_cast<unsigned>(N) + k) = d_of(options.inputs[k]);
+            // linear in the rates: the same coefficients with the rates zero and there
+            for (unsigned j = 0; j < F; ++j)
+                if (!equal(-d_of(free[j]), M(i, j)))
+                    throw SolveError(kLinearize + "equation " + std::to_string(i + 1) +
+                                     " is not linear in the rate '" + to_string(free[j]) +
+                                     "' (its coefficient changes with the rates)");
+        }
+    } else {
+        // ---- M x_f' = b: the rates at the operating point
+        std::vector<ex> E = eqs.residuals;
+        for (unsigned i = 0; i < F; ++i) {
+            for (unsigned j = 0; j < F; ++j) {
+                ex a = E[i].diff(sym(free[j]));
+                for (const ex& r : free)
+                    if (a.has(r))
+                        throw SolveError(kLinearize + "equation " + std::to_string(i + 1) +
+                                         " is not linear in the rate '" + to_string(free[j]) +
+                                         "' (its coefficient holds '" + to_string(r) + "')");
+                M(i, j) = -a.subs(op);
+            }
+            b(i, 0) = E[i].subs(free0).subs(op);
+        }
+        xf0 = detail::solve_by_blocks(M, b, free, singular);
+        for (unsigned j = 0; j < F; ++j) at_op[free[j]] = xf0(j, 0);
+
+        // ---- [dE/dx dE/dr] at the operating point
+        for (unsigned i = 0; i < F; ++i) {
+            for (unsigned j = 0; j < N; ++j)
+                J(i, j) = with_sign_derivatives(E[i].diff(sym(x[j])).subs(at_op));
+            for (unsigned k = 0; k < R; ++k)
+                J(i, static_cast<unsigned>(N) + k) =
+                    with_sign_derivatives(E[i].diff(sym(options.inputs[k])).subs(at_op));
+        }
     }
+    // ---- M [A_f B_f] = [dE/dx dE/dr]
     GiNaC::matrix AB = detail::solve_by_blocks(M, J, free, singular);
 
     // ---- assemble: unit rows for rates that are states, solved rows for the others

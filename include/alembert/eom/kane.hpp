@@ -68,7 +68,12 @@ struct KaneOptions {
     /// u~_a present. The constraint forces are added as loads with unknown measures. The
     /// u~_a are zero in the motion; their equations F~_a + F~_a* = 0 give the forces.
     std::vector<ex> auxiliary_speeds{};
-    /// Simplify the results (alembert::simplify; the residuals collected in the u').
+    /// Simplify the results (alembert::simplify; the residuals collected in the u'). Off,
+    /// nothing is normalised or simplified: the motion constraints are solved by elimination
+    /// (detail::solve_by_elimination), with named intermediates when they are large, as they
+    /// are when on but the constraints are too large for closed-form solving; past such a
+    /// solve nothing is simplified either way (the Whipple bicycle's front contact: the
+    /// equations form in about two seconds).
     bool simplify = true;
 };
 
@@ -151,6 +156,23 @@ namespace detail {
 /// block.
 GiNaC::matrix solve_by_blocks(const GiNaC::matrix& A, const GiNaC::matrix& B,
                               const std::vector<ex>& unknowns, const std::string& what);
+
+/// True if A and B together hold more operations than closed-form symbolic solving handles
+/// without swell (Gauss elimination followed by normalisation, as solve_by_blocks does).
+bool is_large(const GiNaC::matrix& A, const GiNaC::matrix& B);
+
+/// Solves A X = B by Gauss elimination and back substitution without normalising. When A and
+/// B are large (is_large), every multiplier, updated entry and solved entry larger than a few
+/// operations is named as an intermediate of `table`, so the solution grows linearly with the
+/// size of A, never by the swell of rational normalisation (multivariate gcds); small
+/// systems come out written out. Row pivots are chosen by magnitude
+/// at the reference configuration (variables at 0, constants at their values), or at
+/// pseudo-random values where every candidate vanishes there; the entries of A and B must
+/// not hold solve-level symbols (accelerations, unknowns), which intermediates may not hide.
+/// @throws alembert::SolveError with `what` if no pivot is found (a singular A).
+GiNaC::matrix solve_by_elimination(SymbolTable& table, const GiNaC::matrix& A,
+                                   const GiNaC::matrix& B, const std::vector<ex>& unknowns,
+                                   const std::string& what);
 }  // namespace detail
 
 }  // namespace alembert

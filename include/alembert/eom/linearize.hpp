@@ -61,7 +61,9 @@ struct LinearizedEquations {
 /// are not states, x_f'), the rates there solve M x_f' = E at x_f' = 0, and differentiating
 /// E = 0 gives M delta x_f' = dE/dx delta x + dE/dr delta r, all at (x0, x0', r0); so the
 /// rows of A and B for x_f' are M^-1 dE/dx and M^-1 dE/dr, and a row x_i' = x_j is the unit
-/// row e_j. Intermediates are expanded first (`table`).
+/// row e_j. Residuals holding intermediates of `table` are differentiated through them at the
+/// operating point (forward mode: each intermediate's value and first derivatives there,
+/// once, in dependency order), never expanded, so the cost stays linear in their size.
 /// @throws alembert::ArgumentError if the lists do not fit together (counts, a state listed
 ///         twice, an operating-point value for a rate, an input that is a state);
 ///         alembert::SolveError if a residual is not linear in the rates or M is singular at

@@ -62,4 +62,36 @@ SampleModel make_mass_spring_damper();
 /// m_B = 2, m_C = 1.5 kg, g = 9.81. q = {qA, qB, qC}; unknowns = {T, F_x, F_y}.
 SampleModel make_four_bar();
 
+/// The KUKA LBR iiwa 14, a 7-joint spatial arm, with the joint origins, masses, mass
+/// centres and principal central inertias of its public URDF (RobotLocomotion/drake,
+/// iiwa14_no_collision.urdf): link B_i turns by q_i about the z axis of the joint frame J_i,
+/// which is fixed in link B_{i-1} (N for i = 1, the base being fixed) at the URDF joint origin
+/// (xyz in B_{i-1}, rpy exact multiples of pi/2); B_i's frame is the URDF link frame. Gravity
+/// -g Nz (g = 9.81), no joint damping; joint torques T_i B_iz on B_i from B_{i-1} (unknowns).
+SampleModel make_kuka_iiwa14();
+
+/// A built model with chosen speeds and motion constraints, in the terms of Kane's method.
+struct SampleNonholonomicModel {
+    System system;
+    std::vector<TimeVariable> q;           ///< generalized coordinates
+    std::vector<TimeVariable> u;           ///< generalized speeds, dependent ones included
+    std::vector<ex> kinematic_equations;   ///< one per coordinate, = 0
+    std::vector<ex> motion_constraints;    ///< = 0, linear in the speeds
+    std::vector<ex> dependent_speeds;      ///< the speeds the constraints are solved for
+    std::vector<RigidBody*> links;         ///< the bodies
+};
+
+/// The Whipple bicycle with the benchmark parameters of Meijaard, Papadopoulos, Ruina &
+/// Schwab (2007, Proc. R. Soc. A 463, Table 1; constants w, c, lambda, g, r_R, m_R, I_Rxx, ...
+/// named as there): rear frame B, front fork H, rear and front wheels R and F (knife-edge,
+/// rolling without slip on the plane of N, Nz up). Yaw frame Y about Nz by q1, lean frame L
+/// about Yx by q2, B pitched about Ly by q4 (0 in the reference configuration), R about By by
+/// q3, H steered about the steer axis (tilted back by lambda from Lz at zero pitch) by q5, F
+/// about Hy by q6. Body axes are x forward, y left, z up when upright (Table 1's y right,
+/// z down flips the sign of the xz products of inertia). Speeds u_i = q_i'. The rear wheel's
+/// contact point P_R is at rest; the front wheel's contact point P_F at rest along Yx, Yy
+/// and Yz gives three motion constraints, solved for the yaw, pitch and front wheel rates
+/// u1, u4, u6. Upright straight running at speed v: every q and u zero but u3 = v/r_R.
+SampleNonholonomicModel make_whipple_bicycle();
+
 }  // namespace alembert
