@@ -539,6 +539,8 @@ int main(int argc, char** argv) {
                         "write only roadmap.tex: the road-map table, TikZ free-body diagrams and the equations");
              c.add_flag("--check", report_opts.settings.check,
                         "compare the road-map with Kane, Lagrange and Newton-Euler (and the joint reactions) in the checks");
+             c.add_flag("--matrices", report_opts.settings.matrices,
+                        "show the mass matrix and forcing, M q'' = f, as simulate forms them");
              c.add_flag("--no-plots", report_opts.no_plots, "leave the time histories unplotted");
              c.add_option("--plot", report_opts.settings.plotted,
                           "the columns to plot (repeat or separate by commas; default: all)")->delimiter(',');

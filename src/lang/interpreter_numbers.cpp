@@ -841,15 +841,16 @@ void parse_run(StatementParser& p, Statement& s) {
                           "write inverse for T_A, T_B");
 }
 
-// report [at q = value, ...] [plot names | plot none] [check] [to "dir"]; latex [at ...] [to "dir"]
+// report [at q = value, ...] [plot names | plot none] [check] [matrices] [to "dir"]; latex [at ...] [to "dir"]
 void parse_report(StatementParser& p, Statement& s) {
     const bool report = s.keyword == "report";
     while (!p.at_end()) {
         if (p.accept_word("at")) s.bindings["at"] = p.bindings("a coordinate");
         else if (report && p.accept_word("plot")) s.lists["plot"] = p.name_list("a column to plot, or none");
         else if (report && p.accept_word("check")) s.flags["check"] = true;
+        else if (report && p.accept_word("matrices")) s.flags["matrices"] = true;
         else if (p.accept_word("to")) s.words["to"] = p.text("the output directory");
-        else p.fail_expected(report ? "'at', 'plot', 'check' or 'to'" : "'at' or 'to'");
+        else p.fail_expected(report ? "'at', 'plot', 'check', 'matrices' or 'to'" : "'at' or 'to'");
     }
 }
 
@@ -935,10 +936,10 @@ std::vector<StatementSpec> number_statements() {
          .run = [](M& m, const Statement& s) { m.inverse(s); }},
         {.keyword = "report", .family = family,
          .help = "writes an HTML report: road-map with free-body diagrams, equations, plots, motion",
-         .forms = {{"`report` [`at` *q = value, ...*] [`plot` *columns* \\| `plot none`] [`check`] [`to` *\"dir\"*]",
+         .forms = {{"`report` [`at` *q = value, ...*] [`plot` *columns* \\| `plot none`] [`check`] [`matrices`] [`to` *\"dir\"*]",
                     "report at qA = 20 deg, qB = -70 deg, qC = 60 deg to \"report\"",
-                    "`write_report`: `index.html` (self-contained; KaTeX's fonts in `fonts/`) and `roadmap.tex` (the table, TikZ free-body diagrams and equations for LaTeX) with the model, the last road-map (or the planned one) with each row's free-body diagram drawn at the `at` configuration (default: the first sample of the motion, else the initial values), the equations typeset, the tables simulate and inverse wrote as plots (`plot` chooses the columns, `plot none` skips them; long runs thinned to about 2000 rows keeping their extremes), the motion animated (in 3D, turned by dragging), and the checks (energy, constraint drift; with `check`, `compare_methods` and `compare_reactions`)"}},
-         .clauses = {"at", "plot", "check", "to"}, .parse = parse_report, .run = [](M& m, const Statement& s) { m.report(s); }},
+                    "`write_report`: `index.html` (self-contained; KaTeX's fonts in `fonts/`) and `roadmap.tex` (the table, TikZ free-body diagrams and equations for LaTeX) with the model, the last road-map (or the planned one) with each row's free-body diagram drawn at the `at` configuration (default: the first sample of the motion, else the initial values), the equations typeset, the tables simulate and inverse wrote as plots (`plot` chooses the columns, `plot none` skips them; long runs thinned to about 2000 rows keeping their extremes), the motion animated (in 3D, turned by dragging), and the checks (energy, constraint drift; with `check`, `compare_methods` and `compare_reactions`); with `matrices`, the mass matrix and forcing M q'' = f typeset (`form_forward_equations`, as simulate forms them)"}},
+         .clauses = {"at", "plot", "check", "matrices", "to"}, .parse = parse_report, .run = [](M& m, const Statement& s) { m.report(s); }},
         {.keyword = "latex", .family = family,
          .help = "writes the road-map, its free-body diagrams and equations as a LaTeX document",
          .forms = {{"`latex` [`at` *q = value, ...*] [`to` *\"dir\"*]",

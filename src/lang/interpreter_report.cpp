@@ -105,6 +105,14 @@ std::string Interpreter::Impl::write_report_to(const std::string& dir, const exm
             }
         }
     }
+    if (settings.matrices && !c.coordinates.empty()) {
+        // M q'' = f as simulate forms them; a model they cannot be formed for says why
+        try {
+            c.matrices = form_forward_equations(sys, c.coordinates);
+        } catch (const Error& e) {
+            c.notes.push_back(std::string("No mass matrix and forcing: ") + e.what());
+        }
+    }
     if (settings.latex_only) return guard(where, [&] { return alembert::write_report_latex(c, dir); });
     return guard(where, [&] { return alembert::write_report(c, dir); });
 }
@@ -127,6 +135,7 @@ void Interpreter::Impl::report(const Statement& s) {
     const exmap at = report_configuration(s);
     ReportSettings settings;
     settings.check = s.flag("check");
+    settings.matrices = s.flag("matrices");
     if (s.lists.count("plot")) {
         const std::vector<Word>& plot = s.lists.at("plot");
         if (plot.size() == 1 && plot.front().text == "none") {

@@ -380,6 +380,47 @@ std::string direction_words(const System& sys, const Vector& u) {
     return Vector(sys.newtonian(), c).to_string();
 }
 
+// an entry of the mass matrix or forcing as people read it: intermediates written out,
+// simplified when small enough
+ex readable_entry(const SymbolTable& st, const ex& e) {
+    ex x = st.expand_intermediates(e);
+    return count_ops(x) <= kReadableSimplifyOps ? simplify(x) : x;
+}
+
+// M q'' = f typeset: the matrix, the column of accelerations and the forcing
+std::string matrices_tex(const SymbolTable& st, const LinearSystem& m) {
+    std::string M = "\\begin{bmatrix} ", x = "\\begin{bmatrix} ", f = "\\begin{bmatrix} ";
+    for (unsigned i = 0; i < m.A.rows(); ++i) {
+        const std::string end = i + 1 < m.A.rows() ? " \\\\ " : " ";
+        for (unsigned j = 0; j < m.A.cols(); ++j)
+            M += (j ? " & " : "") + to_latex(readable_entry(st, m.A(i, j)));
+        M += end;
+        f += to_latex(readable_entry(st, m.b(i, 0))) + end;
+    }
+    for (std::size_t j = 0; j < m.unknowns.size(); ++j)
+        x += to_latex(m.unknowns[j]) + (j + 1 < m.unknowns.size() ? " \\\\ " : " ");
+    return M + "\\end{bmatrix} " + x + "\\end{bmatrix} = " + f + "\\end{bmatrix}";
+}
+
+// the mass matrix and forcing: their entries as text (to read back) and all of it as TeX
+std::string matrices_json(const System& sys, const LinearSystem& m) {
+    const SymbolTable& st = sys.symbols();
+    std::vector<std::string> unknowns, M, f;
+    for (const ex& x : m.unknowns) unknowns.push_back(to_string(x));
+    for (unsigned i = 0; i < m.A.rows(); ++i) {
+        std::vector<std::string> row;
+        for (unsigned j = 0; j < m.A.cols(); ++j) row.push_back(to_string(readable_entry(st, m.A(i, j))));
+        M.push_back(str_arr(row));
+        f.push_back(to_string(readable_entry(st, m.b(i, 0))));
+    }
+    return Obj()
+        .add("unknowns", str_arr(unknowns))
+        .add("M", arr(M))
+        .add("f", str_arr(f))
+        .add("tex", str(matrices_tex(st, m)))
+        .done();
+}
+
 std::string row_json(const System& sys, const Evaluation& ev, const RoadmapRow& r) {
     std::vector<std::string> extra, names;
     for (const ex& x : r.additional_unknowns) extra.push_back(to_string(x));
@@ -752,6 +793,10 @@ std::string render_report_latex(const ReportContent& c) {
             for (const std::string& d : defs) t += "\\[ " + d + " \\]\n";
         }
     }
+    if (c.matrices) {
+        t += "\\subsection*{Mass matrix and forcing}\n$M(q)\\,\\ddot q = f(q, \\dot q, t)$:\n";
+        t += "\\[ " + matrices_tex(sys.symbols(), *c.matrices) + " \\]\n";
+    }
     t += "\\end{document}\n";
     return t;
 }
@@ -866,6 +911,7 @@ std::string render_report_json(const ReportContent& c) {
     o.add("configuration", arr(config)).add("geometry", geometry).add("roadmap", arr(rows));
     o.add("histories", arr(histories)).add("animation", animation_json(c, placed));
     o.add("checks", checks_json(c));
+    if (c.matrices) o.add("matrices", matrices_json(sys, *c.matrices));
     return o.done();
 }
 

@@ -67,6 +67,9 @@ class Dom(html.parser.HTMLParser):
         self.exercise = ""
         self.image3d = ""
         self.in_pre = None
+        self.matrices = 0        # section#matrices (the mass matrix and forcing)
+        self.matrices_katex = 0  # KaTeX renderings inside it
+        self.matrices_tables = 0  # matrices KaTeX laid out inside it (span.mtable)
 
     def classes(self, attrs):
         return set((dict(attrs).get("class") or "").split())
@@ -76,6 +79,13 @@ class Dom(html.parser.HTMLParser):
 
     def handle_starttag(self, tag, attrs):
         a, c = dict(attrs), self.classes(attrs)
+        if a.get("id") == "matrices":
+            self.matrices += 1
+            c.add("#matrices")
+        if "katex" in c and self.inside(cls="#matrices"):
+            self.matrices_katex += 1
+        if tag == "span" and "mtable" in c and self.inside(cls="#matrices"):
+            self.matrices_tables += 1
         if a.get("id") == "alembert-status":
             self.status = a.get("data-status")
         if a.get("id") == "alembert-errors":
@@ -337,9 +347,10 @@ def examples(cli, source, work, browser):
 
 def options(cli, source, work, browser):
     """alembert report's options: --plot chooses the series, --no-plots drops them, --check
-    adds the methods and the joint reactions compared, each check passing."""
+    adds the methods and the joint reactions compared, each check passing, --matrices the
+    mass matrix and forcing typeset (absent without it)."""
     model = os.path.join(source, "examples", "sit_to_stand", "model.alb")
-    for args, series, checked in ((["--plot", "T_A,T_B", "--check"], 2, True), (["--no-plots"], 0, False)):
+    for args, series, checked in ((["--plot", "T_A,T_B", "--check", "--matrices"], 2, True), (["--no-plots"], 0, False)):
         out = os.path.join(work, "options" + "".join(a.strip("-").replace(",", "_") for a in args))
         shutil.rmtree(out, ignore_errors=True)
         r = subprocess.run([cli, "report", model, "--out", out] + args, capture_output=True, text=True, timeout=600)
@@ -356,6 +367,14 @@ def options(cli, source, work, browser):
                   % (" ".join(args), dom.checks))
         else:
             check("methods" not in kinds, "report %s: no methods compared unless asked" % " ".join(args))
+        if "--matrices" in args:
+            # M, the accelerations and f: three matrices in one display, typeset, no TeX left
+            check(dom.matrices == 1 and dom.matrices_katex == 1 and dom.matrices_tables == 3
+                  and dom.raw == 0 and dom.text_backslashes == 0,
+                  "report %s: the mass matrix and forcing typeset by KaTeX (%d sections, %d renderings, %d matrices)"
+                  % (" ".join(args), dom.matrices, dom.matrices_katex, dom.matrices_tables))
+        else:
+            check(dom.matrices == 0, "report %s: no mass matrix and forcing unless asked" % " ".join(args))
 
 def spatial(cli, source, work, browser):
     """A spatial model: drawn in a projection the user turns, every equation typeset."""

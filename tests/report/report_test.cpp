@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <random>
 #include <fstream>
 #include <sstream>
 
@@ -15,6 +16,8 @@
 #include "alembert/eom/planner.hpp"
 #include "alembert/error.hpp"
 #include "alembert/mech/sample_models.hpp"
+#include "alembert/sim/forward_dynamics.hpp"
+#include "alembert/sym/print.hpp"
 
 namespace alembert {
 namespace {
@@ -283,6 +286,119 @@ TEST(Report, ThreeJsIsInlinedOnlyWhereThereIsA3DView) {
     EXPECT_NE(render_report_html(s.content, "", dir.string()).find("THREE_MARKER"),
               std::string::npos);
     fs::remove_all(dir);
+}
+
+// the JSON strings between `begin` and the first `end` after it, unescaped
+std::vector<std::string> json_strings(const std::string& json, const std::string& begin,
+                                      const std::string& end) {
+    std::vector<std::string> out;
+    std::size_t at = json.find(begin);
+    EXPECT_NE(at, std::string::npos) << begin;
+    if (at == std::string::npos) return out;
+    const std::size_t stop = json.find(end, at + begin.size());
+    for (at += begin.size(); at < stop; ++at) {
+        if (json[at] != '"') continue;
+        std::string text;
+        for (++at; json[at] != '"'; ++at) {
+            if (json[at] != '\\') {
+                text += json[at];
+                continue;
+            }
+            const char c = json[++at];
+            if (c == 'u') {
+                text += static_cast<char>(std::stoi(json.substr(at + 1, 4), nullptr, 16));
+                at += 4;
+            } else {
+                text += c == 'n' ? '\n' : c;
+            }
+        }
+        out.push_back(text);
+    }
+    return out;
+}
+
+TEST(Report, MassMatrixAndForcingAgreeWithTheTriplePendulumDerivedByHand) {
+    SitToStand s;
+    EXPECT_EQ(render_report_json(s.content).find("\"matrices\""), std::string::npos);
+    s.content.matrices = form_forward_equations(s.m.system, s.m.q);
+    const std::string json = render_report_json(s.content);
+    const std::vector<std::string> unknowns = json_strings(json, "\"matrices\":{\"unknowns\":", "]");
+    const std::vector<std::string> M = json_strings(json, "\"M\":", "]]");
+    const std::vector<std::string> f = json_strings(json, "\"f\":", "]");
+    ASSERT_EQ(unknowns, (std::vector<std::string>{"qA''", "qB''", "qC''"}));
+    ASSERT_EQ(M.size(), 9u);
+    ASSERT_EQ(f.size(), 3u);
+    const std::vector<std::string> tex = json_strings(json, "\"tex\":", "}");
+    ASSERT_EQ(tex.size(), 1u);
+    EXPECT_EQ(count(tex[0], "\\begin{bmatrix}"), 3u);
+    EXPECT_NE(tex[0].find(to_latex(s.m.q[2].d(2))), std::string::npos) << tex[0];
+
+    // read the printed entries back: primes become _d, every name the model's own symbol
+    const SymbolTable& st = s.m.system.symbols();
+    GiNaC::symtab names;
+    auto plain = [](std::string text) {
+        for (std::size_t at = text.find('\''); at != std::string::npos; at = text.find('\''))
+            text.replace(at, 1, "_d");
+        return text;
+    };
+    for (SymbolKind k : {SymbolKind::constant, SymbolKind::unknown})
+        for (const ex& x : st.symbols(k)) names[st.name(x)] = x;
+    for (const TimeVariable& q : s.m.q)
+        for (int k = 0; k <= 2; ++k) names[plain(to_string(q.d(k)))] = q.d(k);
+    GiNaC::parser read(names, true);
+
+    // by hand: absolute angles th_i = qA + ... (each body's y axis (-sin th, cos th) in N);
+    // mass centre velocities J_i q' with columns l e'(th) (e' = (-cos th, -sin th)) summed
+    // over the segments between the ankle and the joint turned; M = sum m J^T J + I w^T w;
+    // f = torques + gravity - sum m J^T (accelerations at q'' = 0: -sum l th'^2 e(th))
+    std::mt19937 rng(15);
+    std::uniform_real_distribution<double> angle(-3, 3), value(0.2, 2.0);
+    for (int trial = 0; trial < 5; ++trial) {
+        exmap at;
+        std::map<std::string, double> c;
+        for (const ex& x : st.symbols(SymbolKind::constant)) at[x] = c[st.name(x)] = value(rng);
+        for (const ex& x : st.symbols(SymbolKind::unknown)) at[x] = c[st.name(x)] = angle(rng);
+        double q[3], qd[3];
+        for (int i = 0; i < 3; ++i) {
+            at[s.m.q[i].d(0)] = q[i] = angle(rng);
+            at[s.m.q[i].d(1)] = qd[i] = angle(rng);
+        }
+        const char* n[3] = {"A", "B", "C"};
+        const double th[3] = {q[0], q[0] + q[1], q[0] + q[1] + q[2]};
+        const double thd[3] = {qd[0], qd[0] + qd[1], qd[0] + qd[1] + qd[2]};
+        Eigen::Matrix3d Mh = Eigen::Matrix3d::Zero();
+        Eigen::Vector3d fh(c["T_A"], c["T_B"], c["T_C"]);
+        for (int i = 0; i < 3; ++i) {
+            // body i: segments j < i of length L_j, then d_i
+            auto length = [&](int j) { return j < i ? c[std::string("L_") + n[j]] : c[std::string("d_") + n[i]]; };
+            Eigen::Matrix<double, 2, 3> J = Eigen::Matrix<double, 2, 3>::Zero();
+            Eigen::Vector2d a0 = Eigen::Vector2d::Zero();
+            for (int j = 0; j <= i; ++j) {
+                const Eigen::Vector2d e(-std::sin(th[j]), std::cos(th[j]));
+                const Eigen::Vector2d ed(-std::cos(th[j]), -std::sin(th[j]));
+                for (int k = 0; k <= j; ++k) J.col(k) += length(j) * ed;
+                a0 -= length(j) * thd[j] * thd[j] * e;
+            }
+            Eigen::RowVector3d w = Eigen::RowVector3d::Zero();
+            for (int k = 0; k <= i; ++k) w(k) = 1;
+            const double mass = c[std::string("m_") + n[i]], I = c[std::string("I_") + n[i]];
+            Mh += mass * J.transpose() * J + I * w.transpose() * w;
+            fh += J.transpose() * (mass * Eigen::Vector2d(0, -c["g"]) - mass * a0);
+        }
+        for (int i = 0; i < 3; ++i) {
+            for (int j = 0; j < 3; ++j) {
+                const double got = st.evaluate(read(plain(M[3 * i + j])), at);
+                EXPECT_NEAR(got, Mh(i, j), 1e-12 * (1 + std::abs(Mh(i, j))))
+                    << "M(" << i << "," << j << ") = " << M[3 * i + j];
+            }
+            const double got = st.evaluate(read(plain(f[i])), at);
+            EXPECT_NEAR(got, fh(i), 1e-12 * (1 + std::abs(fh(i)))) << "f(" << i << ") = " << f[i];
+        }
+    }
+    // the same matrices typeset in roadmap.tex
+    const std::string latex = render_report_latex(s.content);
+    EXPECT_NE(latex.find("\\subsection*{Mass matrix and forcing}"), std::string::npos);
+    EXPECT_NE(latex.find(tex[0]), std::string::npos);
 }
 
 TEST(Report, SameContentGivesTheSameBytes) {

@@ -40,6 +40,7 @@ enum class RunStatus {
 struct ReportSettings {
     bool latex_only = false;            ///< write roadmap.tex alone (`latex`, --latex)
     bool check = false;                 ///< compare the methods and reactions (`check`, --check)
+    bool matrices = false;              ///< show M q'' = f (`matrices`, --matrices)
     bool plots = true;                  ///< plot the histories (`plot none`, --no-plots)
     std::vector<std::string> plotted{};  ///< the columns plotted (`plot qA, T_A`); empty: all
 };

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "alembert/eom/cross_check.hpp"
+#include "alembert/eom/equations.hpp"
 #include "alembert/eom/roadmap.hpp"
 #include "alembert/sim/table.hpp"
 
@@ -44,6 +45,10 @@ struct ReportContent {
     /// alembert::compare_reactions).
     std::optional<MethodComparison> methods{};
     std::optional<ReactionComparison> reactions{};
+    /// The mass matrix and forcing, M(q) q'' = f(q, q', t) with A = M, b = f and the
+    /// accelerations the unknowns, when asked (alembert::form_forward_equations: as simulate
+    /// forms them); typeset on the page and in roadmap.tex.
+    std::optional<LinearSystem> matrices{};
 };
 
 /// One line of the report's checks panel.

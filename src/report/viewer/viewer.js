@@ -299,6 +299,14 @@
     });
   }
 
+  // the mass matrix and forcing, when the report was asked for them
+  function matrices(main, data) {
+    var sec = el("section", {id: "matrices"}, main);
+    el("h2", {}, sec, "Mass matrix and forcing");
+    el("p", {"class": "note"}, sec, "M(q) q\u2033 = f(q, q\u2032, t), as simulate forms them for forward dynamics.");
+    tex(sec, data.matrices.tex, true);
+  }
+
   var palette = ["#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#17becf", "#8c564b", "#e377c2"];
   function niceTicks(lo, hi, n) {
     var span = hi - lo || 1, step = Math.pow(10, Math.floor(Math.log10(span / n)));
@@ -702,6 +710,7 @@
     data.notes.forEach(function (n) { el("p", {"class": "warning"}, main, n); });
     diagrams = [];
     if (data.roadmap.length) roadmap(main, data);
+    if (data.matrices) matrices(main, data);
     animation(main, data);
     histories(main, data);
     checks(main, data);
