@@ -3,7 +3,11 @@
 #include "alembert/sym/symbol_table.hpp"
 
 #include <cctype>
+#include <cmath>
+#include <optional>
 #include <sstream>
+
+#include <ginac/hash_map.h>
 
 #include "alembert/error.hpp"
 #include "alembert/sym/simplify.hpp"
@@ -20,6 +24,82 @@ bool is_identifier(const std::string& s) {
 }
 
 std::string primes(int k) { return std::string(static_cast<std::size_t>(k), '\''); }
+
+// ---- the pole guard of evaluate() ----------------------------------------------------------
+// GiNaC signals a division by zero met while substituting numbers (1/x at x = 0, log(0)) by
+// throwing pole_error out of the middle of its evaluation, and leaks the terms it was building
+// when it does. evaluate() therefore first computes its expression in double arithmetic, which
+// turns a pole into an infinity or NaN, and reports a value that is not finite itself, before
+// GiNaC is asked at all.
+
+using DoubleValues = GiNaC::exhashmap<double>;
+
+// e at the values `at` in double arithmetic; nullopt if e holds a symbol without a value or
+// something this walk does not know (GiNaC then has the last word). Shared subtrees are
+// evaluated once (memo).
+std::optional<double> in_doubles(const ex& e, const DoubleValues& at, DoubleValues& memo) {
+    using namespace GiNaC;
+    if (is_a<numeric>(e)) {
+        const numeric& n = ex_to<numeric>(e);
+        if (!n.is_real()) return std::nullopt;
+        return n.to_double();
+    }
+    if (is_a<symbol>(e)) {
+        auto it = at.find(e);
+        if (it == at.end()) return std::nullopt;
+        return it->second;
+    }
+    if (auto it = memo.find(e); it != memo.end()) return it->second;
+    std::vector<double> x;
+    x.reserve(e.nops());
+    if (!is_a<constant>(e))
+        for (std::size_t i = 0; i < e.nops(); ++i) {
+            std::optional<double> xi = in_doubles(e.op(i), at, memo);
+            if (!xi) return std::nullopt;
+            x.push_back(*xi);
+        }
+    double v;
+    if (is_a<constant>(e)) {
+        ex f = evalf(e);
+        if (!is_a<numeric>(f) || !ex_to<numeric>(f).is_real()) return std::nullopt;
+        v = ex_to<numeric>(f).to_double();
+    } else if (is_a<add>(e)) {
+        v = 0;
+        for (double xi : x) v += xi;
+    } else if (is_a<mul>(e)) {
+        v = 1;
+        for (double xi : x) v *= xi;
+    } else if (is_a<power>(e)) {
+        v = std::pow(x[0], x[1]);
+        if (x[0] == 0 && x[1] < 0) v = std::nan("");  // a pole, whatever the sign of zero
+    } else if (is_a<function>(e)) {
+        const unsigned serial = ex_to<function>(e).get_serial();
+        auto one = [&](double (*f)(double)) -> std::optional<double> {
+            if (x.size() != 1) return std::nullopt;
+            return f(x[0]);
+        };
+        std::optional<double> r;
+        if (serial == sin_SERIAL::serial) r = one(std::sin);
+        else if (serial == cos_SERIAL::serial) r = one(std::cos);
+        else if (serial == tan_SERIAL::serial) r = one(std::tan);
+        else if (serial == exp_SERIAL::serial) r = one(std::exp);
+        else if (serial == log_SERIAL::serial) r = x.size() == 1 && x[0] == 0 ? std::nan("") : one(std::log);
+        else if (serial == abs_SERIAL::serial) r = one(std::fabs);
+        else if (serial == asin_SERIAL::serial) r = one(std::asin);
+        else if (serial == acos_SERIAL::serial) r = one(std::acos);
+        else if (serial == atan_SERIAL::serial) r = one(std::atan);
+        else if (serial == sinh_SERIAL::serial) r = one(std::sinh);
+        else if (serial == cosh_SERIAL::serial) r = one(std::cosh);
+        else if (serial == tanh_SERIAL::serial) r = one(std::tanh);
+        else if (serial == atan2_SERIAL::serial && x.size() == 2) r = std::atan2(x[0], x[1]);
+        if (!r) return std::nullopt;
+        v = *r;
+    } else {
+        return std::nullopt;
+    }
+    memo.emplace(e, v);
+    return v;
+}
 
 }  // namespace
 
@@ -454,10 +534,27 @@ double SymbolTable::evaluate(const ex& e, const exmap& values) const {
                 stack.push_back(it->second.definition);
         }
     }
+    // the pole guard (see in_doubles): a value that is not finite in double arithmetic is
+    // reported here, without handing GiNaC a division by zero
+    DoubleValues at, memo;
+    for (const auto& [k, x] : m)
+        if (GiNaC::is_a<GiNaC::numeric>(x) && GiNaC::ex_to<GiNaC::numeric>(x).is_real())
+            at.emplace(k, GiNaC::ex_to<GiNaC::numeric>(x).to_double());
+    auto guard = [&](const ex& expression, const std::string& what) {
+        std::optional<double> x = in_doubles(expression, at, memo);
+        if (x && !std::isfinite(*x))
+            throw ArgumentError("SymbolTable::evaluate(): " + what +
+                                " is not a finite real number at these values (a division by "
+                                "zero, or a value outside a function's domain)");
+        return x;
+    };
     for (const ex& z : intermediates_) {
         if (!needed.count(z)) continue;
+        if (std::optional<double> x = guard(info_.at(z).definition, "'" + info_.at(z).name + "'"))
+            at.emplace(z, *x);
         m[z] = GiNaC::evalf(info_.at(z).definition.subs(m));
     }
+    guard(e, "the expression");
     ex v = GiNaC::evalf(e.subs(m));
     if (!GiNaC::is_a<GiNaC::numeric>(v) || !GiNaC::ex_to<GiNaC::numeric>(v).is_real()) {
         for (const ex& s : symbols_of(v)) {

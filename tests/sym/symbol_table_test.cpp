@@ -140,6 +140,24 @@ TEST(SymbolTable, EvaluateUsesConstantValuesAndIntermediates) {
     EXPECT_THROW_MSG(s.set_value(q, 1.0), ArgumentError, "is not a constant");
 }
 
+TEST(SymbolTable, EvaluateAtAPoleIsAnArgumentErrorNamingTheIntermediate) {
+    // 1/x at x = 0, log(0) and a square root of a negative number have no real value: the
+    // error says so (and GiNaC never sees the division by zero, which it cannot undo cleanly;
+    // the sanitizer pass checks there is no leak)
+    SymbolTable s;
+    TimeVariable q = s.add_variable("q");
+    ex L = s.add_constant("L", 2.0);
+    ex z = s.add_intermediate(L / q, "z");
+    EXPECT_THROW_MSG(s.evaluate(z + 1, {{q, 0.0}}), ArgumentError, "'z' is not a finite real");
+    EXPECT_THROW_MSG(s.evaluate(L / GiNaC::sin(ex(q)), {{q, 0.0}}), ArgumentError,
+                     "the expression is not a finite real number");
+    EXPECT_THROW_MSG(s.evaluate(GiNaC::log(ex(q)), {{q, 0.0}}), ArgumentError, "division by zero");
+    EXPECT_THROW_MSG(s.evaluate(sqrt(q - L), {{q, 1.0}}), ArgumentError, "not a finite real");
+    // near the pole, and where the walk meets a constant such as Pi, the value is as before
+    EXPECT_NEAR(s.evaluate(z, {{q, 1e-3}}), 2000.0, 1e-9);
+    EXPECT_NEAR(s.evaluate(GiNaC::Pi / q, {{q, 2.0}}), M_PI / 2, 1e-15);
+}
+
 TEST(SymbolTable, DerivativeOfAVelocityIntermediateKeepsTheAccelerationExplicit) {
     // z = L q' cos(q) is a velocity measure; z' = L q'' cos(q) - L q'^2 sin(q) must show q''
     // (equations are later solved for it) and hide only the rest
