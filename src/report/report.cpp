@@ -83,7 +83,15 @@ std::string default_three_dir() {
 
 std::string render_report_html(const ReportContent& content, const std::string& katex_dir,
                                const std::string& three_dir) {
-    const std::string json = render_report_json(content);
+    return report_detail::render_html(content, report_detail::typeset_equations(content),
+                                      katex_dir, three_dir);
+}
+
+std::string report_detail::render_html(const ReportContent& content,
+                                       const std::vector<std::string>& equations,
+                                       const std::string& katex_dir,
+                                       const std::string& three_dir) {
+    const std::string json = render_json(content, equations);
     const fs::path katex(katex_dir);
     const std::string katex_js = katex_dir.empty() ? "" : read_text(katex / "katex.min.js");
     const std::string katex_css = katex_dir.empty() ? "" : read_text(katex / "katex.min.css");
@@ -145,8 +153,11 @@ std::string write_report(const ReportContent& content, const std::string& dir) {
     const bool have_katex = fs::is_regular_file(fs::path(katex) / "katex.min.js", ec);
     const std::string three = default_three_dir();
     const bool have_three = fs::is_regular_file(fs::path(three) / "three.min.js", ec);
-    const std::string page =
-        render_report_html(content, have_katex ? katex : "", have_three ? three : "");
+    // the equations are typeset once, for the page and roadmap.tex
+    const std::vector<std::string> equations = report_detail::typeset_equations(content);
+    const std::string page = report_detail::render_html(content, equations,
+                                                        have_katex ? katex : "",
+                                                        have_three ? three : "");
     // KaTeX's stylesheet names its fonts relative to the page: fonts/KaTeX_*.woff2
     if (have_katex) {
         fs::create_directories(out / "fonts", ec);
@@ -156,7 +167,8 @@ std::string write_report(const ReportContent& content, const std::string& dir) {
                              "write_report()");
         }
     }
-    write_atomically(out / "roadmap.tex", render_report_latex(content), "write_report()");
+    write_atomically(out / "roadmap.tex", report_detail::render_latex(content, equations),
+                     "write_report()");
     const fs::path index = out / "index.html";
     write_atomically(index, page, "write_report()");
     return index.string();

@@ -421,7 +421,8 @@ std::string matrices_json(const System& sys, const LinearSystem& m) {
         .done();
 }
 
-std::string row_json(const System& sys, const Evaluation& ev, const RoadmapRow& r) {
+std::string row_json(const System& sys, const Evaluation& ev, const RoadmapRow& r,
+                     const std::string& equation) {
     std::vector<std::string> extra, names;
     for (const ex& x : r.additional_unknowns) extra.push_back(to_string(x));
     for (const Body* b : r.system) names.push_back(b->name());
@@ -433,7 +434,7 @@ std::string row_json(const System& sys, const Evaluation& ev, const RoadmapRow& 
           str(r.motion == Motion::constraint ? "" : direction_words(sys, r.direction)));
     o.add("system", str_arr(names)).add("fbd", str_arr(r.fbd));
     o.add("about", str(r.about ? r.about->name() : "")).add("constraint", str(r.constraint));
-    o.add("equation", str(equation_tex(readable_equation(sys, r.equation), r.variable)));
+    o.add("equation", str(equation));
     o.add("intermediates", str_arr(intermediate_definitions(sys, r.equation)));
     o.add("additional_unknowns", str_arr(extra)).add("note", str(r.note));
     o.add("diagram", r.motion == Motion::constraint ? "null" : diagram_json(sys, ev, r));
@@ -741,7 +742,21 @@ std::string tikz_diagram(const System& sys, const Evaluation& ev,
 
 }  // namespace
 
+std::vector<std::string> report_detail::typeset_equations(const ReportContent& c) {
+    std::vector<std::string> out;
+    if (!c.system) return out;
+    out.reserve(c.rows.size());
+    for (const RoadmapRow& r : c.rows)
+        out.push_back(equation_tex(readable_equation(*c.system, r.equation), r.variable));
+    return out;
+}
+
 std::string render_report_latex(const ReportContent& c) {
+    return report_detail::render_latex(c, report_detail::typeset_equations(c));
+}
+
+std::string report_detail::render_latex(const ReportContent& c,
+                                        const std::vector<std::string>& equations) {
     if (!c.system)
         throw ArgumentError(
             "render_report_latex(): the report has no model; build one (newtonian N, ...) before "
@@ -784,9 +799,9 @@ std::string render_report_latex(const ReportContent& c) {
              "\\end{center}\n\n";
     }
     t += "\\subsection*{Equations}\n";
-    for (const RoadmapRow& r : c.rows) {
-        t += "\\[ E_{" + to_latex(r.variable) + "}: \\quad " +
-             equation_tex(readable_equation(sys, r.equation), r.variable) + " \\]\n";
+    for (std::size_t i = 0; i < c.rows.size(); ++i) {
+        const RoadmapRow& r = c.rows[i];
+        t += "\\[ E_{" + to_latex(r.variable) + "}: \\quad " + equations.at(i) + " \\]\n";
         std::vector<std::string> defs = intermediate_definitions(sys, r.equation);
         if (!defs.empty()) {
             t += "where\n";
@@ -881,6 +896,11 @@ std::string checks_json(const ReportContent& c) {
 }  // namespace
 
 std::string render_report_json(const ReportContent& c) {
+    return report_detail::render_json(c, report_detail::typeset_equations(c));
+}
+
+std::string report_detail::render_json(const ReportContent& c,
+                                       const std::vector<std::string>& equations) {
     if (!c.system)
         throw ArgumentError(
             "render_report_json(): the report has no model; build one (newtonian N, ...) before "
@@ -891,7 +911,8 @@ std::string render_report_json(const ReportContent& c) {
     bool planar = true;
     std::string geometry = geometry_json(sys, ev, placed, &planar);
     std::vector<std::string> rows, histories, config;
-    for (const RoadmapRow& r : c.rows) rows.push_back(row_json(sys, ev, r));
+    for (std::size_t i = 0; i < c.rows.size(); ++i)
+        rows.push_back(row_json(sys, ev, c.rows[i], equations.at(i)));
     if (c.plot_histories)
         for (const ReportHistory& h : c.histories) {
             std::string one = history_json(c, h);
