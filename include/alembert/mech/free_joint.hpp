@@ -11,8 +11,9 @@ namespace alembert {
 /// A free (6-dof) joint of a body to the Newtonian frame N, singularity-free: the origin B_o at
 /// x Nx> + y Ny> + z Nz> from N_o with speeds x', y', z', and the orientation by Euler
 /// parameters (a unit quaternion e0 + e1 i + e2 j + e3 k) with the body-frame angular velocity
-/// ^N w^B = w1 Bx> + w2 By> + w3 Bz> as speeds (Kane, Likins & Levinson 1983, sec. 1.3;
-/// Featherstone 2008, sec. 4.6). Why these: every orientation has Euler parameters and the
+/// ^N w^B = w1 Bx> + w2 By> + w3 Bz> as speeds (Euler parameters: Kane, Likins & Levinson,
+/// Spacecraft Dynamics, 1983, ch. 1; the same free joint in Featherstone, Rigid Body Dynamics
+/// Algorithms, 2008, ch. 4, and MuJoCo's free joint). Why these: every orientation has Euler parameters and the
 /// map is smooth everywhere (three angles have a gimbal lock, at which the recursion's partial
 /// motions lose rank), and with body-frame speeds the partial angular velocities are the
 /// body's axes, constant in B: for a lone body the angular rows are Euler's equations with no
