@@ -16,6 +16,7 @@
 #include "alembert/vec/vector.hpp"
 #include "alembert/mech/body.hpp"
 #include "alembert/mech/constraint.hpp"
+#include "alembert/mech/free_joint.hpp"
 #include "alembert/mech/inertia.hpp"
 #include "alembert/mech/load.hpp"
 #include "alembert/mech/particle.hpp"
