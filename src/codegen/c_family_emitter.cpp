@@ -85,8 +85,8 @@ void print_body(std::ostream& os, const CodePlan& plan, const CodeFunction& f, c
     std::vector<std::size_t> lengths;
     std::size_t offset = 1;
     for (std::size_t a = 0; a < f.arrays.size(); ++a) {
-        // q, qp, qpp have one entry per coordinate, u one per load
-        std::size_t len = f.arrays[a] == "u" ? plan.load_count : plan.coordinate_count;
+        // q, qp, qpp have one entry per coordinate, u one per load, ur, urp one per speed
+        std::size_t len = plan.array_length(f.arrays[a]);
         lengths.push_back(len);
         bool any = false;
         for (std::size_t k = 0; k < len; ++k) any = any || read[offset + k];
@@ -238,7 +238,52 @@ std::string solvers(const CodePlan& plan, const Dialect& d) {
 }
 
 // the declarations of the header (C: prototypes; C++: the class's members)
+// the declarations of equations in generalized speeds, state (q, ur)
+std::string speed_declarations(const CodePlan& plan, const Dialect& d) {
+    std::ostringstream os;
+    const std::string ind = d.cpp ? "    " : "";
+    const std::string ctx = d.cpp ? "" : "const " + d.name + "_context* c, ";
+    const std::string cnst = d.cpp ? " const" : "";
+    const std::string solve = plan.symmetric_mass_matrix ? "Cholesky" : "LU with partial pivoting";
+    const std::string fail = d.cpp ? "false" : "-1";
+    os << ind << "/* Mass matrix M (nur x nur, row by row) and forcing f of M urp = f, ur the\n"
+       << ind << "   independent speeds. */\n"
+       << ind << "void " << d.function("mass_forcing") << "(" << ctx << arguments(plan.mass_forcing)
+       << ")" << cnst << ";\n"
+       << ind << "/* The coordinate rates qp = k(q, ur): the kinematic differential equations,\n"
+       << ind << "   the dependent speeds replaced. */\n"
+       << ind << "void " << d.function("kinematics") << "(" << ctx << arguments(plan.kinematics)
+       << ")" << cnst << ";\n";
+    if (!plan.dependent_speed_function.empty())
+        os << ind << "/* The dependent speeds us (" << detail::names_of(plan.dependent_speeds)
+           << ") from the motion constraints. */\n"
+           << ind << "void " << d.function("dependent_speeds") << "(" << ctx
+           << arguments(plan.dependent_speed_function) << ")" << cnst << ";\n";
+    os << ind << "/* Forward dynamics: the rates urp = M^-1 f of the independent speeds (" << solve
+       << ");\n"
+       << ind << "   returns " << fail << " if M is singular. */\n"
+       << ind << (d.cpp ? "bool " : "int ") << d.function("forward_dynamics") << "(" << ctx
+       << "double t, const double* q, const double* ur, const double* u, double* urp)" << cnst
+       << ";\n";
+    if (!plan.output_function.empty())
+        os << ind << "/* The requested outputs y. */\n"
+           << ind << "void " << d.function("outputs") << "(" << ctx
+           << arguments(plan.output_function) << ")" << cnst << ";\n";
+    if (!plan.load_laws.empty())
+        os << ind << "/* The loads u during a simulation, from t, q and ur. */\n"
+           << ind << "void " << d.function("load_laws") << "(" << ctx
+           << arguments(plan.load_laws) << ")" << cnst << ";\n";
+    os << ind << "/* Right-hand side of x' = (qp, urp) for x = (q, ur), loads from load_laws (the\n"
+       << ind << "   motion constraints hold at every state: no stabilisation); returns " << fail
+       << "\n"
+       << ind << "   if M is singular. */\n"
+       << ind << (d.cpp ? "bool " : "int ") << d.function("rhs") << "(" << ctx
+       << "double t, const double* x, double* dx)" << cnst << ";\n";
+    return os.str();
+}
+
 std::string declarations(const CodePlan& plan, const Dialect& d) {
+    if (plan.speed_form) return speed_declarations(plan, d);
     std::ostringstream os;
     const std::string ind = d.cpp ? "    " : "";
     const std::string ctx = d.cpp ? "" : "const " + d.name + "_context* c, ";
@@ -315,6 +360,29 @@ std::string forward_and_rhs(const CodePlan& plan, const Dialect& d) {
     const std::string solver = (d.cpp ? "" : d.name + "_") +
                                std::string(plan.symmetric_mass_matrix ? "cholesky_solve" : "lu_solve");
     const std::size_t nc = plan.constraint_count();
+    if (plan.speed_form) {
+        // x = (q, ur): q' from the kinematic equations, ur' = M^-1 f
+        const std::string nur = d.size("nur");
+        os << (d.cpp ? "bool " : "int ") << owner << d.function("forward_dynamics") << "(" << ctx
+           << "double t, const double* q, const double* ur, const double* u, double* urp)" << cnst
+           << " {\n"
+           << "    double M[" << nur << " * " << nur << "], f[" << nur << "];\n"
+           << "    " << d.function("mass_forcing") << "(" << c_arg << "t, q, ur, u, M, f);\n"
+           << "    return " << solver << "(" << nur << ", M, f, urp)" << (d.cpp ? " == 0" : "")
+           << ";\n}\n\n"
+           << (d.cpp ? "bool " : "int ") << owner << d.function("rhs") << "(" << ctx
+           << "double t, const double* x, double* dx)" << cnst << " {\n";
+        std::string u = d.null();
+        if (plan.load_count > 0) {
+            os << "    double u[" << nu << "];\n"
+               << "    " << d.function("load_laws") << "(" << c_arg << "t, x, x + " << nq << ", u);\n";
+            u = "u";
+        }
+        os << "    " << d.function("kinematics") << "(" << c_arg << "t, x, x + " << nq << ", dx);\n"
+           << "    return " << d.function("forward_dynamics") << "(" << c_arg << "t, x, x + " << nq
+           << ", " << u << ", dx + " << nq << ");\n}\n";
+        return os.str();
+    }
     if (nc > 0) {
         // A x = b in x = (qpp, lambda); k = nq + nc unknowns
         const std::string k = "(" + nq + " + " + d.size("nc") + ")";
@@ -421,15 +489,17 @@ std::string main_program(const CodePlan& plan, const Dialect& d, const CodePrint
     const std::string model_arg = d.cpp ? "const " + d.name + "::Model& model" : "const " + d.name + "_context* c";
     const std::string call_ctx = d.cpp ? "" : "c, ";
     const std::string nx = d.cpp ? "nx" : "NX";
+    // the velocity part of the state: q' (nq of them) or the independent speeds
+    const std::string nv = plan.speed_form ? d.size("nur") : nq;
     std::ostringstream os;
     os << "\n";
     if (d.cpp)
         os << "#include <algorithm>\n#include <cmath>\n#include <cstdio>\n#include <cstdlib>\n"
               "#include <cstring>\n\n#include \"" << d.name << ".hpp\"\n\nnamespace {\n\n"
-           << "using namespace " << d.name << ";\nconstexpr int nx = 2 * nq;\n";
+           << "using namespace " << d.name << ";\nconstexpr int nx = nq + " << nv << ";\n";
     else
         os << "#include <math.h>\n#include <stdio.h>\n#include <stdlib.h>\n#include <string.h>\n\n"
-              "#include \"" << d.name << ".h\"\n\n#define NX (2 * " << nq << ")\n";
+              "#include \"" << d.name << ".h\"\n\n#define NX (" << nq << " + " << nv << ")\n";
     const std::string st = d.cpp ? "" : "static ";
     const std::string fabs = d.math("fabs"), sqrt = d.math("sqrt"), pow = d.math("pow");
     os << "\n/* The simulation: final time, output step and error tolerances. */\n"
@@ -437,7 +507,7 @@ std::string main_program(const CodePlan& plan, const Dialect& d, const CodePrint
        << st << "const double output_step = " << pr.number(sim.output_step) << ";\n"
        << st << "const double abs_tol = " << pr.number(sim.absolute_tolerance) << ";\n"
        << st << "const double rel_tol = " << pr.number(sim.relative_tolerance) << ";\n"
-       << "/* Initial values: q, then qp. */\n"
+       << "/* Initial values: q, then " << (plan.speed_form ? "ur" : "qp") << ". */\n"
        << st << "const double x0[" << nx << "] = {" << list(sim.initial_q, pr)
        << ", " << list(sim.initial_qp, pr) << "};\n\n";
     os << R"(/* One Dormand-Prince 5(4) step of size h from (t, x) with k1 = f(t, x): the fifth-order
@@ -483,7 +553,7 @@ std::string main_program(const CodePlan& plan, const Dialect& d, const CodePrint
 
 /* One CSV row: t, q, qp, the loads and the outputs at (t, x). */
 )" << st << "int write_row(FILE* out, " << model_arg << ", double t, const double* x) {\n";
-    os << "    double u[" << (plan.load_count ? nu : std::string("1")) << "], qpp[" << nq
+    os << "    double u[" << (plan.load_count ? nu : std::string("1")) << "], qpp[" << nv
        << "], y[" << (plan.outputs.empty() ? std::string("1") : ny) << "];\n"
        << "    int i;\n";
     if (plan.load_count)
@@ -617,7 +687,13 @@ std::vector<GeneratedFile> emit_c_family(const CodePlan& plan, const Dialect& d,
           << "constexpr int nq = " << plan.coordinate_count << ";  // coordinates: "
           << names_of(plan.q) << "\n"
           << "constexpr int nu = " << plan.load_count << ";  // loads: " << names_of(plan.loads)
-          << "\n"
+          << "\n";
+        if (plan.speed_form)
+            h << "constexpr int nur = " << plan.qp.size() << ";  // independent speeds: "
+              << names_of(plan.qp) << "\n"
+              << "constexpr int nus = " << plan.dependent_speeds.size() << ";  // dependent speeds: "
+              << names_of(plan.dependent_speeds) << "\n";
+        h
           << "constexpr int ny = " << plan.outputs.size() << ";  // outputs: "
           << names_of(plan.outputs) << "\n\n"
           << "// The model's constants, changeable without generating the code again.\n"
@@ -648,6 +724,11 @@ std::vector<GeneratedFile> emit_c_family(const CodePlan& plan, const Dialect& d,
           << names_of(plan.loads) << " */\n"
           << "#define " << d.size("ny") << " " << plan.outputs.size() << " /* outputs: "
           << names_of(plan.outputs) << " */\n";
+        if (plan.speed_form)
+            h << "#define " << d.size("nur") << " " << plan.qp.size() << " /* independent speeds: "
+              << names_of(plan.qp) << " */\n"
+              << "#define " << d.size("nus") << " " << plan.dependent_speeds.size()
+              << " /* dependent speeds: " << names_of(plan.dependent_speeds) << " */\n";
         if (plan.constraint_count() > 0)
             h << "#define " << d.size("nc") << " " << plan.constraint_count()
               << " /* constraints: " << constraint_list(plan) << "; their forces: "
