@@ -560,7 +560,7 @@ std::string main_program(const CodePlan& plan, const Dialect& d, const CodePrint
         os << "    " << (d.cpp ? "model." : d.name + "_") << "load_laws(" << call_ctx
            << "t, x, x + " << nq << ", u);\n";
     else
-        os << "    u[0] = 0.0;\n";
+        os << "    u[0] = 0.0;\n    (void)u;\n";
     os << "    if (!" << (d.cpp ? std::string("(model.forward_dynamics(") : "(" + d.name + "_forward_dynamics(")
        << call_ctx << "t, x, x + " << nq << ", " << (plan.load_count ? "u" : d.null())
        << ", qpp)" << (d.cpp ? "" : " == 0") << ")) return 0;\n";
@@ -568,7 +568,7 @@ std::string main_program(const CodePlan& plan, const Dialect& d, const CodePrint
         os << "    " << (d.cpp ? "model." : d.name + "_") << "outputs(" << call_ctx << "t, x, x + "
            << nq << ", qpp, u, y);\n";
     else
-        os << "    y[0] = 0.0;\n";
+        os << "    y[0] = 0.0;\n    (void)y;\n";
     os << "    fprintf(out, \"%.17g\", t);\n"
        << "    for (i = 0; i < NX; ++i) fprintf(out, \",%.17g\", x[i]);\n";
     if (plan.load_count) os << "    for (i = 0; i < " << nu << "; ++i) fprintf(out, \",%.17g\", u[i]);\n";
