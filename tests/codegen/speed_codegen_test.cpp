@@ -113,6 +113,40 @@ int main(void) {
                        "NAME", name);
 }
 
+// the same driver in C++ on NAME.hpp
+std::string speed_cpp_driver(const std::string& name) {
+    return replace_all(R"(#include <cstdio>
+#include <iostream>
+#include "NAME.hpp"
+using namespace NAME;
+static bool read(double* x, int n) {
+    for (int i = 0; i < n; ++i)
+        if (!(std::cin >> x[i])) return false;
+    return true;
+}
+static void print(const double* x, int n) {
+    for (int i = 0; i < n; ++i) std::printf("%.17g\n", x[i]);
+}
+int main() {
+    const Model model;
+    int count = 0;
+    if (!(std::cin >> count)) return 1;
+    for (int k = 0; k < count; ++k) {
+        double t, q[nq], ur[nur], u[nu + 1], urp[nur], qp[nq], us[nus + 1];
+        if (!read(&t, 1) || !read(q, nq) || !read(ur, nur) || !read(u, nu)) return 1;
+        if (!model.forward_dynamics(t, q, ur, u, urp)) return 2;
+        model.kinematics(t, q, ur, qp);
+        if (nus > 0) model.dependent_speeds(t, q, ur, us);
+        print(urp, nur);
+        print(qp, nq);
+        print(us, nus);
+    }
+    return 0;
+}
+)",
+                       "NAME", name);
+}
+
 // reads states x = (q, ur) and prints the right-hand side x' per state
 std::string rhs_driver(const std::string& name) {
     return replace_all(R"(#include <stdio.h>
@@ -174,15 +208,26 @@ struct Agreement {
 // are checked with the generated q'.
 Agreement agreement(const SampleNonholonomicModel& m, const KaneEquations& K,
                     const std::vector<ex>& loads, const std::string& name, int count,
-                    double angle_range, double speed_range) {
+                    double angle_range, double speed_range, Language language = Language::c) {
     const SymbolTable& st = m.system.symbols();
-    ScratchDir dir("speeds-" + name);
+    ScratchDir dir("speeds-" + name + "-" + to_string(language));
     CodegenOptions o;
     o.name = name;
-    GeneratedCode g = generate_code(st, K, loads, Language::c, dir.path(), o);
+    GeneratedCode g = generate_code(st, K, loads, language, dir.path(), o);
     EXPECT_EQ(g.files.size(), 2u);
     Agreement a;
-    if (!build(dir.path(), name, speed_driver(name), "driver")) return {1, 0, 1};
+    if (language == Language::cpp) {
+        write(dir.path() / "driver.cpp", speed_cpp_driver(name));
+        std::string out;
+        int status = run("c++ -std=c++17 -O1 -Wall -Wextra -Werror -o " + (dir.path() / "driver").string() +
+                             " " + (dir.path() / "driver.cpp").string() + " " +
+                             (dir.path() / (name + ".cpp")).string() + " -I" + dir.path().string(),
+                         out);
+        EXPECT_EQ(status, 0) << out;
+        if (status != 0) return {1, 0, 1};
+    } else if (!build(dir.path(), name, speed_driver(name), "driver")) {
+        return {1, 0, 1};
+    }
     const std::size_t n = K.coordinates.size(), nr = K.independent_speeds.size(),
                       ns = K.dependent_speeds.size();
     std::mt19937 rng(23);
@@ -265,6 +310,17 @@ TEST(SpeedCodegen, RollingDiskAgreesWithAlembertsEvaluation) {
 // normal and friction forces act there), so KE + PE stays constant; the contact point's
 // velocity, evaluated by Alembert from D's full velocity with the q' of the generated
 // kinematics, stays zero.
+TEST(SpeedCodegen, RollingDiskInCppAgreesWithAlembertsEvaluation) {
+    SampleNonholonomicModel m = rolling_disk_in_speeds();
+    KaneEquations K = kane_of(m, true);
+    Agreement a = agreement(m, K, {m.system.symbols().symbol("T")}, "rolling_disk", 20, 1.5, 3,
+                            Language::cpp);
+    record("max_relative_difference", a.worst);
+    EXPECT_LT(a.worst, 1e-12);
+    EXPECT_GT(a.largest, 1.0);
+    EXPECT_LT(a.constraint, 1e-13);
+}
+
 TEST(SpeedCodegen, RollingDiskSimulationKeepsEnergyAndRolling) {
     SampleNonholonomicModel m = rolling_disk_in_speeds();
     KaneEquations K = kane_of(m, true);
