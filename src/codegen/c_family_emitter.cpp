@@ -305,12 +305,12 @@ std::string declarations(const CodePlan& plan, const Dialect& d) {
            << ind << "void " << d.function("constraint_drift") << "(" << ctx
            << arguments(plan.constraint_drift) << ")" << cnst << ";\n"
            << ind << "/* The accelerations qpp and the constraint forces lambda from A x = b (LU with\n"
-           << ind << "   partial pivoting); returns -1 if A is singular. */\n"
-           << ind << "int " << d.function("constrained_dynamics") << "(" << ctx
+           << ind << "   partial pivoting); returns " << (d.cpp ? "false" : "-1") << " if A is singular. */\n"
+           << ind << (d.cpp ? "bool " : "int ") << d.function("constrained_dynamics") << "(" << ctx
            << "double t, const double* q, const double* qp, const double* u, double* qpp, "
               "double* lambda)" << cnst << ";\n"
            << ind << "/* Forward dynamics: the accelerations qpp (constrained_dynamics);\n"
-           << ind << "   returns -1 if A is singular. */\n";
+           << ind << "   returns " << (d.cpp ? "false" : "-1") << " if A is singular. */\n";
     else if (!plan.accelerations.empty())
         os << "/* The accelerations qpp from the loads u by the articulated-body recursion (no\n"
            << ind << "   mass matrix, no solve). */\n"
@@ -340,7 +340,7 @@ std::string declarations(const CodePlan& plan, const Dialect& d) {
         os << ind << "/* Right-hand side of x' = (qp, qpp) for x = (q, qp), loads from load_laws,\n"
            << ind << "   the constraints stabilised by Baumgarte's method at the rate a =\n"
            << ind << "   " << d.size("stabilization") << ": c'' + 2 a c' + a^2 c = 0, g' + a g = 0;\n"
-           << ind << "   returns -1 if A is singular. */\n";
+           << ind << "   returns " << (d.cpp ? "false" : "-1") << " if A is singular. */\n";
     else
         os << ind << "/* Right-hand side of x' = (qp, qpp) for x = (q, qp), loads from load_laws;\n"
            << ind << "   returns " << (d.cpp ? "false" : "-1") << " if M is singular. */\n";
@@ -386,23 +386,25 @@ std::string forward_and_rhs(const CodePlan& plan, const Dialect& d) {
     if (nc > 0) {
         // A x = b in x = (qpp, lambda); k = nq + nc unknowns
         const std::string k = "(" + nq + " + " + d.size("nc") + ")";
-        os << "int " << owner << d.function("constrained_dynamics") << "(" << ctx
+        const std::string type = d.cpp ? "bool " : "int ", ok = d.cpp ? "true" : "0",
+                          fail = d.cpp ? "false" : "-1";
+        os << type << owner << d.function("constrained_dynamics") << "(" << ctx
            << "double t, const double* q, const double* qp, const double* u, double* qpp, "
               "double* lambda)" << cnst << " {\n"
            << "    double A[" << k << " * " << k << "], b[" << k << "], x[" << k << "];\n"
            << "    int i;\n"
            << "    " << d.function("mass_forcing") << "(" << c_arg << "t, q, qp, u, A, b);\n"
-           << "    if (" << solver << "(" << k << ", A, b, x) != 0) return -1;\n"
+           << "    if (" << solver << "(" << k << ", A, b, x) != 0) return " << fail << ";\n"
            << "    for (i = 0; i < " << nq << "; ++i) qpp[i] = x[i];\n"
            << "    for (i = 0; i < " << d.size("nc") << "; ++i) lambda[i] = x[" << nq << " + i];\n"
-           << "    return 0;\n}\n\n"
-           << "int " << owner << d.function("forward_dynamics") << "(" << ctx
+           << "    return " << ok << ";\n}\n\n"
+           << type << owner << d.function("forward_dynamics") << "(" << ctx
            << "double t, const double* q, const double* qp, const double* u, double* qpp)" << cnst
            << " {\n"
            << "    double lambda[" << d.size("nc") << "];\n"
            << "    return " << d.function("constrained_dynamics") << "(" << c_arg
            << "t, q, qp, u, qpp, lambda);\n}\n\n"
-           << "int " << owner << d.function("rhs") << "(" << ctx
+           << type << owner << d.function("rhs") << "(" << ctx
            << "double t, const double* x, double* dx)" << cnst << " {\n"
            << "    const double a = " << d.size("stabilization") << ";\n"
            << "    double A[" << k << " * " << k << "], b[" << k << "], y[" << k << "], e[2 * "
@@ -425,12 +427,12 @@ std::string forward_and_rhs(const CodePlan& plan, const Dialect& d) {
             else
                 os << "    b[" << nq << " + " << i << "] += a * e[" << 2 * i + 1 << "]; /* "
                    << plan.constraint_names[i] << " */\n";
-        os << "    if (" << solver << "(" << k << ", A, b, y) != 0) return -1;\n"
+        os << "    if (" << solver << "(" << k << ", A, b, y) != 0) return " << fail << ";\n"
            << "    for (i = 0; i < " << nq << "; ++i) {\n"
            << "        dx[i] = x[" << nq << " + i];\n"
            << "        dx[" << nq << " + i] = y[i];\n"
            << "    }\n"
-           << "    return 0;\n}\n";
+           << "    return " << ok << ";\n}\n";
         return os.str();
     }
     os << (d.cpp ? "bool " : "int ") << owner << d.function("forward_dynamics") << "(" << ctx
@@ -688,6 +690,18 @@ std::vector<GeneratedFile> emit_c_family(const CodePlan& plan, const Dialect& d,
           << names_of(plan.q) << "\n"
           << "constexpr int nu = " << plan.load_count << ";  // loads: " << names_of(plan.loads)
           << "\n";
+        if (plan.constraint_count() > 0) {
+            std::string macro = d.name + "_STABILIZATION";
+            std::transform(macro.begin(), macro.end(), macro.begin(), ::toupper);
+            h << "constexpr int nc = " << plan.constraint_count() << ";  // constraints: "
+              << constraint_list(plan) << "; their forces: " << names_of(plan.constraint_forces)
+              << "\n"
+              << "// The rate [1/s] at which the simulation's right-hand side damps the\n"
+              << "// constraints' drift (Baumgarte); define " << macro << " before including to\n"
+              << "// change it.\n"
+              << "#ifndef " << macro << "\n#define " << macro << " 10.0\n#endif\n"
+              << "constexpr double stabilization = " << macro << ";\n";
+        }
         if (plan.speed_form)
             h << "constexpr int nur = " << plan.qp.size() << ";  // independent speeds: "
               << names_of(plan.qp) << "\n"

@@ -74,10 +74,10 @@ GeneratedCode generate_code(const SymbolTable& table, const DynamicsEquations& e
                             Language language, const std::filesystem::path& out_dir,
                             const CodegenOptions& options) {
     // the directory first: a bad path fails before any work
-    if (!equations.constraints.empty() && language != Language::c)
+    if (!equations.constraints.empty() && language != Language::c && language != Language::cpp)
         throw ArgumentError(std::string("generate_code(): code for models with constraints is "
-                                        "generated in C only, not in ") +
-                            to_string(language) + "; choose the language c");
+                                        "generated in C and C++ only, not in ") +
+                            to_string(language) + "; choose the language c or cpp");
     detail::ensure_directory(out_dir, "generate_code()");
     return write_code(plan_code(table, equations, options), language, out_dir);
 }

@@ -90,7 +90,7 @@ struct DynamicsEquations {
     /// loop's pin force, a contact's friction force), one per constraint, which appear in the
     /// residuals. With constraints the unknowns are x = (q'', constraint forces): the residuals
     /// and the constraints at the acceleration level form a square system A x = b, linear in
-    /// x, solved per call by LU with partial pivoting (C only; `mass_forcing`, `accelerations`
+    /// x, solved per call by LU with partial pivoting (C and C++ only; `mass_forcing`, `accelerations`
     /// and inverse dynamics are not used).
     std::vector<CodegenConstraint> constraints{};
     std::vector<ex> constraint_forces{};
