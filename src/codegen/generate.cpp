@@ -74,10 +74,10 @@ GeneratedCode generate_code(const SymbolTable& table, const DynamicsEquations& e
                             Language language, const std::filesystem::path& out_dir,
                             const CodegenOptions& options) {
     // the directory first: a bad path fails before any work
-    if (!equations.constraints.empty() && language != Language::c && language != Language::cpp)
+    if (!equations.constraints.empty() && language == Language::matlab)
         throw ArgumentError(std::string("generate_code(): code for models with constraints is "
-                                        "generated in C and C++ only, not in ") +
-                            to_string(language) + "; choose the language c or cpp");
+                                        "generated in C, C++ and Python only, not in ") +
+                            to_string(language) + "; choose the language c, cpp or python");
     detail::ensure_directory(out_dir, "generate_code()");
     return write_code(plan_code(table, equations, options), language, out_dir);
 }
@@ -85,10 +85,10 @@ GeneratedCode generate_code(const SymbolTable& table, const DynamicsEquations& e
 GeneratedCode generate_code(const SymbolTable& table, const KaneEquations& kane,
                             const std::vector<ex>& loads, Language language,
                             const std::filesystem::path& out_dir, const CodegenOptions& options) {
-    if (language != Language::c && language != Language::cpp)
+    if (language == Language::matlab)
         throw ArgumentError(std::string("generate_code(): code for equations in generalized "
-                                        "speeds is generated in C and C++ only, not in ") +
-                            to_string(language) + "; choose the language c or cpp");
+                                        "speeds is generated in C, C++ and Python only, not in ") +
+                            to_string(language) + "; choose the language c, cpp or python");
     detail::ensure_directory(out_dir, "generate_code()");
     return write_code(plan_speed_code(table, kane, loads, options), language, out_dir);
 }

@@ -656,10 +656,10 @@ void Interpreter::Impl::run_codegen(const CodegenRequest& r, Location where) {
     // constraint forces, solved for with the accelerations
     std::vector<ex> constraint_forces;
     if (!speeds && !sys.constraints().empty()) {
-        if (language != Language::c && language != Language::cpp)
+        if (language == Language::matlab)
             throw ScriptError(r.language.location,
-                              "code for models with constraints is generated in C and C++ only",
-                              "write codegen c (or cpp)");
+                              "code for models with constraints is generated in C, C++ and Python only",
+                              "write codegen c (or cpp, python)");
         std::vector<ex> given;
         for (const ex& u : table.symbols(SymbolKind::unknown)) {
             bool listed = r.loads.empty() ? numbers.inputs.count(u) != 0

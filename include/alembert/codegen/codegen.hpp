@@ -90,7 +90,7 @@ struct DynamicsEquations {
     /// loop's pin force, a contact's friction force), one per constraint, which appear in the
     /// residuals. With constraints the unknowns are x = (q'', constraint forces): the residuals
     /// and the constraints at the acceleration level form a square system A x = b, linear in
-    /// x, solved per call by LU with partial pivoting (C and C++ only; `mass_forcing`, `accelerations`
+    /// x, solved per call by LU with partial pivoting (C, C++ and Python; `mass_forcing`, `accelerations`
     /// and inverse dynamics are not used).
     std::vector<CodegenConstraint> constraints{};
     std::vector<ex> constraint_forces{};
@@ -202,9 +202,9 @@ GeneratedCode generate_code(const SymbolTable& table, const DynamicsEquations& e
 /// constraint (the bicycle's front contact height) drifts only by the integration error.
 /// `loads` are the load measures the equations hold (inputs); outputs and load laws may hold
 /// t, q, q', u_r, u_r', the dependent speeds and their rates, the loads and the constants
-/// (q' and the dependent speeds are replaced by their expressions). In C and C++ only.
+/// (q' and the dependent speeds are replaced by their expressions). In C, C++ and Python.
 /// @throws alembert::ArgumentError as generate_code above, and if `kane` has no chosen speeds,
-///         the language is MATLAB/Octave or Python, or the counts do not fit;
+///         the language is MATLAB/Octave, or the counts do not fit;
 ///         alembert::SolveError never (nothing is solved symbolically).
 GeneratedCode generate_code(const SymbolTable& table, const KaneEquations& kane,
                             const std::vector<ex>& loads, Language language,
