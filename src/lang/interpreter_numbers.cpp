@@ -752,7 +752,7 @@ void Interpreter::Impl::run_codegen(const CodegenRequest& r, Location where) {
         out << "\n  equations in generalized speeds, state (q, " << to_string(speeds->independent_speeds.front())
             << ", ...): kinematics, " << speeds->dependent_speeds.size() << " dependent speeds from the motion "
                "constraints, mass matrix and forcing (" << (g.symmetric_mass_matrix ? "Cholesky" : "LU")
-            << " solve for the speeds' rates); no inverse dynamics";
+            << " solve for the speeds' rates)";
     else if (g.constraint_count)
         out << "\n  " << g.constraint_count << " constraints: the equations and the constraints solved for the "
                "accelerations and " << g.constraint_count << " constraint forces (LU), Baumgarte's stabilisation "
@@ -764,8 +764,8 @@ void Interpreter::Impl::run_codegen(const CodegenRequest& r, Location where) {
         out << "\n  mass matrix and forcing (" << (g.symmetric_mass_matrix ? "Cholesky" : "LU")
             << " solve for the accelerations)";
     if (g.inverse_dynamics) out << ", inverse dynamics";
-    else if (speeds) {
-    } else if (g.constraint_count) out << "; no inverse dynamics (a constrained model)";
+    else if (g.constraint_count) out << "; no inverse dynamics (a constrained model)";
+    else if (speeds) out << "; no inverse dynamics (equations in generalized speeds)";
     else out << "; no inverse dynamics (" << loads.size() << " loads for " << q.size() << " coordinates)";
     if (!opts.outputs.empty()) out << ", " << opts.outputs.size() << " outputs";
     out << ", a simulation program";
