@@ -95,6 +95,14 @@ struct InverseRequest {
     std::vector<Word> plotted{};  ///< `plot` names; `plot none` is the single word none
 };
 
+/// A model marker declared by `marker NAME on B at P`: its name in marker files, its body and
+/// point.
+struct ScriptMarker {
+    Word name{};
+    std::string body{};
+    std::string point{};
+};
+
 /// Code generation: from a `codegen` statement or `alembert codegen`.
 struct CodegenRequest {
     Word language{};
@@ -133,6 +141,7 @@ struct Interpreter::Impl {
     std::vector<ReportHistory> histories{};
     bool allow_outside_output = false;  ///< `to` may leave output_dir (--allow-outside-out)
     std::size_t max_terms = kDefaultMaxTerms;  ///< largest expansion expand/simplify may form
+    std::vector<ScriptMarker> markers{};  ///< `marker` statements, in order
 
     // ---- statements ------------------------------------------------------------------------
     /// Runs one parsed statement: its StatementSpec::run from the registry (statements.hpp),
@@ -159,6 +168,11 @@ struct Interpreter::Impl {
     void codegen(const Statement& s);
     void run_inverse(const InverseRequest& r, Location where);
     void run_codegen(const CodegenRequest& r, Location where);
+    // statements_lab.cpp
+    /// The coordinates over a marker trial (.trc) from the script's markers, and a note for
+    /// the transcript (time base, fit to the model).
+    Table coordinates_from_markers(const std::string& path, const std::vector<TimeVariable>& q, Location where,
+                                   std::string& note);
     // interpreter_report.cpp
     void report(const Statement& s);
     void latex(const Statement& s);

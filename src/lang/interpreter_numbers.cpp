@@ -546,6 +546,16 @@ void Interpreter::Impl::run_inverse(const InverseRequest& r, Location where) {
                 id, differentiate_motion(motion, r.motion_file, id.layout().coordinate_names, opts.filter), r.dir, opts);
         });
         span = "the motion table " + std::filesystem::path(r.motion_file).filename().string();
+    } else if (ext == ".trc") {
+        // a marker trial: the coordinates from the script's markers, then as a motion table
+        std::string note;
+        const Table motion = guard(where, [&] { return coordinates_from_markers(r.motion_file, q, where, note); });
+        transcript.result(note);
+        rep = guard(where, [&] {
+            return run_inverse_dynamics(
+                id, differentiate_motion(motion, r.motion_file, id.layout().coordinate_names, opts.filter), r.dir, opts);
+        });
+        span = "the marker trial " + std::filesystem::path(r.motion_file).filename().string();
     } else if (!r.motion_file.empty()) {
         rep = guard(where, [&] { return run_inverse_dynamics(id, r.motion_file, r.dir, opts); });
         span = "the motion table " + std::filesystem::path(r.motion_file).filename().string();
