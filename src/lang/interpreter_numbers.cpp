@@ -498,6 +498,9 @@ void Interpreter::Impl::run_inverse(const InverseRequest& r, Location where) {
     std::vector<TimeVariable> q = default_coordinates();
     std::string why_not;
     FunctionMaker make = function_maker(r.compiled, &why_not);
+    // force plates: their records give the plate symbols' values at each time
+    std::shared_ptr<PlateInputs> plate_data = plate_inputs();
+    if (plate_data) make = with_plate_inputs(make, plate_data);
     InverseDynamics id = guard(where, [&] { return compile_inverse_dynamics(sys, q, r.loads, script_name, make); },
                                "list as many load measures as the model has coordinates, one acting at each joint");
     InverseAnalysisOptions opts;
@@ -549,7 +552,9 @@ void Interpreter::Impl::run_inverse(const InverseRequest& r, Location where) {
     } else if (ext == ".trc") {
         // a marker trial: the coordinates from the script's markers, then as a motion table
         std::string note;
-        const Table motion = guard(where, [&] { return coordinates_from_markers(r.motion_file, q, where, note); });
+        const MarkerCoordinates mc = guard(where, [&] { return coordinates_from_markers(r.motion_file, q, where, note); });
+        const Table& motion = mc.motion;
+        if (plate_data) plate_data->set_origin(mc.origin_h, mc.origin_v);  // the plates' centres of pressure from N_o
         transcript.result(note);
         rep = guard(where, [&] {
             return run_inverse_dynamics(

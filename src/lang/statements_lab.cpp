@@ -7,6 +7,7 @@
 
 #include "alembert/biomech/lab_files.hpp"
 #include "alembert/biomech/model_markers.hpp"
+#include "alembert/biomech/plate_load.hpp"
 #include "alembert/biomech/time_base.hpp"
 #include "interpreter_impl.hpp"
 #include "statement_parser.hpp"
@@ -46,10 +47,81 @@ void run_marker(Interpreter::Impl& m, const Statement& s) {
     m.markers.push_back({name, on.text, at.text});
 }
 
+void parse_plate(StatementParser& p, Statement& s) {
+    s.words["label"] = p.name("the plate's name (plate chair on B from \"trial.mot\")");
+    p.expect_word("on", "(plate chair on B from \"trial.mot\")");
+    s.words["on"] = p.name("the body the plate's force acts on");
+    p.expect_word("from", "(plate chair on B from \"trial.mot\")");
+    s.words["from"] = p.text("the force record's path (.mot or .sto)");
+    while (!p.at_end()) {
+        if (p.accept_word("columns")) s.words["columns"] = p.text("the prefix of the plate's columns (\"ground_force\")");
+        else if (p.accept_word("threshold")) s.quantities["threshold"] = p.quantity();
+        else p.fail_expected("'columns' or 'threshold'");
+    }
+}
+
+void run_plate(Interpreter::Impl& m, const Statement& s) {
+    System& sys = m.model(s.location);
+    const Word& label = s.word("label");
+    const Word& on = s.word("on");
+    RigidBody& B = m.rigid_body(on);
+    const Word& file = s.word("from");
+    const std::string path = m.input_path(file.text);
+    const std::string prefix = s.has_word("columns") ? s.word("columns").text : "ground_force";
+    double threshold = 20;
+    if (s.quantities.count("threshold")) {
+        const Quantity& q = s.quantities.at("threshold");
+        threshold = m.number_of(q, Dimension::force(), "the contact threshold", q.value->location);
+        if (!(threshold >= 0) || !std::isfinite(threshold))
+            throw ScriptError(q.value->location, "the contact threshold must be a force of 0 N or more", "");
+    }
+    // the record
+    ScriptPlate plate{label, {}, {}};
+    plate.record = m.guard(file.location, [&] {
+        return force_plate_from_table(read_storage(path).table, prefix, threshold);
+    });
+    std::size_t on_samples = 0;
+    for (std::size_t k = 0; k < plate.record.t.size(); ++k) on_samples += plate.record.in_contact(k) ? 1 : 0;
+    // its symbols: force, centre of pressure and free moment, known functions of time
+    SymbolTable& symbols = sys.symbols();
+    const std::string names[5] = {label.text + "_Fx", label.text + "_Fy", label.text + "_px", label.text + "_py",
+                                  label.text + "_Tz"};
+    const Dimension dims[5] = {Dimension::force(), Dimension::force(), Dimension::length(), Dimension::length(),
+                               Dimension::torque()};
+    ex x[5];
+    for (int i = 0; i < 5; ++i) {
+        m.declare_name(Word{names[i], label.location}, NameKind::symbol);
+        x[i] = m.guard(label.location, [&] { return symbols.add_specified(names[i], 0).symbol(); });
+        m.units[names[i]] = SymbolUnits{dims[i], std::nullopt};
+    }
+    plate.symbols = {x[0], x[1], x[2], x[3], x[4]};
+    // the load: the force at the point of B at the centre of pressure, and the free moment
+    const Frame& N = sys.newtonian();
+    const std::string cop = label.text + "_CoP";
+    m.declare_name(Word{cop, label.location}, NameKind::point);
+    m.guard(label.location, [&] {
+        Point& P = sys.add_point(cop, &B);
+        // located from B's mass centre, so it is a point of B and no joint with N
+        P.set_pos(B.cm(), Vector(N, Col3{x[2], x[3], 0}) - B.cm().pos_from(sys.origin()));
+        P.set_vel_two_point(N, B.cm(), B.body_frame());  // the material point of B there
+        sys.add_force(P, Vector(N, Col3{x[0], x[1], 0}), label.text);
+        sys.add_torque(B, Vector(N, Col3{0, 0, x[4]}), label.text + " free moment");
+    });
+    m.transcript.result("plate " + label.text + " on " + on.text + ": " + prefix + " of " + file.text + ", " +
+                        std::to_string(plate.record.t.size()) + " samples, t = " +
+                        m.transcript.number(plate.record.t.front()) + " to " +
+                        m.transcript.number(plate.record.t.back()) + " s, in contact at " + std::to_string(on_samples) +
+                        " (force of " + m.transcript.number(threshold) + " N or more)\n  force " + names[0] +
+                        "*Nx> + " + names[1] + "*Ny> at " + cop + " = " + names[2] + "*Nx> + " + names[3] +
+                        "*Ny> from N_o, free moment " + names[4] + "*Nz>");
+    m.plates.push_back(std::move(plate));
+}
+
 }  // namespace
 
-Table Interpreter::Impl::coordinates_from_markers(const std::string& path, const std::vector<TimeVariable>& q,
-                                                  Location where, std::string& note) {
+MarkerCoordinates Interpreter::Impl::coordinates_from_markers(const std::string& path,
+                                                              const std::vector<TimeVariable>& q, Location where,
+                                                              std::string& note) {
     System& sys = model(where);
     if (markers.empty())
         throw ScriptError(where, "the script declares no markers, so a marker file (.trc) cannot drive it",
@@ -86,8 +158,19 @@ Table Interpreter::Impl::coordinates_from_markers(const std::string& path, const
     for (const std::string& line : {base.describe()})
         if (!line.empty()) out << "\n" << line;
     note = out.str();
+    if (!plates.empty())
+        out << "\nthe plates' centres of pressure from N_o: the lab's origin is at (" << transcript.number(mc.origin_h)
+            << ", " << transcript.number(mc.origin_v) << ") m from it";
+    note = out.str();
     while (!note.empty() && note.back() == '\n') note.pop_back();
-    return mc.motion;
+    return mc;
+}
+
+std::shared_ptr<PlateInputs> Interpreter::Impl::plate_inputs() const {
+    if (plates.empty()) return nullptr;
+    auto data = std::make_shared<PlateInputs>();
+    for (const ScriptPlate& p : plates) data->add(p.record, p.symbols);
+    return data;
 }
 
 std::vector<StatementSpec> lab_statements() {
@@ -99,6 +182,13 @@ std::vector<StatementSpec> lab_statements() {
                     "`calc_coordinates_from_markers` when `inverse` reads a `.trc`: segment angles from each body's markers, joint angles by the model's own signs, checked against the model's marker points"}},
          .clauses = {"on", "at"},
          .parse = parse_marker, .run = run_marker},
+        {.keyword = "plate", .family = "Mass and loads",
+         .help = "a force plate's record (force, centre of pressure, free moment) as a known load on a body",
+         .forms = {{"`plate` *name* `on` *B* `from` *\"file.mot\"* [`columns` *\"prefix\"*] [`threshold` *F*]",
+                    "plate chair on B from \"lab/rise.mot\" columns \"1_ground_force\"",
+                    "`force_plate_from_table` (OpenSim's ground-reaction columns, default `ground_force`) + `System::add_force` at the point of B at the centre of pressure, `System::add_torque` (free moment); known data symbols name_Fx, _Fy, _px, _py, _Tz, given their values by `with_plate_inputs` in `inverse`, zero out of contact (force below the threshold, default 20 N)"}},
+         .clauses = {"on", "from", "columns", "threshold"},
+         .parse = parse_plate, .run = run_plate},
     };
 }
 
