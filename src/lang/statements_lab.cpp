@@ -155,8 +155,9 @@ MarkerCoordinates Interpreter::Impl::coordinates_from_markers(const std::string&
     const std::size_t wi = static_cast<std::size_t>(worst - mc.marker_residual_m.begin());
     out << "); largest distance from the model's marker " << transcript.number(*worst * 1000) << " mm ('"
         << model_markers[wi].name << "')";
-    for (const std::string& line : {base.describe()})
-        if (!line.empty()) out << "\n" << line;
+    std::string base_text = base.describe();
+    while (!base_text.empty() && base_text.back() == '\n') base_text.pop_back();
+    if (!base_text.empty()) out << "\n" << base_text;
     note = out.str();
     if (!plates.empty())
         out << "\nthe plates' centres of pressure from N_o: the lab's origin is at (" << transcript.number(mc.origin_h)

@@ -13,7 +13,7 @@
 #include "alembert/lang/interpreter.hpp"
 #include "alembert/sim/table.hpp"
 
-namespace {
+namespace plate_statement_test {
 
 namespace fs = std::filesystem;
 using namespace alembert::lang;
@@ -126,4 +126,4 @@ TEST(PlateStatement, MistakesNameTheFileAndTheColumns) {
         << rod.err.str();
 }
 
-}  // namespace
+}  // namespace plate_statement_test
