@@ -21,7 +21,9 @@ constexpr double kPi = std::numbers::pi;
 double wrap(double a) { return a - 2 * kPi * std::round(a / (2 * kPi)); }
 
 std::string cm(double metres) { return format_csv_number(std::round(metres * 1e4) / 1e2) + " cm"; }
-std::string deg(double rad) { return format_csv_number(std::round(rad * 180 / kPi * 100) / 100) + " deg"; }
+std::string deg(double rad) {
+    return format_csv_number(std::round(rad * 180 / kPi * 100) / 100) + " deg";
+}
 
 // the model's marker positions at q: x_N, y_N of marker i at 2i, 2i + 1
 struct ModelPositions {
@@ -35,8 +37,10 @@ struct ModelPositions {
 
 }  // namespace
 
-MarkerCoordinates calc_coordinates_from_markers(const SymbolTable& table, const std::vector<TimeVariable>& q,
-                                                const std::vector<ModelMarker>& markers, const MarkerTable& trial,
+MarkerCoordinates calc_coordinates_from_markers(const SymbolTable& table,
+                                                const std::vector<TimeVariable>& q,
+                                                const std::vector<ModelMarker>& markers,
+                                                const MarkerTable& trial,
                                                 const MarkerCoordinatesOptions& options) {
     const std::string caller = "calc_coordinates_from_markers(): ";
     const std::size_t n = q.size(), n_markers = markers.size();
@@ -53,8 +57,10 @@ MarkerCoordinates calc_coordinates_from_markers(const SymbolTable& table, const 
         if (of_body[b].size() >= 2) r.segments.push_back(b);
     const std::size_t n_seg = r.segments.size();
     if (n_seg == 0)
-        throw ModelError(caller + "no body has two markers, so no segment angle is known; declare two markers on each "
-                                  "segment (marker KNEE on A at B_o)");
+        throw ModelError(
+            caller +
+            "no body has two markers, so no segment angle is known; declare two markers on each "
+            "segment (marker KNEE on A at B_o)");
 
     // the model's marker positions as a compiled function of q
     std::vector<ex> inputs, outputs;
@@ -63,7 +69,8 @@ MarkerCoordinates calc_coordinates_from_markers(const SymbolTable& table, const 
         outputs.push_back(m.x_N);
         outputs.push_back(m.y_N);
     }
-    ModelPositions model{CompiledExpressions(table, inputs, outputs), std::vector<double>(2 * n_markers)};
+    ModelPositions model{CompiledExpressions(table, inputs, outputs),
+                         std::vector<double>(2 * n_markers)};
     auto model_angle = [&](const std::vector<double>& p, std::size_t s) {
         const std::vector<std::size_t>& ids = of_body[r.segments[s]];
         return std::atan2(p[2 * ids[1] + 1] - p[2 * ids[0] + 1], p[2 * ids[1]] - p[2 * ids[0]]);
@@ -77,7 +84,8 @@ MarkerCoordinates calc_coordinates_from_markers(const SymbolTable& table, const 
         const std::vector<double>& p = model.at(q0);
         for (std::size_t s = 0; s < n_seg; ++s) theta0[s] = model_angle(p, s);
     }
-    Eigen::MatrixXd C = Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(n_seg), static_cast<Eigen::Index>(n));
+    Eigen::MatrixXd C =
+        Eigen::MatrixXd::Zero(static_cast<Eigen::Index>(n_seg), static_cast<Eigen::Index>(n));
     r.turns.assign(n_seg, std::vector<int>(n, 0));
     constexpr double h = 1e-4;
     for (std::size_t j = 0; j < n; ++j) {
@@ -88,11 +96,15 @@ MarkerCoordinates calc_coordinates_from_markers(const SymbolTable& table, const 
             const double rate = wrap(model_angle(p, s) - theta0[s]) / h;
             const double c = std::round(rate);
             if (!std::isfinite(rate) || std::abs(rate - c) > 1e-5 || std::abs(c) > 1)
-                throw ModelError(caller + "coordinate '" + q[j].name() + "' turns segment " + r.segments[s] +
-                                 " by " + format_csv_number(std::round(rate * 1000) / 1000) +
-                                 " rad per rad, not +-1 or 0: segment angles from markers give the joint angles of "
-                                 "planar chains turning about Nz> (rotate B from A about z by q); check the markers "
-                                 "declared on " + r.segments[s]);
+                throw ModelError(caller + "coordinate '" + q[j].name() + "' turns segment " +
+                                 r.segments[s] + " by " +
+                                 format_csv_number(std::round(rate * 1000) / 1000) +
+                                 " rad per rad, not +-1 or 0: segment angles from markers give the "
+                                 "joint angles of "
+                                 "planar chains turning about Nz> (rotate B from A about z by q); "
+                                 "check the markers "
+                                 "declared on " +
+                                 r.segments[s]);
             C(static_cast<Eigen::Index>(s), static_cast<Eigen::Index>(j)) = c;
             r.turns[s][j] = static_cast<int>(c);
         }
@@ -101,12 +113,25 @@ MarkerCoordinates calc_coordinates_from_markers(const SymbolTable& table, const 
     for (std::size_t j = 0; j < n; ++j)
         if (C.col(static_cast<Eigen::Index>(j)).isZero())
             throw ModelError(caller + "coordinate '" + q[j].name() +
-                             "' turns no segment with two markers, so the marker file does not determine it; declare "
-                             "two markers on a body it turns (a length coordinate cannot be read from segment angles)");
+                             "' turns no segment with two markers, so the marker file does not "
+                             "determine it; declare "
+                             "two markers on a body it turns (a length coordinate cannot be read "
+                             "from segment angles)");
     Eigen::ColPivHouseholderQR<Eigen::MatrixXd> qr(C);
-    if (qr.rank() < static_cast<Eigen::Index>(n))
-        throw ModelError(caller + "the segments' angles determine only " + std::to_string(qr.rank()) + " of the " +
-                         std::to_string(n) + " coordinates; declare two markers on every segment a joint turns");
+    if (qr.rank() < static_cast<Eigen::Index>(n)) {
+        // the coordinates that can change together without turning any segment with markers
+        const Eigen::MatrixXd kernel = Eigen::FullPivLU<Eigen::MatrixXd>(C).kernel();
+        std::string together;
+        for (std::size_t j = 0; j < n; ++j)
+            if (kernel.row(static_cast<Eigen::Index>(j)).cwiseAbs().maxCoeff() > 1e-9)
+                together += (together.empty() ? "'" : ", '") + q[j].name() + "'";
+        throw ModelError(caller + "the segments' angles determine only " +
+                         std::to_string(qr.rank()) + " of the " + std::to_string(n) +
+                         " coordinates: " + together +
+                         " can change together without turning a segment with two markers; declare "
+                         "two markers on "
+                         "every segment a joint turns");
+    }
     // the most distal coordinate turning each segment names it in messages
     auto coordinate_of = [&](std::size_t s) {
         std::size_t best = n;
@@ -132,7 +157,8 @@ MarkerCoordinates calc_coordinates_from_markers(const SymbolTable& table, const 
 
     // q(t): least squares of C (q - q0) = theta(t) - theta0, a whole turn taken out at the start
     std::vector<double> turn(n_seg);
-    for (std::size_t s = 0; s < n_seg; ++s) turn[s] = theta[s][0] - wrap(theta[s][0] - theta0[s]) - theta0[s];
+    for (std::size_t s = 0; s < n_seg; ++s)
+        turn[s] = theta[s][0] - wrap(theta[s][0] - theta0[s]) - theta0[s];
     r.motion.add_column("t", "s");
     for (const TimeVariable& v : q) r.motion.add_column(v.name(), "rad");
     Eigen::VectorXd rhs(static_cast<Eigen::Index>(n_seg));
@@ -151,7 +177,8 @@ MarkerCoordinates calc_coordinates_from_markers(const SymbolTable& table, const 
     // check: the model's segment angles at q(t) are the file's
     auto state = [&](std::size_t k) {
         std::string s;
-        for (std::size_t j = 0; j < n; ++j) s += (j ? ", " : "") + q[j].name() + " = " + deg(q_t[k][j]);
+        for (std::size_t j = 0; j < n; ++j)
+            s += (j ? ", " : "") + q[j].name() + " = " + deg(q_t[k][j]);
         return s;
     };
     for (std::size_t k = 0; k < n_t; ++k) {
@@ -159,10 +186,11 @@ MarkerCoordinates calc_coordinates_from_markers(const SymbolTable& table, const 
         for (std::size_t s = 0; s < n_seg; ++s) {
             const double d = wrap(model_angle(p, s) - theta[s][k]);
             if (std::abs(d) > options.angle_tolerance_rad)
-                throw ModelError(caller + "at t = " + format_csv_number(t[k]) + " s the markers of " + r.segments[s] +
-                                 " are at " + deg(theta[s][k]) + " but the model puts them at " +
-                                 deg(model_angle(p, s)) + " (" + state(k) + "); check the sign and offset of '" +
-                                 coordinate_of(s) + "' and of the markers declared on " + r.segments[s]);
+                throw ModelError(
+                    caller + "at t = " + format_csv_number(t[k]) + " s the markers of " +
+                    r.segments[s] + " are at " + deg(theta[s][k]) + " but the model puts them at " +
+                    deg(model_angle(p, s)) + " (" + state(k) + "); check the sign and offset of '" +
+                    coordinate_of(s) + "' and of the markers declared on " + r.segments[s]);
         }
     }
     // check: every marker where the model puts it, after one shift of origin
@@ -182,24 +210,32 @@ MarkerCoordinates calc_coordinates_from_markers(const SymbolTable& table, const 
     r.origin_h = sum_h / count;
     r.origin_v = sum_v / count;
     r.marker_residual_m.assign(n_markers, 0);
+    std::vector<std::size_t> worst_at(n_markers, 0);
     for (std::size_t k = 0; k < n_t; ++k) {
         const std::vector<double>& p = model.at(q_t[k]);
         for (std::size_t i = 0; i < n_markers; ++i) {
             const double d = std::hypot(measured(i, k, ah) - r.origin_h - p[2 * i],
                                         measured(i, k, av) - r.origin_v - p[2 * i + 1]);
-            r.marker_residual_m[i] = std::max(r.marker_residual_m[i], d);
-            if (d > options.position_tolerance_m) {
-                const auto it = std::find(r.segments.begin(), r.segments.end(), markers[i].body);
-                const std::string who = it != r.segments.end()
-                                            ? "'" + coordinate_of(static_cast<std::size_t>(it - r.segments.begin())) + "'"
-                                            : "the coordinates";
-                throw ModelError(caller + "at t = " + format_csv_number(t[k]) + " s marker '" + markers[i].name +
-                                 "' (on " + markers[i].body + ") is " + cm(d) +
-                                 " from where the model puts it (" + state(k) + "), more than " +
-                                 cm(options.position_tolerance_m) + "; check the sign and offset of " + who +
-                                 ", the point the marker is declared at, and the model's lengths against the file's");
-            }
+            if (d > r.marker_residual_m[i]) r.marker_residual_m[i] = d, worst_at[i] = k;
         }
+    }
+    // the marker farthest from the model, if beyond the tolerance
+    const std::size_t i = static_cast<std::size_t>(
+        std::max_element(r.marker_residual_m.begin(), r.marker_residual_m.end()) -
+        r.marker_residual_m.begin());
+    if (r.marker_residual_m[i] > options.position_tolerance_m) {
+        const std::size_t k = worst_at[i];
+        const auto it = std::find(r.segments.begin(), r.segments.end(), markers[i].body);
+        const std::string who =
+            it != r.segments.end()
+                ? "'" + coordinate_of(static_cast<std::size_t>(it - r.segments.begin())) + "'"
+                : "the coordinates";
+        throw ModelError(
+            caller + "at t = " + format_csv_number(t[k]) + " s marker '" + markers[i].name +
+            "' (on " + markers[i].body + ") is " + cm(r.marker_residual_m[i]) +
+            " from where the model puts it (" + state(k) + "), more than " +
+            cm(options.position_tolerance_m) + "; check the sign and offset of " + who +
+            ", the point the marker is declared at, and the model's lengths against the file's");
     }
     return r;
 }

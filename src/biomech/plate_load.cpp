@@ -12,8 +12,8 @@ namespace alembert {
 void PlateInputs::add(const ForcePlate& plate, const PlateSymbols& s, SagittalPlane plane) {
     const std::size_t n = plate.t.size();
     if (n < 2)
-        throw ArgumentError("PlateInputs::add(): plate '" + plate.name + "' has " + std::to_string(n) +
-                            " sample(s); a record needs at least 2");
+        throw ArgumentError("PlateInputs::add(): plate '" + plate.name + "' has " +
+                            std::to_string(n) + " sample(s); a record needs at least 2");
     for (std::size_t k = 1; k < n; ++k)
         if (!(plate.t[k] > plate.t[k - 1]))
             throw ArgumentError("PlateInputs::add(): plate '" + plate.name + "': the time " +
@@ -49,9 +49,10 @@ void PlateInputs::calc_values(double t, double* values) const {
         const Channel& c = plates_[i];
         // the samples around t, linear weights
         if (t < c.t.front() - 1e-9 || t > c.t.back() + 1e-9)
-            throw ArgumentError("plate '" + c.name + "': its record covers t = " + format_csv_number(c.t.front()) +
-                                " to " + format_csv_number(c.t.back()) + " s, not t = " + format_csv_number(t) +
-                                " s; record the plates over the whole trial, or trim the motion to the record");
+            throw ArgumentError(
+                "plate '" + c.name + "': its record covers t = " + format_csv_number(c.t.front()) +
+                " to " + format_csv_number(c.t.back()) + " s, not t = " + format_csv_number(t) +
+                " s; record the plates over the whole trial, or trim the motion to the record");
         const auto hi = std::upper_bound(c.t.begin(), c.t.end(), t);
         std::size_t k1 = static_cast<std::size_t>(hi - c.t.begin());
         k1 = std::clamp<std::size_t>(k1, 1, c.t.size() - 1);

@@ -20,7 +20,8 @@ constexpr double L_T = 0.42, L_L = 0.40;  // thigh and leg, m
 // marker positions (lab X forward, Y up) of each named marker at time t
 using Positions = std::function<std::vector<std::pair<double, double>>(double t)>;
 
-MarkerTable planar_trial(const std::vector<std::string>& names, const Positions& at, std::size_t samples = 101) {
+MarkerTable planar_trial(const std::vector<std::string>& names, const Positions& at,
+                         std::size_t samples = 101) {
     MarkerTable m;
     m.markers = names;
     m.table.add_column("time", "s");
@@ -46,7 +47,8 @@ struct LegModel {
     TimeVariable q1 = table.add_variable("q1"), q2 = table.add_variable("q2");
     std::vector<ModelMarker> markers;
     explicit LegModel(bool backwards = false, double leg = L_L) {
-        const ex th_T = q1.symbol(), th_L = backwards ? q1.symbol() - q2.symbol() : q1.symbol() + q2.symbol();
+        const ex th_T = q1.symbol(),
+                 th_L = backwards ? q1.symbol() - q2.symbol() : q1.symbol() + q2.symbol();
         const ex kx = L_T * sin(th_T), ky = -L_T * cos(th_T);
         markers = {{"HIP", "T", 0, 0},
                    {"KNEE", "T", kx, ky},
@@ -69,7 +71,8 @@ MarkerTable swinging_leg() {
 
 TEST(ModelMarkers, JointAnglesOfAPlanarChainAreTheMotionThatMadeTheMarkers) {
     LegModel m;
-    const MarkerCoordinates c = calc_coordinates_from_markers(m.table, {m.q1, m.q2}, m.markers, swinging_leg());
+    const MarkerCoordinates c =
+        calc_coordinates_from_markers(m.table, {m.q1, m.q2}, m.markers, swinging_leg());
     // theta_T = q1, theta_L = q1 + q2
     EXPECT_EQ(c.segments, (std::vector<std::string>{"T", "L"}));
     EXPECT_EQ(c.turns, (std::vector<std::vector<int>>{{1, 0}, {1, 1}}));
@@ -89,7 +92,8 @@ TEST(ModelMarkers, JointAnglesOfAPlanarChainAreTheMotionThatMadeTheMarkers) {
 TEST(ModelMarkers, AJointTurnedAboutMinusZReadsTheOppositeSign) {
     // rotate L from T about -z by q2: the same markers give q2 = -(knee angle)
     LegModel m(true);
-    const MarkerCoordinates c = calc_coordinates_from_markers(m.table, {m.q1, m.q2}, m.markers, swinging_leg());
+    const MarkerCoordinates c =
+        calc_coordinates_from_markers(m.table, {m.q1, m.q2}, m.markers, swinging_leg());
     EXPECT_EQ(c.turns, (std::vector<std::vector<int>>{{1, 0}, {1, -1}}));
     for (std::size_t k = 0; k < c.motion.row_count(); ++k)
         EXPECT_NEAR(c.motion.columns[2][k], -knee_angle(c.motion.columns[0][k]), 1e-12);
@@ -98,17 +102,20 @@ TEST(ModelMarkers, AJointTurnedAboutMinusZReadsTheOppositeSign) {
 TEST(ModelMarkers, AMarkerWhereTheModelDoesNotPutItNamesTheMarkerAndTheCoordinate) {
     // the model's leg is 5 cm longer than the subject's
     LegModel m(false, L_L + 0.05);
-    EXPECT_THROW_MSG(calc_coordinates_from_markers(m.table, {m.q1, m.q2}, m.markers, swinging_leg()),
-                     ModelError, "marker 'ANKLE' (on L) is");
-    EXPECT_THROW_MSG(calc_coordinates_from_markers(m.table, {m.q1, m.q2}, m.markers, swinging_leg()),
-                     ModelError, "check the sign and offset of 'q2'");
+    EXPECT_THROW_MSG(
+        calc_coordinates_from_markers(m.table, {m.q1, m.q2}, m.markers, swinging_leg()), ModelError,
+        "marker 'ANKLE' (on L) is");
+    EXPECT_THROW_MSG(
+        calc_coordinates_from_markers(m.table, {m.q1, m.q2}, m.markers, swinging_leg()), ModelError,
+        "check the sign and offset of 'q2'");
 }
 
 TEST(ModelMarkers, ACoordinateNoSegmentsMarkersDetermineIsNamed) {
     LegModel m;
     m.markers.pop_back();  // no ankle: the leg has one marker
-    EXPECT_THROW_MSG(calc_coordinates_from_markers(m.table, {m.q1, m.q2}, m.markers, swinging_leg()),
-                     ModelError, "coordinate 'q2' turns no segment with two markers");
+    EXPECT_THROW_MSG(
+        calc_coordinates_from_markers(m.table, {m.q1, m.q2}, m.markers, swinging_leg()), ModelError,
+        "coordinate 'q2' turns no segment with two markers");
 }
 
 TEST(ModelMarkers, ACoordinateThatDoesNotTurnASegmentByOneIsRefused) {
@@ -116,15 +123,16 @@ TEST(ModelMarkers, ACoordinateThatDoesNotTurnASegmentByOneIsRefused) {
     LegModel m;
     const ex a = 2 * m.q1.symbol();
     m.markers = {{"HIP", "T", 0, 0}, {"KNEE", "T", L_T * sin(a), -L_T * cos(a)}};
-    EXPECT_THROW_MSG(calc_coordinates_from_markers(m.table, {m.q1}, m.markers, swinging_leg()), ModelError,
-                     "coordinate 'q1' turns segment T by 2 rad per rad");
+    EXPECT_THROW_MSG(calc_coordinates_from_markers(m.table, {m.q1}, m.markers, swinging_leg()),
+                     ModelError, "coordinate 'q1' turns segment T by 2 rad per rad");
 }
 
 TEST(ModelMarkers, AMarkerTheFileLacksIsNamed) {
     LegModel m;
     m.markers[3].name = "HEEL";
-    EXPECT_THROW_MSG(calc_coordinates_from_markers(m.table, {m.q1, m.q2}, m.markers, swinging_leg()),
-                     ArgumentError, "HEEL");
+    EXPECT_THROW_MSG(
+        calc_coordinates_from_markers(m.table, {m.q1, m.q2}, m.markers, swinging_leg()),
+        ArgumentError, "HEEL");
 }
 
 }  // namespace

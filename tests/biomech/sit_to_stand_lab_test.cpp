@@ -50,7 +50,8 @@ double q_of(int j, double t, int order) {
 double time_of(std::size_t k) { return kT0 + static_cast<double>(k) / kRate; }
 
 // runs a script of the example into `out`, returns its loads.csv
-alembert::Table run_example(const std::string& script, const fs::path& out, const std::string& dir) {
+alembert::Table run_example(const std::string& script, const fs::path& out,
+                            const std::string& dir) {
     const fs::path path = fs::path(ALEMBERT_SOURCE_DIR) / "examples/sit_to_stand" / script;
     std::ifstream in(path);
     std::stringstream text;
@@ -73,13 +74,15 @@ const MotionError& motion_error() {
         const double h = 1 / kRate;
         // the rounding: each marker coordinate within kMarkerRounding, so a segment's angle
         // within 2 sqrt(2) r / length; qA = theta_A, qB = theta_B - theta_A, qC = theta_C - theta_B
-        const double seg[3] = {2 * std::sqrt(2) * kMarkerRounding / L_A, 2 * std::sqrt(2) * kMarkerRounding / L_B,
+        const double seg[3] = {2 * std::sqrt(2) * kMarkerRounding / L_A,
+                               2 * std::sqrt(2) * kMarkerRounding / L_B,
                                2 * std::sqrt(2) * kMarkerRounding / std::hypot(0.50, 0.05)};
         const double rounding[3] = {seg[0], seg[0] + seg[1], seg[1] + seg[2]};
         std::vector<double> impulse(kSamples, 0.0);
         impulse[kSamples / 2] = 1;
         const std::vector<double> f = alembert::filter_lowpass(impulse, kRate, kCutoff);
-        const std::vector<double> fd = alembert::differentiate(f, h), fdd = alembert::differentiate_twice(f, h);
+        const std::vector<double> fd = alembert::differentiate(f, h),
+                                  fdd = alembert::differentiate_twice(f, h);
         double gain[3] = {0, 0, 0};
         for (std::size_t k = 0; k < kSamples; ++k)
             gain[0] += std::fabs(f[k]), gain[1] += std::fabs(fd[k]), gain[2] += std::fabs(fdd[k]);
@@ -88,7 +91,8 @@ const MotionError& motion_error() {
             std::vector<double> q(kSamples);
             for (std::size_t k = 0; k < kSamples; ++k) q[k] = q_of(j, time_of(k), 0);
             const std::vector<double> qf = alembert::filter_lowpass(q, kRate, kCutoff);
-            const std::vector<double> qd = alembert::differentiate(qf, h), qdd = alembert::differentiate_twice(qf, h);
+            const std::vector<double> qd = alembert::differentiate(qf, h),
+                                      qdd = alembert::differentiate_twice(qf, h);
             for (std::size_t k = 0; k < kSamples; ++k) {
                 const double t = time_of(k);
                 out.q[j].push_back(std::fabs(qf[k] - q_of(j, t, 0)) + gain[0] * rounding[j]);
@@ -110,7 +114,8 @@ const MotionError& motion_error() {
 double torque_tolerance(int i, std::size_t k) {
     const MotionError& e = motion_error();
     const double t = time_of(k);
-    const double th[3] = {q_of(0, t, 0), q_of(0, t, 0) + q_of(1, t, 0), q_of(0, t, 0) + q_of(1, t, 0) + q_of(2, t, 0)};
+    const double th[3] = {q_of(0, t, 0), q_of(0, t, 0) + q_of(1, t, 0),
+                          q_of(0, t, 0) + q_of(1, t, 0) + q_of(2, t, 0)};
     double Ma[3][3];
     Ma[0][0] = I_A + m_A * d_A * d_A + (m_B + m_C) * L_A * L_A;
     Ma[1][1] = I_B + m_B * d_B * d_B + m_C * L_B * L_B;
@@ -137,7 +142,8 @@ double torque_tolerance(int i, std::size_t k) {
 struct SitToStandLab : ::testing::Test {
     static inline alembert::Table formula, lab;
     static void SetUpTestSuite() {
-        const fs::path dir = fs::temp_directory_path() / ("alembert_sts_lab_" + std::to_string(::getpid()));
+        const fs::path dir =
+            fs::temp_directory_path() / ("alembert_sts_lab_" + std::to_string(::getpid()));
         formula = run_example("model.alb", dir / "formula", "rising");
         lab = run_example("model_lab.alb", dir / "lab", "rising_lab");
         fs::remove_all(dir);
@@ -162,13 +168,15 @@ TEST_F(SitToStandLab, JointMomentsAgreeWithTheFormulaDrivenRiseToTheDerivedToler
         const double t = formula.columns[0][r];
         const std::size_t k = lab_row(t);
         for (int c = 1; c <= 3; ++c) {
-            const double tol = torque_tolerance(c - 1, k), d = std::fabs(lab.columns[c][k] - formula.columns[c][r]);
+            const double tol = torque_tolerance(c - 1, k),
+                         d = std::fabs(lab.columns[c][k] - formula.columns[c][r]);
             EXPECT_LE(d, tol) << lab.names[c] << " at t = " << t;
-            worst = std::max(worst, d), worst_tol = std::max(worst_tol, tol), used = std::max(used, d / tol);
+            worst = std::max(worst, d), worst_tol = std::max(worst_tol, tol),
+            used = std::max(used, d / tol);
         }
     }
-    std::cout << "t = 0 to 1.5 s: largest difference " << worst << " N m, largest tolerance " << worst_tol
-              << " N m, at most " << used << " of the tolerance used\n";
+    std::cout << "t = 0 to 1.5 s: largest difference " << worst << " N m, largest tolerance "
+              << worst_tol << " N m, at most " << used << " of the tolerance used\n";
 }
 
 TEST_F(SitToStandLab, SeatedTheChairsLoadTakesItsMomentOffTheKneeAndAnkleTorques) {
@@ -176,21 +184,24 @@ TEST_F(SitToStandLab, SeatedTheChairsLoadTakesItsMomentOffTheKneeAndAnkleTorques
     // torque is the formula-driven one at t = 0 (the same posture, no chair) less the chair's
     // moment about the joint, (p_chair - p_joint) x F_chair; the hip's is unchanged
     const fs::path mot = fs::path(ALEMBERT_SOURCE_DIR) / "examples/sit_to_stand/lab/rise.mot";
-    const alembert::ForcePlate chair =
-        alembert::force_plate_from_table(alembert::read_storage(mot.string()).table, "1_ground_force");
+    const alembert::ForcePlate chair = alembert::force_plate_from_table(
+        alembert::read_storage(mot.string()).table, "1_ground_force");
     const double qA = kMotion[0].start * kDeg;
     const double ankle[2] = {0.25, 0.08};  // the model's N_o in the lab
     const double knee[2] = {ankle[0] - L_A * std::sin(qA), ankle[1] + L_A * std::cos(qA)};
-    for (std::size_t k = 5; k <= 20; ++k) {  // t = -0.45 to -0.3 s
+    for (std::size_t k = 5; k <= 20; ++k) {     // t = -0.45 to -0.3 s
         double tol = 2 * 300 * kPlateRounding;  // the centre of pressure's rounding
-        for (int i = 0; i < 3; ++i) tol = std::max(tol, torque_tolerance(i, k) + 2 * 300 * kPlateRounding);
+        for (int i = 0; i < 3; ++i)
+            tol = std::max(tol, torque_tolerance(i, k) + 2 * 300 * kPlateRounding);
         const double t = time_of(k);
         ASSERT_NEAR(chair.t[k], t, 1e-9);
         const double Fy = chair.F[1][k], px = chair.p_CoP[0][k];
         ASSERT_NEAR(Fy, 300, 1e-9);
         const std::size_t r = lab_row(t);
-        EXPECT_NEAR(lab.columns[1][r], formula.columns[1][0] - (px - ankle[0]) * Fy, tol) << "T_A at t = " << t;
-        EXPECT_NEAR(lab.columns[2][r], formula.columns[2][0] - (px - knee[0]) * Fy, tol) << "T_B at t = " << t;
+        EXPECT_NEAR(lab.columns[1][r], formula.columns[1][0] - (px - ankle[0]) * Fy, tol)
+            << "T_A at t = " << t;
+        EXPECT_NEAR(lab.columns[2][r], formula.columns[2][0] - (px - knee[0]) * Fy, tol)
+            << "T_B at t = " << t;
         EXPECT_NEAR(lab.columns[3][r], formula.columns[3][0], tol) << "T_C at t = " << t;
     }
 }
@@ -201,14 +212,15 @@ TEST_F(SitToStandLab, TheFloorPlateGivesTheAnkleMomentBottomUp) {
     // record from its own dynamics, so this checks Alembert's formula-driven T_A independently,
     // to the plate file's rounding (|F| < 800 N, lever < 0.3 m)
     const fs::path mot = fs::path(ALEMBERT_SOURCE_DIR) / "examples/sit_to_stand/lab/rise.mot";
-    const alembert::ForcePlate floor =
-        alembert::force_plate_from_table(alembert::read_storage(mot.string()).table, "ground_force");
+    const alembert::ForcePlate floor = alembert::force_plate_from_table(
+        alembert::read_storage(mot.string()).table, "ground_force");
     const double tol = kPlateRounding * (800 + 800 + 0.3 + 0.3);
     for (std::size_t r = 0; r < formula.row_count(); ++r) {
         const double t = formula.columns[0][r];
         const std::size_t k = static_cast<std::size_t>(std::lround((t - kT0) * kRate));
         ASSERT_NEAR(floor.t[k], t, 1e-9);
-        const double T_A = (floor.p_CoP[0][k] - 0.25) * floor.F[1][k] - (floor.p_CoP[1][k] - 0.08) * floor.F[0][k];
+        const double T_A =
+            (floor.p_CoP[0][k] - 0.25) * floor.F[1][k] - (floor.p_CoP[1][k] - 0.08) * floor.F[0][k];
         EXPECT_NEAR(T_A, formula.columns[1][r], tol) << "t = " << t;
     }
 }
