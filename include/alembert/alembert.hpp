@@ -59,6 +59,8 @@
 #include "alembert/biomech/force_plate.hpp"
 #include "alembert/biomech/lab_files.hpp"
 #include "alembert/biomech/link_segment.hpp"
+#include "alembert/biomech/model_markers.hpp"
+#include "alembert/biomech/plate_load.hpp"
 #include "alembert/biomech/residual_analysis.hpp"
 #include "alembert/biomech/segment_angles.hpp"
 #include "alembert/biomech/segment_parameters.hpp"

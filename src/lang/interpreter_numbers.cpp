@@ -498,6 +498,9 @@ void Interpreter::Impl::run_inverse(const InverseRequest& r, Location where) {
     std::vector<TimeVariable> q = default_coordinates();
     std::string why_not;
     FunctionMaker make = function_maker(r.compiled, &why_not);
+    // force plates: their records give the plate symbols' values at each time
+    std::shared_ptr<PlateInputs> plate_data = plate_inputs();
+    if (plate_data) make = with_plate_inputs(make, plate_data);
     InverseDynamics id = guard(where, [&] { return compile_inverse_dynamics(sys, q, r.loads, script_name, make); },
                                "list as many load measures as the model has coordinates, one acting at each joint");
     InverseAnalysisOptions opts;
@@ -546,6 +549,18 @@ void Interpreter::Impl::run_inverse(const InverseRequest& r, Location where) {
                 id, differentiate_motion(motion, r.motion_file, id.layout().coordinate_names, opts.filter), r.dir, opts);
         });
         span = "the motion table " + std::filesystem::path(r.motion_file).filename().string();
+    } else if (ext == ".trc") {
+        // a marker trial: the coordinates from the script's markers, then as a motion table
+        std::string note;
+        const MarkerCoordinates mc = guard(where, [&] { return coordinates_from_markers(r.motion_file, q, where, note); });
+        const Table& motion = mc.motion;
+        if (plate_data) plate_data->set_origin(mc.origin_h, mc.origin_v);  // the plates' centres of pressure from N_o
+        transcript.result(note);
+        rep = guard(where, [&] {
+            return run_inverse_dynamics(
+                id, differentiate_motion(motion, r.motion_file, id.layout().coordinate_names, opts.filter), r.dir, opts);
+        });
+        span = "the marker trial " + std::filesystem::path(r.motion_file).filename().string();
     } else if (!r.motion_file.empty()) {
         rep = guard(where, [&] { return run_inverse_dynamics(id, r.motion_file, r.dir, opts); });
         span = "the motion table " + std::filesystem::path(r.motion_file).filename().string();
