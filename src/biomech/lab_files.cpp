@@ -274,43 +274,27 @@ Table motion_table_from_storage(const StorageFile& storage,
 }
 
 void write_storage(const Table& table, const std::string& path, const std::string& name) {
-    namespace fs = std::filesystem;
     std::vector<double> factor;
     for (std::size_t c = 0; c < table.columns.size(); ++c) factor.push_back(parse_unit(table.units[c]).factor);
     const bool time_first =
         !table.columns.empty() && parse_unit(table.units[0]).quantity == "time";
-    const fs::path target(path);
-    TemporaryFile temporary((target.parent_path() / ("." + target.filename().string() + ".tmp" +
-                                                     std::to_string(static_cast<long>(::getpid()))))
-                                .string());
-    std::FILE* f = std::fopen(temporary.path().c_str(), "w");
-    if (!f)
-        throw ArgumentError("write_storage(): cannot write '" + path + "' (" +
-                            std::strerror(errno) + "); create its directory or choose a writable path");
-    // header
-    std::fprintf(f, "%s\nversion=1\nnRows=%zu\nnColumns=%zu\ninDegrees=no\nendheader\n",
-                 name.c_str(), table.row_count(), table.columns.size());
+    std::string text = name + "\nversion=1\nnRows=" + std::to_string(table.row_count()) +
+                       "\nnColumns=" + std::to_string(table.columns.size()) +
+                       "\ninDegrees=no\nendheader\n";
     for (std::size_t c = 0; c < table.names.size(); ++c) {
-        std::fputs(c ? "\t" : "", f);
-        std::fputs(c == 0 && time_first ? "time" : table.names[c].c_str(), f);
+        if (c) text += '\t';
+        text += c == 0 && time_first ? std::string("time") : table.names[c];
     }
-    std::fputc('\n', f);
+    text += '\n';
     // rows in SI
     for (std::size_t r = 0; r < table.row_count(); ++r) {
         for (std::size_t c = 0; c < table.columns.size(); ++c) {
-            if (c) std::fputc('\t', f);
-            std::fputs(format_csv_number(table.columns[c][r] * factor[c]).c_str(), f);
+            if (c) text += '\t';
+            text += format_csv_number(table.columns[c][r] * factor[c]);
         }
-        std::fputc('\n', f);
+        text += '\n';
     }
-    const bool ok = std::ferror(f) == 0;
-    if (std::fclose(f) != 0 || !ok)
-        throw ArgumentError("write_storage(): writing '" + path + "' failed (disk full?)");
-    std::error_code ec;
-    fs::rename(temporary.path(), target, ec);
-    if (ec)
-        throw ArgumentError("write_storage(): cannot replace '" + path + "' (" + ec.message() + ")");
-    temporary.release();
+    write_file_atomically(path, text, "write_storage()");
 }
 
 Table read_lab_table(const std::string& path) {

@@ -81,31 +81,17 @@ std::vector<Peak> calc_peaks(const Table& result) {
 }
 
 void write_batch_summary(const std::vector<TrialOutcome>& outcomes, const std::string& path) {
-    namespace fs = std::filesystem;
-    const fs::path target(path);
-    TemporaryFile temporary((target.parent_path() / ("." + target.filename().string() + ".tmp" +
-                                                     std::to_string(static_cast<long>(::getpid()))))
-                                .string());
-    std::FILE* f = std::fopen(temporary.path().c_str(), "w");
-    if (!f)
-        throw ArgumentError("write_batch_summary(): cannot write '" + path + "' (" + std::strerror(errno) +
-                            "); create its directory or choose a writable path");
-    std::fputs("trial,status,quantity,peak,t_peak,message\n", f);
+    std::string text = "trial,status,quantity,peak,t_peak,message\n";
     for (const TrialOutcome& o : outcomes) {
         if (!o.ok) {
-            std::fprintf(f, "%s,failed,,,,%s\n", csv_cell(o.trial).c_str(), csv_cell(o.message).c_str());
+            text += csv_cell(o.trial) + ",failed,,,," + csv_cell(o.message) + "\n";
             continue;
         }
         for (const Peak& p : o.peaks)
-            std::fprintf(f, "%s,ok,%s,%s,%s,\n", csv_cell(o.trial).c_str(), csv_cell(p.quantity).c_str(),
-                         format_csv_number(p.value).c_str(), format_csv_number(p.t).c_str());
+            text += csv_cell(o.trial) + ",ok," + csv_cell(p.quantity) + "," +
+                    format_csv_number(p.value) + "," + format_csv_number(p.t) + ",\n";
     }
-    const bool ok = std::ferror(f) == 0;
-    if (std::fclose(f) != 0 || !ok) throw ArgumentError("write_batch_summary(): writing '" + path + "' failed (disk full?)");
-    std::error_code ec;
-    fs::rename(temporary.path(), target, ec);
-    if (ec) throw ArgumentError("write_batch_summary(): cannot replace '" + path + "' (" + ec.message() + ")");
-    temporary.release();
+    write_file_atomically(path, text, "write_batch_summary()");
 }
 
 }  // namespace alembert
