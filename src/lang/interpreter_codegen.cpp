@@ -1,0 +1,222 @@
+// SPDX-License-Identifier: MIT
+// The interpreter's `codegen` statement: what it generates from the script's equations (the
+// road-map or Kane's equations in speeds, constraints, inputs, outputs), and where.
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+#include <sstream>
+
+#include "alembert/codegen/codegen.hpp"
+#include "alembert/codegen/native.hpp"
+#include "alembert/eom/planner.hpp"
+#include "alembert/eom/tree_dynamics.hpp"
+#include "alembert/lang/parser.hpp"
+#include "interpreter_impl.hpp"
+#include "statement_parser.hpp"
+
+namespace alembert::lang {
+
+namespace {
+
+bool is_identifier(const std::string& s) {
+    if (s.empty() || !(std::isalpha(static_cast<unsigned char>(s[0])) || s[0] == '_')) return false;
+    return std::all_of(s.begin(), s.end(),
+                       [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; });
+}
+
+// qA'' -> qA_dd: a name the generated code can use
+std::string code_identifier(const std::string& printed) {
+    std::string out;
+    std::size_t p = printed.find('\'');
+    out = printed.substr(0, p);
+    if (p != std::string::npos) out += "_" + std::string(printed.size() - p, 'd');
+    return out;
+}
+
+}  // namespace
+
+void Interpreter::Impl::codegen(const Statement& s) {
+    if (model_only) return;
+    const SymbolTable& table = model(s.location).symbols();
+    CodegenRequest r;
+    r.language = s.word("language");
+    if (s.lists.count("loads"))
+        for (const Word& w : s.lists.at("loads")) {
+            ex x = symbol(w, "a load measure");
+            if (table.kind(x) != SymbolKind::unknown)
+                throw ScriptError(w.location, "'" + w.text + "' is not a load measure",
+                                  "list unknowns declared with 'unknown' and used in loads");
+            r.loads.push_back(x);
+        }
+    if (s.has_word("name")) r.name = s.word("name").text;
+    r.dir = output_path(s);
+    run_codegen(r, s.location);
+}
+
+void Interpreter::Impl::run_codegen(const CodegenRequest& r, Location where) {
+    System& sys = model(where);
+    const SymbolTable& table = sys.symbols();
+    Language language = guard(r.language.location, [&] { return parse_language(r.language.text); });
+    std::vector<TimeVariable> q = default_coordinates();
+    if (q.empty())
+        throw ScriptError(where, "the model has no coordinates to generate code for",
+                          "declare variables (variable q'') and use them in rotations or translations");
+    // equations in generalized speeds (a kane statement with speeds) when a coordinate has no
+    // q'': the generated code's state is then (q, u_r)
+    const KaneEquations* speeds = nullptr;
+    if (std::any_of(q.begin(), q.end(), [](const TimeVariable& v) { return v.order() < 2; })) {
+        std::vector<std::string> named;
+        for (const auto& [name, fe] : formed)
+            if (fe.kane && !fe.kane->kinematic_equations.empty()) {
+                speeds = &*fe.kane;
+                named.push_back(name);
+            }
+        if (named.size() > 1)
+            throw ScriptError(where, "the script forms Kane's equations in generalized speeds " +
+                                         std::to_string(named.size()) + " times (" + named.front() + ", " +
+                                         named.back() + "); codegen generates one set",
+                              "keep one kane statement with speeds");
+        if (speeds && !sys.constraints().empty())
+            throw ScriptError(where, "the model has both constraint statements and Kane's equations in "
+                                     "generalized speeds; codegen generates one form",
+                              "give the rolling as the kane statement's constraints, or declare the "
+                              "coordinates with q'' and drop the speeds");
+        if (speeds) {
+            q.clear();
+            for (const ex& x : speeds->coordinates) q.push_back(table.variable(table.name(x)));
+        }
+    }
+    for (const TimeVariable& v : q)
+        if (!speeds && v.order() < 2)
+            throw ScriptError(where, "the coordinate " + v.name() + " has no second derivative declared; generated "
+                                     "code integrates q'', or the speeds of a kane statement",
+                              "declare it as variable " + v.name() + "'', or form Kane's equations in "
+                              "generalized speeds (kane K for ... speeds ... kinematics [...])");
+    std::vector<ex> loads = r.loads.empty() ? table.symbols(SymbolKind::unknown) : r.loads;
+    // closed loops and rolling: the unknowns that are neither listed loads nor inputs are the
+    // constraint forces, solved for with the accelerations
+    std::vector<ex> constraint_forces;
+    if (!speeds && !sys.constraints().empty()) {
+        if (language == Language::matlab)
+            throw ScriptError(r.language.location,
+                              "code for models with constraints is generated in C, C++ and Python only",
+                              "write codegen c (or cpp, python)");
+        std::vector<ex> given;
+        for (const ex& u : table.symbols(SymbolKind::unknown)) {
+            bool listed = r.loads.empty() ? numbers.inputs.count(u) != 0
+                                          : std::any_of(r.loads.begin(), r.loads.end(),
+                                                        [&](const ex& l) { return l.is_equal(u); });
+            (listed ? given : constraint_forces).push_back(u);
+        }
+        loads = given;
+        if (constraint_forces.size() != sys.constraints().size())
+            throw ScriptError(where, "the model has " + std::to_string(sys.constraints().size()) +
+                                         " scalar constraints but " + std::to_string(constraint_forces.size()) +
+                                         " unknowns left to hold them",
+                              "give the driving loads with input (input T = 0) or codegen c for T, so that "
+                              "one unknown force per constraint remains");
+    }
+    CodegenOptions opts;
+    opts.name = r.name.empty() ? script_name : r.name;
+    if (!is_identifier(opts.name))
+        throw ScriptError(where, "'" + opts.name + "' cannot name generated code (letters, digits and _ only)",
+                          "choose a name: codegen c name pendulum");
+    opts.source = script_file;
+    for (const auto& [name, u] : units)
+        if (u.display) opts.units[name] = u.display->text;
+        else if (u.dim.known && !u.dim.is_none()) opts.units[name] = si_unit(u.dim);
+    for (std::size_t i = 0; i < numbers.outputs.size(); ++i) {
+        // coordinates and rates are columns of the generated simulation already
+        bool state = false;
+        for (const TimeVariable& v : q) state = state || numbers.outputs[i].expression.is_equal(v.symbol()) ||
+                                                (!speeds && numbers.outputs[i].expression.is_equal(v.d(1)));
+        if (speeds)
+            for (const ex& u : speeds->independent_speeds) state = state || numbers.outputs[i].expression.is_equal(u);
+        if (state) continue;
+        opts.outputs.push_back({code_identifier(numbers.outputs[i].name), numbers.outputs[i].expression,
+                                numbers.output_si_units[i]});
+    }
+    // the script's simulation settings make the generated simulation program
+    opts.simulation = true;
+    SimulationSpec& spec = opts.simulation_spec;
+    spec.final_time = numbers.options.t_final;
+    spec.output_step = numbers.options.output_step;
+    spec.absolute_tolerance = numbers.options.abs_tol;
+    spec.relative_tolerance = numbers.options.rel_tol;
+    auto initial = [&](const ex& x) {
+        auto it = numbers.initial.find(x);
+        return it == numbers.initial.end() ? 0.0 : table.evaluate(it->second);
+    };
+    for (const TimeVariable& v : q) {
+        spec.initial_q.push_back(initial(v.symbol()));
+        if (!speeds) spec.initial_qp.push_back(initial(v.d(1)));
+    }
+    if (speeds)
+        for (const ex& u : speeds->independent_speeds) spec.initial_qp.push_back(initial(u));
+    for (const ex& l : loads) {
+        auto it = numbers.inputs.find(l);
+        spec.load_laws.push_back(it == numbers.inputs.end() ? ex(0) : it->second);
+    }
+    // a tree of bodies in relative coordinates: the recursive formation (linear in the number
+    // of bodies, forward dynamics with no solve); otherwise Kane's equations with their M
+    bool tree = false;
+    GeneratedCode g = guard(where, [&] {
+        // joint-reaction measures among the loads: inverse dynamics from the road-map rows
+        std::vector<ex> inverse_residuals;
+        if (std::any_of(loads.begin(), loads.end(),
+                        [&](const ex& x) { return sys.reaction_of(x); }))
+            inverse_residuals = residuals_of(plan_roadmap(sys, q, loads));
+        if (speeds) return generate_code(table, *speeds, loads, language, r.dir, opts);
+        if (!constraint_forces.empty()) {
+            KaneEquations k = form_kane_equations(sys, KaneOptions{.coordinates = q});
+            DynamicsEquations eqs{q, k.residuals, loads};
+            eqs.constraints = differentiate_constraints(sys.symbols(), sys.constraints());
+            eqs.constraint_forces = constraint_forces;
+            return generate_code(table, eqs, language, r.dir, opts);
+        }
+        if (std::optional<TreeEquations> t = form_tree_equations_if_tree(sys, q)) {
+            tree = true;
+            DynamicsEquations eqs{
+                q, t->residuals, loads, std::nullopt, t->accelerations, inverse_residuals};
+            return generate_code(table, eqs, language, r.dir, opts);
+        }
+        KaneEquations k = form_kane_equations(sys, KaneOptions{.coordinates = q});
+        DynamicsEquations eqs{q, k.residuals, loads, k.dynamics, {}, inverse_residuals};
+        return generate_code(table, eqs, language, r.dir, opts);
+    });
+    std::ostringstream out;
+    const char* language_name[] = {"C", "C++", "MATLAB/Octave", "Python"};
+    out << "generated " << language_name[static_cast<int>(language)] << " for '" << opts.name << "': ";
+    for (std::size_t i = 0; i < g.files.size(); ++i) out << (i ? ", " : "") << g.files[i].filename().string();
+    // (operation counts are left out: they shift by a few with GiNaC's term order from run to run)
+    if (speeds)
+        out << "\n  equations in generalized speeds, state (q, " << to_string(speeds->independent_speeds.front())
+            << ", ...): kinematics, " << speeds->dependent_speeds.size() << " dependent speeds from the motion "
+               "constraints, mass matrix and forcing (" << (g.symmetric_mass_matrix ? "Cholesky" : "LU")
+            << " solve for the speeds' rates)";
+    else if (g.constraint_count)
+        out << "\n  " << g.constraint_count << " constraints: the equations and the constraints solved for the "
+               "accelerations and " << g.constraint_count << " constraint forces (LU), Baumgarte's stabilisation "
+               "in the simulation";
+    else if (tree)
+        out << "\n  recursive formation: mass matrix and forcing, accelerations by the articulated-body "
+               "recursion (no solve)";
+    else
+        out << "\n  mass matrix and forcing (" << (g.symmetric_mass_matrix ? "Cholesky" : "LU")
+            << " solve for the accelerations)";
+    if (g.inverse_dynamics) out << ", inverse dynamics";
+    else if (g.constraint_count) out << "; no inverse dynamics (a constrained model)";
+    else if (speeds) out << "; no inverse dynamics (equations in generalized speeds)";
+    else out << "; no inverse dynamics (" << loads.size() << " loads for " << q.size() << " coordinates)";
+    if (!opts.outputs.empty()) out << ", " << opts.outputs.size() << " outputs";
+    out << ", a simulation program";
+    if (numbers.options.integrator != Integrator::dopri5)
+        out << " (integrating by Dormand-Prince 5(4): the integrator " << to_string(numbers.options.integrator)
+            << " applies to simulate, not to generated code)";
+    transcript.result(out.str());
+}
+
+
+// ---- grammar -----------------------------------------------------------------------------
+
+}  // namespace alembert::lang
