@@ -271,85 +271,31 @@ private:
 
 // reads states (t, q, q', u) and prints q'' and the constraint forces of constrained_dynamics
 std::string constrained_driver(const std::string& name) {
-    std::string s = R"(#include <stdio.h>
-#include "NAME.h"
-static int read(double* x, int n) {
-    for (int i = 0; i < n; ++i)
-        if (scanf("%lf", &x[i]) != 1) return 0;
-    return 1;
-}
-int main(void) {
-    NAME_context c;
-    NAME_init(&c, 0);
-    int count = 0;
-    if (scanf("%d", &count) != 1) return 1;
-    for (int k = 0; k < count; ++k) {
-        double t, q[NAME_NQ], qp[NAME_NQ], u[NAME_NU + 1], qpp[NAME_NQ], lambda[NAME_NC];
+    return c_driver_frame(name, R"(        double t, q[NAME_NQ], qp[NAME_NQ], u[NAME_NU + 1], qpp[NAME_NQ], lambda[NAME_NC];
         if (!read(&t, 1) || !read(q, NAME_NQ) || !read(qp, NAME_NQ) || !read(u, NAME_NU)) return 1;
         if (NAME_constrained_dynamics(&c, t, q, qp, u, qpp, lambda) != 0) return 2;
         for (int i = 0; i < NAME_NQ; ++i) printf("%.17g\n", qpp[i]);
         for (int i = 0; i < NAME_NC; ++i) printf("%.17g\n", lambda[i]);
-    }
-    return 0;
-}
-)";
-    return replace_all(s, "NAME", name);
+)");
 }
 
 // the same in C++ on NAME.hpp
 std::string constrained_cpp_driver(const std::string& name) {
-    std::string s = R"(#include <cstdio>
-#include <iostream>
-#include "NAME.hpp"
-using namespace NAME;
-static bool read(double* x, int n) {
-    for (int i = 0; i < n; ++i)
-        if (!(std::cin >> x[i])) return false;
-    return true;
-}
-int main() {
-    const Model model;
-    int count = 0;
-    if (!(std::cin >> count)) return 1;
-    for (int k = 0; k < count; ++k) {
-        double t, q[nq], qp[nq], u[nu + 1], qpp[nq], lambda[nc];
+    return cpp_driver_frame(name, R"(        double t, q[nq], qp[nq], u[nu + 1], qpp[nq], lambda[nc];
         if (!read(&t, 1) || !read(q, nq) || !read(qp, nq) || !read(u, nu)) return 1;
         if (!model.constrained_dynamics(t, q, qp, u, qpp, lambda)) return 2;
         for (int i = 0; i < nq; ++i) std::printf("%.17g\n", qpp[i]);
         for (int i = 0; i < nc; ++i) std::printf("%.17g\n", lambda[i]);
-    }
-    return 0;
-}
-)";
-    return replace_all(s, "NAME", name);
+)");
 }
 
 // the same in Python on NAME.py
 std::string constrained_python_driver(const std::string& name, const std::string& dir) {
-    return replace_all(replace_all(R"(import sys
-sys.path.insert(0, "DIR")
-import numpy as np
-import NAME as m
-
-ctx = m.Context()
-data = sys.stdin.read().split()
-count, values, at = int(data[0]), [float(x) for x in data[1:]], 0
-
-
-def take(k):
-    global at
-    at += k
-    return np.array(values[at - k:at])
-
-
-for _ in range(count):
-    t = take(1)[0]
+    return python_driver_frame(name, dir, R"(    t = take(1)[0]
     q, qp, u = take(m.NQ), take(m.NQ), take(m.NU)
     qpp, lam = m.constrained_dynamics(t, q, qp, u, ctx)
     print("\n".join(repr(float(x)) for x in list(qpp) + list(lam)))
-)",
-                                   "NAME", name),
-                       "DIR", dir);
+)");
 }
 
 // Debian's interpreter (a pyenv shim may come first on PATH without NumPy)

@@ -15,19 +15,17 @@ inline std::string replace_all(std::string s, const std::string& a, const std::s
     return s;
 }
 
-/// A C99 driver of NAME.h.
-inline std::string c_driver(const std::string& name) {
+/// A C99 program on NAME.h: `read`, `print`, NAME_context c initialised, and `per_state` run
+/// once per state, count states on standard input (the count first). NAME is replaced.
+inline std::string c_driver_frame(const std::string& name, const std::string& per_state) {
     return replace_all(R"(#include <stdio.h>
 #include "NAME.h"
-#define NQ NAME_NQ
-#define NU NAME_NU
-#define NY NAME_NY
-static int read(double* x, int n) {
+static inline int read(double* x, int n) {
     for (int i = 0; i < n; ++i)
         if (scanf("%lf", &x[i]) != 1) return 0;
     return 1;
 }
-static void print(const double* x, int n) {
+static inline void print(const double* x, int n) {
     for (int i = 0; i < n; ++i) printf("%.17g\n", x[i]);
 }
 int main(void) {
@@ -36,72 +34,48 @@ int main(void) {
     int count = 0;
     if (scanf("%d", &count) != 1) return 1;
     for (int k = 0; k < count; ++k) {
-        double t, q[NQ], qp[NQ], qpp[NQ], u[NU + 1], M[NQ * NQ], f[NQ], fd[NQ], id[NU + 1];
-        double y[NY + 1];
-        if (!read(&t, 1) || !read(q, NQ) || !read(qp, NQ) || !read(qpp, NQ) || !read(u, NU))
-            return 1;
-        NAME_mass_forcing(&c, t, q, qp, u, M, f);
-        if (NAME_forward_dynamics(&c, t, q, qp, u, fd) != 0) return 2;
-        print(M, NQ * NQ);
-        print(f, NQ);
-        print(fd, NQ);
-        NAME_inverse_dynamics(&c, t, q, qp, qpp, id);
-        print(id, NU);
-#if NY > 0
-        NAME_outputs(&c, t, q, qp, qpp, u, y);
-#endif
-        print(y, NY);
-    }
+)" + per_state + R"(    }
     return 0;
 }
 )",
                        "NAME", name);
 }
 
-/// A C++ driver of NAME.hpp; `setup` may change the parameters p before the model is built.
-inline std::string cpp_driver(const std::string& name, const std::string& setup = "") {
-    return replace_all(replace_all(R"(#include <cstdio>
+/// The same in C++ on NAME.hpp (namespace NAME used): `setup` may change the parameters p
+/// before `const Model model(p)` is built.
+inline std::string cpp_driver_frame(const std::string& name, const std::string& per_state,
+                                    const std::string& setup = "") {
+    return replace_all(R"(#include <cstdio>
 #include <iostream>
 #include "NAME.hpp"
 using namespace NAME;
-static bool read(double* x, int n) {
+inline bool read(double* x, int n) {
     for (int i = 0; i < n; ++i)
         if (!(std::cin >> x[i])) return false;
     return true;
 }
-static void print(const double* x, int n) {
+inline void print(const double* x, int n) {
     for (int i = 0; i < n; ++i) std::printf("%.17g\n", x[i]);
 }
 int main() {
     Parameters p;
-    SETUP
+    )" + setup + R"(
     const Model model(p);
     int count = 0;
     if (!(std::cin >> count)) return 1;
     for (int k = 0; k < count; ++k) {
-        double t, q[nq], qp[nq], qpp[nq], u[nu + 1], M[nq * nq], f[nq], fd[nq], id[nq + 1];
-        double y[ny + 1];
-        if (!read(&t, 1) || !read(q, nq) || !read(qp, nq) || !read(qpp, nq) || !read(u, nu))
-            return 1;
-        model.mass_forcing(t, q, qp, u, M, f);
-        if (!model.forward_dynamics(t, q, qp, u, fd)) return 2;
-        print(M, nq * nq);
-        print(f, nq);
-        print(fd, nq);
-        model.inverse_dynamics(t, q, qp, qpp, id);
-        print(id, nq);
-        if constexpr (ny > 0) model.outputs(t, q, qp, qpp, u, y);
-        print(y, ny);
-    }
+)" + per_state + R"(    }
     return 0;
 }
 )",
-                                   "NAME", name),
-                       "SETUP", setup);
+                       "NAME", name);
 }
 
-/// A Python driver of NAME.py in `dir`.
-inline std::string python_driver(const std::string& name, const std::string& dir) {
+/// The same in Python on NAME.py in `dir` (imported as m, with ctx = m.Context()): `per_state`
+/// is the loop body, indented four spaces, reading with take(k) (the next k numbers, as an
+/// array) and printing each number on its line.
+inline std::string python_driver_frame(const std::string& name, const std::string& dir,
+                                       const std::string& per_state) {
     return replace_all(replace_all(R"(import sys
 sys.path.insert(0, "DIR")
 import numpy as np
@@ -119,7 +93,55 @@ def take(k):
 
 
 for _ in range(count):
-    t = take(1)[0]
+)" + per_state,
+                                   "NAME", name),
+                       "DIR", dir);
+}
+
+/// A C99 driver of NAME.h: per state t, q, q', q'', u; prints M, f, q'' of forward dynamics,
+/// the loads of inverse dynamics and the outputs.
+inline std::string c_driver(const std::string& name) {
+    return c_driver_frame(name, R"(        double t, q[NAME_NQ], qp[NAME_NQ], qpp[NAME_NQ], u[NAME_NU + 1];
+        double M[NAME_NQ * NAME_NQ], f[NAME_NQ], fd[NAME_NQ], id[NAME_NU + 1], y[NAME_NY + 1];
+        if (!read(&t, 1) || !read(q, NAME_NQ) || !read(qp, NAME_NQ) || !read(qpp, NAME_NQ) ||
+            !read(u, NAME_NU))
+            return 1;
+        NAME_mass_forcing(&c, t, q, qp, u, M, f);
+        if (NAME_forward_dynamics(&c, t, q, qp, u, fd) != 0) return 2;
+        print(M, NAME_NQ * NAME_NQ);
+        print(f, NAME_NQ);
+        print(fd, NAME_NQ);
+        NAME_inverse_dynamics(&c, t, q, qp, qpp, id);
+        print(id, NAME_NU);
+#if NAME_NY > 0
+        NAME_outputs(&c, t, q, qp, qpp, u, y);
+#endif
+        print(y, NAME_NY);
+)");
+}
+
+/// The same in C++ on NAME.hpp; `setup` may change the parameters p before the model is built.
+inline std::string cpp_driver(const std::string& name, const std::string& setup = "") {
+    return cpp_driver_frame(name, R"(        double t, q[nq], qp[nq], qpp[nq], u[nu + 1], M[nq * nq], f[nq], fd[nq], id[nq + 1];
+        double y[ny + 1];
+        if (!read(&t, 1) || !read(q, nq) || !read(qp, nq) || !read(qpp, nq) || !read(u, nu))
+            return 1;
+        model.mass_forcing(t, q, qp, u, M, f);
+        if (!model.forward_dynamics(t, q, qp, u, fd)) return 2;
+        print(M, nq * nq);
+        print(f, nq);
+        print(fd, nq);
+        model.inverse_dynamics(t, q, qp, qpp, id);
+        print(id, nq);
+        if constexpr (ny > 0) model.outputs(t, q, qp, qpp, u, y);
+        print(y, ny);
+)",
+                            setup);
+}
+
+/// The same in Python on NAME.py in `dir`.
+inline std::string python_driver(const std::string& name, const std::string& dir) {
+    return python_driver_frame(name, dir, R"(    t = take(1)[0]
     q, qp, qpp, u = take(m.NQ), take(m.NQ), take(m.NQ), take(m.NU)
     M, f = m.mass_forcing(t, q, qp, u, ctx)
     out = list(M.ravel()) + list(f) + list(m.forward_dynamics(t, q, qp, u, ctx))
@@ -127,9 +149,7 @@ for _ in range(count):
     if m.NY:
         out += list(m.outputs(t, q, qp, qpp, u, ctx))
     print("\n".join(repr(float(x)) for x in out))
-)",
-                                   "NAME", name),
-                       "DIR", dir);
+)");
 }
 
 /// An Octave script driving NAME_*.m on the rows of states.txt (t, q, q', q'', u per row).

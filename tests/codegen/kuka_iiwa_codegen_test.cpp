@@ -44,29 +44,12 @@ std::vector<ArmState> arm_states(int count, unsigned seed) {
 /// A C99 driver of NAME.h: reads the count, then per state t, q, q', q''; prints the loads of
 /// inverse dynamics.
 std::string inverse_dynamics_driver(const std::string& name) {
-    return replace_all(R"(#include <stdio.h>
-#include "NAME.h"
-static int read(double* x, int n) {
-    for (int i = 0; i < n; ++i)
-        if (scanf("%lf", &x[i]) != 1) return 0;
-    return 1;
-}
-int main(void) {
-    NAME_context c;
-    NAME_init(&c, 0);
-    int count = 0;
-    if (scanf("%d", &count) != 1) return 1;
-    for (int k = 0; k < count; ++k) {
-        double t, q[NAME_NQ], qp[NAME_NQ], qpp[NAME_NQ], u[NAME_NU];
+    return c_driver_frame(name, R"(        double t, q[NAME_NQ], qp[NAME_NQ], qpp[NAME_NQ], u[NAME_NU];
         if (!read(&t, 1) || !read(q, NAME_NQ) || !read(qp, NAME_NQ) || !read(qpp, NAME_NQ))
             return 1;
         NAME_inverse_dynamics(&c, t, q, qp, qpp, u);
         for (int i = 0; i < NAME_NU; ++i) printf("%.17g\n", u[i]);
-    }
-    return 0;
-}
-)",
-                       "NAME", name);
+)");
 }
 
 /// Brute-force Newton–Euler for inverse dynamics: the motor torques and the reactions of the

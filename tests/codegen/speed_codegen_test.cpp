@@ -22,6 +22,7 @@
 #include "alembert/error.hpp"
 #include "alembert/mech/sample_models.hpp"
 #include "drivers.hpp"
+#include "support/meijaard2007.hpp"
 #include "support/expect.hpp"
 
 namespace alembert::test {
@@ -81,23 +82,7 @@ KaneEquations kane_of(const SampleNonholonomicModel& m, bool simplify) {
 
 // reads states (t, q, ur, u) and prints urp, qp and us per state
 std::string speed_driver(const std::string& name) {
-    return replace_all(R"(#include <stdio.h>
-#include "NAME.h"
-static int read(double* x, int n) {
-    for (int i = 0; i < n; ++i)
-        if (scanf("%lf", &x[i]) != 1) return 0;
-    return 1;
-}
-static void print(const double* x, int n) {
-    for (int i = 0; i < n; ++i) printf("%.17g\n", x[i]);
-}
-int main(void) {
-    NAME_context c;
-    NAME_init(&c, 0);
-    int count = 0;
-    if (scanf("%d", &count) != 1) return 1;
-    for (int k = 0; k < count; ++k) {
-        double t, q[NAME_NQ], ur[NAME_NUR], u[NAME_NU + 1], urp[NAME_NUR], qp[NAME_NQ];
+    return c_driver_frame(name, R"(        double t, q[NAME_NQ], ur[NAME_NUR], u[NAME_NU + 1], urp[NAME_NUR], qp[NAME_NQ];
         double us[NAME_NUS + 1];
         if (!read(&t, 1) || !read(q, NAME_NQ) || !read(ur, NAME_NUR) || !read(u, NAME_NU)) return 1;
         if (NAME_forward_dynamics(&c, t, q, ur, u, urp) != 0) return 2;
@@ -108,33 +93,12 @@ int main(void) {
         print(urp, NAME_NUR);
         print(qp, NAME_NQ);
         print(us, NAME_NUS);
-    }
-    return 0;
-}
-)",
-                       "NAME", name);
+)");
 }
 
 // the same driver in C++ on NAME.hpp
 std::string speed_cpp_driver(const std::string& name) {
-    return replace_all(R"(#include <cstdio>
-#include <iostream>
-#include "NAME.hpp"
-using namespace NAME;
-static bool read(double* x, int n) {
-    for (int i = 0; i < n; ++i)
-        if (!(std::cin >> x[i])) return false;
-    return true;
-}
-static void print(const double* x, int n) {
-    for (int i = 0; i < n; ++i) std::printf("%.17g\n", x[i]);
-}
-int main() {
-    const Model model;
-    int count = 0;
-    if (!(std::cin >> count)) return 1;
-    for (int k = 0; k < count; ++k) {
-        double t, q[nq], ur[nur], u[nu + 1], urp[nur], qp[nq], us[nus + 1];
+    return cpp_driver_frame(name, R"(        double t, q[nq], ur[nur], u[nu + 1], urp[nur], qp[nq], us[nus + 1];
         if (!read(&t, 1) || !read(q, nq) || !read(ur, nur) || !read(u, nu)) return 1;
         if (!model.forward_dynamics(t, q, ur, u, urp)) return 2;
         model.kinematics(t, q, ur, qp);
@@ -142,41 +106,18 @@ int main() {
         print(urp, nur);
         print(qp, nq);
         print(us, nus);
-    }
-    return 0;
-}
-)",
-                       "NAME", name);
+)");
 }
 
 // the same driver in Python on NAME.py (states on standard input)
 std::string speed_python_driver(const std::string& name, const std::string& dir) {
-    return replace_all(replace_all(R"(import sys
-sys.path.insert(0, "DIR")
-import numpy as np
-import NAME as m
-
-ctx = m.Context()
-data = sys.stdin.read().split()
-count, values, at = int(data[0]), [float(x) for x in data[1:]], 0
-
-
-def take(k):
-    global at
-    at += k
-    return np.array(values[at - k:at])
-
-
-for _ in range(count):
-    t = take(1)[0]
+    return python_driver_frame(name, dir, R"(    t = take(1)[0]
     q, ur, u = take(m.NQ), take(m.NUR), take(m.NU)
     out = list(m.forward_dynamics(t, q, ur, u, ctx)) + list(m.kinematics(t, q, ur, ctx))
     if m.NUS:
         out += list(m.dependent_speeds(t, q, ur, ctx))
     print("\n".join(repr(float(x)) for x in out))
-)",
-                                   "NAME", name),
-                       "DIR", dir);
+)");
 }
 
 // Debian's interpreter (a pyenv shim may come first on PATH without NumPy)
@@ -471,13 +412,7 @@ TEST(SpeedCodegen, RollingDiskSimulationKeepsEnergyAndRolling) {
     EXPECT_GT(travelled, 0.5);  // it rolled somewhere
 }
 
-// Table 2 of Meijaard et al. (2007): the eigenvalues of the benchmark bicycle at 0..10 m/s (as
-// tests/eom/whipple_bicycle_test.cpp transcribes them).
-struct Table2Row {
-    double v;
-    std::complex<double> eig[4];
-};
-const Table2Row kTable2[] = {
+const MeijaardTable2Row kMeijaardTable2[] = {
     {0, {{-5.53094371765393, 0}, {-3.13164324790656, 0}, {3.13164324790656, 0},
          {5.53094371765393, 0}}},
     {1, {{-3.13423125066578, 0}, {3.52696170990070, -0.80774027519930},
@@ -542,8 +477,8 @@ TEST(SpeedCodegen, WhippleBicycleRightHandSideGivesMeijaardsEigenvalues) {
     const double h = 1e-5, r_R = *st.value(st.symbol("r_R"));
     std::ostringstream in;
     in.precision(17);
-    in << std::size(kTable2) * 18 << '\n';
-    for (const Table2Row& row : kTable2)
+    in << std::size(kMeijaardTable2) * 18 << '\n';
+    for (const MeijaardTable2Row& row : kMeijaardTable2)
         for (int j = 0; j < 9; ++j)
             for (double sign : {1.0, -1.0}) {
                 std::vector<double> x(9, 0.0);
@@ -553,12 +488,12 @@ TEST(SpeedCodegen, WhippleBicycleRightHandSideGivesMeijaardsEigenvalues) {
                 in << '\n';
             }
     std::vector<double> dx = run_driver(dir.path(), "rhs", in.str());
-    ASSERT_EQ(dx.size(), std::size(kTable2) * 18 * 9);
+    ASSERT_EQ(dx.size(), std::size(kMeijaardTable2) * 18 * 9);
     auto by_parts = [](auto p, auto q) {
         return p.real() != q.real() ? p.real() < q.real() : p.imag() < q.imag();
     };
     double worst = 0;
-    for (std::size_t k = 0; k < std::size(kTable2); ++k) {
+    for (std::size_t k = 0; k < std::size(kMeijaardTable2); ++k) {
         const double* d = dx.data() + k * 18 * 9;
         Eigen::MatrixXd A(9, 9);
         for (int j = 0; j < 9; ++j)
@@ -569,14 +504,14 @@ TEST(SpeedCodegen, WhippleBicycleRightHandSideGivesMeijaardsEigenvalues) {
         for (int i = 0; i < 4; ++i)
             for (int j = 0; j < 4; ++j) A4(i, j) = A(ls[i], ls[j]);
         Eigen::EigenSolver<Eigen::Matrix4d> es(A4);
-        std::vector<std::complex<double>> got, want(kTable2[k].eig, kTable2[k].eig + 4);
+        std::vector<std::complex<double>> got, want(kMeijaardTable2[k].eig, kMeijaardTable2[k].eig + 4);
         for (int i = 0; i < 4; ++i) got.push_back(es.eigenvalues()(i));
         std::sort(got.begin(), got.end(), by_parts);
         std::sort(want.begin(), want.end(), by_parts);
         for (int i = 0; i < 4; ++i) {
             worst = std::max(worst, std::abs(got[i] - want[i]));
             EXPECT_LT(std::abs(got[i] - want[i]), 1e-6)
-                << "v = " << kTable2[k].v << ": eigenvalue " << got[i] << ", published " << want[i];
+                << "v = " << kMeijaardTable2[k].v << ": eigenvalue " << got[i] << ", published " << want[i];
         }
     }
     record("max_eigenvalue_difference", worst);
