@@ -174,6 +174,51 @@ void check_simulation(CodePlan& plan, const CodegenOptions& options, std::size_t
                             " loads; give one per load (or none for zero loads)");
 }
 
+// the loads as the plan names them, each checked to be an unknown of the table
+void plan_loads(CodePlan& plan, const SymbolTable& table, const std::vector<ex>& loads,
+                const CodegenOptions& options) {
+    for (const ex& u : loads) {
+        if (!table.owns(u) || table.kind(u) != SymbolKind::unknown)
+            throw ArgumentError(std::string(kWho) + ": the load '" + to_string(u) +
+                                "' is not an unknown of the table; declare it with "
+                                "SymbolTable::add_unknown()");
+        plan.loads.push_back({table.name(u), unit_of(options, table.name(u))});
+    }
+}
+
+// the constants kept as named parameters, and how every function is compiled with them
+struct ParameterPlan {
+    std::vector<ex> symbols;
+    std::vector<std::string> names;
+    CompileOptions compile;
+};
+
+ParameterPlan plan_parameters(const SymbolTable& table, const CodegenOptions& options) {
+    ParameterPlan pp;
+    pp.symbols = chosen_parameters(table, options);
+    for (const ex& c : pp.symbols) pp.names.push_back(table.name(c));
+    pp.compile = {.parameters = pp.symbols, .expand_angle_sums = options.expand_angle_sums};
+    return pp;
+}
+
+// the requested outputs' expressions (through `in_state`, which writes them in the generated
+// functions' inputs), their names checked and recorded in the plan
+template <class InState>
+std::vector<ex> plan_outputs(CodePlan& plan, const CodegenOptions& options, InState in_state) {
+    std::vector<ex> y;
+    std::set<std::string> seen;
+    for (const CodegenOutput& o : options.outputs) {
+        if (!is_identifier(o.name) || !seen.insert(o.name).second)
+            throw ArgumentError(std::string(kWho) + ": the output name '" + o.name +
+                                "' is not an identifier or is used twice; name each output "
+                                "once with letters, digits and _");
+        y.push_back(in_state(o.expression));
+        plan.outputs.push_back({o.name, o.unit.empty() ? unit_of(options, o.name) : o.unit});
+    }
+    return y;
+}
+
+
 }  // namespace
 
 std::size_t CodePlan::array_length(const std::string& array) const {
@@ -241,18 +286,11 @@ CodePlan plan_code(const SymbolTable& table, const DynamicsEquations& eq,
         plan.qp.push_back({table.name(v.d(1)), per_second(unit, 1)});
         plan.qpp.push_back({table.name(v.d(2)), per_second(unit, 2)});
     }
-    for (const ex& u : eq.loads) {
-        if (!table.owns(u) || table.kind(u) != SymbolKind::unknown)
-            throw ArgumentError(std::string(kWho) + ": the load '" + to_string(u) +
-                                "' is not an unknown of the table; declare it with "
-                                "SymbolTable::add_unknown()");
-        plan.loads.push_back({table.name(u), unit_of(options, table.name(u))});
-    }
-    std::vector<ex> parameters = chosen_parameters(table, options);
-    std::vector<std::string> parameter_names;
-    for (const ex& c : parameters) parameter_names.push_back(table.name(c));
-    const CompileOptions compile_options{.parameters = parameters,
-                                         .expand_angle_sums = options.expand_angle_sums};
+    plan_loads(plan, table, eq.loads, options);
+    const ParameterPlan pp = plan_parameters(table, options);
+    const std::vector<ex>& parameters = pp.symbols;
+    const std::vector<std::string>& parameter_names = pp.names;
+    const CompileOptions& compile_options = pp.compile;
     std::vector<std::string> q_names, qp_names, qpp_names, u_names;
     for (std::size_t i = 0; i < n; ++i) {
         q_names.push_back(plan.q[i].name);
@@ -421,16 +459,7 @@ CodePlan plan_code(const SymbolTable& table, const DynamicsEquations& eq,
 
     // ---- requested outputs ---------------------------------------------------------------------
     if (!options.outputs.empty()) {
-        std::vector<ex> y;
-        std::set<std::string> seen;
-        for (const CodegenOutput& o : options.outputs) {
-            if (!is_identifier(o.name) || !seen.insert(o.name).second)
-                throw ArgumentError(std::string(kWho) + ": the output name '" + o.name +
-                                    "' is not an identifier or is used twice; name each output "
-                                    "once with letters, digits and _");
-            y.push_back(o.expression);
-            plan.outputs.push_back({o.name, o.unit.empty() ? unit_of(options, o.name) : o.unit});
-        }
+        const std::vector<ex> y = plan_outputs(plan, options, [](const ex& e) { return e; });
         plan.output_function = {
             .name = "outputs",
             .summary = "requested outputs y",
@@ -507,18 +536,11 @@ CodePlan plan_speed_code(const SymbolTable& table, const KaneEquations& K,
     }
     for (const ex& us : K.dependent_speeds)
         plan.dependent_speeds.push_back({table.name(us), unit_of(options, table.name(us))});
-    for (const ex& u : loads) {
-        if (!table.owns(u) || table.kind(u) != SymbolKind::unknown)
-            throw ArgumentError(std::string(kWho) + ": the load '" + to_string(u) +
-                                "' is not an unknown of the table; declare it with "
-                                "SymbolTable::add_unknown()");
-        plan.loads.push_back({table.name(u), unit_of(options, table.name(u))});
-    }
-    std::vector<ex> parameters = chosen_parameters(table, options);
-    std::vector<std::string> parameter_names;
-    for (const ex& c : parameters) parameter_names.push_back(table.name(c));
-    const CompileOptions compile_options{.parameters = parameters,
-                                         .expand_angle_sums = options.expand_angle_sums};
+    plan_loads(plan, table, loads, options);
+    const ParameterPlan pp = plan_parameters(table, options);
+    const std::vector<ex>& parameters = pp.symbols;
+    const std::vector<std::string>& parameter_names = pp.names;
+    const CompileOptions& compile_options = pp.compile;
     auto names = [](const std::vector<CodeSymbol>& v) {
         std::vector<std::string> out;
         for (const CodeSymbol& x : v) out.push_back(x.name);
@@ -592,16 +614,7 @@ CodePlan plan_speed_code(const SymbolTable& table, const KaneEquations& K,
 
     // ---- requested outputs ---------------------------------------------------------------------
     if (!options.outputs.empty()) {
-        std::vector<ex> y;
-        std::set<std::string> seen;
-        for (const CodegenOutput& o : options.outputs) {
-            if (!is_identifier(o.name) || !seen.insert(o.name).second)
-                throw ArgumentError(std::string(kWho) + ": the output name '" + o.name +
-                                    "' is not an identifier or is used twice; name each output "
-                                    "once with letters, digits and _");
-            y.push_back(in_state(o.expression));
-            plan.outputs.push_back({o.name, o.unit.empty() ? unit_of(options, o.name) : o.unit});
-        }
+        const std::vector<ex> y = plan_outputs(plan, options, in_state);
         plan.output_function = {
             .name = "outputs",
             .summary = "requested outputs y",
