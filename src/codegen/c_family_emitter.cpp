@@ -237,7 +237,6 @@ std::string solvers(const CodePlan& plan, const Dialect& d) {
     return os.str();
 }
 
-// the declarations of the header (C: prototypes; C++: the class's members)
 // the declarations of equations in generalized speeds, state (q, ur)
 std::string speed_declarations(const CodePlan& plan, const Dialect& d) {
     std::ostringstream os;
@@ -282,6 +281,7 @@ std::string speed_declarations(const CodePlan& plan, const Dialect& d) {
     return os.str();
 }
 
+// the declarations of the header (C: prototypes; C++: the class's members)
 std::string declarations(const CodePlan& plan, const Dialect& d) {
     if (plan.speed_form) return speed_declarations(plan, d);
     std::ostringstream os;
