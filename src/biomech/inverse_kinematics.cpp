@@ -112,27 +112,32 @@ FitOutcome fit_frame(FrameProblem& p, Eigen::VectorXd& q, const InverseKinematic
     // initial damping from the scale of J^T J
     double mu = tau * std::max(A.diagonal().maxCoeff(), std::numeric_limits<double>::min());
     double nu = 2;
-    Eigen::VectorXd q_old = q, r_old = p.r, h(n);
-    Eigen::MatrixXd J_old = p.J;
+    Eigen::VectorXd q_old = q, r_old = p.r, h(n), g_new(n);
+    Eigen::MatrixXd J_old = p.J, A_mu(n, n);
     while (res.iterations < o.max_iterations) {
         ++res.iterations;
         // damped Gauss-Newton step: (J^T J + mu I) h = -J^T r
-        Eigen::MatrixXd A_mu = A;
+        A_mu = A;
         A_mu.diagonal().array() += mu;
         h = A_mu.llt().solve(-g);
         res.last_step = h.norm();
         const bool small_step = res.last_step <= o.step_tolerance * (1 + q.norm());
-        // trial point: accept when the cost falls
+        // trial point
         q_old = q, r_old = p.r, J_old = p.J;
         q += h;
         const double F_new = p.evaluate(q);
+        g_new.noalias() = p.J.transpose() * p.r;
+        // accept when the cost falls as predicted; where the change in cost is lost in its
+        // rounding (a few ulps of F, near a minimum with residuals), when the gradient falls
         const double predicted = 0.5 * h.dot(mu * h - g);
         const double rho = predicted > 0 ? (F - F_new) / predicted : -1;
-        if (rho > 0 || (small_step && F_new <= F)) {
+        const bool in_rounding = std::abs(F - F_new) <= 64 * std::numeric_limits<double>::epsilon() * F;
+        const bool accept = in_rounding ? g_new.squaredNorm() < g.squaredNorm() : rho > 0;
+        if (accept) {
             F = F_new;
-            A = p.J.transpose() * p.J;
-            g = p.J.transpose() * p.r;
-            mu *= std::max(1.0 / 3.0, 1 - std::pow(2 * rho - 1, 3));
+            A.noalias() = p.J.transpose() * p.J;
+            g = g_new;
+            mu *= in_rounding ? 1.0 / 3.0 : std::max(1.0 / 3.0, 1 - std::pow(2 * rho - 1, 3));
             nu = 2;
             if (small_step || F == 0 || g.lpNorm<Eigen::Infinity>() <= o.gradient_tolerance) {
                 res.converged = true;
@@ -142,7 +147,7 @@ FitOutcome fit_frame(FrameProblem& p, Eigen::VectorXd& q, const InverseKinematic
             // rejected: back to the last point, more damping
             q = q_old, p.r = r_old, p.J = J_old;
             if (small_step) {
-                res.converged = true;  // no step within rounding lowers the cost
+                res.converged = true;  // no step this small lowers the cost or the gradient
                 return res;
             }
             mu *= nu;

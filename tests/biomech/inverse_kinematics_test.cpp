@@ -5,9 +5,14 @@
 
 #include <gtest/gtest.h>
 
+#include <unistd.h>
+
 #include <Eigen/Geometry>
 #include <array>
 #include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
 #include <limits>
 #include <numbers>
 #include <random>
@@ -277,6 +282,79 @@ TEST(InverseKinematics, AMissingMarkerStretchIsSkippedNotZeroAndNamed) {
     EXPECT_EQ(residuals.names[2], "T2");
     EXPECT_TRUE(std::isnan(residuals.columns[2][55]));
     EXPECT_EQ(residuals.names.back(), "max");
+}
+
+TEST(InverseKinematics, ReadsTheMarkersOfAnOpenSimTrcFileInMillimetres) {
+    // the trial written as a lab's .trc (mm, tab-separated, 17 significant digits), one cell
+    // of T2 left empty, read back by read_trc: the fit is in metres whatever the file's unit
+    auto leg = make_leg();
+    const Trial trial = leg_trial(50);
+    namespace fs = std::filesystem;
+    const fs::path path =
+        fs::temp_directory_path() / ("alembert_ik_test_" + std::to_string(::getpid()) + ".trc");
+    {
+        std::ofstream out(path);
+        out << "PathFileType\t4\t(X/Y/Z)\tleg.trc\n"
+            << "DataRate\tCameraRate\tNumFrames\tNumMarkers\tUnits\tOrigDataRate\t"
+               "OrigDataStartFrame\tOrigNumFrames\n"
+            << "100\t100\t50\t9\tmm\t100\t1\t50\nFrame#\tTime";
+        for (const auto& name : kLegMarkerNames) out << "\t" << name << "\t\t";
+        out << "\n\t";
+        for (std::size_t i = 1; i <= 9; ++i) out << "\tX" << i << "\tY" << i << "\tZ" << i;
+        out << "\n\n";
+        char cell[64];
+        for (std::size_t k = 0; k < 50; ++k) {
+            out << k + 1 << "\t" << static_cast<double>(k) / 100.0;
+            for (std::size_t c = 1; c < trial.markers.table.columns.size(); ++c) {
+                std::snprintf(cell, sizeof cell, "%.17g",
+                              1000 * trial.markers.table.columns[c][k]);
+                out << "\t" << (k == 20 && c >= 4 && c <= 6 ? "" : cell);
+            }
+            out << "\n";
+        }
+    }
+    const MarkerTable markers = read_trc(path.string());
+    fs::remove(path);
+    const InverseKinematicsResult r =
+        calc_inverse_kinematics(leg->system, leg->q, leg->markers, markers);
+    EXPECT_LT(largest_coordinate_error(r, trial), 1e-9);
+    EXPECT_EQ(r.frames[20].missing, std::vector<std::string>{"T2"});
+}
+
+TEST(InverseKinematics, AWeightCountsAsThatManyCopiesOfTheMarker) {
+    // with noisy markers the fit depends on the weights: weight 2 on T1 gives the same
+    // coordinates as T1 listed twice (a second model marker "T1b" on the same point, reading a
+    // copy of T1's columns), and differs from weight 1
+    auto leg = make_leg();
+    Trial trial = leg_trial(20);
+    std::mt19937 random(3);
+    std::normal_distribution<double> noise(0, 2e-3);
+    for (std::size_t c = 1; c < trial.markers.table.columns.size(); ++c)
+        for (double& v : trial.markers.table.columns[c]) v += noise(random);
+    MarkerTable doubled = trial.markers;
+    doubled.markers.push_back("T1b");
+    for (int a = 0; a < 3; ++a)
+        doubled.table.add_column(std::string("T1b.") + "XYZ"[a], "m"),
+            doubled.table.columns.back() = trial.markers.table.columns[trial.markers.column("T1", a)];
+    std::vector<ModelMarker> weighted = leg->markers, copied = leg->markers;
+    weighted[0].weight = 2;
+    copied.push_back({"T1b", leg->markers[0].point, 1.0});
+    const InverseKinematicsResult r_w =
+        calc_inverse_kinematics(leg->system, leg->q, weighted, trial.markers);
+    const InverseKinematicsResult r_c =
+        calc_inverse_kinematics(leg->system, leg->q, copied, doubled);
+    const InverseKinematicsResult r_1 =
+        calc_inverse_kinematics(leg->system, leg->q, leg->markers, trial.markers);
+    double same = 0, differ = 0;
+    for (std::size_t k = 0; k < 20; ++k)
+        for (std::size_t j = 0; j < 9; ++j) {
+            same = std::max(same, std::abs(r_w.frames[k].q[j] - r_c.frames[k].q[j]));
+            differ = std::max(differ, std::abs(r_w.frames[k].q[j] - r_1.frames[k].q[j]));
+        }
+    EXPECT_LT(same, 1e-10);
+    EXPECT_GT(differ, 1e-5);
+    // residuals are distances, not weighted: T1's is the same in both
+    EXPECT_NEAR(r_w.frames[5].residual[0], r_c.frames[5].residual[0], 1e-12);
 }
 
 TEST(InverseKinematics, PlanarChainAgreesWithTwoMarkerSegmentAngles) {

@@ -30,7 +30,7 @@ struct InverseKinematicsOptions {
     int max_iterations = 100;
     /// A frame has converged when a step |dq| is at most step_tolerance (1 + |q|), or the
     /// gradient of the cost is at most gradient_tolerance (m^2 per coordinate unit).
-    double step_tolerance = 1e-10;
+    double step_tolerance = 1e-12;
     double gradient_tolerance = 1e-15;
     /// A frame whose markers present leave a combination of coordinates free (the Jacobian's
     /// smallest singular value below rank_tolerance times its largest) is refused: its
@@ -82,18 +82,21 @@ struct InverseKinematicsResult {
 /// Method (stated because results depend on it):
 ///  - the positions p_i(q) and their partial derivatives dp_i/dq_k are formed symbolically
 ///    once and compiled once into one tape (CompiledExpressions): the Jacobian is analytic;
-///  - each frame is solved by Levenberg-Marquardt (Levenberg 1944, Marquardt 1963) with
-///    the damping mu I and Nielsen's update of mu (Madsen, Nielsen and Tingleff, Methods
-///    for Non-linear Least Squares Problems, 2004, algorithm 3.16), started from the previous
-///    frame's solution (the first frame from options.initial);
+///  - each frame is solved by Levenberg-Marquardt (Levenberg 1944, Marquardt 1963): steps
+///    (J^T W J + mu I) h = -J^T W r, mu started at tau times the largest diagonal of J^T W J
+///    (tau = 1e-3 at the first frame, 1e-6 after) and updated by Nielsen's rule (Madsen,
+///    Nielsen and Tingleff, Methods for Non-linear Least Squares Problems, 2004, algorithm
+///    3.16), started from the previous frame's solution (the first frame from
+///    options.initial); a trial step is kept when the cost falls, or, where the change in
+///    cost is lost in its rounding (near a minimum with residuals), when the gradient falls;
 ///  - a marker with a coordinate NaN in a frame is left out of that frame's sum (not taken as
 ///    zero) and named in the frame's `missing`.
 ///
 /// Our own Levenberg-Marquardt rather than Eigen's unsupported module: the problems are small
-/// and dense (tens of coordinates), and the steps damped by mu I leave untouched what the
-/// markers do not determine, stop on tolerances stated in the coordinates' own units, and
-/// allocate nothing per frame; the unsupported module's interface is not part of Eigen's
-/// stable API.
+/// and dense (tens of coordinates); ours starts its damping small where the previous frame's
+/// solution is close (tau, below), stops on tolerances stated in the coordinates' own units and
+/// reports its iterations; the unsupported module's interface is not part of Eigen's stable
+/// API.
 ///
 /// Construction checks the marker set: the model's markers must fix every coordinate
 /// (3 m >= n, and the Jacobian of all marker positions at a generic configuration has full
