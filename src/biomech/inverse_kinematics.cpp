@@ -33,7 +33,8 @@ std::string millimetres(double d) { return format_csv_number(1000 * d, 3) + " mm
 // true if `e` holds a trigonometric function whose argument depends on `q`
 bool enters_trigonometrically(const ex& e, const ex& q) {
     if (GiNaC::is_exactly_a<GiNaC::function>(e) &&
-        (GiNaC::is_the_function<GiNaC::sin_SERIAL>(e) || GiNaC::is_the_function<GiNaC::cos_SERIAL>(e) ||
+        (GiNaC::is_the_function<GiNaC::sin_SERIAL>(e) ||
+         GiNaC::is_the_function<GiNaC::cos_SERIAL>(e) ||
          GiNaC::is_the_function<GiNaC::tan_SERIAL>(e)) &&
         e.op(0).has(q))
         return true;
@@ -131,7 +132,8 @@ FitOutcome fit_frame(FrameProblem& p, Eigen::VectorXd& q, const InverseKinematic
         // rounding (a few ulps of F, near a minimum with residuals), when the gradient falls
         const double predicted = 0.5 * h.dot(mu * h - g);
         const double rho = predicted > 0 ? (F - F_new) / predicted : -1;
-        const bool in_rounding = std::abs(F - F_new) <= 64 * std::numeric_limits<double>::epsilon() * F;
+        const bool in_rounding =
+            std::abs(F - F_new) <= 64 * std::numeric_limits<double>::epsilon() * F;
         const bool accept = in_rounding ? g_new.squaredNorm() < g.squaredNorm() : rho > 0;
         if (accept) {
             F = F_new;
@@ -192,8 +194,9 @@ InverseKinematics::InverseKinematics(System& system, std::vector<ex> coordinates
     std::set<std::string> seen;
     for (const ModelMarker& mk : markers_) {
         if (mk.name.empty())
-            throw ArgumentError(std::string(ik::kBuild) +
-                                ": a model marker has an empty name; name it as the marker file does");
+            throw ArgumentError(
+                std::string(ik::kBuild) +
+                ": a model marker has an empty name; name it as the marker file does");
         if (!seen.insert(mk.name).second)
             throw ArgumentError(std::string(ik::kBuild) + ": model marker '" + mk.name +
                                 "' is listed twice; list each marker once");
@@ -256,8 +259,8 @@ InverseKinematics::InverseKinematics(System& system, std::vector<ex> coordinates
     const std::vector<std::string> free =
         ik::free_coordinates(J, coordinate_names_, options_.rank_tolerance);
     if (!free.empty()) {
-        const std::string counts = std::to_string(m) + " markers give " + std::to_string(3 * m) +
-                                   " measured coordinates";
+        const std::string counts =
+            std::to_string(m) + " markers give " + std::to_string(3 * m) + " measured coordinates";
         throw ModelError(
             std::string(ik::kBuild) + ": inverse kinematics is under-determined: " +
             (3 * m < n ? counts + ", fewer than the " + std::to_string(n) + " coordinates; "
@@ -271,9 +274,9 @@ InverseKinematics::InverseKinematics(System& system, std::vector<ex> coordinates
 
 std::vector<double> InverseKinematics::calc_marker_positions(const std::vector<double>& q) const {
     if (q.size() != coordinate_names_.size())
-        throw ArgumentError("InverseKinematics::calc_marker_positions(): " +
-                            std::to_string(q.size()) + " values for " +
-                            std::to_string(coordinate_names_.size()) + " coordinates");
+        throw ArgumentError(
+            "InverseKinematics::calc_marker_positions(): " + std::to_string(q.size()) +
+            " values for " + std::to_string(coordinate_names_.size()) + " coordinates");
     std::vector<double> out = tape_.evaluate(std::span<const double>(q));
     out.resize(3 * markers_.size());
     return out;
@@ -287,12 +290,12 @@ InverseKinematicsResult InverseKinematics::solve(const MarkerTable& markers) con
     for (const ModelMarker& mk : markers_) {
         if (std::find(markers.markers.begin(), markers.markers.end(), mk.name) ==
             markers.markers.end())
-            throw ArgumentError(std::string(ik::kSolve) + ": model marker '" + mk.name +
-                                "' is not in the marker file (its markers: " +
-                                ik::quoted_list(markers.markers) +
-                                "); name the model marker as the file does");
-        columns.push_back({markers.column(mk.name, 0), markers.column(mk.name, 1),
-                           markers.column(mk.name, 2)});
+            throw ArgumentError(
+                std::string(ik::kSolve) + ": model marker '" + mk.name +
+                "' is not in the marker file (its markers: " + ik::quoted_list(markers.markers) +
+                "); name the model marker as the file does");
+        columns.push_back(
+            {markers.column(mk.name, 0), markers.column(mk.name, 1), markers.column(mk.name, 2)});
     }
     if (frames == 0)
         throw ArgumentError(std::string(ik::kSolve) + ": the marker table has no frames");
@@ -354,15 +357,15 @@ InverseKinematicsResult InverseKinematics::solve(const MarkerTable& markers) con
         const std::vector<std::string> free =
             ik::free_coordinates(p.J, coordinate_names_, options_.rank_tolerance);
         if (!free.empty())
-            throw SolveError(std::string(ik::kSolve) + ": at " + where() + " the markers " +
-                             (frame.missing.empty() ? std::string("")
-                                                    : "present (" + ik::quoted_list(frame.missing) +
-                                                          " missing) ") +
-                             "do not fix " + ik::quoted_list(free) +
-                             "; fill the gaps first (regularize_time_base), trim the trial, or "
-                             "add markers" +
-                             (frame.missing.empty() ? " (the model may be at a singular pose)"
-                                                    : ""));
+            throw SolveError(
+                std::string(ik::kSolve) + ": at " + where() + " the markers " +
+                (frame.missing.empty()
+                     ? std::string("")
+                     : "present (" + ik::quoted_list(frame.missing) + " missing) ") +
+                "do not fix " + ik::quoted_list(free) +
+                "; fill the gaps first (regularize_time_base), trim the trial, or "
+                "add markers" +
+                (frame.missing.empty() ? " (the model may be at a singular pose)" : ""));
         // residual distances of the markers present (r holds sqrt(w_i) (p_i - m_i) at q)
         frame.q.assign(q.data(), q.data() + q.size());
         frame.residual.assign(m, std::numeric_limits<double>::quiet_NaN());
@@ -443,9 +446,9 @@ std::string InverseKinematicsResult::describe() const {
     const auto count = static_cast<double>(frames.size());
     s += "iterations per frame: " + format_csv_number(iterations / count, 3) + " on average, " +
          std::to_string(most) + " at most\n";
-    s += "RMS marker residual per frame: " + ik::millimetres(rms_sum / count) +
-         " on average, " + ik::millimetres(frames[worst_rms].rms) + " at most (t = " +
-         ik::seconds(frames[worst_rms].time) + ")\n";
+    s += "RMS marker residual per frame: " + ik::millimetres(rms_sum / count) + " on average, " +
+         ik::millimetres(frames[worst_rms].rms) +
+         " at most (t = " + ik::seconds(frames[worst_rms].time) + ")\n";
     s += "largest marker residual: " + ik::millimetres(frames[worst].max) + ", '" +
          frames[worst].worst_marker + "' at t = " + ik::seconds(frames[worst].time) + "\n";
     // each marker's RMS over the frames where it was present

@@ -16,9 +16,9 @@ namespace alembert {
 /// A marker of a model: the name it has in the marker file and the model's point it is
 /// stuck on, with the weight of its squared distance in the fit.
 struct ModelMarker {
-    std::string name{};      ///< as in the .trc file
-    const Point* point{};    ///< a point of the model (fixed on a body)
-    double weight = 1.0;     ///< w_i > 0 of w_i |p_model - p_measured|^2
+    std::string name{};    ///< as in the .trc file
+    const Point* point{};  ///< a point of the model (fixed on a body)
+    double weight = 1.0;   ///< w_i > 0 of w_i |p_model - p_measured|^2
 };
 
 /// How InverseKinematics solves each frame.
@@ -40,14 +40,14 @@ struct InverseKinematicsOptions {
 
 /// The fit of one frame.
 struct InverseKinematicsFrame {
-    double time = 0;                      ///< s
-    std::vector<double> q{};              ///< coordinates, in the order given
-    std::vector<double> residual{};       ///< per model marker |p_model - p_measured|, m; NaN if missing
-    double rms = 0;                       ///< sqrt(mean of residual^2 over the markers present), m
-    double max = 0;                       ///< the largest residual, m
-    std::string worst_marker{};           ///< the marker with the largest residual
-    std::vector<std::string> missing{};   ///< model markers missing (NaN) in this frame
-    int iterations = 0;                   ///< trial steps taken
+    double time = 0;                 ///< s
+    std::vector<double> q{};         ///< coordinates, in the order given
+    std::vector<double> residual{};  ///< per model marker |p_model - p_measured|, m; NaN if missing
+    double rms = 0;                  ///< sqrt(mean of residual^2 over the markers present), m
+    double max = 0;                  ///< the largest residual, m
+    std::string worst_marker{};      ///< the marker with the largest residual
+    std::vector<std::string> missing{};  ///< model markers missing (NaN) in this frame
+    int iterations = 0;                  ///< trial steps taken
 };
 
 /// The result of inverse kinematics over a trial.
@@ -114,8 +114,8 @@ public:
     ///         alembert::ModelError if the markers cannot fix the coordinates (fewer measured
     ///         marker coordinates than coordinates, or a combination the markers do not
     ///         change), naming the coordinates they leave free.
-    InverseKinematics(System& system, std::vector<ex> coordinates,
-                      std::vector<ModelMarker> markers, InverseKinematicsOptions options = {});
+    InverseKinematics(System& system, std::vector<ex> coordinates, std::vector<ModelMarker> markers,
+                      InverseKinematicsOptions options = {});
 
     /// Solves every frame of `markers`, in time order.
     /// @throws alembert::ArgumentError if a model marker's name is not in the marker file
