@@ -48,6 +48,7 @@ bool enters_trigonometrically(const ex& e, const ex& q) {
 std::vector<std::string> free_coordinates(const Eigen::MatrixXd& J,
                                           const std::vector<std::string>& names, double tol) {
     const auto n = static_cast<Eigen::Index>(names.size());
+    if (J.rows() == 0) return names;
     Eigen::JacobiSVD<Eigen::MatrixXd> svd(J, Eigen::ComputeFullV);
     const Eigen::VectorXd& s = svd.singularValues();
     const double s_max = s.size() ? s(0) : 0.0;
@@ -59,6 +60,21 @@ std::vector<std::string> free_coordinates(const Eigen::MatrixXd& J,
     for (Eigen::Index k = 0; k < n; ++k)
         if (null.row(k).norm() > 1e-6) free.push_back(names[static_cast<std::size_t>(k)]);
     return free;
+}
+
+// free_coordinates, with a cheap screen first: the eigenvalues of J^T J (n x n) bound the
+// singular values of J as sqrt(lambda) to within sqrt(eps lambda_max), so a ratio above 1e-6
+// clears every tolerance below that without the singular value decomposition of J
+std::vector<std::string> free_coordinates_screened(const Eigen::MatrixXd& J,
+                                                   const std::vector<std::string>& names,
+                                                   double tol) {
+    if (J.rows() >= J.cols() && tol < 1e-6) {
+        const Eigen::MatrixXd A = J.transpose() * J;
+        const Eigen::VectorXd lambda =
+            Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd>(A, Eigen::EigenvaluesOnly).eigenvalues();
+        if (lambda(0) > 1e-12 * lambda(lambda.size() - 1)) return {};
+    }
+    return free_coordinates(J, names, tol);
 }
 
 // what one frame's fit needs, allocated once per solve
@@ -355,7 +371,7 @@ InverseKinematicsResult InverseKinematics::solve(const MarkerTable& markers) con
                              "names and the model's dimensions");
         // the markers present must fix the coordinates here
         const std::vector<std::string> free =
-            ik::free_coordinates(p.J, coordinate_names_, options_.rank_tolerance);
+            ik::free_coordinates_screened(p.J, coordinate_names_, options_.rank_tolerance);
         if (!free.empty())
             throw SolveError(
                 std::string(ik::kSolve) + ": at " + where() + " the markers " +
