@@ -101,6 +101,10 @@ struct InverseKinematicsResult {
 /// Construction checks the marker set: the model's markers must fix every coordinate
 /// (3 m >= n, and the Jacobian of all marker positions at a generic configuration has full
 /// column rank n).
+///
+/// The object keeps no reference to the System after construction. solve() allocates its own
+/// workspace, so several threads may solve trials with one object at once;
+/// calc_marker_positions() uses the tape's scratch buffer (one thread at a time).
 class InverseKinematics {
 public:
     /// Forms and compiles the marker positions and their Jacobian for `coordinates` (symbols
