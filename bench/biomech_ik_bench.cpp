@@ -3,7 +3,6 @@
 #include <benchmark/benchmark.h>
 
 #include <alembert/biomech/inverse_kinematics.hpp>
-
 #include <cmath>
 #include <map>
 #include <memory>
@@ -44,8 +43,7 @@ std::unique_ptr<Chain> make_chain(int segments) {
         RigidBody& B = sys.add_rigid_body("B" + id);
         Frame& Bf = B.body_frame();
         const std::size_t k = c->q.size();
-        Bf.orient_body_fixed(*parent, RotationSequence::ZXY, c->q[k - 3], c->q[k - 2],
-                             c->q[k - 1]);
+        Bf.orient_body_fixed(*parent, RotationSequence::ZXY, c->q[k - 3], c->q[k - 2], c->q[k - 1]);
         for (int m = 0; m < 3; ++m) {
             const Eigen::Vector3d& r = test::kThighMarkers[static_cast<std::size_t>(m)];
             Point& P = sys.add_point("M" + id + "_" + std::to_string(m + 1), &B);
@@ -100,9 +98,9 @@ void run(benchmark::State& state, const Fixture& f) {
         for (const auto& frame : r.frames) iterations += frame.iterations;
         benchmark::DoNotOptimize(r);
     }
-    state.counters["fps"] = benchmark::Counter(static_cast<double>(kFrames) *
-                                                   static_cast<double>(state.iterations()),
-                                               benchmark::Counter::kIsRate);
+    state.counters["fps"] =
+        benchmark::Counter(static_cast<double>(kFrames) * static_cast<double>(state.iterations()),
+                           benchmark::Counter::kIsRate);
     state.counters["n"] = static_cast<double>(f.coordinates);
     state.counters["markers"] = static_cast<double>(f.markers);
     state.counters["ops"] = static_cast<double>(f.ik->operation_count());

@@ -15,6 +15,7 @@
 #include <limits>
 #include <numbers>
 #include <random>
+#include <thread>
 
 #include "alembert/biomech/segment_angles.hpp"
 #include "alembert/error.hpp"
@@ -310,6 +311,22 @@ TEST(InverseKinematics, PlanarChainAgreesWithTwoMarkerSegmentAngles) {
     for (std::size_t k = 0; k < 100; ++k) {
         EXPECT_NEAR(r.frames[k].q[2], theta_thigh[k], 1e-9);
         EXPECT_NEAR(r.frames[k].q[3], knee[k], 1e-9);
+    }
+}
+
+TEST(InverseKinematics, TwoThreadsSolvingWithOneObjectGetTheAnswerOfOne) {
+    auto leg = make_leg();
+    const Trial trial = leg_trial(100);
+    const InverseKinematics ik(leg->system, leg->q, leg->markers);
+    const InverseKinematicsResult alone = ik.solve(trial.markers);
+    InverseKinematicsResult a, b;
+    std::thread ta([&] { a = ik.solve(trial.markers); });
+    std::thread tb([&] { b = ik.solve(trial.markers); });
+    ta.join();
+    tb.join();
+    for (std::size_t k = 0; k < alone.frames.size(); ++k) {
+        EXPECT_EQ(a.frames[k].q, alone.frames[k].q);
+        EXPECT_EQ(b.frames[k].q, alone.frames[k].q);
     }
 }
 
