@@ -24,7 +24,7 @@ constexpr std::size_t kFrames = 200;  // 2 s at 100 Hz
 struct Chain {
     System system;
     std::vector<ex> q;
-    std::vector<ModelMarker> markers;
+    std::vector<MarkerPoint> markers;
 };
 
 std::unique_ptr<Chain> make_chain(int segments) {
@@ -60,11 +60,11 @@ std::unique_ptr<Chain> make_chain(int segments) {
 
 // markers of `ik` along a smooth motion (each coordinate a sinusoid within +-0.3, away from
 // the ZXY sequence's singularity) with Gaussian noise `sigma` per marker coordinate
-MarkerTable synthetic_trial(const InverseKinematics& ik, const std::vector<ModelMarker>& markers,
+MarkerTable synthetic_trial(const InverseKinematics& ik, const std::vector<MarkerPoint>& markers,
                             double sigma) {
     MarkerTable m;
     m.table.add_column("time", "s");
-    for (const ModelMarker& mk : markers) {
+    for (const MarkerPoint& mk : markers) {
         m.markers.push_back(mk.name);
         for (const char* a : {".X", ".Y", ".Z"}) m.table.add_column(mk.name + a, "m");
     }

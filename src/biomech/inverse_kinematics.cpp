@@ -179,7 +179,7 @@ FitOutcome fit_frame(FrameProblem& p, Eigen::VectorXd& q, const InverseKinematic
 }  // namespace
 
 InverseKinematics::InverseKinematics(System& system, std::vector<ex> coordinates,
-                                     std::vector<ModelMarker> markers,
+                                     std::vector<MarkerPoint> markers,
                                      InverseKinematicsOptions options)
     : markers_(std::move(markers)), options_(std::move(options)) {
     SymbolTable& table = system.symbols();
@@ -208,7 +208,7 @@ InverseKinematics::InverseKinematics(System& system, std::vector<ex> coordinates
         throw ArgumentError(std::string(ik::kBuild) +
                             ": no model markers given; list the model's marker points");
     std::set<std::string> seen;
-    for (const ModelMarker& mk : markers_) {
+    for (const MarkerPoint& mk : markers_) {
         if (mk.name.empty())
             throw ArgumentError(
                 std::string(ik::kBuild) +
@@ -227,7 +227,7 @@ InverseKinematics::InverseKinematics(System& system, std::vector<ex> coordinates
     // positions p_i = r^{P_i/N_o} in N, and which symbols they use
     std::vector<ex> positions;
     positions.reserve(3 * m);
-    for (const ModelMarker& mk : markers_) {
+    for (const MarkerPoint& mk : markers_) {
         const Col3 p = mk.point->pos_from(system.origin()).components_in(system.newtonian());
         for (const ex& e : p.v) {
             for (const ex& s : table.calc_leaf_symbols(e)) {
@@ -303,7 +303,7 @@ InverseKinematicsResult InverseKinematics::solve(const MarkerTable& markers) con
     const std::size_t frames = markers.table.row_count();
     // every model marker must be in the file
     std::vector<std::array<std::size_t, 3>> columns;
-    for (const ModelMarker& mk : markers_) {
+    for (const MarkerPoint& mk : markers_) {
         if (std::find(markers.markers.begin(), markers.markers.end(), mk.name) ==
             markers.markers.end())
             throw ArgumentError(
@@ -319,14 +319,14 @@ InverseKinematicsResult InverseKinematics::solve(const MarkerTable& markers) con
     InverseKinematicsResult result;
     result.coordinates = coordinate_names_;
     result.units = units_;
-    for (const ModelMarker& mk : markers_) result.markers.push_back(mk.name);
+    for (const MarkerPoint& mk : markers_) result.markers.push_back(mk.name);
     result.frames.reserve(frames);
 
     ik::FrameProblem p;
     p.tape = &tape_;
     p.m = m;
     p.n = n;
-    for (const ModelMarker& mk : markers_) p.sqrt_w.push_back(std::sqrt(mk.weight));
+    for (const MarkerPoint& mk : markers_) p.sqrt_w.push_back(std::sqrt(mk.weight));
     p.measured.resize(3 * m);
     p.out.resize(tape_.output_count());
     p.workspace.resize(tape_.workspace_size());
@@ -487,7 +487,7 @@ std::string InverseKinematicsResult::describe() const {
 }
 
 InverseKinematicsResult calc_inverse_kinematics(System& system, const std::vector<ex>& coordinates,
-                                                const std::vector<ModelMarker>& markers,
+                                                const std::vector<MarkerPoint>& markers,
                                                 const MarkerTable& table,
                                                 const InverseKinematicsOptions& options) {
     return InverseKinematics(system, coordinates, markers, options).solve(table);

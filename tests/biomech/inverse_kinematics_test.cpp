@@ -243,7 +243,7 @@ TEST(InverseKinematics, AWeightCountsAsThatManyCopiesOfTheMarker) {
         doubled.table.add_column(std::string("T1b.") + "XYZ"[a], "m"),
             doubled.table.columns.back() =
                 trial.markers.table.columns[trial.markers.column("T1", a)];
-    std::vector<ModelMarker> weighted = leg->markers, copied = leg->markers;
+    std::vector<MarkerPoint> weighted = leg->markers, copied = leg->markers;
     weighted[0].weight = 2;
     copied.push_back({"T1b", leg->markers[0].point, 1.0});
     const InverseKinematicsResult r_w =
@@ -285,7 +285,7 @@ TEST(InverseKinematics, PlanarChainAgreesWithTwoMarkerSegmentAngles) {
     ANKLE.set_pos(KNEE, ex(-kShank) * L.body_frame().x());
     Point& THI = sys.add_point("THI", &T);
     THI.set_pos(HIP, ex(-0.2) * T.body_frame().x() + ex(0.05) * T.body_frame().y());
-    std::vector<ModelMarker> markers = {
+    std::vector<MarkerPoint> markers = {
         {"HIP", &HIP, 1.0}, {"KNEE", &KNEE, 1.0}, {"ANKLE", &ANKLE, 1.0}, {"THI", &THI, 1.0}};
     // a squat-like motion, markers from cosines and sines by hand
     std::vector<std::vector<Eigen::Vector3d>> p;
@@ -341,7 +341,7 @@ TEST(InverseKinematics, AModelMarkerNotInTheFileIsNamed) {
 
 TEST(InverseKinematics, FewerMarkerCoordinatesThanCoordinatesIsUnderDetermined) {
     auto leg = make_leg();
-    std::vector<ModelMarker> two = {leg->markers[0], leg->markers[1]};
+    std::vector<MarkerPoint> two = {leg->markers[0], leg->markers[1]};
     EXPECT_THROW_MSG(InverseKinematics(leg->system, leg->q, two), ModelError,
                      "under-determined: 2 markers give 6 measured coordinates, fewer than the 9 "
                      "coordinates; the markers do not fix");
@@ -350,7 +350,7 @@ TEST(InverseKinematics, FewerMarkerCoordinatesThanCoordinatesIsUnderDetermined) 
 TEST(InverseKinematics, MarkersThatLeaveTheFootFreeNameItsCoordinates) {
     // thigh and shank markers (18 measured coordinates for 9) cannot fix the ankle's angles
     auto leg = make_leg();
-    std::vector<ModelMarker> no_foot(leg->markers.begin(), leg->markers.begin() + 6);
+    std::vector<MarkerPoint> no_foot(leg->markers.begin(), leg->markers.begin() + 6);
     EXPECT_THROW_MSG(InverseKinematics(leg->system, leg->q, no_foot), ModelError,
                      "under-determined: the markers' positions do not change along a "
                      "combination of coordinates; the markers do not fix 'qA1', 'qA2'; add "
@@ -389,7 +389,7 @@ TEST(InverseKinematics, MalformedModelsAreRefusedWithTheirNames) {
     twice.push_back(leg->q[0]);
     EXPECT_THROW_MSG(InverseKinematics(leg->system, twice, leg->markers), ArgumentError,
                      "coordinate 'tx' is listed twice");
-    std::vector<ModelMarker> bad = leg->markers;
+    std::vector<MarkerPoint> bad = leg->markers;
     bad[2].weight = 0;
     EXPECT_THROW_MSG(InverseKinematics(leg->system, leg->q, bad), ArgumentError,
                      "model marker 'T3' has weight 0");

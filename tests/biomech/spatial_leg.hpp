@@ -35,7 +35,7 @@ inline const std::array<Eigen::Vector3d, 3> kFootMarkers = {Eigen::Vector3d(0.12
 struct Leg {
     System system;
     std::vector<ex> q;
-    std::vector<ModelMarker> markers;
+    std::vector<MarkerPoint> markers;
 };
 
 inline std::unique_ptr<Leg> make_leg() {

@@ -15,7 +15,7 @@ namespace alembert {
 
 /// A marker of a model: the name it has in the marker file and the model's point it is
 /// stuck on, with the weight of its squared distance in the fit.
-struct ModelMarker {
+struct MarkerPoint {
     std::string name{};    ///< as in the .trc file
     const Point* point{};  ///< a point of the model (fixed on a body)
     double weight = 1.0;   ///< w_i > 0 of w_i |p_model - p_measured|^2
@@ -118,7 +118,7 @@ public:
     ///         alembert::ModelError if the markers cannot fix the coordinates (fewer measured
     ///         marker coordinates than coordinates, or a combination the markers do not
     ///         change), naming the coordinates they leave free.
-    InverseKinematics(System& system, std::vector<ex> coordinates, std::vector<ModelMarker> markers,
+    InverseKinematics(System& system, std::vector<ex> coordinates, std::vector<MarkerPoint> markers,
                       InverseKinematicsOptions options = {});
 
     /// Solves every frame of `markers`, in time order.
@@ -142,14 +142,14 @@ public:
 private:
     std::vector<std::string> coordinate_names_;
     std::vector<std::string> units_;
-    std::vector<ModelMarker> markers_;
+    std::vector<MarkerPoint> markers_;
     InverseKinematicsOptions options_;
     CompiledExpressions tape_;  // positions (3 m), then the Jacobian (3 m x n, row-major)
 };
 
 /// InverseKinematics(system, coordinates, markers, options).solve(table).
 InverseKinematicsResult calc_inverse_kinematics(System& system, const std::vector<ex>& coordinates,
-                                                const std::vector<ModelMarker>& markers,
+                                                const std::vector<MarkerPoint>& markers,
                                                 const MarkerTable& table,
                                                 const InverseKinematicsOptions& options = {});
 
