@@ -4,7 +4,9 @@
 
 #include <sys/types.h>
 
+#include <filesystem>
 #include <string>
+#include <string_view>
 
 namespace alembert {
 
@@ -27,6 +29,14 @@ private:
     std::string path_;
     int slot_;
 };
+
+/// Writes `bytes` to `path` all or nothing: into a temporary file beside it (registered as a
+/// TemporaryFile, so an interrupted run leaves none behind), renamed over `path` once complete.
+/// Every file Alembert writes goes through here. `who` names the caller in errors.
+/// @throws alembert::ArgumentError naming `path` if it cannot be written (directory missing or
+///         not writable, disk full) or replaced; `path` is then as it was.
+void write_file_atomically(const std::filesystem::path& path, std::string_view bytes,
+                           const std::string& who);
 
 /// A child process registered to be terminated (SIGTERM) if this process is interrupted
 /// while the child runs; unregistered at destruction, after the caller has waited for it.

@@ -85,8 +85,8 @@ void print_body(std::ostream& os, const CodePlan& plan, const CodeFunction& f, c
     std::vector<std::size_t> lengths;
     std::size_t offset = 1;
     for (std::size_t a = 0; a < f.arrays.size(); ++a) {
-        // q, qp, qpp have one entry per coordinate, u one per load
-        std::size_t len = f.arrays[a] == "u" ? plan.load_count : plan.coordinate_count;
+        // q, qp, qpp have one entry per coordinate, u one per load, ur, urp one per speed
+        std::size_t len = plan.array_length(f.arrays[a]);
         lengths.push_back(len);
         bool any = false;
         for (std::size_t k = 0; k < len; ++k) any = any || read[offset + k];
@@ -238,7 +238,52 @@ std::string solvers(const CodePlan& plan, const Dialect& d) {
 }
 
 // the declarations of the header (C: prototypes; C++: the class's members)
+// the declarations of equations in generalized speeds, state (q, ur)
+std::string speed_declarations(const CodePlan& plan, const Dialect& d) {
+    std::ostringstream os;
+    const std::string ind = d.cpp ? "    " : "";
+    const std::string ctx = d.cpp ? "" : "const " + d.name + "_context* c, ";
+    const std::string cnst = d.cpp ? " const" : "";
+    const std::string solve = plan.symmetric_mass_matrix ? "Cholesky" : "LU with partial pivoting";
+    const std::string fail = d.cpp ? "false" : "-1";
+    os << ind << "/* Mass matrix M (nur x nur, row by row) and forcing f of M urp = f, ur the\n"
+       << ind << "   independent speeds. */\n"
+       << ind << "void " << d.function("mass_forcing") << "(" << ctx << arguments(plan.mass_forcing)
+       << ")" << cnst << ";\n"
+       << ind << "/* The coordinate rates qp = k(q, ur): the kinematic differential equations,\n"
+       << ind << "   the dependent speeds replaced. */\n"
+       << ind << "void " << d.function("kinematics") << "(" << ctx << arguments(plan.kinematics)
+       << ")" << cnst << ";\n";
+    if (!plan.dependent_speed_function.empty())
+        os << ind << "/* The dependent speeds us (" << detail::names_of(plan.dependent_speeds)
+           << ") from the motion constraints. */\n"
+           << ind << "void " << d.function("dependent_speeds") << "(" << ctx
+           << arguments(plan.dependent_speed_function) << ")" << cnst << ";\n";
+    os << ind << "/* Forward dynamics: the rates urp = M^-1 f of the independent speeds (" << solve
+       << ");\n"
+       << ind << "   returns " << fail << " if M is singular. */\n"
+       << ind << (d.cpp ? "bool " : "int ") << d.function("forward_dynamics") << "(" << ctx
+       << "double t, const double* q, const double* ur, const double* u, double* urp)" << cnst
+       << ";\n";
+    if (!plan.output_function.empty())
+        os << ind << "/* The requested outputs y. */\n"
+           << ind << "void " << d.function("outputs") << "(" << ctx
+           << arguments(plan.output_function) << ")" << cnst << ";\n";
+    if (!plan.load_laws.empty())
+        os << ind << "/* The loads u during a simulation, from t, q and ur. */\n"
+           << ind << "void " << d.function("load_laws") << "(" << ctx
+           << arguments(plan.load_laws) << ")" << cnst << ";\n";
+    os << ind << "/* Right-hand side of x' = (qp, urp) for x = (q, ur), loads from load_laws (the\n"
+       << ind << "   motion constraints hold at every state: no stabilisation); returns " << fail
+       << "\n"
+       << ind << "   if M is singular. */\n"
+       << ind << (d.cpp ? "bool " : "int ") << d.function("rhs") << "(" << ctx
+       << "double t, const double* x, double* dx)" << cnst << ";\n";
+    return os.str();
+}
+
 std::string declarations(const CodePlan& plan, const Dialect& d) {
+    if (plan.speed_form) return speed_declarations(plan, d);
     std::ostringstream os;
     const std::string ind = d.cpp ? "    " : "";
     const std::string ctx = d.cpp ? "" : "const " + d.name + "_context* c, ";
@@ -260,12 +305,12 @@ std::string declarations(const CodePlan& plan, const Dialect& d) {
            << ind << "void " << d.function("constraint_drift") << "(" << ctx
            << arguments(plan.constraint_drift) << ")" << cnst << ";\n"
            << ind << "/* The accelerations qpp and the constraint forces lambda from A x = b (LU with\n"
-           << ind << "   partial pivoting); returns -1 if A is singular. */\n"
-           << ind << "int " << d.function("constrained_dynamics") << "(" << ctx
+           << ind << "   partial pivoting); returns " << (d.cpp ? "false" : "-1") << " if A is singular. */\n"
+           << ind << (d.cpp ? "bool " : "int ") << d.function("constrained_dynamics") << "(" << ctx
            << "double t, const double* q, const double* qp, const double* u, double* qpp, "
               "double* lambda)" << cnst << ";\n"
            << ind << "/* Forward dynamics: the accelerations qpp (constrained_dynamics);\n"
-           << ind << "   returns -1 if A is singular. */\n";
+           << ind << "   returns " << (d.cpp ? "false" : "-1") << " if A is singular. */\n";
     else if (!plan.accelerations.empty())
         os << "/* The accelerations qpp from the loads u by the articulated-body recursion (no\n"
            << ind << "   mass matrix, no solve). */\n"
@@ -295,7 +340,7 @@ std::string declarations(const CodePlan& plan, const Dialect& d) {
         os << ind << "/* Right-hand side of x' = (qp, qpp) for x = (q, qp), loads from load_laws,\n"
            << ind << "   the constraints stabilised by Baumgarte's method at the rate a =\n"
            << ind << "   " << d.size("stabilization") << ": c'' + 2 a c' + a^2 c = 0, g' + a g = 0;\n"
-           << ind << "   returns -1 if A is singular. */\n";
+           << ind << "   returns " << (d.cpp ? "false" : "-1") << " if A is singular. */\n";
     else
         os << ind << "/* Right-hand side of x' = (qp, qpp) for x = (q, qp), loads from load_laws;\n"
            << ind << "   returns " << (d.cpp ? "false" : "-1") << " if M is singular. */\n";
@@ -315,26 +360,51 @@ std::string forward_and_rhs(const CodePlan& plan, const Dialect& d) {
     const std::string solver = (d.cpp ? "" : d.name + "_") +
                                std::string(plan.symmetric_mass_matrix ? "cholesky_solve" : "lu_solve");
     const std::size_t nc = plan.constraint_count();
+    if (plan.speed_form) {
+        // x = (q, ur): q' from the kinematic equations, ur' = M^-1 f
+        const std::string nur = d.size("nur");
+        os << (d.cpp ? "bool " : "int ") << owner << d.function("forward_dynamics") << "(" << ctx
+           << "double t, const double* q, const double* ur, const double* u, double* urp)" << cnst
+           << " {\n"
+           << "    double M[" << nur << " * " << nur << "], f[" << nur << "];\n"
+           << "    " << d.function("mass_forcing") << "(" << c_arg << "t, q, ur, u, M, f);\n"
+           << "    return " << solver << "(" << nur << ", M, f, urp)" << (d.cpp ? " == 0" : "")
+           << ";\n}\n\n"
+           << (d.cpp ? "bool " : "int ") << owner << d.function("rhs") << "(" << ctx
+           << "double t, const double* x, double* dx)" << cnst << " {\n";
+        std::string u = d.null();
+        if (plan.load_count > 0) {
+            os << "    double u[" << nu << "];\n"
+               << "    " << d.function("load_laws") << "(" << c_arg << "t, x, x + " << nq << ", u);\n";
+            u = "u";
+        }
+        os << "    " << d.function("kinematics") << "(" << c_arg << "t, x, x + " << nq << ", dx);\n"
+           << "    return " << d.function("forward_dynamics") << "(" << c_arg << "t, x, x + " << nq
+           << ", " << u << ", dx + " << nq << ");\n}\n";
+        return os.str();
+    }
     if (nc > 0) {
         // A x = b in x = (qpp, lambda); k = nq + nc unknowns
         const std::string k = "(" + nq + " + " + d.size("nc") + ")";
-        os << "int " << owner << d.function("constrained_dynamics") << "(" << ctx
+        const std::string type = d.cpp ? "bool " : "int ", ok = d.cpp ? "true" : "0",
+                          fail = d.cpp ? "false" : "-1";
+        os << type << owner << d.function("constrained_dynamics") << "(" << ctx
            << "double t, const double* q, const double* qp, const double* u, double* qpp, "
               "double* lambda)" << cnst << " {\n"
            << "    double A[" << k << " * " << k << "], b[" << k << "], x[" << k << "];\n"
            << "    int i;\n"
            << "    " << d.function("mass_forcing") << "(" << c_arg << "t, q, qp, u, A, b);\n"
-           << "    if (" << solver << "(" << k << ", A, b, x) != 0) return -1;\n"
+           << "    if (" << solver << "(" << k << ", A, b, x) != 0) return " << fail << ";\n"
            << "    for (i = 0; i < " << nq << "; ++i) qpp[i] = x[i];\n"
            << "    for (i = 0; i < " << d.size("nc") << "; ++i) lambda[i] = x[" << nq << " + i];\n"
-           << "    return 0;\n}\n\n"
-           << "int " << owner << d.function("forward_dynamics") << "(" << ctx
+           << "    return " << ok << ";\n}\n\n"
+           << type << owner << d.function("forward_dynamics") << "(" << ctx
            << "double t, const double* q, const double* qp, const double* u, double* qpp)" << cnst
            << " {\n"
            << "    double lambda[" << d.size("nc") << "];\n"
            << "    return " << d.function("constrained_dynamics") << "(" << c_arg
            << "t, q, qp, u, qpp, lambda);\n}\n\n"
-           << "int " << owner << d.function("rhs") << "(" << ctx
+           << type << owner << d.function("rhs") << "(" << ctx
            << "double t, const double* x, double* dx)" << cnst << " {\n"
            << "    const double a = " << d.size("stabilization") << ";\n"
            << "    double A[" << k << " * " << k << "], b[" << k << "], y[" << k << "], e[2 * "
@@ -357,12 +427,12 @@ std::string forward_and_rhs(const CodePlan& plan, const Dialect& d) {
             else
                 os << "    b[" << nq << " + " << i << "] += a * e[" << 2 * i + 1 << "]; /* "
                    << plan.constraint_names[i] << " */\n";
-        os << "    if (" << solver << "(" << k << ", A, b, y) != 0) return -1;\n"
+        os << "    if (" << solver << "(" << k << ", A, b, y) != 0) return " << fail << ";\n"
            << "    for (i = 0; i < " << nq << "; ++i) {\n"
            << "        dx[i] = x[" << nq << " + i];\n"
            << "        dx[" << nq << " + i] = y[i];\n"
            << "    }\n"
-           << "    return 0;\n}\n";
+           << "    return " << ok << ";\n}\n";
         return os.str();
     }
     os << (d.cpp ? "bool " : "int ") << owner << d.function("forward_dynamics") << "(" << ctx
@@ -421,15 +491,17 @@ std::string main_program(const CodePlan& plan, const Dialect& d, const CodePrint
     const std::string model_arg = d.cpp ? "const " + d.name + "::Model& model" : "const " + d.name + "_context* c";
     const std::string call_ctx = d.cpp ? "" : "c, ";
     const std::string nx = d.cpp ? "nx" : "NX";
+    // the velocity part of the state: q' (nq of them) or the independent speeds
+    const std::string nv = plan.speed_form ? d.size("nur") : nq;
     std::ostringstream os;
     os << "\n";
     if (d.cpp)
         os << "#include <algorithm>\n#include <cmath>\n#include <cstdio>\n#include <cstdlib>\n"
               "#include <cstring>\n\n#include \"" << d.name << ".hpp\"\n\nnamespace {\n\n"
-           << "using namespace " << d.name << ";\nconstexpr int nx = 2 * nq;\n";
+           << "using namespace " << d.name << ";\nconstexpr int nx = nq + " << nv << ";\n";
     else
         os << "#include <math.h>\n#include <stdio.h>\n#include <stdlib.h>\n#include <string.h>\n\n"
-              "#include \"" << d.name << ".h\"\n\n#define NX (2 * " << nq << ")\n";
+              "#include \"" << d.name << ".h\"\n\n#define NX (" << nq << " + " << nv << ")\n";
     const std::string st = d.cpp ? "" : "static ";
     const std::string fabs = d.math("fabs"), sqrt = d.math("sqrt"), pow = d.math("pow");
     os << "\n/* The simulation: final time, output step and error tolerances. */\n"
@@ -437,7 +509,7 @@ std::string main_program(const CodePlan& plan, const Dialect& d, const CodePrint
        << st << "const double output_step = " << pr.number(sim.output_step) << ";\n"
        << st << "const double abs_tol = " << pr.number(sim.absolute_tolerance) << ";\n"
        << st << "const double rel_tol = " << pr.number(sim.relative_tolerance) << ";\n"
-       << "/* Initial values: q, then qp. */\n"
+       << "/* Initial values: q, then " << (plan.speed_form ? "ur" : "qp") << ". */\n"
        << st << "const double x0[" << nx << "] = {" << list(sim.initial_q, pr)
        << ", " << list(sim.initial_qp, pr) << "};\n\n";
     os << R"(/* One Dormand-Prince 5(4) step of size h from (t, x) with k1 = f(t, x): the fifth-order
@@ -483,14 +555,14 @@ std::string main_program(const CodePlan& plan, const Dialect& d, const CodePrint
 
 /* One CSV row: t, q, qp, the loads and the outputs at (t, x). */
 )" << st << "int write_row(FILE* out, " << model_arg << ", double t, const double* x) {\n";
-    os << "    double u[" << (plan.load_count ? nu : std::string("1")) << "], qpp[" << nq
+    os << "    double u[" << (plan.load_count ? nu : std::string("1")) << "], qpp[" << nv
        << "], y[" << (plan.outputs.empty() ? std::string("1") : ny) << "];\n"
        << "    int i;\n";
     if (plan.load_count)
         os << "    " << (d.cpp ? "model." : d.name + "_") << "load_laws(" << call_ctx
            << "t, x, x + " << nq << ", u);\n";
     else
-        os << "    u[0] = 0.0;\n";
+        os << "    u[0] = 0.0;\n    (void)u;\n";
     os << "    if (!" << (d.cpp ? std::string("(model.forward_dynamics(") : "(" + d.name + "_forward_dynamics(")
        << call_ctx << "t, x, x + " << nq << ", " << (plan.load_count ? "u" : d.null())
        << ", qpp)" << (d.cpp ? "" : " == 0") << ")) return 0;\n";
@@ -498,7 +570,7 @@ std::string main_program(const CodePlan& plan, const Dialect& d, const CodePrint
         os << "    " << (d.cpp ? "model." : d.name + "_") << "outputs(" << call_ctx << "t, x, x + "
            << nq << ", qpp, u, y);\n";
     else
-        os << "    y[0] = 0.0;\n";
+        os << "    y[0] = 0.0;\n    (void)y;\n";
     os << "    fprintf(out, \"%.17g\", t);\n"
        << "    for (i = 0; i < NX; ++i) fprintf(out, \",%.17g\", x[i]);\n";
     if (plan.load_count) os << "    for (i = 0; i < " << nu << "; ++i) fprintf(out, \",%.17g\", u[i]);\n";
@@ -617,7 +689,25 @@ std::vector<GeneratedFile> emit_c_family(const CodePlan& plan, const Dialect& d,
           << "constexpr int nq = " << plan.coordinate_count << ";  // coordinates: "
           << names_of(plan.q) << "\n"
           << "constexpr int nu = " << plan.load_count << ";  // loads: " << names_of(plan.loads)
-          << "\n"
+          << "\n";
+        if (plan.constraint_count() > 0) {
+            std::string macro = d.name + "_STABILIZATION";
+            std::transform(macro.begin(), macro.end(), macro.begin(), ::toupper);
+            h << "constexpr int nc = " << plan.constraint_count() << ";  // constraints: "
+              << constraint_list(plan) << "; their forces: " << names_of(plan.constraint_forces)
+              << "\n"
+              << "// The rate [1/s] at which the simulation's right-hand side damps the\n"
+              << "// constraints' drift (Baumgarte); define " << macro << " before including to\n"
+              << "// change it.\n"
+              << "#ifndef " << macro << "\n#define " << macro << " 10.0\n#endif\n"
+              << "constexpr double stabilization = " << macro << ";\n";
+        }
+        if (plan.speed_form)
+            h << "constexpr int nur = " << plan.qp.size() << ";  // independent speeds: "
+              << names_of(plan.qp) << "\n"
+              << "constexpr int nus = " << plan.dependent_speeds.size() << ";  // dependent speeds: "
+              << names_of(plan.dependent_speeds) << "\n";
+        h
           << "constexpr int ny = " << plan.outputs.size() << ";  // outputs: "
           << names_of(plan.outputs) << "\n\n"
           << "// The model's constants, changeable without generating the code again.\n"
@@ -648,6 +738,11 @@ std::vector<GeneratedFile> emit_c_family(const CodePlan& plan, const Dialect& d,
           << names_of(plan.loads) << " */\n"
           << "#define " << d.size("ny") << " " << plan.outputs.size() << " /* outputs: "
           << names_of(plan.outputs) << " */\n";
+        if (plan.speed_form)
+            h << "#define " << d.size("nur") << " " << plan.qp.size() << " /* independent speeds: "
+              << names_of(plan.qp) << " */\n"
+              << "#define " << d.size("nus") << " " << plan.dependent_speeds.size()
+              << " /* dependent speeds: " << names_of(plan.dependent_speeds) << " */\n";
         if (plan.constraint_count() > 0)
             h << "#define " << d.size("nc") << " " << plan.constraint_count()
               << " /* constraints: " << constraint_list(plan) << "; their forces: "

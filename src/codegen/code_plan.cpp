@@ -121,7 +121,67 @@ std::vector<ex> solve_for_loads(const SymbolTable& table, const DynamicsEquation
     return u;
 }
 
+// the constants kept as parameters: those of the options, or every constant of the table
+std::vector<ex> chosen_parameters(const SymbolTable& table, const CodegenOptions& options) {
+    if (!options.parameters) return table.symbols(SymbolKind::constant);
+    for (const ex& c : *options.parameters)
+        if (!table.owns(c) || table.kind(c) != SymbolKind::constant)
+            throw ArgumentError(std::string(kWho) + ": the parameter '" + to_string(c) +
+                                "' is not a constant of the table; list constants only");
+    return *options.parameters;
+}
+
+// the parameters the plan's programs read, with their defaults
+void record_parameters(CodePlan& plan, const SymbolTable& table, const std::vector<ex>& parameters,
+                       const std::vector<std::string>& parameter_names,
+                       const CodegenOptions& options) {
+    std::vector<char> used(parameters.size(), 0);
+    for (const CodeFunction* f : plan.functions()) mark_parameters_read(f->program, used);
+    for (std::size_t i = 0; i < parameters.size(); ++i) {
+        if (!used[i]) continue;
+        std::optional<double> value = table.value(parameters[i]);
+        if (!value)
+            throw ArgumentError(std::string(kWho) + ": the constant '" + parameter_names[i] +
+                                "' has no value; give it one with SymbolTable::set_value() (it "
+                                "is the parameter's default in the generated code)");
+        plan.parameters.push_back({parameter_names[i], unit_of(options, parameter_names[i]),
+                                   *value});
+    }
+}
+
+// the simulation's settings checked, initial values defaulted (nv velocity states)
+void check_simulation(CodePlan& plan, const CodegenOptions& options, std::size_t nv,
+                      std::size_t load_count, const char* velocities) {
+    plan.simulation = options.simulation;
+    plan.simulation_spec = options.simulation_spec;
+    SimulationSpec& sim = plan.simulation_spec;
+    const std::size_t n = plan.coordinate_count;
+    if (sim.initial_q.empty()) sim.initial_q.assign(n, 0.0);
+    if (sim.initial_qp.empty()) sim.initial_qp.assign(nv, 0.0);
+    if (sim.initial_q.size() != n || sim.initial_qp.size() != nv)
+        throw ArgumentError(std::string(kWho) + ": the simulation has " +
+                            std::to_string(sim.initial_q.size()) + " initial values of q and " +
+                            std::to_string(sim.initial_qp.size()) + " of " + velocities + " for " +
+                            std::to_string(n) + " coordinates and " + std::to_string(nv) + " " +
+                            velocities + "; give one each (or none)");
+    if (!(sim.final_time > 0) || !(sim.output_step > 0) || !(sim.absolute_tolerance > 0) ||
+        !(sim.relative_tolerance > 0))
+        throw ArgumentError(std::string(kWho) + ": the simulation's final time, output step "
+                            "and tolerances must be positive");
+    if (!sim.load_laws.empty() && sim.load_laws.size() != load_count)
+        throw ArgumentError(std::string(kWho) + ": " + std::to_string(sim.load_laws.size()) +
+                            " load laws for " + std::to_string(load_count) +
+                            " loads; give one per load (or none for zero loads)");
+}
+
 }  // namespace
+
+std::size_t CodePlan::array_length(const std::string& array) const {
+    if (array == "u") return load_count;
+    if (array == "ur" || array == "urp") return qp.size();
+    if (array == "us") return dependent_speeds.size();
+    return coordinate_count;
+}
 
 std::vector<const CodeFunction*> CodePlan::functions() const {
     std::vector<const CodeFunction*> out{&mass_forcing};
@@ -130,6 +190,8 @@ std::vector<const CodeFunction*> CodePlan::functions() const {
     if (!output_function.empty()) out.push_back(&output_function);
     if (!load_laws.empty()) out.push_back(&load_laws);
     if (!constraint_drift.empty()) out.push_back(&constraint_drift);
+    if (!kinematics.empty()) out.push_back(&kinematics);
+    if (!dependent_speed_function.empty()) out.push_back(&dependent_speed_function);
     return out;
 }
 
@@ -186,16 +248,7 @@ CodePlan plan_code(const SymbolTable& table, const DynamicsEquations& eq,
                                 "SymbolTable::add_unknown()");
         plan.loads.push_back({table.name(u), unit_of(options, table.name(u))});
     }
-    std::vector<ex> parameters;
-    if (options.parameters) {
-        for (const ex& c : *options.parameters)
-            if (!table.owns(c) || table.kind(c) != SymbolKind::constant)
-                throw ArgumentError(std::string(kWho) + ": the parameter '" + to_string(c) +
-                                    "' is not a constant of the table; list constants only");
-        parameters = *options.parameters;
-    } else {
-        parameters = table.symbols(SymbolKind::constant);
-    }
+    std::vector<ex> parameters = chosen_parameters(table, options);
     std::vector<std::string> parameter_names;
     for (const ex& c : parameters) parameter_names.push_back(table.name(c));
     const CompileOptions compile_options{.parameters = parameters,
@@ -391,24 +444,8 @@ CodePlan plan_code(const SymbolTable& table, const DynamicsEquations& eq,
     }
 
     // ---- simulation: initial values and load laws -----------------------------------------------
-    plan.simulation = options.simulation;
-    plan.simulation_spec = options.simulation_spec;
-    SimulationSpec& sim = plan.simulation_spec;
-    if (sim.initial_q.empty()) sim.initial_q.assign(n, 0.0);
-    if (sim.initial_qp.empty()) sim.initial_qp.assign(n, 0.0);
-    if (sim.initial_q.size() != n || sim.initial_qp.size() != n)
-        throw ArgumentError(std::string(kWho) + ": the simulation has " +
-                            std::to_string(sim.initial_q.size()) + " initial values of q and " +
-                            std::to_string(sim.initial_qp.size()) + " of q' for " +
-                            std::to_string(n) + " coordinates; give one each (or none)");
-    if (!(sim.final_time > 0) || !(sim.output_step > 0) || !(sim.absolute_tolerance > 0) ||
-        !(sim.relative_tolerance > 0))
-        throw ArgumentError(std::string(kWho) + ": the simulation's final time, output step "
-                            "and tolerances must be positive");
-    if (!sim.load_laws.empty() && sim.load_laws.size() != eq.loads.size())
-        throw ArgumentError(std::string(kWho) + ": " + std::to_string(sim.load_laws.size()) +
-                            " load laws for " + std::to_string(eq.loads.size()) +
-                            " loads; give one per load (or none for zero loads)");
+    check_simulation(plan, options, n, eq.loads.size(), "q'");
+    const SimulationSpec& sim = plan.simulation_spec;
     if (!eq.loads.empty()) {
         std::vector<ex> laws = sim.load_laws;
         if (laws.empty()) laws.assign(eq.loads.size(), ex(0));
@@ -424,18 +461,176 @@ CodePlan plan_code(const SymbolTable& table, const DynamicsEquations& eq,
     }
 
     // ---- the parameters the programs read, with their defaults ----------------------------------
-    std::vector<char> used(parameters.size(), 0);
-    for (const CodeFunction* f : plan.functions()) mark_parameters_read(f->program, used);
-    for (std::size_t i = 0; i < parameters.size(); ++i) {
-        if (!used[i]) continue;
-        std::optional<double> value = table.value(parameters[i]);
-        if (!value)
-            throw ArgumentError(std::string(kWho) + ": the constant '" + parameter_names[i] +
-                                "' has no value; give it one with SymbolTable::set_value() (it "
-                                "is the parameter's default in the generated code)");
-        plan.parameters.push_back({parameter_names[i], unit_of(options, parameter_names[i]),
-                                   *value});
+    record_parameters(plan, table, parameters, parameter_names, options);
+    return plan;
+}
+
+CodePlan plan_speed_code(const SymbolTable& table, const KaneEquations& K,
+                         const std::vector<ex>& loads, const CodegenOptions& options) {
+    CodePlan plan;
+    plan.name = options.name;
+    plan.source = options.source.empty() ? "an Alembert model" : options.source;
+    plan.version = generator_version();
+    plan.speed_form = true;
+    if (!is_identifier(options.name))
+        throw ArgumentError(std::string(kWho) + ": the name '" + options.name +
+                            "' is not an identifier; use letters, digits and _ (starting with "
+                            "a letter), e.g. 'rolling_disk'");
+    const std::size_t n = K.coordinates.size(), nr = K.independent_speeds.size(),
+                      ns = K.dependent_speeds.size();
+    if (K.kinematic_equations.empty() || n == 0 || nr == 0)
+        throw ArgumentError(std::string(kWho) + ": Kane's equations were formed without chosen "
+                            "speeds (KaneOptions::speeds and kinematic_equations); pass them as "
+                            "DynamicsEquations{q, kane.residuals, loads} instead");
+    if (K.coordinate_rates.size() != n || K.coordinate_rate_symbols.size() != n ||
+        K.dependent_speed_values.size() != ns || K.dependent_speed_rates.size() != ns ||
+        K.dynamics.A.rows() != nr || K.dynamics.A.cols() != nr || K.dynamics.b.rows() != nr ||
+        K.dynamics.unknowns.size() != nr)
+        throw ArgumentError(std::string(kWho) + ": the KaneEquations are incomplete (" +
+                            std::to_string(n) + " coordinates, " + std::to_string(nr) +
+                            " independent speeds, but counts of their rates, dependent speeds "
+                            "or mass matrix differ); pass form_kane_equations' result whole");
+    plan.coordinate_count = n;
+    plan.load_count = loads.size();
+
+    // ---- names and units --------------------------------------------------------------------
+    std::vector<ex> q = K.coordinates, ur = K.independent_speeds, urp = K.dynamics.unknowns;
+    for (std::size_t i = 0; i < n; ++i) {
+        std::string unit = unit_of(options, table.name(q[i]));
+        plan.q.push_back({table.name(q[i]), unit});
+        plan.coordinate_rates.push_back({table.name(K.coordinate_rate_symbols[i]), per_second(unit, 1)});
     }
+    for (std::size_t r = 0; r < nr; ++r) {
+        std::string unit = unit_of(options, table.name(ur[r]));
+        plan.qp.push_back({table.name(ur[r]), unit});
+        plan.qpp.push_back({table.name(urp[r]), per_second(unit, 1)});
+    }
+    for (const ex& us : K.dependent_speeds)
+        plan.dependent_speeds.push_back({table.name(us), unit_of(options, table.name(us))});
+    for (const ex& u : loads) {
+        if (!table.owns(u) || table.kind(u) != SymbolKind::unknown)
+            throw ArgumentError(std::string(kWho) + ": the load '" + to_string(u) +
+                                "' is not an unknown of the table; declare it with "
+                                "SymbolTable::add_unknown()");
+        plan.loads.push_back({table.name(u), unit_of(options, table.name(u))});
+    }
+    std::vector<ex> parameters = chosen_parameters(table, options);
+    std::vector<std::string> parameter_names;
+    for (const ex& c : parameters) parameter_names.push_back(table.name(c));
+    const CompileOptions compile_options{.parameters = parameters,
+                                         .expand_angle_sums = options.expand_angle_sums};
+    auto names = [](const std::vector<CodeSymbol>& v) {
+        std::vector<std::string> out;
+        for (const CodeSymbol& x : v) out.push_back(x.name);
+        return out;
+    };
+    const std::vector<std::string> q_names = names(plan.q), ur_names = names(plan.qp),
+                                   urp_names = names(plan.qpp), u_names = names(plan.loads);
+    auto input_names = [&](std::initializer_list<const std::vector<std::string>*> arrays) {
+        std::vector<std::string> out{"t"};
+        for (const auto* a : arrays) out.insert(out.end(), a->begin(), a->end());
+        return out;
+    };
+    auto symbols = [&](std::initializer_list<const std::vector<ex>*> arrays) {
+        std::vector<ex> in{table.time()};
+        for (const auto* a : arrays) in.insert(in.end(), a->begin(), a->end());
+        return in;
+    };
+    // what outputs and load laws may hold beyond the state: q', the dependent speeds and
+    // their rates, replaced by their expressions in q, u_r, u_r'
+    exmap replaced;
+    for (std::size_t i = 0; i < n; ++i)
+        if (!K.coordinate_rate_symbols[i].is_equal(K.coordinate_rates[i]))
+            replaced[K.coordinate_rate_symbols[i]] = K.coordinate_rates[i];
+    for (std::size_t s = 0; s < ns; ++s) {
+        replaced[K.dependent_speeds[s]] = K.dependent_speed_values[s];
+        TimeVariable v = table.variable(table.name(K.dependent_speeds[s]));
+        if (v.order() >= 1) replaced[v.d(1)] = K.dependent_speed_rates[s];
+    }
+    auto in_state = [&](const ex& e) { return e.subs(replaced); };
+
+    // ---- mass matrix and forcing of M u_r' = f --------------------------------------------------
+    std::vector<ex> mf;
+    for (unsigned i = 0; i < nr; ++i)
+        for (unsigned j = 0; j < nr; ++j) mf.push_back(K.dynamics.A(i, j));
+    for (unsigned i = 0; i < nr; ++i) mf.push_back(K.dynamics.b(i, 0));
+    plan.mass_forcing = {.name = "mass_forcing",
+                         .summary = "mass matrix M (row by row) and forcing f of M ur' = f, ur "
+                                    "the independent speeds",
+                         .arrays = {"q", "ur", "u"},
+                         .results = {"M", "f"},
+                         .result_sizes = {nr * nr, nr},
+                         .program = compile(table, symbols({&q, &ur, &loads}), mf, compile_options,
+                                            "the mass matrix and forcing"),
+                         .input_names = input_names({&q_names, &ur_names, &u_names}),
+                         .parameter_names = parameter_names};
+    plan.symmetric_mass_matrix = symmetric_at_random_states(
+        plan.mass_forcing.program, parameter_values(table, parameters), nr);
+
+    // ---- kinematic differential equations and dependent speeds ----------------------------------
+    plan.kinematics = {.name = "kinematics",
+                       .summary = "coordinate rates qp = k(q, ur) (the kinematic differential "
+                                  "equations, dependent speeds replaced)",
+                       .arrays = {"q", "ur"},
+                       .results = {"qp"},
+                       .result_sizes = {n},
+                       .program = compile(table, symbols({&q, &ur}), K.coordinate_rates,
+                                          compile_options, "the kinematic differential equations"),
+                       .input_names = input_names({&q_names, &ur_names}),
+                       .parameter_names = parameter_names};
+    if (ns > 0)
+        plan.dependent_speed_function = {
+            .name = "dependent_speeds",
+            .summary = "dependent speeds us from the motion constraints",
+            .arrays = {"q", "ur"},
+            .results = {"us"},
+            .result_sizes = {ns},
+            .program = compile(table, symbols({&q, &ur}), K.dependent_speed_values,
+                               compile_options, "the dependent speeds"),
+            .input_names = input_names({&q_names, &ur_names}),
+            .parameter_names = parameter_names};
+
+    // ---- requested outputs ---------------------------------------------------------------------
+    if (!options.outputs.empty()) {
+        std::vector<ex> y;
+        std::set<std::string> seen;
+        for (const CodegenOutput& o : options.outputs) {
+            if (!is_identifier(o.name) || !seen.insert(o.name).second)
+                throw ArgumentError(std::string(kWho) + ": the output name '" + o.name +
+                                    "' is not an identifier or is used twice; name each output "
+                                    "once with letters, digits and _");
+            y.push_back(in_state(o.expression));
+            plan.outputs.push_back({o.name, o.unit.empty() ? unit_of(options, o.name) : o.unit});
+        }
+        plan.output_function = {
+            .name = "outputs",
+            .summary = "requested outputs y",
+            .arrays = {"q", "ur", "urp", "u"},
+            .results = {"y"},
+            .result_sizes = {y.size()},
+            .program = compile(table, symbols({&q, &ur, &urp, &loads}), y, compile_options,
+                               "the outputs"),
+            .input_names = input_names({&q_names, &ur_names, &urp_names, &u_names}),
+            .parameter_names = parameter_names};
+    }
+
+    // ---- simulation: initial values and load laws -----------------------------------------------
+    check_simulation(plan, options, nr, loads.size(), "independent speeds");
+    if (!loads.empty()) {
+        std::vector<ex> laws;
+        for (const ex& l : plan.simulation_spec.load_laws) laws.push_back(in_state(l));
+        if (laws.empty()) laws.assign(loads.size(), ex(0));
+        plan.load_laws = {.name = "load_laws",
+                          .summary = "loads u during a simulation, from t, q and ur",
+                          .arrays = {"q", "ur"},
+                          .results = {"u"},
+                          .result_sizes = {loads.size()},
+                          .program = compile(table, symbols({&q, &ur}), laws, compile_options,
+                                             "the load laws"),
+                          .input_names = input_names({&q_names, &ur_names}),
+                          .parameter_names = parameter_names};
+    }
+    record_parameters(plan, table, parameters, parameter_names, options);
     return plan;
 }
 

@@ -35,24 +35,7 @@ void ensure_directory(const fs::path& dir, const char* who) {
 }
 
 void write_file_atomically(const fs::path& path, const std::string& text, const char* who) {
-    static std::atomic<unsigned> counter{0};
-    fs::path name = path;
-    name += ".tmp." + std::to_string(::getpid()) + "." + std::to_string(counter++);
-    TemporaryFile tmp(name.string());  // removed on failure and if the run is interrupted
-    {
-        std::ofstream out(tmp.path(), std::ios::binary | std::ios::trunc);
-        if (out) out << text;
-        out.close();
-        if (!out)
-            throw ArgumentError(std::string(who) + ": cannot write '" + path.string() +
-                                "' (is the directory writable and the disk not full?)");
-    }
-    std::error_code ec;
-    fs::rename(tmp.path(), path, ec);
-    if (ec)
-        throw ArgumentError(std::string(who) + ": cannot replace '" + path.string() + "' (" +
-                            ec.message() + ")");
-    tmp.release();
+    alembert::write_file_atomically(path, text, who);
 }
 
 fs::path find_program(const std::string& name) {

@@ -39,35 +39,58 @@ Language parse_language(std::string_view word) {
 
 const char* generator_version() { return ALEMBERT_VERSION; }
 
-GeneratedCode generate_code(const SymbolTable& table, const DynamicsEquations& equations,
-                            Language language, const std::filesystem::path& out_dir,
-                            const CodegenOptions& options) {
-    // the directory first: a bad path fails before any work
-    if (!equations.constraints.empty() && language != Language::c)
-        throw ArgumentError(std::string("generate_code(): code for models with constraints is "
-                                        "generated in C only, not in ") +
-                            to_string(language) + "; choose the language c");
-    detail::ensure_directory(out_dir, "generate_code()");
-    CodePlan plan = plan_code(table, equations, options);
-    std::vector<GeneratedFile> files = make_emitter(language)->emit(plan);
+namespace {
 
+// the files of `plan` in `language` written to out_dir, and what the functions cost
+GeneratedCode write_code(const CodePlan& plan, Language language,
+                         const std::filesystem::path& out_dir) {
+    std::vector<GeneratedFile> files = make_emitter(language)->emit(plan);
     GeneratedCode result;
     for (const GeneratedFile& f : files) {
         std::filesystem::path path = out_dir / f.name;
         detail::write_file_atomically(path, f.text, "generate_code()");
         result.files.push_back(path);
     }
-    auto ops = [](const CodeFunction& f) { return f.program.operation_count(f.program.body); };
+    auto ops = [](const CodeFunction& f) {
+        return f.empty() ? std::size_t{0} : f.program.operation_count(f.program.body);
+    };
     result.mass_forcing_operations = ops(plan.mass_forcing);
-    result.accelerations_operations = plan.accelerations.empty() ? 0 : ops(plan.accelerations);
-    result.inverse_dynamics_operations = plan.inverse_dynamics.empty() ? 0 : ops(plan.inverse_dynamics);
-    result.outputs_operations = plan.output_function.empty() ? 0 : ops(plan.output_function);
+    result.accelerations_operations = ops(plan.accelerations);
+    result.inverse_dynamics_operations = ops(plan.inverse_dynamics);
+    result.outputs_operations = ops(plan.output_function);
+    result.kinematics_operations = ops(plan.kinematics);
+    result.dependent_speeds_operations = ops(plan.dependent_speed_function);
     for (const CodeFunction* f : plan.functions())
         result.prelude_operations += f->program.operation_count(f->program.prelude);
     result.symmetric_mass_matrix = plan.symmetric_mass_matrix;
     result.inverse_dynamics = !plan.inverse_dynamics.empty();
     result.constraint_count = plan.constraint_count();
     return result;
+}
+
+}  // namespace
+
+GeneratedCode generate_code(const SymbolTable& table, const DynamicsEquations& equations,
+                            Language language, const std::filesystem::path& out_dir,
+                            const CodegenOptions& options) {
+    // the directory first: a bad path fails before any work
+    if (!equations.constraints.empty() && language == Language::matlab)
+        throw ArgumentError(std::string("generate_code(): code for models with constraints is "
+                                        "generated in C, C++ and Python only, not in ") +
+                            to_string(language) + "; choose the language c, cpp or python");
+    detail::ensure_directory(out_dir, "generate_code()");
+    return write_code(plan_code(table, equations, options), language, out_dir);
+}
+
+GeneratedCode generate_code(const SymbolTable& table, const KaneEquations& kane,
+                            const std::vector<ex>& loads, Language language,
+                            const std::filesystem::path& out_dir, const CodegenOptions& options) {
+    if (language == Language::matlab)
+        throw ArgumentError(std::string("generate_code(): code for equations in generalized "
+                                        "speeds is generated in C, C++ and Python only, not in ") +
+                            to_string(language) + "; choose the language c, cpp or python");
+    detail::ensure_directory(out_dir, "generate_code()");
+    return write_code(plan_speed_code(table, kane, loads, options), language, out_dir);
 }
 
 }  // namespace alembert

@@ -13,6 +13,7 @@
 #include "alembert/sym/evaluator.hpp"
 #include "alembert/sym/print.hpp"
 #include "alembert/sym/simplify.hpp"
+#include "alembert/sym/symbol_table.hpp"
 
 namespace alembert {
 
@@ -83,10 +84,20 @@ LinearSystem form_linear_system(const std::vector<ex>& residuals, const std::vec
         zero[x] = 0;
     }
     for (std::size_t i = 0; i < n; ++i) {
+        // only the unknowns residual i holds have a coefficient other than 0 there (a road-map
+        // row holds one or a few of them): one pass over the residual instead of n derivatives
+        const GiNaC::exset held = symbols_of(residuals[i]);
+        std::vector<ex> in_row;
+        for (const ex& x : unknowns)
+            if (held.count(x)) in_row.push_back(x);
         for (std::size_t j = 0; j < n; ++j) {
+            if (!held.count(unknowns[j])) {
+                s.A(i, j) = 0;
+                continue;
+            }
             const GiNaC::symbol& xj = GiNaC::ex_to<GiNaC::symbol>(unknowns[j]);
             ex a = residuals[i].diff(xj);
-            for (const ex& x : unknowns)
+            for (const ex& x : in_row)
                 if (a.has(x))
                     throw SolveError("form_linear_system(): equation " + std::to_string(i + 1) +
                                      " is not linear in '" + to_string(unknowns[j]) +

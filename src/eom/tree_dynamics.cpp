@@ -107,7 +107,19 @@ const Point* topmost_own_point(const Body& b) {
     return O;
 }
 
-Tree extract_tree(const System& sys, const std::vector<TimeVariable>& q) {
+// The speeds u and their rates u' the recursion forms its rows for.
+struct Speeds {
+    std::vector<ex> u, u_dot;
+    bool rates = true;  // u = q' (the coordinates' rates) rather than chosen speeds
+};
+
+Speeds rates_of(const std::vector<TimeVariable>& q) {
+    Speeds s;
+    for (const TimeVariable& v : q) s.u.push_back(v.d(1)), s.u_dot.push_back(v.d(2));
+    return s;
+}
+
+Tree extract_tree(const System& sys, const std::vector<TimeVariable>& q, const Speeds& sp) {
     Tree t;
     SymbolTable& st = sys.newtonian().symbols();
     const Frame& N = sys.newtonian();
@@ -177,7 +189,7 @@ Tree extract_tree(const System& sys, const std::vector<TimeVariable>& q) {
         }
     }
     // relative kinematics and the coordinates of each joint
-    std::vector<int> owner_of(q.size(), -1);
+    std::vector<int> owner_of(q.size(), -1), speed_owner(sp.u.size(), -1);
     for (std::size_t k = 0; k < t.nodes.size(); ++k) {
         Node& n = t.nodes[k];
         const Body& b = *n.joint.body;
@@ -202,14 +214,16 @@ Tree extract_tree(const System& sys, const std::vector<TimeVariable>& q) {
             return t;
         }
         for (int i = 0; i < 3; ++i) n.a_rel[i] = st.dt(n.v_rel[i]);
+        // the coordinates that move the body relative to its parent
         for (std::size_t j = 0; j < q.size(); ++j) {
             bool moves = false;
             for (int i = 0; i < 3 && !moves; ++i)
                 for (int l = 0; l < 3 && !moves; ++l)
                     moves = st.depends_on(n.R(i, l), q[j].d(0));
             for (int i = 0; i < 3 && !moves; ++i)
-                moves = st.depends_on(n.al_rel[i], q[j].d(2)) || st.depends_on(n.a_rel[i], q[j].d(2)) ||
-                        st.depends_on(n.r[i], q[j].d(0));
+                moves = st.depends_on(n.r[i], q[j].d(0)) ||
+                        (sp.rates && (st.depends_on(n.al_rel[i], q[j].d(2)) ||
+                                      st.depends_on(n.a_rel[i], q[j].d(2))));
             if (!moves) continue;
             if (owner_of[j] >= 0) {
                 t.why_not = "the coordinate '" + q[j].name() + "' moves both '" +
@@ -219,6 +233,23 @@ Tree extract_tree(const System& sys, const std::vector<TimeVariable>& q) {
                 return t;
             }
             owner_of[j] = static_cast<int>(k);
+            if (sp.rates) n.joint.coordinates.push_back(j);
+        }
+        // chosen speeds: those whose rates the body's relative accelerations hold
+        for (std::size_t j = 0; j < sp.u.size() && !sp.rates; ++j) {
+            bool moves = false;
+            for (int i = 0; i < 3 && !moves; ++i)
+                moves = st.depends_on(n.al_rel[i], sp.u_dot[j]) ||
+                        st.depends_on(n.a_rel[i], sp.u_dot[j]);
+            if (!moves) continue;
+            if (speed_owner[j] >= 0) {
+                t.why_not = "the speed '" + to_string(sp.u[j]) + "' moves both '" +
+                            t.nodes[static_cast<std::size_t>(speed_owner[j])].joint.body->name() +
+                            "' and '" + b.name() + "' relative to their parents (the recursion " +
+                            "needs relative speeds, each moving one joint)";
+                return t;
+            }
+            speed_owner[j] = static_cast<int>(k);
             n.joint.coordinates.push_back(j);
         }
         n.m = b.mass();
@@ -236,6 +267,12 @@ Tree extract_tree(const System& sys, const std::vector<TimeVariable>& q) {
     for (std::size_t j = 0; j < q.size(); ++j)
         if (owner_of[j] < 0) {
             t.why_not = "the coordinate '" + q[j].name() + "' moves no body relative to its parent";
+            return t;
+        }
+    for (std::size_t j = 0; j < sp.u.size() && !sp.rates; ++j)
+        if (speed_owner[j] < 0) {
+            t.why_not = "the speed '" + to_string(sp.u[j]) + "' moves no body relative to its " +
+                        "parent (set the angular velocity with Frame::set_ang_vel in terms of it)";
             return t;
         }
     return t;
@@ -315,9 +352,9 @@ std::vector<std::vector<ex>> named_inverse(std::vector<std::vector<ex>> D, const
 // J on another are left out: with their reactions they contribute w_r . T - w_r . T = 0. So a
 // joint's motor torque enters its own row with the coefficient of its axis, and no other
 // row: the load coefficients stay exact numbers.
-std::vector<ex> tree_active_forces(const System& sys, const std::vector<TimeVariable>& q,
+std::vector<ex> tree_active_forces(const System& sys, const Speeds& sp,
                                    const std::vector<Node>& nodes) {
-    std::vector<ex> F(q.size(), 0);
+    std::vector<ex> F(sp.u.size(), 0);
     auto beyond = [&](int k, int J) {  // k is J or a descendant of J
         for (; k >= 0; k = nodes[static_cast<std::size_t>(k)].parent)
             if (k == J) return true;
@@ -332,7 +369,7 @@ std::vector<ex> tree_active_forces(const System& sys, const std::vector<TimeVari
             if (n.joint.coordinates.empty()) continue;
             const Vector r = l.kind == LoadKind::force ? l.point->pos_from(*n.joint.origin) : Vector();
             for (std::size_t j : n.joint.coordinates) {
-                const ex& u = q[j].d(1);
+                const ex& u = sp.u[j];
                 const Vector w_r = n.w_rel_v.diff(u);
                 // each term is a few products of one joint's sines and cosines: simplified,
                 // an axis dotted with itself is 1, not sin^2 + cos^2
@@ -347,7 +384,7 @@ std::vector<ex> tree_active_forces(const System& sys, const std::vector<TimeVari
 }
 
 // The rows and the accelerations of a tree extract_tree found.
-TreeEquations form_on_tree(const System& sys, const std::vector<TimeVariable>& q, Tree& tree) {
+TreeEquations form_on_tree(const System& sys, const Speeds& sp, Tree& tree) {
     SymbolTable& st = sys.newtonian().symbols();
     const Namer name(st);
     std::vector<Node>& nodes = tree.nodes;
@@ -366,7 +403,7 @@ TreeEquations form_on_tree(const System& sys, const std::vector<TimeVariable>& q
         Col3 w_P = n.parent >= 0 ? w[static_cast<std::size_t>(n.parent)] : Col3{};
         w[k] = name(Rt * w_P + n.w_rel);
         for (std::size_t j : n.joint.coordinates) {
-            const ex& qpp = q[j].d(2);
+            const ex& qpp = sp.u_dot[j];
             Col3 sw = n.al_rel.map([&](const ex& e) { return st.diff(e, qpp); });
             Col3 sv = Rt * n.a_rel.map([&](const ex& e) { return st.diff(e, qpp); });
             S[k].push_back(name(Spatial{sw, sv}));
@@ -375,7 +412,7 @@ TreeEquations form_on_tree(const System& sys, const std::vector<TimeVariable>& q
     auto bias = [&](std::size_t k) {  // c: the joint's acceleration at q''_own = 0 beyond X A_P
         const Node& n = nodes[k];
         std::vector<ex> own;
-        for (std::size_t j : n.joint.coordinates) own.push_back(q[j].d(2));
+        for (std::size_t j : n.joint.coordinates) own.push_back(sp.u_dot[j]);
         Mat3 Rt = n.R.transpose();
         Col3 w_P = n.parent >= 0 ? w[static_cast<std::size_t>(n.parent)] : Col3{};
         Col3 al0 = n.al_rel.map([&](const ex& e) { return without(e, own, st); });
@@ -400,7 +437,7 @@ TreeEquations form_on_tree(const System& sys, const std::vector<TimeVariable>& q
     }
 
     // ---- inverse dynamics: road-map rows about successive joints -------------------------------
-    std::vector<ex> residuals(q.size(), 0);
+    std::vector<ex> residuals(sp.u.size(), 0);
     {
         std::vector<Spatial> A(nb);  // (alpha, a^O) of each body, -g of the base folded in
         for (std::size_t k = 0; k < nb; ++k) {
@@ -408,7 +445,7 @@ TreeEquations form_on_tree(const System& sys, const std::vector<TimeVariable>& q
             Spatial AP = n.parent >= 0 ? A[static_cast<std::size_t>(n.parent)] : base;
             Spatial a = X[k] * AP + c[k];
             for (std::size_t i = 0; i < n.joint.coordinates.size(); ++i)
-                a = a + q[n.joint.coordinates[i]].d(2) * S[k][i];
+                a = a + sp.u_dot[n.joint.coordinates[i]] * S[k][i];
             A[k] = name(a);
         }
         std::vector<Spatial> f(nb);  // inertia force of the subtree about its origin
@@ -418,7 +455,7 @@ TreeEquations form_on_tree(const System& sys, const std::vector<TimeVariable>& q
                 fk = fk + transpose(X[static_cast<std::size_t>(ch)]) * f[static_cast<std::size_t>(ch)];
             f[k] = name(fk);
         }
-        std::vector<ex> F = tree_active_forces(sys, q, nodes);
+        std::vector<ex> F = tree_active_forces(sys, sp, nodes);
         for (std::size_t k = 0; k < nb; ++k)
             for (std::size_t i = 0; i < nodes[k].joint.coordinates.size(); ++i) {
                 std::size_t j = nodes[k].joint.coordinates[i];
@@ -427,7 +464,7 @@ TreeEquations form_on_tree(const System& sys, const std::vector<TimeVariable>& q
     }
 
     // ---- forward dynamics: the articulated-body recursion --------------------------------------
-    std::vector<ex> accelerations(q.size(), 0);
+    std::vector<ex> accelerations(sp.u.size(), 0);
     {
         // loads on each body about its origin, in its frame (gravity is in the base)
         std::vector<Spatial> fext(nb);
@@ -513,6 +550,7 @@ TreeEquations form_on_tree(const System& sys, const std::vector<TimeVariable>& q
 
     TreeEquations out;
     for (const Node& n : nodes) out.joints.push_back(n.joint);
+    out.speeds = sp.u;
     out.residuals = std::move(residuals);
     out.accelerations = std::move(accelerations);
     return out;
@@ -521,22 +559,43 @@ TreeEquations form_on_tree(const System& sys, const std::vector<TimeVariable>& q
 }  // namespace
 
 std::string explain_not_tree(const System& sys, const std::vector<TimeVariable>& q) {
-    return extract_tree(sys, q).why_not;
+    return extract_tree(sys, q, rates_of(q)).why_not;
 }
 
 TreeEquations form_tree_equations(const System& sys, const std::vector<TimeVariable>& q) {
-    Tree tree = extract_tree(sys, q);
+    Tree tree = extract_tree(sys, q, rates_of(q));
     if (!tree.why_not.empty())
         throw ModelError(std::string(kWho) + ": not a tree the recursion handles: " + tree.why_not +
                          "; form Kane's, Lagrange's or the road-map's equations instead");
-    return form_on_tree(sys, q, tree);
+    return form_on_tree(sys, rates_of(q), tree);
+}
+
+TreeEquations form_tree_equations(const System& sys, const std::vector<TimeVariable>& q,
+                                  const std::vector<ex>& speeds) {
+    SymbolTable& st = sys.newtonian().symbols();
+    Speeds sp;
+    sp.rates = false;
+    for (const ex& u : speeds) {
+        const ex u_dot = st.dt(u);
+        if (!is_a<symbol>(u) || !is_a<symbol>(u_dot))
+            throw ArgumentError(std::string(kWho) + ": the speed '" + to_string(u) +
+                                "' is not a symbol with a declared derivative; declare it with "
+                                "SymbolTable::add_variable(name, 1) or pass a coordinate's rate q'");
+        sp.u.push_back(u);
+        sp.u_dot.push_back(u_dot);
+    }
+    Tree tree = extract_tree(sys, q, sp);
+    if (!tree.why_not.empty())
+        throw ModelError(std::string(kWho) + ": not a tree the recursion handles: " + tree.why_not +
+                         "; form Kane's equations with these speeds instead");
+    return form_on_tree(sys, sp, tree);
 }
 
 std::optional<TreeEquations> form_tree_equations_if_tree(const System& sys,
                                                          const std::vector<TimeVariable>& q) {
-    Tree tree = extract_tree(sys, q);
+    Tree tree = extract_tree(sys, q, rates_of(q));
     if (!tree.why_not.empty()) return std::nullopt;
-    return form_on_tree(sys, q, tree);
+    return form_on_tree(sys, rates_of(q), tree);
 }
 
 }  // namespace alembert

@@ -9,6 +9,8 @@
 #include <vector>
 
 #include "alembert/alembert.hpp"
+#include "alembert/biomech/model_markers.hpp"
+#include "alembert/biomech/plate_load.hpp"
 #include "alembert/lang/ast.hpp"
 #include "alembert/lang/interpreter.hpp"
 #include "alembert/lang/transcript.hpp"
@@ -95,6 +97,22 @@ struct InverseRequest {
     std::vector<Word> plotted{};  ///< `plot` names; `plot none` is the single word none
 };
 
+/// A model marker declared by `marker NAME on B at P`: its name in marker files, its body and
+/// point.
+struct ScriptMarker {
+    Word name{};
+    std::string body{};
+    std::string point{};
+};
+
+/// A force plate's record applied to a body by `plate NAME on B from "file.mot"`: the record
+/// and the model's symbols it gives values to.
+struct ScriptPlate {
+    Word name{};
+    ForcePlate record{};
+    PlateSymbols symbols{};
+};
+
 /// Code generation: from a `codegen` statement or `alembert codegen`.
 struct CodegenRequest {
     Word language{};
@@ -133,6 +151,8 @@ struct Interpreter::Impl {
     std::vector<ReportHistory> histories{};
     bool allow_outside_output = false;  ///< `to` may leave output_dir (--allow-outside-out)
     std::size_t max_terms = kDefaultMaxTerms;  ///< largest expansion expand/simplify may form
+    std::vector<ScriptMarker> markers{};  ///< `marker` statements, in order
+    std::vector<ScriptPlate> plates{};    ///< `plate` statements, in order
 
     // ---- statements ------------------------------------------------------------------------
     /// Runs one parsed statement: its StatementSpec::run from the registry (statements.hpp),
@@ -159,6 +179,13 @@ struct Interpreter::Impl {
     void codegen(const Statement& s);
     void run_inverse(const InverseRequest& r, Location where);
     void run_codegen(const CodegenRequest& r, Location where);
+    // statements_lab.cpp
+    /// The coordinates over a marker trial (.trc) from the script's markers, and a note for
+    /// the transcript (time base, fit to the model).
+    MarkerCoordinates coordinates_from_markers(const std::string& path, const std::vector<TimeVariable>& q,
+                                               Location where, std::string& note);
+    /// The plates' records for the plate symbols of compiled equations (empty without plates).
+    std::shared_ptr<PlateInputs> plate_inputs() const;
     // interpreter_report.cpp
     void report(const Statement& s);
     void latex(const Statement& s);

@@ -498,6 +498,9 @@ void Interpreter::Impl::run_inverse(const InverseRequest& r, Location where) {
     std::vector<TimeVariable> q = default_coordinates();
     std::string why_not;
     FunctionMaker make = function_maker(r.compiled, &why_not);
+    // force plates: their records give the plate symbols' values at each time
+    std::shared_ptr<PlateInputs> plate_data = plate_inputs();
+    if (plate_data) make = with_plate_inputs(make, plate_data);
     InverseDynamics id = guard(where, [&] { return compile_inverse_dynamics(sys, q, r.loads, script_name, make); },
                                "list as many load measures as the model has coordinates, one acting at each joint");
     InverseAnalysisOptions opts;
@@ -546,6 +549,18 @@ void Interpreter::Impl::run_inverse(const InverseRequest& r, Location where) {
                 id, differentiate_motion(motion, r.motion_file, id.layout().coordinate_names, opts.filter), r.dir, opts);
         });
         span = "the motion table " + std::filesystem::path(r.motion_file).filename().string();
+    } else if (ext == ".trc") {
+        // a marker trial: the coordinates from the script's markers, then as a motion table
+        std::string note;
+        const MarkerCoordinates mc = guard(where, [&] { return coordinates_from_markers(r.motion_file, q, where, note); });
+        const Table& motion = mc.motion;
+        if (plate_data) plate_data->set_origin(mc.origin_h, mc.origin_v);  // the plates' centres of pressure from N_o
+        transcript.result(note);
+        rep = guard(where, [&] {
+            return run_inverse_dynamics(
+                id, differentiate_motion(motion, r.motion_file, id.layout().coordinate_names, opts.filter), r.dir, opts);
+        });
+        span = "the marker trial " + std::filesystem::path(r.motion_file).filename().string();
     } else if (!r.motion_file.empty()) {
         rep = guard(where, [&] { return run_inverse_dynamics(id, r.motion_file, r.dir, opts); });
         span = "the motion table " + std::filesystem::path(r.motion_file).filename().string();
@@ -620,21 +635,46 @@ void Interpreter::Impl::run_codegen(const CodegenRequest& r, Location where) {
     if (q.empty())
         throw ScriptError(where, "the model has no coordinates to generate code for",
                           "declare variables (variable q'') and use them in rotations or translations");
+    // equations in generalized speeds (a kane statement with speeds) when a coordinate has no
+    // q'': the generated code's state is then (q, u_r)
+    const KaneEquations* speeds = nullptr;
+    if (std::any_of(q.begin(), q.end(), [](const TimeVariable& v) { return v.order() < 2; })) {
+        std::vector<std::string> named;
+        for (const auto& [name, fe] : formed)
+            if (fe.kane && !fe.kane->kinematic_equations.empty()) {
+                speeds = &*fe.kane;
+                named.push_back(name);
+            }
+        if (named.size() > 1)
+            throw ScriptError(where, "the script forms Kane's equations in generalized speeds " +
+                                         std::to_string(named.size()) + " times (" + named.front() + ", " +
+                                         named.back() + "); codegen generates one set",
+                              "keep one kane statement with speeds");
+        if (speeds && !sys.constraints().empty())
+            throw ScriptError(where, "the model has both constraint statements and Kane's equations in "
+                                     "generalized speeds; codegen generates one form",
+                              "give the rolling as the kane statement's constraints, or declare the "
+                              "coordinates with q'' and drop the speeds");
+        if (speeds) {
+            q.clear();
+            for (const ex& x : speeds->coordinates) q.push_back(table.variable(table.name(x)));
+        }
+    }
     for (const TimeVariable& v : q)
-        if (v.order() < 2)
+        if (!speeds && v.order() < 2)
             throw ScriptError(where, "the coordinate " + v.name() + " has no second derivative declared; generated "
-                                     "code integrates q'' (equations in generalized speeds, as a kane statement's, "
-                                     "are not generated yet)",
-                              "declare it as variable " + v.name() + "'' and give rolling or closed loops as "
-                              "constraint statements");
+                                     "code integrates q'', or the speeds of a kane statement",
+                              "declare it as variable " + v.name() + "'', or form Kane's equations in "
+                              "generalized speeds (kane K for ... speeds ... kinematics [...])");
     std::vector<ex> loads = r.loads.empty() ? table.symbols(SymbolKind::unknown) : r.loads;
     // closed loops and rolling: the unknowns that are neither listed loads nor inputs are the
     // constraint forces, solved for with the accelerations
     std::vector<ex> constraint_forces;
-    if (!sys.constraints().empty()) {
-        if (language != Language::c)
-            throw ScriptError(r.language.location, "code for models with constraints is generated in C only",
-                              "write codegen c");
+    if (!speeds && !sys.constraints().empty()) {
+        if (language == Language::matlab)
+            throw ScriptError(r.language.location,
+                              "code for models with constraints is generated in C, C++ and Python only",
+                              "write codegen c (or cpp, python)");
         std::vector<ex> given;
         for (const ex& u : table.symbols(SymbolKind::unknown)) {
             bool listed = r.loads.empty() ? numbers.inputs.count(u) != 0
@@ -663,7 +703,9 @@ void Interpreter::Impl::run_codegen(const CodegenRequest& r, Location where) {
         // coordinates and rates are columns of the generated simulation already
         bool state = false;
         for (const TimeVariable& v : q) state = state || numbers.outputs[i].expression.is_equal(v.symbol()) ||
-                                                numbers.outputs[i].expression.is_equal(v.d(1));
+                                                (!speeds && numbers.outputs[i].expression.is_equal(v.d(1)));
+        if (speeds)
+            for (const ex& u : speeds->independent_speeds) state = state || numbers.outputs[i].expression.is_equal(u);
         if (state) continue;
         opts.outputs.push_back({code_identifier(numbers.outputs[i].name), numbers.outputs[i].expression,
                                 numbers.output_si_units[i]});
@@ -675,12 +717,16 @@ void Interpreter::Impl::run_codegen(const CodegenRequest& r, Location where) {
     spec.output_step = numbers.options.output_step;
     spec.absolute_tolerance = numbers.options.abs_tol;
     spec.relative_tolerance = numbers.options.rel_tol;
+    auto initial = [&](const ex& x) {
+        auto it = numbers.initial.find(x);
+        return it == numbers.initial.end() ? 0.0 : table.evaluate(it->second);
+    };
     for (const TimeVariable& v : q) {
-        auto q0 = numbers.initial.find(v.symbol());
-        auto qd0 = numbers.initial.find(v.d(1));
-        spec.initial_q.push_back(q0 == numbers.initial.end() ? 0.0 : table.evaluate(q0->second));
-        spec.initial_qp.push_back(qd0 == numbers.initial.end() ? 0.0 : table.evaluate(qd0->second));
+        spec.initial_q.push_back(initial(v.symbol()));
+        if (!speeds) spec.initial_qp.push_back(initial(v.d(1)));
     }
+    if (speeds)
+        for (const ex& u : speeds->independent_speeds) spec.initial_qp.push_back(initial(u));
     for (const ex& l : loads) {
         auto it = numbers.inputs.find(l);
         spec.load_laws.push_back(it == numbers.inputs.end() ? ex(0) : it->second);
@@ -694,6 +740,7 @@ void Interpreter::Impl::run_codegen(const CodegenRequest& r, Location where) {
         if (std::any_of(loads.begin(), loads.end(),
                         [&](const ex& x) { return sys.reaction_of(x); }))
             inverse_residuals = residuals_of(plan_roadmap(sys, q, loads));
+        if (speeds) return generate_code(table, *speeds, loads, language, r.dir, opts);
         if (!constraint_forces.empty()) {
             KaneEquations k = form_kane_equations(sys, KaneOptions{.coordinates = q});
             DynamicsEquations eqs{q, k.residuals, loads};
@@ -716,7 +763,12 @@ void Interpreter::Impl::run_codegen(const CodegenRequest& r, Location where) {
     out << "generated " << language_name[static_cast<int>(language)] << " for '" << opts.name << "': ";
     for (std::size_t i = 0; i < g.files.size(); ++i) out << (i ? ", " : "") << g.files[i].filename().string();
     // (operation counts are left out: they shift by a few with GiNaC's term order from run to run)
-    if (g.constraint_count)
+    if (speeds)
+        out << "\n  equations in generalized speeds, state (q, " << to_string(speeds->independent_speeds.front())
+            << ", ...): kinematics, " << speeds->dependent_speeds.size() << " dependent speeds from the motion "
+               "constraints, mass matrix and forcing (" << (g.symmetric_mass_matrix ? "Cholesky" : "LU")
+            << " solve for the speeds' rates)";
+    else if (g.constraint_count)
         out << "\n  " << g.constraint_count << " constraints: the equations and the constraints solved for the "
                "accelerations and " << g.constraint_count << " constraint forces (LU), Baumgarte's stabilisation "
                "in the simulation";
@@ -728,6 +780,7 @@ void Interpreter::Impl::run_codegen(const CodegenRequest& r, Location where) {
             << " solve for the accelerations)";
     if (g.inverse_dynamics) out << ", inverse dynamics";
     else if (g.constraint_count) out << "; no inverse dynamics (a constrained model)";
+    else if (speeds) out << "; no inverse dynamics (equations in generalized speeds)";
     else out << "; no inverse dynamics (" << loads.size() << " loads for " << q.size() << " coordinates)";
     if (!opts.outputs.empty()) out << ", " << opts.outputs.size() << " outputs";
     out << ", a simulation program";

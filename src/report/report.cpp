@@ -9,6 +9,7 @@
 #include <sstream>
 #include <string>
 
+#include "alembert/cleanup.hpp"
 #include "alembert/error.hpp"
 #include "report_detail.hpp"
 
@@ -41,32 +42,6 @@ std::string html_escape(const std::string& s) {
             o += c;
     }
     return o;
-}
-
-void write_atomically(const fs::path& path, const std::string& bytes, const char* caller) {
-    fs::path temporary = path;
-    temporary += ".tmp";
-    {
-        std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
-        if (!out)
-            throw ArgumentError(std::string(caller) + ": cannot write '" + path.string() +
-                                "'; check that the directory is writable");
-        out << bytes;
-        out.close();
-        if (!out) {
-            std::error_code ec;
-            fs::remove(temporary, ec);
-            throw ArgumentError(std::string(caller) + ": writing '" + path.string() +
-                                "' failed (disk full?)");
-        }
-    }
-    std::error_code ec;
-    fs::rename(temporary, path, ec);
-    if (ec) {
-        fs::remove(temporary, ec);
-        throw ArgumentError(std::string(caller) + ": cannot replace '" + path.string() + "' (" +
-                            ec.message() + ")");
-    }
 }
 
 }  // namespace
@@ -137,7 +112,7 @@ fs::path report_directory(const std::string& dir, const char* caller) {
 std::string write_report_latex(const ReportContent& content, const std::string& dir) {
     const std::string tex = render_report_latex(content);
     const fs::path path = report_directory(dir, "write_report_latex()") / "roadmap.tex";
-    write_atomically(path, tex, "write_report_latex()");
+    write_file_atomically(path, tex, "write_report_latex()");
     return path.string();
 }
 
@@ -163,14 +138,14 @@ std::string write_report(const ReportContent& content, const std::string& dir) {
         fs::create_directories(out / "fonts", ec);
         for (const auto& entry : fs::directory_iterator(fs::path(katex) / "fonts", ec)) {
             if (entry.path().extension() != ".woff2") continue;
-            write_atomically(out / "fonts" / entry.path().filename(), read_text(entry.path()),
+            write_file_atomically(out / "fonts" / entry.path().filename(), read_text(entry.path()),
                              "write_report()");
         }
     }
-    write_atomically(out / "roadmap.tex", report_detail::render_latex(content, equations),
+    write_file_atomically(out / "roadmap.tex", report_detail::render_latex(content, equations),
                      "write_report()");
     const fs::path index = out / "index.html";
-    write_atomically(index, page, "write_report()");
+    write_file_atomically(index, page, "write_report()");
     return index.string();
 }
 

@@ -134,43 +134,28 @@ std::string format_csv_number(double v, int digits) {
 }
 
 void write_csv(const Table& table, const std::string& path, int digits) {
-    namespace fs = std::filesystem;
     if (digits < 0 || digits > 17)
         throw ArgumentError("write_csv(): " + std::to_string(digits) +
                             " significant digits asked for '" + path +
                             "'; give 1 to 17, or 0 for the shortest exact form");
-    const fs::path target(path);
     // written to a temporary file renamed into place: an interrupted run leaves no partial table
-    TemporaryFile temporary((target.parent_path() / ("." + target.filename().string() + ".tmp" +
-                                                     std::to_string(static_cast<long>(::getpid()))))
-                                .string());
-    std::FILE* f = std::fopen(temporary.path().c_str(), "w");
-    if (!f)
-        throw ArgumentError("write_csv(): cannot write '" + path + "' (" + std::strerror(errno) +
-                            "); create its directory or choose a writable path");
+    std::string text;
     // header: name [unit]
     for (std::size_t c = 0; c < table.names.size(); ++c) {
-        std::fputs(c ? "," : "", f);
-        std::fputs(table.names[c].c_str(), f);
-        if (!table.units[c].empty()) std::fprintf(f, " [%s]", table.units[c].c_str());
+        if (c) text += ',';
+        text += table.names[c];
+        if (!table.units[c].empty()) text += " [" + table.units[c] + "]";
     }
-    std::fputc('\n', f);
+    text += '\n';
     // rows
     for (std::size_t r = 0; r < table.row_count(); ++r) {
         for (std::size_t c = 0; c < table.columns.size(); ++c) {
-            if (c) std::fputc(',', f);
-            std::fputs(format_csv_number(table.columns[c][r], digits).c_str(), f);
+            if (c) text += ',';
+            text += format_csv_number(table.columns[c][r], digits);
         }
-        std::fputc('\n', f);
+        text += '\n';
     }
-    const bool ok = std::ferror(f) == 0;
-    if (std::fclose(f) != 0 || !ok) {
-        throw ArgumentError("write_csv(): writing '" + path + "' failed (disk full?)");
-    }
-    std::error_code ec;
-    fs::rename(temporary.path(), target, ec);
-    if (ec) throw ArgumentError("write_csv(): cannot replace '" + path + "' (" + ec.message() + ")");
-    temporary.release();
+    write_file_atomically(path, text, "write_csv()");
 }
 
 Table read_csv(const std::string& path) {

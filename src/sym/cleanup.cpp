@@ -8,8 +8,13 @@
 
 #include <array>
 #include <atomic>
+#include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <fstream>
+#include <system_error>
+
+#include "alembert/error.hpp"
 
 namespace alembert {
 
@@ -69,6 +74,35 @@ void TemporaryFile::release() {
     path_.clear();
     if (slot_ >= 0) g_files[slot_].state.store(0);
     slot_ = -1;
+}
+
+void write_file_atomically(const std::filesystem::path& path, std::string_view bytes,
+                           const std::string& who) {
+    namespace fs = std::filesystem;
+    static std::atomic<unsigned> counter{0};
+    // hidden, and unique per process and call: writers in several threads or processes
+    // (batches of trials) never share a temporary
+    const fs::path temporary = path.parent_path() / ("." + path.filename().string() + ".tmp" +
+                                                     std::to_string(::getpid()) + "." +
+                                                     std::to_string(counter++));
+    TemporaryFile guard(temporary.string());  // removed on failure and on interruption
+    {
+        std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
+        if (!out)
+            throw ArgumentError(who + ": cannot write '" + path.string() + "' (" +
+                                std::strerror(errno) +
+                                "); create its directory or choose a writable path");
+        out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+        out.close();
+        if (!out)
+            throw ArgumentError(who + ": writing '" + path.string() + "' failed (disk full?)");
+    }
+    std::error_code ec;
+    fs::rename(temporary, path, ec);
+    if (ec)
+        throw ArgumentError(who + ": cannot replace '" + path.string() + "' (" + ec.message() +
+                            ")");
+    guard.release();
 }
 
 ChildProcess::ChildProcess(pid_t pid) : slot_(claim(g_children)) {

@@ -40,6 +40,22 @@ fi
 diff <(grep '^trials/a.csv' all/summary.csv) <(grep -h '^trials/a.csv' shard0/summary.csv shard1/summary.csv) ||
   fail "trial a's peaks differ between the batch and its shard"
 
+# marker trials (.trc) of a script with markers: two good (the second shorter), one whose last
+# row lacks a marker; the good ones give the same peaks as the script's own trial
+mkdir trc
+cp "$src/examples/sit_to_stand/lab/rise.trc" trc/a.trc
+head -200 trc/a.trc > trc/b.trc
+{ head -20 trc/a.trc; sed -n 21p trc/a.trc | cut -f1-11; } > trc/cut.trc
+lab="$src/examples/sit_to_stand/model_lab.alb"
+status=0
+"$alembert" inverse "$lab" --motion 'trc/*.trc' --jobs 2 --out trcs > trcs.txt || status=$?
+[[ $status == 1 ]] || fail ".trc batch: exit status $status, expected 1"
+grep -q "^3 trials: 2 ok, 1 failed; summary in trcs/summary.csv$" trcs.txt || fail ".trc counts: $(cat trcs.txt)"
+grep -q "^failed: trc/cut.trc: .*'ACR' is missing from t = -0.36 s" trcs.txt || fail "the .trc failure is not named: $(cat trcs.txt)"
+[[ $(grep -c '^trc/a.trc,ok,' trcs/summary.csv) == 9 && $(grep -c '^trc/b.trc,ok,' trcs/summary.csv) == 9 ]] ||
+  fail ".trc trials: 9 peaks each expected"
+grep -q '^trc/a.trc,ok,T_B \[N\*m\],-127.49' trcs/summary.csv || fail "trial a's knee peak: $(cat trcs/summary.csv)"
+
 # a bad shard and a pattern that matches nothing are usage errors
 status=0; "$alembert" inverse "$model" --motion 'trials/*.csv' --shard 2/2 --out x 2> err.txt || status=$?
 [[ $status == 2 ]] && grep -q "write I/N with 0 <= I < N" err.txt || fail "bad shard: status $status, $(cat err.txt)"

@@ -122,13 +122,17 @@ contains codegen "$tmp/out" "generated Python for 'sts': sts.py"
 expect codegen_language 2 "$alembert" codegen "$model" --lang fortran --out "$tmp/f"
 expect codegen_name 1 "$alembert" codegen "$model" --lang c --out "$tmp/c" --name 2bad
 contains codegen_name "$tmp/err" "'2bad' cannot name generated code"
-# a closed loop: the crank torque an input, the pin force solved for (C only)
+# a closed loop: the crank torque an input, the pin force solved for (C, C++ and Python)
 { grep -v '^roadmap\|^solve' "$root/examples/four_bar_linkage/model.alb"; echo 'input T = 0'; } >"$tmp/loop.alb"
 expect codegen_loop 0 "$alembert" codegen "$tmp/loop.alb" --lang c --out "$tmp/loop"
 contains codegen_loop "$tmp/out" "2 constraints: the equations and the constraints solved for the accelerations and 2 constraint forces"
 [[ -f $tmp/loop/loop.c ]] || { echo "FAIL codegen_loop: loop.c not written"; fails=$((fails + 1)); }
-expect codegen_loop_python 1 "$alembert" codegen "$tmp/loop.alb" --lang python --out "$tmp/loop_py"
-contains codegen_loop_python "$tmp/err" "generated in C only"
+expect codegen_loop_matlab 1 "$alembert" codegen "$tmp/loop.alb" --lang matlab --out "$tmp/loop_m"
+contains codegen_loop_matlab "$tmp/err" "generated in C, C++ and Python only"
+# rolling in generalized speeds: the kane statement's equations, state (q, u_r)
+expect codegen_rolling 0 "$alembert" codegen "$root/examples/rolling_disk/model.alb" --lang c --out "$tmp/rolling"
+contains codegen_rolling "$tmp/out" "equations in generalized speeds, state (q, u1, ...)"
+[[ -f $tmp/rolling/model.c ]] || { echo "FAIL codegen_rolling: model.c not written"; fails=$((fails + 1)); }
 
 # run --out: files of simulate go there
 printf 'newtonian N\nparticle Q\nvariable x'"''"' m\nconstant m = 1 kg\nmass Q = m\ntranslate Q from N_o by x*Nx>\ninitial x = 1 m\nfinal time 0.1 s\nsimulate\n' >"$tmp/sim.alb"

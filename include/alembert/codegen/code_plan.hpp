@@ -54,6 +54,16 @@ struct CodePlan {
     std::vector<std::string> constraint_names;
     std::vector<ConstraintKind> constraint_kinds;
     std::size_t constraint_count() const { return constraint_forces.size(); }
+    /// Equations in generalized speeds (Kane's with chosen speeds): the state is (q, u_r);
+    /// `qp` and `qpp` then hold the independent speeds u_r and their rates u_r', the arrays
+    /// "ur" and "urp" of the functions, and `dependent_speeds` the u_s (array "us").
+    bool speed_form = false;
+    std::vector<CodeSymbol> coordinate_rates;  ///< speed form: q' (named in comments)
+    std::vector<CodeSymbol> dependent_speeds;  ///< speed form: u_s
+    /// The number of entries of a function's input or result array by its name: "u" the
+    /// loads, "ur", "urp" the independent speeds, "us" the dependent ones, "qp" and "qpp" the
+    /// coordinates (or the speeds, in speed form outside the functions), others the coordinates.
+    std::size_t array_length(const std::string& array) const;
     bool symmetric_mass_matrix = false;
     CodeFunction mass_forcing;      ///< inputs t, q, qp, u; results M (row-major), f
     CodeFunction accelerations;     ///< inputs t, q, qp, u; result qpp (empty if not given)
@@ -63,6 +73,10 @@ struct CodePlan {
     /// Constrained models: inputs t, q, qp; result e, per constraint its value c (0 for a
     /// motion constraint) and its velocity-level value c' (g for a motion constraint).
     CodeFunction constraint_drift;
+    /// Speed form: inputs t, q, ur; results qp (q' = k(q, u_r, t)) and us (the dependent
+    /// speeds; empty without motion constraints).
+    CodeFunction kinematics;
+    CodeFunction dependent_speed_function;
     bool simulation = false;
     SimulationSpec simulation_spec{};
 
@@ -74,5 +88,10 @@ struct CodePlan {
 /// what is thrown).
 CodePlan plan_code(const SymbolTable& table, const DynamicsEquations& equations,
                    const CodegenOptions& options);
+
+/// Prepares the programs and names of Kane's equations in generalized speeds (see the
+/// generate_code overload on KaneEquations).
+CodePlan plan_speed_code(const SymbolTable& table, const KaneEquations& kane,
+                         const std::vector<ex>& loads, const CodegenOptions& options);
 
 }  // namespace alembert

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "alembert/eom/equations.hpp"
+#include "alembert/eom/kane.hpp"
 #include "alembert/mech/constraint.hpp"
 #include "alembert/sym/symbol_table.hpp"
 
@@ -89,7 +90,7 @@ struct DynamicsEquations {
     /// loop's pin force, a contact's friction force), one per constraint, which appear in the
     /// residuals. With constraints the unknowns are x = (q'', constraint forces): the residuals
     /// and the constraints at the acceleration level form a square system A x = b, linear in
-    /// x, solved per call by LU with partial pivoting (C only; `mass_forcing`, `accelerations`
+    /// x, solved per call by LU with partial pivoting (C, C++ and Python; `mass_forcing`, `accelerations`
     /// and inverse dynamics are not used).
     std::vector<CodegenConstraint> constraints{};
     std::vector<ex> constraint_forces{};
@@ -112,7 +113,9 @@ struct SimulationSpec {
     double absolute_tolerance = 1e-9;
     double relative_tolerance = 1e-9;
     std::vector<double> initial_q{};    ///< q(0); zeros when empty
-    std::vector<double> initial_qp{};   ///< q'(0); zeros when empty
+    /// q'(0); zeros when empty. For equations in generalized speeds (KaneEquations), the
+    /// independent speeds u_r(0) instead.
+    std::vector<double> initial_qp{};
     /// The loads during the simulation, one expression of t, q, q' and constants per load
     /// (a control law, a prescribed torque); zero loads when empty.
     std::vector<ex> load_laws{};
@@ -157,6 +160,10 @@ struct GeneratedCode {
     bool symmetric_mass_matrix = false;  ///< Cholesky (true) or LU (false) in forward dynamics
     bool inverse_dynamics = false;       ///< whether inverse dynamics was generated
     std::size_t constraint_count = 0;    ///< constraints (and constraint forces) of the model
+    /// Equations in generalized speeds: the operations of q' = k(q, u_r) and of the dependent
+    /// speeds per call (0 otherwise).
+    std::size_t kinematics_operations = 0;
+    std::size_t dependent_speeds_operations = 0;
 };
 
 /// Generates standalone code in `language` for `equations` of the model whose symbols are in
@@ -178,6 +185,30 @@ struct GeneratedCode {
 ///         in q'' or in the loads, or the loads cannot be solved for.
 GeneratedCode generate_code(const SymbolTable& table, const DynamicsEquations& equations,
                             Language language, const std::filesystem::path& out_dir,
+                            const CodegenOptions& options = {});
+
+/// Generates standalone code for Kane's equations in generalized speeds (Kane & Levinson
+/// 1985, ch. 2 and 6; form_kane_equations with KaneOptions::speeds): the state is
+/// x = (q, u_r), the coordinates and the independent speeds, and
+///  - q' = k(q, u_r, t) from `kane.coordinate_rates` (the kinematic differential equations
+///    with the dependent speeds already replaced),
+///  - u_s = sum_r A_sr u_r + B_s from `kane.dependent_speed_values` (the motion constraints
+///    solved),
+///  - M(q, t) u_r' = f(q, u_r, loads, t) from `kane.dynamics`, solved per call by Cholesky
+///    (M symmetric at random states) or LU.
+/// The motion constraints hold at every state by construction (the dependent speeds are
+/// computed from them), so the right-hand side x' = (k, M^-1 f) is an ordinary differential
+/// equation that needs no stabilisation; a configuration constraint written as a motion
+/// constraint (the bicycle's front contact height) drifts only by the integration error.
+/// `loads` are the load measures the equations hold (inputs); outputs and load laws may hold
+/// t, q, q', u_r, u_r', the dependent speeds and their rates, the loads and the constants
+/// (q' and the dependent speeds are replaced by their expressions). In C, C++ and Python.
+/// @throws alembert::ArgumentError as generate_code above, and if `kane` has no chosen speeds,
+///         the language is MATLAB/Octave, or the counts do not fit;
+///         alembert::SolveError never (nothing is solved symbolically).
+GeneratedCode generate_code(const SymbolTable& table, const KaneEquations& kane,
+                            const std::vector<ex>& loads, Language language,
+                            const std::filesystem::path& out_dir,
                             const CodegenOptions& options = {});
 
 }  // namespace alembert

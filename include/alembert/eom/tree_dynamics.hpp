@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "alembert/mech/free_joint.hpp"
 #include "alembert/mech/system.hpp"
 
 namespace alembert {
@@ -21,7 +22,8 @@ struct TreeJoint {
     /// add_rigid_body and located from its parent, the particle itself for a particle).
     const Point* origin = nullptr;
     /// Indices into the coordinates of the joint's own coordinates: those that move the body
-    /// relative to its parent (none for a body welded to its parent).
+    /// relative to its parent (none for a body welded to its parent). With chosen speeds
+    /// (TreeEquations::speeds), indices into the speeds instead.
     std::vector<std::size_t> coordinates{};
 };
 
@@ -29,6 +31,9 @@ struct TreeJoint {
 struct TreeEquations {
     /// The bodies, parents before children.
     std::vector<TreeJoint> joints{};
+    /// The speeds u the rows and accelerations are formed for, in order: the coordinates'
+    /// rates q' (the default), or the speeds chosen (a free joint's angular velocity).
+    std::vector<ex> speeds{};
     /// One residual per coordinate, in the order of the coordinates: for a coordinate q_r of the
     /// joint of body B, the road-map row with system S = B and every body beyond it, about B's
     /// origin O, in the direction of the joint's motion,
@@ -63,6 +68,18 @@ std::string explain_not_tree(const System& sys, const std::vector<TimeVariable>&
 /// operations per link, its forward dynamics about a hundred).
 /// @throws alembert::ModelError with explain_not_tree's reason if the model is not such a tree.
 TreeEquations form_tree_equations(const System& sys, const std::vector<TimeVariable>& q);
+
+/// The same equations in chosen speeds u (one row and one rate u' per speed, in their order):
+/// each u a symbol with a declared derivative (SymbolTable::add_variable(name, 1)) that the
+/// angular velocity of a frame is set in with Frame::set_ang_vel, or a coordinate's rate q'.
+/// Each joint owns the speeds whose rates its body's relative accelerations hold; the joint's
+/// partial motions are the derivatives of those accelerations by the u'. The rows equal Kane's
+/// equations in these speeds (Kane 1985, sec. 2.12) and are linear in the u'. The kinematic
+/// equations q' = k(q, u) are the caller's (for a free joint, FreeJoint::coordinate_rates).
+/// @throws alembert::ArgumentError if a speed is not such a symbol; alembert::ModelError if
+///         the model is not a tree (explain_not_tree) or a speed moves no joint or two.
+TreeEquations form_tree_equations(const System& sys, const std::vector<TimeVariable>& q,
+                                  const std::vector<ex>& speeds);
 
 /// The same equations, or nothing where explain_not_tree would give a reason: for callers that
 /// fall back to other methods, with the tree found once.

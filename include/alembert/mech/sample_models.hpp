@@ -14,6 +14,10 @@ struct SampleModel {
     std::vector<TimeVariable> q;    ///< generalized coordinates, in joint order
     std::vector<ex> unknowns;       ///< joint torque (or force) measures, in joint order
     std::vector<RigidBody*> links;  ///< bodies, base first (empty for particle models)
+    /// Chosen generalized speeds u, one per equation (empty: u = q', the coordinates' rates).
+    std::vector<ex> speeds{};
+    /// q' in terms of q and u, one per coordinate (empty when u = q').
+    std::vector<ex> coordinate_rates{};
 };
 
 /// The seed's sit-to-stand model, an inverted triple pendulum (Mitiguy, ch. 21): Newtonian
@@ -69,6 +73,23 @@ SampleModel make_four_bar();
 /// (xyz in B_{i-1}, rpy exact multiples of pi/2); B_i's frame is the URDF link frame. Gravity
 /// -g Nz (g = 9.81), no joint damping; joint torques T_i B_iz on B_i from B_{i-1} (unknowns).
 SampleModel make_kuka_iiwa14();
+
+/// A standing human of 15 segments on a floating base, 32 degrees of freedom, with the segment
+/// masses, mass centres and radii of gyration of de Leva (1996, J. Biomech. 29:1223, Table 4,
+/// male, 73 kg) and his mean segment lengths. Segments: pelvis (his lower trunk), torso (middle
+/// and upper trunk as one body), head, and per side upper arm, forearm, hand, thigh, shank,
+/// foot; every frame parallel to N when all angles are zero (x forward, y left, z up).
+/// Joints: the pelvis free in N (add_free_joint: x, y, z and Euler parameters e0..e3 of
+/// pelvis, speeds x', y', z', w1..w3 in the pelvis frame; force F_pelvis at pelvis_o along N,
+/// torque T_pelvis along the pelvis axes); ball joints (body-fixed X-Y-Z angles q_B_x, q_B_y,
+/// q_B_z through massless gimbal bodies B_1, B_2) at the lumbar joint, neck, shoulders and
+/// hips; hinges about y (q_B) at the elbows, wrists, knees and ankles; a motor torque T_...
+/// about each joint axis between the bodies it joins. The joints' lateral offsets (hips
+/// +-0.085 m, shoulders +-0.175 m) and the ankle's place over the foot are round values, not
+/// from the table. Gravity -g Nz (g = 9.81). q: the free joint's 7 coordinates then the 26
+/// angles; speeds: the free joint's 6 then the angles' rates; unknowns: one per speed, in
+/// their order; links: the 15 segments, pelvis first.
+SampleModel make_humanoid();
 
 /// A built model with chosen speeds and motion constraints, in the terms of Kane's method.
 struct SampleNonholonomicModel {

@@ -1,0 +1,667 @@
+// SPDX-License-Identifier: MIT
+// Generated inverse dynamics, forward dynamics and mass matrix of a floating-base humanoid
+// (make_humanoid: 15 segments of de Leva's tables, 32 degrees of freedom) beside MuJoCo, DART
+// and Simbody on the same model, measured in the run of spatial_peers_bench; every peer is
+// checked against the generated code at a random state before it is timed (bench/README.md,
+// "Floating-base humanoid beside MuJoCo, DART and Simbody").
+#include <benchmark/benchmark.h>
+#include <dlfcn.h>
+#include <unistd.h>
+
+#include <alembert/codegen/code_plan.hpp>
+#include <alembert/codegen/codegen.hpp>
+#include <alembert/eom/tree_dynamics.hpp>
+#include <alembert/mech/sample_models.hpp>
+
+#include <Eigen/Dense>
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <memory>
+#include <random>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#ifdef ALEMBERT_BENCH_MUJOCO
+#include <mujoco/mujoco.h>
+#endif
+#ifdef ALEMBERT_BENCH_DART
+#include <dart/dynamics/BodyNode.hpp>
+#include <dart/dynamics/EulerJoint.hpp>
+#include <dart/dynamics/FreeJoint.hpp>
+#include <dart/dynamics/Inertia.hpp>
+#include <dart/dynamics/RevoluteJoint.hpp>
+#include <dart/dynamics/Skeleton.hpp>
+#endif
+
+#include "humanoid_peers.hpp"
+
+namespace {
+
+using namespace alembert;
+namespace fs = std::filesystem;
+using bench::HumanoidSegment;
+constexpr int kN = bench::kHumanoidDofs;
+constexpr double kAgree = 1e-10;  // a peer farther than this from the generated code fails
+
+using Vec = std::array<double, kN>;
+using Mat = std::array<double, kN * kN>;  // row by row
+
+// ---- the generated code -----------------------------------------------------------------------
+// Generated functions take q, q', q'' arrays of one entry per speed. The free joint's entries
+// are: q = (x, y, z, e1, e2, e3), the position of pelvis_o and the vector part of the unit
+// quaternion, whose scalar part is e0 = +sqrt(1 - e1^2 - e2^2 - e3^2) (every orientation has
+// Euler parameters with e0 >= 0); q' = (x', y', z', w1, w2, w3) and q'' their rates, w in the
+// pelvis frame; loads (F in N axes, T in pelvis axes). So the model is formed again with the
+// pelvis oriented by (sqrt(1 - ev.ev), ev) and its angular velocity set in the rates ev':
+// the rows and accelerations are those of make_humanoid's speeds, read with w = ev'.
+struct Generated {
+    using Init = void (*)(void*, const void*);
+    using Inverse = void (*)(const void*, double, const double*, const double*, const double*,
+                             double*);
+    using Forward = int (*)(const void*, double, const double*, const double*, const double*,
+                            double*);
+    using MassForcing = void (*)(const void*, double, const double*, const double*,
+                                 const double*, double*, double*);
+    Generated() : model(make_humanoid()) {
+        System& sys = model.system;
+        SymbolTable& st = sys.symbols();
+        const Frame& N = sys.newtonian();
+        Frame& P = sys.frame("pelvis");
+        std::vector<TimeVariable> ev;
+        for (const char* name : {"ev1", "ev2", "ev3"}) ev.push_back(st.add_variable(name, 2));
+        const ex e1 = ev[0].d(0), e2 = ev[1].d(0), e3 = ev[2].d(0);
+        const ex e0 = GiNaC::sqrt(1 - e1 * e1 - e2 * e2 - e3 * e3);
+        Mat3 R;
+        R(0, 0) = 1 - 2 * (e2 * e2 + e3 * e3);
+        R(1, 1) = 1 - 2 * (e1 * e1 + e3 * e3);
+        R(2, 2) = 1 - 2 * (e1 * e1 + e2 * e2);
+        R(0, 1) = 2 * (e1 * e2 - e0 * e3), R(1, 0) = 2 * (e1 * e2 + e0 * e3);
+        R(0, 2) = 2 * (e1 * e3 + e0 * e2), R(2, 0) = 2 * (e1 * e3 - e0 * e2);
+        R(1, 2) = 2 * (e2 * e3 - e0 * e1), R(2, 1) = 2 * (e2 * e3 + e0 * e1);
+        P.orient_dcm(N, R);
+        P.set_ang_vel(N, ev[0].d(1) * P.x() + ev[1].d(1) * P.y() + ev[2].d(1) * P.z());
+        q = {model.q[0], model.q[1], model.q[2], ev[0], ev[1], ev[2]};
+        q.insert(q.end(), model.q.begin() + 7, model.q.end());
+        TreeEquations t = form_tree_equations(sys, q);
+        joints = t.joints;
+        DynamicsEquations eq{q, t.residuals, model.unknowns, std::nullopt, t.accelerations};
+        CodegenOptions options;
+        options.name = "humanoid";
+        options.source = "make_humanoid(), recursive formation";
+        options.parameters = std::vector<ex>{};
+        CodePlan plan = plan_code(st, eq, options);
+        const StraightLineProgram& id = plan.inverse_dynamics.program;
+        const StraightLineProgram& mf = plan.mass_forcing.program;
+        const StraightLineProgram& fd = plan.accelerations.program;
+        ops_id = id.operation_count(id.body), calls_id = id.call_count(id.body);
+        ops_mf = mf.operation_count(mf.body), calls_mf = mf.call_count(mf.body);
+        ops_fd = fd.operation_count(fd.body), calls_fd = fd.call_count(fd.body);
+        dir = fs::temp_directory_path() / ("alembert-humanoid-bench-" + std::to_string(::getpid()));
+        fs::create_directories(dir);
+        generate_code(st, eq, Language::c, dir, options);
+        std::ofstream(dir / "context.c")
+            << "#include <stddef.h>\n#include \"humanoid.h\"\n"
+               "size_t humanoid_context_size(void) { return sizeof(humanoid_context); }\n";
+        const std::string cc = std::getenv("CC") ? std::getenv("CC") : "cc";
+        const std::string cmd = "cd " + dir.string() + " && " + cc +
+                                " -O2 -shared -fPIC -o humanoid.so humanoid.c context.c -lm";
+        if (std::system(cmd.c_str()) != 0) throw std::runtime_error("compiling failed: " + cmd);
+        handle = ::dlopen((dir / "humanoid.so").c_str(), RTLD_NOW | RTLD_LOCAL);
+        if (!handle) throw std::runtime_error(::dlerror());
+        auto size = reinterpret_cast<std::size_t (*)()>(::dlsym(handle, "humanoid_context_size"));
+        auto init = reinterpret_cast<Init>(::dlsym(handle, "humanoid_init"));
+        inverse = reinterpret_cast<Inverse>(::dlsym(handle, "humanoid_inverse_dynamics"));
+        forward = reinterpret_cast<Forward>(::dlsym(handle, "humanoid_forward_dynamics"));
+        mass_forcing = reinterpret_cast<MassForcing>(::dlsym(handle, "humanoid_mass_forcing"));
+        context.resize(size() / sizeof(double) + 1);
+        init(context.data(), nullptr);
+        // a random state: unit quaternion with e0 >= 0, angles, speeds, rates, loads
+        std::mt19937 rng(42);
+        std::uniform_real_distribution<double> d(-1, 1);
+        for (int i = 0; i < 4; ++i) e[i] = d(rng);
+        const double norm = std::sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2] + e[3] * e[3]);
+        for (double& x : e) x /= (e[0] < 0 ? -norm : norm);
+        for (int i = 0; i < kN; ++i) qg[i] = d(rng), u[i] = d(rng), udot[i] = d(rng), tau[i] = 10 * d(rng);
+        for (int i = 0; i < 3; ++i) qg[3 + i] = e[1 + i];
+        inverse(context.data(), 0, qg.data(), u.data(), udot.data(), id_out.data());
+        if (forward(context.data(), 0, qg.data(), u.data(), tau.data(), fd_out.data()) != 0)
+            throw std::runtime_error("generated forward dynamics failed");
+        Vec f{};
+        mass_forcing(context.data(), 0, qg.data(), u.data(), tau.data(), M.data(), f.data());
+        R_NP = Eigen::Quaterniond(e[0], e[1], e[2], e[3]).toRotationMatrix();
+    }
+    ~Generated() {
+        if (handle) ::dlclose(handle);
+        std::error_code ec;
+        fs::remove_all(dir, ec);
+    }
+    // the segments as the peers build them, read from the model at zero angles
+    std::vector<HumanoidSegment> segments() const {
+        const SymbolTable& st = model.system.symbols();
+        exmap zero;
+        for (const TimeVariable& v : q) zero[v.d(0)] = 0;
+        auto joint_of = [&](const Body* b) -> const TreeJoint& {
+            for (const TreeJoint& j : joints)
+                if (j.body == b) return j;
+            throw std::logic_error("no joint of " + b->name());
+        };
+        auto segment_index = [&](const Body* b) {
+            for (std::size_t k = 0; k < model.links.size(); ++k)
+                if (model.links[k] == b) return static_cast<int>(k);
+            return -1;
+        };
+        std::vector<HumanoidSegment> out;
+        for (const RigidBody* B : model.links) {
+            HumanoidSegment s;
+            const TreeJoint* j = &joint_of(B);
+            s.dofs = static_cast<int>(j->coordinates.size());
+            while (j->parent && segment_index(j->parent) < 0) {  // through the gimbal stages
+                j = &joint_of(j->parent);
+                s.dofs += static_cast<int>(j->coordinates.size());
+            }
+            s.parent = j->parent ? segment_index(j->parent) : -1;
+            if (j->parent) {
+                const Body& parent = *j->parent;
+                const Col3 at = j->origin->pos_from(*joint_of(&parent).origin)
+                                    .components_in(*parent.frame());
+                for (int i = 0; i < 3; ++i) s.at[i] = st.evaluate(at[i], zero);
+            }
+            const Frame& F = *B->frame();
+            const Col3 c = B->cm().pos_from(*joint_of(B).origin).components_in(F);
+            const Mat3 I = B->inertia().components_in(F);
+            s.mass = st.evaluate(B->mass(), zero);
+            for (int i = 0; i < 3; ++i)
+                s.com[i] = st.evaluate(c[i], zero), s.inertia[i] = st.evaluate(I(i, i), zero);
+            out.push_back(s);
+        }
+        return out;
+    }
+    SampleModel model;
+    std::vector<TimeVariable> q;
+    std::vector<TreeJoint> joints;
+    std::size_t ops_id = 0, calls_id = 0, ops_mf = 0, calls_mf = 0, ops_fd = 0, calls_fd = 0;
+    fs::path dir;
+    void* handle = nullptr;
+    Inverse inverse = nullptr;
+    Forward forward = nullptr;
+    MassForcing mass_forcing = nullptr;
+    std::vector<double> context;
+    std::array<double, 4> e{};  // the pelvis's unit quaternion
+    Eigen::Matrix3d R_NP;
+    Vec qg{}, u{}, udot{}, tau{}, id_out{}, fd_out{};
+    Mat M{};
+};
+
+Generated& generated() {
+    static Generated g;
+    return g;
+}
+
+template <class A, class B>
+double max_diff(const A& a, const B& b, int n) {
+    double d = 0;
+    for (int i = 0; i < n; ++i) d = std::max(d, std::abs(a[i] - b[i]));
+    return d;
+}
+
+// Agreement to kAgree relative to the largest magnitude of the generated result (at least 1).
+template <class R>
+bool agrees(benchmark::State& state, double diff, const R& reference, int n) {
+    double scale = 1;
+    for (int i = 0; i < n; ++i) scale = std::max(scale, std::abs(reference[i]));
+    state.counters["max_diff"] = diff;
+    state.counters["rel_diff"] = diff / scale;
+    if (diff <= kAgree * scale) return true;
+    char message[120];
+    std::snprintf(message, sizeof message,
+                  "disagrees with the generated code by %.3g (relative %.3g)", diff, diff / scale);
+    state.SkipWithError(message);
+    return false;
+}
+
+void counters(benchmark::State& state, std::size_t ops, std::size_t calls) {
+    state.counters["dofs"] = kN;
+    state.counters["ops"] = static_cast<double>(ops);
+    state.counters["ops_per_dof"] = static_cast<double>(ops) / kN;
+    state.counters["calls"] = static_cast<double>(calls);
+}
+
+// M_ours = T^T M_peer T for a peer whose speeds are T times ours
+Mat congruence(const Eigen::MatrixXd& M_peer, const Eigen::MatrixXd& T) {
+    Eigen::Matrix<double, kN, kN, Eigen::RowMajor> M = T.transpose() * M_peer * T;
+    Mat out;
+    std::copy(M.data(), M.data() + kN * kN, out.begin());
+    return out;
+}
+
+void HumanoidGeneratedInverse(benchmark::State& state) {
+    Generated& g = generated();
+    Vec out{};
+    for (auto _ : state) {
+        g.inverse(g.context.data(), 0, g.qg.data(), g.u.data(), g.udot.data(), out.data());
+        benchmark::DoNotOptimize(out.data());
+        benchmark::ClobberMemory();
+    }
+    counters(state, g.ops_id, g.calls_id);
+}
+
+void HumanoidGeneratedForward(benchmark::State& state) {
+    Generated& g = generated();
+    Vec out{};
+    for (auto _ : state) {
+        benchmark::DoNotOptimize(
+            g.forward(g.context.data(), 0, g.qg.data(), g.u.data(), g.tau.data(), out.data()));
+        benchmark::ClobberMemory();
+    }
+    counters(state, g.ops_fd, g.calls_fd);
+}
+
+void HumanoidGeneratedMassMatrix(benchmark::State& state) {
+    Generated& g = generated();
+    Mat M{};
+    Vec f{};
+    for (auto _ : state) {
+        g.mass_forcing(g.context.data(), 0, g.qg.data(), g.u.data(), g.tau.data(), M.data(),
+                       f.data());
+        benchmark::DoNotOptimize(M.data());
+        benchmark::ClobberMemory();
+    }
+    counters(state, g.ops_mf, g.calls_mf);
+}
+
+BENCHMARK(HumanoidGeneratedInverse);
+BENCHMARK(HumanoidGeneratedForward);
+BENCHMARK(HumanoidGeneratedMassMatrix);
+
+#ifdef ALEMBERT_BENCH_MUJOCO
+// ---- MuJoCo: nested bodies at the joint centres, a free joint for the pelvis, three hinges
+// about x, y, z (in that order: body-fixed X-Y-Z) for a ball, a hinge about y; the inertial at
+// the mass centre with the principal moments; no geoms. MuJoCo's free joint has our
+// coordinates: qpos (position, quaternion w x y z), qvel (velocity in the world, angular
+// velocity in the body), so no state is converted.
+struct MujocoHumanoid {
+    explicit MujocoHumanoid(const std::vector<HumanoidSegment>& s) {
+        std::string xml = "<mujoco><option gravity=\"0 0 -9.81\"/><worldbody>";
+        std::function<void(int)> emit = [&](int k) {
+            const HumanoidSegment& seg = s[static_cast<std::size_t>(k)];
+            char buf[512];
+            std::snprintf(buf, sizeof buf, "<body pos=\"%.17g %.17g %.17g\">", seg.at[0], seg.at[1],
+                          seg.at[2]);
+            xml += buf;
+            if (seg.dofs == 6) xml += "<freejoint/>";
+            if (seg.dofs == 3)
+                xml += "<joint type=\"hinge\" axis=\"1 0 0\"/><joint type=\"hinge\" axis=\"0 1 0\"/>"
+                       "<joint type=\"hinge\" axis=\"0 0 1\"/>";
+            if (seg.dofs == 1) xml += "<joint type=\"hinge\" axis=\"0 1 0\"/>";
+            std::snprintf(buf, sizeof buf,
+                          "<inertial pos=\"%.17g %.17g %.17g\" mass=\"%.17g\" diaginertia=\"%.17g "
+                          "%.17g %.17g\"/>",
+                          seg.com[0], seg.com[1], seg.com[2], seg.mass, seg.inertia[0],
+                          seg.inertia[1], seg.inertia[2]);
+            xml += buf;
+            for (std::size_t c = 0; c < s.size(); ++c)
+                if (s[c].parent == k) emit(static_cast<int>(c));
+            xml += "</body>";
+        };
+        emit(0);
+        xml += "</worldbody></mujoco>";
+        const std::string path = "/tmp/alembert_bench_humanoid_" + std::to_string(::getpid()) + ".xml";
+        std::FILE* f = std::fopen(path.c_str(), "w");
+        std::fputs(xml.c_str(), f);
+        std::fclose(f);
+        char error[1000] = "";
+        m = mj_loadXML(path.c_str(), nullptr, error, sizeof error);
+        std::remove(path.c_str());
+        if (!m) throw std::runtime_error(std::string("MuJoCo: ") + error);
+        if (m->nv != kN) throw std::runtime_error("MuJoCo: the humanoid has " + std::to_string(m->nv) + " dofs");
+        d = mj_makeData(m);
+    }
+    ~MujocoHumanoid() {
+        mj_deleteData(d);
+        mj_deleteModel(m);
+    }
+    void set(const Generated& g) {
+        for (int i = 0; i < 3; ++i) d->qpos[i] = g.qg[i];
+        for (int i = 0; i < 4; ++i) d->qpos[3 + i] = g.e[i];
+        for (int i = 6; i < kN; ++i) d->qpos[i + 1] = g.qg[i];
+        for (int i = 0; i < kN; ++i) d->qvel[i] = g.u[i], d->qacc[i] = g.udot[i];
+    }
+    void inverse(mjtNum* out) {
+        mj_kinematics(m, d);
+        mj_comPos(m, d);
+        mj_comVel(m, d);
+        mj_rne(m, d, 1, out);
+    }
+    void forward(const double* tau, mjtNum* out) {
+        mj_kinematics(m, d);
+        mj_comPos(m, d);
+        mj_crb(m, d);
+        mj_factorM(m, d);
+        mj_comVel(m, d);
+        mj_rne(m, d, 0, bias);
+        for (int i = 0; i < kN; ++i) rhs[i] = tau[i] - bias[i];
+        mj_solveM(m, d, out, rhs, 1);
+    }
+    void mass_matrix() {
+        mj_kinematics(m, d);
+        mj_comPos(m, d);
+        mj_crb(m, d);
+    }
+    mjModel* m = nullptr;
+    mjData* d = nullptr;
+    mjtNum bias[kN] = {}, rhs[kN] = {};
+};
+
+MujocoHumanoid& mujoco() {
+    static MujocoHumanoid h(generated().segments());
+    return h;
+}
+
+void HumanoidMujocoInverse(benchmark::State& state) {
+    Generated& g = generated();
+    MujocoHumanoid& h = mujoco();
+    h.set(g);
+    mjtNum out[kN];
+    h.inverse(out);
+    if (!agrees(state, max_diff(out, g.id_out, kN), g.id_out, kN)) return;
+    for (auto _ : state) {
+        h.inverse(out);
+        benchmark::DoNotOptimize(out);
+        benchmark::ClobberMemory();
+    }
+}
+
+void HumanoidMujocoForward(benchmark::State& state) {
+    Generated& g = generated();
+    MujocoHumanoid& h = mujoco();
+    h.set(g);
+    mjtNum out[kN];
+    h.forward(g.tau.data(), out);
+    if (!agrees(state, max_diff(out, g.fd_out, kN), g.fd_out, kN)) return;
+    for (auto _ : state) {
+        h.forward(g.tau.data(), out);
+        benchmark::DoNotOptimize(out);
+        benchmark::ClobberMemory();
+    }
+}
+
+void HumanoidMujocoMassMatrix(benchmark::State& state) {
+    Generated& g = generated();
+    MujocoHumanoid& h = mujoco();
+    h.set(g);
+    h.mass_matrix();
+    mjtNum M[kN * kN];
+    mj_fullM(h.m, M, h.d->qM);
+    if (!agrees(state, max_diff(M, g.M, kN * kN), g.M, kN * kN)) return;
+    for (auto _ : state) {
+        h.mass_matrix();
+        benchmark::DoNotOptimize(h.d->qM);
+        benchmark::ClobberMemory();
+    }
+}
+
+BENCHMARK(HumanoidMujocoInverse);
+BENCHMARK(HumanoidMujocoForward);
+BENCHMARK(HumanoidMujocoMassMatrix);
+#endif
+
+#ifdef ALEMBERT_BENCH_DART
+// ---- DART: a dart::dynamics::FreeJoint for the pelvis, EulerJoints (X-Y-Z) for the balls, RevoluteJoints
+// about y. DART's free joint has its own coordinates (exponential map; the pelvis's angular
+// velocity and origin velocity in pelvis axes; torque and force in pelvis axes), so the state
+// is converted once, outside the timed loop, through DART's dart::dynamics::FreeJoint setters, and its
+// results are converted back for the agreement check.
+struct DartHumanoid {
+    explicit DartHumanoid(const std::vector<HumanoidSegment>& s) {
+        using namespace dart::dynamics;
+        skel = Skeleton::create("humanoid");
+        std::vector<BodyNode*> nodes;
+        for (std::size_t k = 0; k < s.size(); ++k) {
+            const HumanoidSegment& seg = s[k];
+            BodyNode* parent = seg.parent < 0 ? nullptr : nodes[static_cast<std::size_t>(seg.parent)];
+            const BodyNode::AspectProperties body("segment" + std::to_string(k));
+            BodyNode* b = nullptr;
+            Joint* j = nullptr;
+            if (seg.dofs == 6) {
+                dart::dynamics::FreeJoint::Properties p;
+                p.mName = "joint" + std::to_string(k);
+                auto pair = skel->createJointAndBodyNodePair<dart::dynamics::FreeJoint>(parent, p, body);
+                j = pair.first, b = pair.second;
+            } else if (seg.dofs == 3) {
+                EulerJoint::Properties p;
+                p.mAxisOrder = EulerJoint::AxisOrder::XYZ;
+                p.mName = "joint" + std::to_string(k);
+                auto pair = skel->createJointAndBodyNodePair<EulerJoint>(parent, p, body);
+                j = pair.first, b = pair.second;
+            } else {
+                RevoluteJoint::Properties p;
+                p.mAxis = Eigen::Vector3d::UnitY();
+                p.mName = "joint" + std::to_string(k);
+                auto pair = skel->createJointAndBodyNodePair<RevoluteJoint>(parent, p, body);
+                j = pair.first, b = pair.second;
+            }
+            Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+            T.translation() = Eigen::Vector3d(seg.at[0], seg.at[1], seg.at[2]);
+            j->setTransformFromParentBodyNode(T);
+            const Eigen::Matrix3d I =
+                Eigen::Vector3d(seg.inertia[0], seg.inertia[1], seg.inertia[2]).asDiagonal();
+            b->setInertia(Inertia(seg.mass, Eigen::Vector3d(seg.com[0], seg.com[1], seg.com[2]), I));
+            nodes.push_back(b);
+        }
+        skel->setGravity(Eigen::Vector3d(0, 0, -9.81));
+        pelvis = nodes[0];
+        free = static_cast<dart::dynamics::FreeJoint*>(pelvis->getParentJoint());
+    }
+    // DART's positions, velocities and accelerations at the generated code's state
+    void set(const Generated& g) {
+        using dart::dynamics::Frame;
+        Eigen::Isometry3d T = Eigen::Isometry3d::Identity();
+        T.linear() = g.R_NP;
+        T.translation() = Eigen::Vector3d(g.qg[0], g.qg[1], g.qg[2]);
+        Eigen::VectorXd q(kN);
+        q.head<6>() = dart::dynamics::FreeJoint::convertToPositions(T);
+        for (int i = 6; i < kN; ++i) q[i] = g.qg[i];
+        skel->setPositions(q);
+        Eigen::VectorXd v = Eigen::VectorXd::Zero(kN), a = Eigen::VectorXd::Zero(kN);
+        for (int i = 6; i < kN; ++i) v[i] = g.u[i], a[i] = g.udot[i];
+        skel->setVelocities(v);
+        skel->setAccelerations(a);
+        const Eigen::Vector3d x_d(g.u[0], g.u[1], g.u[2]), w(g.u[3], g.u[4], g.u[5]);
+        const Eigen::Vector3d x_dd(g.udot[0], g.udot[1], g.udot[2]), w_d(g.udot[3], g.udot[4], g.udot[5]);
+        free->setAngularVelocity(g.R_NP * w, Frame::World(), Frame::World());
+        free->setLinearVelocity(x_d, Frame::World(), Frame::World());
+        free->setAngularAcceleration(g.R_NP * w_d, Frame::World(), Frame::World());
+        free->setLinearAcceleration(x_dd, Frame::World(), Frame::World());
+        positions = skel->getPositions();
+        velocities = skel->getVelocities();
+        accelerations = skel->getAccelerations();
+        forces = Eigen::VectorXd(kN);
+        const Eigen::Vector3d F(g.tau[0], g.tau[1], g.tau[2]), Tq(g.tau[3], g.tau[4], g.tau[5]);
+        forces.head<3>() = Tq;
+        forces.segment<3>(3) = g.R_NP.transpose() * F;
+        for (int i = 6; i < kN; ++i) forces[i] = g.tau[i];
+        // speeds: DART's (w, R^T x') of ours (x', w)
+        T_speeds = Eigen::MatrixXd::Identity(kN, kN);
+        T_speeds.topLeftCorner<6, 6>().setZero();
+        T_speeds.block<3, 3>(0, 3).setIdentity();
+        T_speeds.block<3, 3>(3, 0) = g.R_NP.transpose();
+    }
+    dart::dynamics::SkeletonPtr skel;
+    dart::dynamics::BodyNode* pelvis = nullptr;
+    dart::dynamics::FreeJoint* free = nullptr;
+    Eigen::VectorXd positions, velocities, accelerations, forces;
+    Eigen::MatrixXd T_speeds;
+};
+
+DartHumanoid& dart_humanoid() {
+    static DartHumanoid h(generated().segments());
+    return h;
+}
+
+void HumanoidDartInverse(benchmark::State& state) {
+    Generated& g = generated();
+    DartHumanoid& h = dart_humanoid();
+    h.set(g);
+    auto& s = h.skel;
+    auto run = [&] {
+        s->setPositions(h.positions);
+        s->setVelocities(h.velocities);
+        s->setAccelerations(h.accelerations);
+        s->computeInverseDynamics(false, false, false);
+        return s->getForces();
+    };
+    const Eigen::VectorXd f = run();
+    Vec out{};
+    const Eigen::Vector3d F = g.R_NP * f.segment<3>(3);
+    for (int i = 0; i < 3; ++i) out[i] = F[i], out[3 + i] = f[i];
+    for (int i = 6; i < kN; ++i) out[i] = f[i];
+    if (!agrees(state, max_diff(out, g.id_out, kN), g.id_out, kN)) return;
+    for (auto _ : state) benchmark::DoNotOptimize(run());
+}
+
+void HumanoidDartForward(benchmark::State& state) {
+    Generated& g = generated();
+    DartHumanoid& h = dart_humanoid();
+    h.set(g);
+    auto& s = h.skel;
+    auto run = [&] {
+        s->setPositions(h.positions);
+        s->setVelocities(h.velocities);
+        s->setForces(h.forces);
+        s->computeForwardDynamics();
+        return s->getAccelerations();
+    };
+    const Eigen::VectorXd a = run();
+    Vec out{};
+    const Eigen::Vector3d x_dd = h.pelvis->getLinearAcceleration();
+    const Eigen::Vector3d w_d =
+        h.pelvis->getAngularAcceleration(dart::dynamics::Frame::World(), h.pelvis);
+    for (int i = 0; i < 3; ++i) out[i] = x_dd[i], out[3 + i] = w_d[i];
+    for (int i = 6; i < kN; ++i) out[i] = a[i];
+    if (!agrees(state, max_diff(out, g.fd_out, kN), g.fd_out, kN)) return;
+    for (auto _ : state) benchmark::DoNotOptimize(run());
+}
+
+void HumanoidDartMassMatrix(benchmark::State& state) {
+    Generated& g = generated();
+    DartHumanoid& h = dart_humanoid();
+    h.set(g);
+    auto& s = h.skel;
+    // DART keeps M until the positions change: alternate with a nearby state
+    const Eigen::VectorXd q = h.positions, q_near = q.array() + 1e-3;
+    auto run = [&](const Eigen::VectorXd& at) -> const Eigen::MatrixXd& {
+        s->setPositions(at);
+        return s->getMassMatrix();
+    };
+    const Mat M = congruence(run(q), h.T_speeds);
+    if (!agrees(state, max_diff(M, g.M, kN * kN), g.M, kN * kN)) return;
+    bool near = false;
+    for (auto _ : state) {
+        benchmark::DoNotOptimize(run((near = !near) ? q_near : q).data());
+        benchmark::ClobberMemory();
+    }
+}
+
+BENCHMARK(HumanoidDartInverse);
+BENCHMARK(HumanoidDartForward);
+BENCHMARK(HumanoidDartMassMatrix);
+#endif
+
+#ifdef ALEMBERT_BENCH_SIMBODY
+// ---- Simbody (humanoid_simbody.cpp): its Free mobilizer has q = (quaternion, position) and
+// u = (angular velocity, velocity) in ground axes, rotation first; the state is converted
+// once, outside the timed loop, and the results back for the agreement check.
+struct SimbodyState {
+    explicit SimbodyState(const Generated& g) {
+        const Eigen::Matrix3d& R = g.R_NP;
+        for (int i = 0; i < 4; ++i) q[i] = g.e[i];
+        for (int i = 0; i < 3; ++i) q[4 + i] = g.qg[i];
+        for (int i = 6; i < kN; ++i) q[i + 1] = g.qg[i];
+        const Eigen::Vector3d w = R * Eigen::Vector3d(g.u[3], g.u[4], g.u[5]);
+        const Eigen::Vector3d w_d = R * Eigen::Vector3d(g.udot[3], g.udot[4], g.udot[5]);
+        const Eigen::Vector3d T = R * Eigen::Vector3d(g.tau[3], g.tau[4], g.tau[5]);
+        for (int i = 0; i < 3; ++i) {
+            u[i] = w[i], u[3 + i] = g.u[i];
+            udot[i] = w_d[i], udot[3 + i] = g.udot[i];
+            tau[i] = T[i], tau[3 + i] = g.tau[i];
+        }
+        for (int i = 6; i < kN; ++i) u[i] = g.u[i], udot[i] = g.udot[i], tau[i] = g.tau[i];
+        T_speeds = Eigen::MatrixXd::Identity(kN, kN);
+        T_speeds.topLeftCorner<6, 6>().setZero();
+        T_speeds.block<3, 3>(0, 3) = R;
+        T_speeds.block<3, 3>(3, 0).setIdentity();
+    }
+    // Simbody's (rotational, translational) generalized forces or accelerations to ours
+    Vec to_ours(const Vec& s, const Eigen::Matrix3d& R) const {
+        Vec out = s;
+        const Eigen::Vector3d rot = R.transpose() * Eigen::Vector3d(s[0], s[1], s[2]);
+        for (int i = 0; i < 3; ++i) out[i] = s[3 + i], out[3 + i] = rot[i];
+        return out;
+    }
+    std::array<double, bench::kHumanoidCoordinates> q{};
+    Vec u{}, udot{}, tau{};
+    Eigen::MatrixXd T_speeds;
+};
+
+bench::SimbodyHumanoid& simbody() {
+    static std::unique_ptr<bench::SimbodyHumanoid> h =
+        bench::make_simbody_humanoid(generated().segments());
+    return *h;
+}
+
+void HumanoidSimbodyInverse(benchmark::State& state) {
+    Generated& g = generated();
+    const SimbodyState s(g);
+    Vec out{};
+    simbody().inverse(s.q.data(), s.u.data(), s.udot.data(), out.data());
+    const Vec ours = s.to_ours(out, g.R_NP);
+    if (!agrees(state, max_diff(ours, g.id_out, kN), g.id_out, kN)) return;
+    for (auto _ : state) {
+        simbody().inverse(s.q.data(), s.u.data(), s.udot.data(), out.data());
+        benchmark::DoNotOptimize(out.data());
+        benchmark::ClobberMemory();
+    }
+}
+
+void HumanoidSimbodyForward(benchmark::State& state) {
+    Generated& g = generated();
+    const SimbodyState s(g);
+    Vec out{};
+    simbody().forward(s.q.data(), s.u.data(), s.tau.data(), out.data());
+    const Vec ours = s.to_ours(out, g.R_NP);
+    if (!agrees(state, max_diff(ours, g.fd_out, kN), g.fd_out, kN)) return;
+    for (auto _ : state) {
+        simbody().forward(s.q.data(), s.u.data(), s.tau.data(), out.data());
+        benchmark::DoNotOptimize(out.data());
+        benchmark::ClobberMemory();
+    }
+}
+
+void HumanoidSimbodyMassMatrix(benchmark::State& state) {
+    Generated& g = generated();
+    const SimbodyState s(g);
+    Mat M{};
+    simbody().mass_matrix(s.q.data(), M.data());
+    const Mat ours = congruence(Eigen::Map<Eigen::Matrix<double, kN, kN, Eigen::RowMajor>>(M.data()),
+                                s.T_speeds);
+    if (!agrees(state, max_diff(ours, g.M, kN * kN), g.M, kN * kN)) return;
+    for (auto _ : state) {
+        simbody().mass_matrix(s.q.data(), M.data());
+        benchmark::DoNotOptimize(M.data());
+        benchmark::ClobberMemory();
+    }
+}
+
+BENCHMARK(HumanoidSimbodyInverse);
+BENCHMARK(HumanoidSimbodyForward);
+BENCHMARK(HumanoidSimbodyMassMatrix);
+#endif
+
+}  // namespace

@@ -1,0 +1,196 @@
+// SPDX-License-Identifier: MIT
+// Lab files in a script's model: `marker NAME on B at P` declares a point of the model as the
+// marker a .trc file names, so a marker trial gives the model's coordinates.
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "alembert/biomech/lab_files.hpp"
+#include "alembert/biomech/model_markers.hpp"
+#include "alembert/biomech/plate_load.hpp"
+#include "alembert/biomech/time_base.hpp"
+#include "interpreter_impl.hpp"
+#include "statement_parser.hpp"
+
+namespace alembert::lang {
+
+namespace {
+
+// ---- grammar -----------------------------------------------------------------------------
+
+void parse_marker(StatementParser& p, Statement& s) {
+    // the name as the marker file has it: a name, or any text in double quotes ("R.Knee")
+    s.words["name"] = p.peek().kind == TokenKind::string ? p.text("the marker's name in the .trc file")
+                                                         : p.name("the marker's name in the .trc file");
+    p.expect_word("on", "(marker KNEE on A at B_o)");
+    s.words["on"] = p.name("the body the marker is fixed in");
+    p.expect_word("at", "(marker KNEE on A at B_o)");
+    s.words["at"] = p.name("a point of the model");
+}
+
+// ---- meaning -----------------------------------------------------------------------------
+
+void run_marker(Interpreter::Impl& m, const Statement& s) {
+    const Word& name = s.word("name");
+    const Word& on = s.word("on");
+    const Word& at = s.word("at");
+    Body& B = m.body(on);
+    if (!dynamic_cast<RigidBody*>(&B))
+        throw ScriptError(on.location, "'" + on.text + "' is a particle; a marker gives a segment's angle",
+                          "put markers on rigid bodies");
+    m.point(at);
+    for (const ScriptMarker& k : m.markers)
+        if (k.name.text == name.text && k.body == on.text)
+            throw ScriptError(name.location,
+                              "the marker '" + name.text + "' is declared on " + on.text + " twice" + at_line(k.name.location),
+                              "give each marker one point of each body it serves (a joint's marker may serve both segments)");
+    m.markers.push_back({name, on.text, at.text});
+}
+
+void parse_plate(StatementParser& p, Statement& s) {
+    s.words["label"] = p.name("the plate's name (plate chair on B from \"trial.mot\")");
+    p.expect_word("on", "(plate chair on B from \"trial.mot\")");
+    s.words["on"] = p.name("the body the plate's force acts on");
+    p.expect_word("from", "(plate chair on B from \"trial.mot\")");
+    s.words["from"] = p.text("the force record's path (.mot or .sto)");
+    while (!p.at_end()) {
+        if (p.accept_word("columns")) s.words["columns"] = p.text("the prefix of the plate's columns (\"ground_force\")");
+        else if (p.accept_word("threshold")) s.quantities["threshold"] = p.quantity();
+        else p.fail_expected("'columns' or 'threshold'");
+    }
+}
+
+void run_plate(Interpreter::Impl& m, const Statement& s) {
+    System& sys = m.model(s.location);
+    const Word& label = s.word("label");
+    const Word& on = s.word("on");
+    RigidBody& B = m.rigid_body(on);
+    const Word& file = s.word("from");
+    const std::string path = m.input_path(file.text);
+    const std::string prefix = s.has_word("columns") ? s.word("columns").text : "ground_force";
+    double threshold = 20;
+    if (s.quantities.count("threshold")) {
+        const Quantity& q = s.quantities.at("threshold");
+        threshold = m.number_of(q, Dimension::force(), "the contact threshold", q.value->location);
+        if (!(threshold >= 0) || !std::isfinite(threshold))
+            throw ScriptError(q.value->location, "the contact threshold must be a force of 0 N or more", "");
+    }
+    // the record
+    ScriptPlate plate{label, {}, {}};
+    plate.record = m.guard(file.location, [&] {
+        return force_plate_from_table(read_storage(path).table, prefix, threshold);
+    });
+    std::size_t on_samples = 0;
+    for (std::size_t k = 0; k < plate.record.t.size(); ++k) on_samples += plate.record.in_contact(k) ? 1 : 0;
+    // its symbols: force, centre of pressure and free moment, known functions of time
+    SymbolTable& symbols = sys.symbols();
+    const std::string names[5] = {label.text + "_Fx", label.text + "_Fy", label.text + "_px", label.text + "_py",
+                                  label.text + "_Tz"};
+    const Dimension dims[5] = {Dimension::force(), Dimension::force(), Dimension::length(), Dimension::length(),
+                               Dimension::torque()};
+    ex x[5];
+    for (int i = 0; i < 5; ++i) {
+        m.declare_name(Word{names[i], label.location}, NameKind::symbol);
+        x[i] = m.guard(label.location, [&] { return symbols.add_specified(names[i], 0).symbol(); });
+        m.units[names[i]] = SymbolUnits{dims[i], std::nullopt};
+    }
+    plate.symbols = {x[0], x[1], x[2], x[3], x[4]};
+    // the load: the force at the point of B at the centre of pressure, and the free moment
+    const Frame& N = sys.newtonian();
+    const std::string cop = label.text + "_CoP";
+    m.declare_name(Word{cop, label.location}, NameKind::point);
+    m.guard(label.location, [&] {
+        Point& P = sys.add_point(cop, &B);
+        // located from B's mass centre, so it is a point of B and no joint with N
+        P.set_pos(B.cm(), Vector(N, Col3{x[2], x[3], 0}) - B.cm().pos_from(sys.origin()));
+        P.set_vel_two_point(N, B.cm(), B.body_frame());  // the material point of B there
+        sys.add_force(P, Vector(N, Col3{x[0], x[1], 0}), label.text);
+        sys.add_torque(B, Vector(N, Col3{0, 0, x[4]}), label.text + " free moment");
+    });
+    m.transcript.result("plate " + label.text + " on " + on.text + ": " + prefix + " of " + file.text + ", " +
+                        std::to_string(plate.record.t.size()) + " samples, t = " +
+                        m.transcript.number(plate.record.t.front()) + " to " +
+                        m.transcript.number(plate.record.t.back()) + " s, in contact at " + std::to_string(on_samples) +
+                        " (force of " + m.transcript.number(threshold) + " N or more)\n  force " + names[0] +
+                        "*Nx> + " + names[1] + "*Ny> at " + cop + " = " + names[2] + "*Nx> + " + names[3] +
+                        "*Ny> from N_o, free moment " + names[4] + "*Nz>");
+    m.plates.push_back(std::move(plate));
+}
+
+}  // namespace
+
+MarkerCoordinates Interpreter::Impl::coordinates_from_markers(const std::string& path,
+                                                              const std::vector<TimeVariable>& q, Location where,
+                                                              std::string& note) {
+    System& sys = model(where);
+    if (markers.empty())
+        throw ScriptError(where, "the script declares no markers, so a marker file (.trc) cannot drive it",
+                          "declare the model's markers with the names the file uses: marker KNEE on A at B_o");
+    // the markers' positions from N_o in N
+    const Frame& N = sys.newtonian();
+    std::vector<ModelMarker> model_markers;
+    for (const ScriptMarker& k : markers) {
+        const Col3 p = sys.point(k.point).pos_from(sys.origin()).components_in(N);
+        model_markers.push_back({k.name.text, k.body, p[0], p[1]});
+    }
+    // the trial: read, gaps filled, coordinates from the segments' angles
+    MarkerTable trial = read_trc(path);
+    const TimeBaseReport base = regularize_time_base(trial.table, 0, path);
+    const MarkerCoordinates mc = calc_coordinates_from_markers(sys.symbols(), q, model_markers, trial);
+    // what was done, for the transcript
+    std::ostringstream out;
+    out << "markers: " << model_markers.size() << " on " << mc.segments.size() << " segments (";
+    for (std::size_t s = 0; s < mc.segments.size(); ++s) {
+        out << (s ? "; " : "") << "theta_" << mc.segments[s] << " =";
+        bool first = true;
+        for (std::size_t j = 0; j < q.size(); ++j) {
+            const int c = mc.turns[s][j];
+            if (!c) continue;
+            out << (c < 0 ? (first ? " -" : " - ") : (first ? " " : " + ")) << q[j].name();
+            first = false;
+        }
+        out << " + const";
+    }
+    const auto worst = std::max_element(mc.marker_residual_m.begin(), mc.marker_residual_m.end());
+    const std::size_t wi = static_cast<std::size_t>(worst - mc.marker_residual_m.begin());
+    out << "); largest distance from the model's marker " << transcript.number(*worst * 1000) << " mm ('"
+        << model_markers[wi].name << "')";
+    std::string base_text = base.describe();
+    while (!base_text.empty() && base_text.back() == '\n') base_text.pop_back();
+    if (!base_text.empty()) out << "\n" << base_text;
+    note = out.str();
+    if (!plates.empty())
+        out << "\nthe plates' centres of pressure from N_o: the lab's origin is at (" << transcript.number(mc.origin_h)
+            << ", " << transcript.number(mc.origin_v) << ") m from it";
+    note = out.str();
+    while (!note.empty() && note.back() == '\n') note.pop_back();
+    return mc;
+}
+
+std::shared_ptr<PlateInputs> Interpreter::Impl::plate_inputs() const {
+    if (plates.empty()) return nullptr;
+    auto data = std::make_shared<PlateInputs>();
+    for (const ScriptPlate& p : plates) data->add(p.record, p.symbols);
+    return data;
+}
+
+std::vector<StatementSpec> lab_statements() {
+    return {
+        {.keyword = "marker", .family = "Kinematics",
+         .help = "a model point as a marker of .trc files, so a marker trial drives the model's coordinates",
+         .forms = {{"`marker` *name* \\| *\"name\"* `on` *B* `at` *P*",
+                    "marker KNEE on A at B_o",
+                    "`calc_coordinates_from_markers` when `inverse` reads a `.trc`: segment angles from each body's markers, joint angles by the model's own signs, checked against the model's marker points"}},
+         .clauses = {"on", "at"},
+         .parse = parse_marker, .run = run_marker},
+        {.keyword = "plate", .family = "Mass and loads",
+         .help = "a force plate's record (force, centre of pressure, free moment) as a known load on a body",
+         .forms = {{"`plate` *name* `on` *B* `from` *\"file.mot\"* [`columns` *\"prefix\"*] [`threshold` *F*]",
+                    "plate chair on B from \"lab/rise.mot\" columns \"1_ground_force\"",
+                    "`force_plate_from_table` (OpenSim's ground-reaction columns, default `ground_force`) + `System::add_force` at the point of B at the centre of pressure, `System::add_torque` (free moment); known data symbols name_Fx, _Fy, _px, _py, _Tz, given their values by `with_plate_inputs` in `inverse`, zero out of contact (force below the threshold, default 20 N)"}},
+         .clauses = {"on", "from", "columns", "threshold"},
+         .parse = parse_plate, .run = run_plate},
+    };
+}
+
+}  // namespace alembert::lang
