@@ -22,7 +22,7 @@
 #include "spatial_leg.hpp"
 #include "support/expect.hpp"
 
-namespace alembert {
+namespace alembert::ik_test {
 namespace {
 
 using namespace alembert::test;
@@ -400,4 +400,4 @@ TEST(InverseKinematics, MalformedModelsAreRefusedWithTheirNames) {
 }
 
 }  // namespace
-}  // namespace alembert
+}  // namespace alembert::ik_test
