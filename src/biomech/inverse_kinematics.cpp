@@ -159,18 +159,36 @@ FitOutcome fit_frame(FrameProblem& p, Eigen::VectorXd& q, const InverseKinematic
             nu = 2;
             if (small_step || F == 0 || g.lpNorm<Eigen::Infinity>() <= o.gradient_tolerance) {
                 res.converged = true;
-                return res;
+                break;
             }
         } else {
             // rejected: back to the last point, more damping
             q = q_old, p.r = r_old, p.J = J_old;
             if (small_step) {
                 res.converged = true;  // no step this small lowers the cost or the gradient
-                return res;
+                break;
             }
             mu *= nu;
             nu *= 2;
         }
+    }
+    // polish: undamped Gauss-Newton steps while they lower the gradient, so a stop on a step
+    // that damping made small still ends at the minimum to rounding
+    for (int k = 0; res.converged && k < 3 && F > 0; ++k) {
+        h = A.ldlt().solve(-g);
+        q_old = q, r_old = p.r, J_old = p.J;
+        q += h;
+        const double F_new = p.evaluate(q);
+        g_new.noalias() = p.J.transpose() * p.r;
+        ++res.iterations;
+        if (!(g_new.squaredNorm() < g.squaredNorm())) {
+            q = q_old, p.r = r_old, p.J = J_old;
+            break;
+        }
+        F = F_new;
+        A.noalias() = p.J.transpose() * p.J;
+        g = g_new;
+        if (h.norm() <= o.step_tolerance * (1 + q.norm())) break;
     }
     return res;
 }
