@@ -89,6 +89,7 @@ struct InverseKinematicsResult {
 ///    3.16), started from the previous frame's solution (the first frame from
 ///    options.initial); a trial step is kept when the cost falls, or, where the change in
 ///    cost is lost in its rounding (near a minimum with residuals), when the gradient falls;
+///    after the stop, up to three undamped Gauss-Newton steps while they lower the gradient;
 ///  - a marker with a coordinate NaN in a frame is left out of that frame's sum (not taken as
 ///    zero) and named in the frame's `missing`.
 ///
