@@ -57,6 +57,7 @@
 #include "alembert/sim/table.hpp"
 #include "alembert/report/report.hpp"
 #include "alembert/biomech/force_plate.hpp"
+#include "alembert/biomech/inverse_kinematics.hpp"
 #include "alembert/biomech/lab_files.hpp"
 #include "alembert/biomech/link_segment.hpp"
 #include "alembert/biomech/model_markers.hpp"
