@@ -184,6 +184,11 @@ struct Interpreter::Impl {
     /// the transcript (time base, fit to the model).
     MarkerCoordinates coordinates_from_markers(const std::string& path, const std::vector<TimeVariable>& q,
                                                Location where, std::string& note);
+    /// coordinates_from_markers for a model whose markers move out of a plane: inverse
+    /// kinematics over the markers' points (lab axes = N's axes, lab origin = N_o).
+    MarkerCoordinates spatial_coordinates_from_markers(const MarkerTable& trial, const TimeBaseReport& base,
+                                                       const std::vector<TimeVariable>& q, Location where,
+                                                       std::string& note);
     /// The plates' records for the plate symbols of compiled equations (empty without plates).
     std::shared_ptr<PlateInputs> plate_inputs() const;
     // interpreter_report.cpp

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "alembert/biomech/inverse_kinematics.hpp"
 #include "alembert/biomech/lab_files.hpp"
 #include "alembert/biomech/model_markers.hpp"
 #include "alembert/biomech/plate_load.hpp"
@@ -129,13 +130,16 @@ MarkerCoordinates Interpreter::Impl::coordinates_from_markers(const std::string&
     // the markers' positions from N_o in N
     const Frame& N = sys.newtonian();
     std::vector<ModelMarker> model_markers;
+    bool spatial = false;  // a marker leaves the plane Nz = const as a coordinate changes
     for (const ScriptMarker& k : markers) {
         const Col3 p = sys.point(k.point).pos_from(sys.origin()).components_in(N);
         model_markers.push_back({k.name.text, k.body, p[0], p[1]});
+        for (const TimeVariable& v : q) spatial = spatial || sys.symbols().depends_on(p[2], v.symbol());
     }
     // the trial: read, gaps filled, coordinates from the segments' angles
     MarkerTable trial = read_trc(path);
     const TimeBaseReport base = regularize_time_base(trial.table, 0, path);
+    if (spatial) return spatial_coordinates_from_markers(trial, base, q, where, note);
     const MarkerCoordinates mc = calc_coordinates_from_markers(sys.symbols(), q, model_markers, trial);
     // what was done, for the transcript
     std::ostringstream out;
@@ -164,6 +168,45 @@ MarkerCoordinates Interpreter::Impl::coordinates_from_markers(const std::string&
             << ", " << transcript.number(mc.origin_v) << ") m from it";
     note = out.str();
     while (!note.empty() && note.back() == '\n') note.pop_back();
+    return mc;
+}
+
+MarkerCoordinates Interpreter::Impl::spatial_coordinates_from_markers(const MarkerTable& trial,
+                                                                      const TimeBaseReport& base,
+                                                                      const std::vector<TimeVariable>& q,
+                                                                      Location where, std::string& note) {
+    // a spatial model: least-squares inverse kinematics over the model's marker points, the
+    // lab's X, Y, Z taken as Nx>, Ny>, Nz> and its origin as N_o (a marker declared on two
+    // bodies at one point, as a joint's marker is, is one marker of the fit)
+    System& sys = model(where);
+    std::vector<MarkerPoint> points;
+    for (const ScriptMarker& k : markers) {
+        const bool seen = std::any_of(points.begin(), points.end(),
+                                      [&](const MarkerPoint& m) { return m.name == k.name.text; });
+        if (!seen) points.push_back({k.name.text, &sys.point(k.point)});
+    }
+    std::vector<ex> coordinates;
+    for (const TimeVariable& v : q) coordinates.push_back(v.symbol());
+    const InverseKinematics ik(sys, coordinates, points);
+    const InverseKinematicsResult r = ik.solve(trial);
+    MarkerCoordinates mc;
+    mc.motion = r.calc_coordinate_table();
+    for (std::size_t i = 0; i < r.markers.size(); ++i) {
+        double worst = 0;
+        for (const InverseKinematicsFrame& f : r.frames)
+            if (!std::isnan(f.residual[i])) worst = std::max(worst, f.residual[i]);
+        mc.marker_residual_m.push_back(worst);
+    }
+    const auto worst = std::max_element(mc.marker_residual_m.begin(), mc.marker_residual_m.end());
+    std::ostringstream out;
+    out << "markers: " << points.size() << ", the coordinates by inverse kinematics in three dimensions "
+        << "(Levenberg-Marquardt per frame); largest distance from the model's marker "
+        << transcript.number(*worst * 1000) << " mm ('"
+        << r.markers[static_cast<std::size_t>(worst - mc.marker_residual_m.begin())] << "')";
+    std::string text = r.describe() + base.describe();
+    while (!text.empty() && text.back() == '\n') text.pop_back();
+    if (!text.empty()) out << "\n" << text;
+    note = out.str();
     return mc;
 }
 
