@@ -142,7 +142,9 @@ NativeExpressions::NativeExpressions(CompiledExpressions tape, const NativeOptio
         argv.push_back(tmp.string());
         argv.push_back(src.string());
         argv.emplace_back("-lm");
+        if (options.on_compile) options.on_compile(tape_.operation_count(), false);
         int rc = detail::run_program(argv, log);
+        if (options.on_compile) options.on_compile(tape_.operation_count(), true);
         if (rc != 0 || !fs::exists(tmp, ec)) {
             status_ = NativeStatus::compile_failed;
             message_ = std::string(kNativeWho) + ": the C compiler '" + compiler.string() +

@@ -4,6 +4,9 @@
 #include "alembert/codegen/native.hpp"
 
 #include "alembert/error.hpp"
+
+#include <utility>
+#include <vector>
 #include "harness.hpp"
 #include "support/expect.hpp"
 
@@ -55,11 +58,16 @@ void expect_same(const NativeExpressions& f, const CompiledExpressions& tape,
 TEST(NativeExpressions, CompiledCodeAgreesWithTheTapeAndIsCached) {
     Tape t;
     ScratchDir cache("native-cache");
-    NativeOptions o{.compiler = "", .flags = {"-O2"}, .cache_dir = cache.path()};
+    // on_compile is told before and after the compiler runs, and not when the library is cached
+    std::vector<std::pair<std::size_t, bool>> told;
+    NativeOptions o{.compiler = "", .flags = {"-O2"}, .cache_dir = cache.path(),
+                    .on_compile = [&](std::size_t operations, bool done) { told.emplace_back(operations, done); }};
     CompiledExpressions tape = t.compile();
     NativeExpressions f(tape, o);
     ASSERT_TRUE(f.is_native()) << f.message();
     EXPECT_EQ(f.status(), NativeStatus::compiled);
+    const std::vector<std::pair<std::size_t, bool>> once{{tape.operation_count(), false}, {tape.operation_count(), true}};
+    EXPECT_EQ(told, once);
     EXPECT_EQ(f.input_count(), tape.input_count());
     for (const auto& s : t.states(8)) expect_same(f, tape, s, 1e-12);
     // the same expressions again: loaded from the cache, same values
@@ -67,6 +75,7 @@ TEST(NativeExpressions, CompiledCodeAgreesWithTheTapeAndIsCached) {
     ASSERT_TRUE(g.is_native()) << g.message();
     EXPECT_EQ(g.status(), NativeStatus::cached);
     EXPECT_NE(g.message().find("loaded"), std::string::npos);
+    EXPECT_EQ(told, once) << "a cached library is not compiled";
     // copies share the library and outlive the original
     NativeExpressions copy = g;
     { NativeExpressions gone = std::move(g); }

@@ -3,7 +3,9 @@
 // loaded, and called; the interpreted tape when that cannot be done.
 #pragma once
 
+#include <cstddef>
 #include <filesystem>
+#include <functional>
 #include <memory>
 #include <span>
 #include <string>
@@ -35,6 +37,10 @@ struct NativeOptions {
     /// Where libraries are cached, by a hash of their source, compiler and flags. Empty: the
     /// directory "alembert-native" in the system's temporary directory.
     std::filesystem::path cache_dir{};
+    /// Called with the program's operation count just before the compiler runs (not when the
+    /// library is cached), and with `done` once it has finished: for a progress note on a
+    /// terminal, since a large program takes seconds to compile.
+    std::function<void(std::size_t operations, bool done)> on_compile{};
 };
 
 /// A CompiledExpressions made native: its program printed as C (the prelude and the body of
