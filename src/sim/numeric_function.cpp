@@ -3,6 +3,7 @@
 #include "alembert/sim/numeric_function.hpp"
 
 #include <memory>
+#include <utility>
 
 #include "alembert/error.hpp"
 
@@ -10,7 +11,11 @@ namespace alembert {
 
 NumericFunction make_tape_function(const SymbolTable& table, const std::vector<ex>& inputs,
                                    const std::vector<ex>& outputs) {
-    auto tape = std::make_shared<const CompiledExpressions>(table, inputs, outputs);
+    return make_tape_function(CompiledExpressions(table, inputs, outputs));
+}
+
+NumericFunction make_tape_function(CompiledExpressions compiled) {
+    auto tape = std::make_shared<const CompiledExpressions>(std::move(compiled));
     NumericFunction f;
     f.input_count = tape->input_count();
     f.output_count = tape->output_count();

@@ -37,6 +37,8 @@ struct NumericFunction {
 /// @throws as CompiledExpressions' constructor.
 NumericFunction make_tape_function(const SymbolTable& table, const std::vector<ex>& inputs,
                                    const std::vector<ex>& outputs);
+/// The same for a tape already compiled (its inputs and outputs in its order).
+NumericFunction make_tape_function(CompiledExpressions tape);
 
 /// How the sim layer turns expressions into a NumericFunction: `outputs` as functions of
 /// `inputs` (symbols, in order) with the constants and intermediates of the table. The
