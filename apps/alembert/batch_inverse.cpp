@@ -112,6 +112,7 @@ int run_inverse_batch(const BatchInverseOptions& o, const char* self) {
             std::vector<std::string> args = {self, "inverse", o.model, "--motion", trials[next], "--out", dir_text,
                                              "--cutoff", cutoff};
             if (o.compiled) args.push_back("--compiled");
+            if (o.tape) args.push_back("--tape");
             if (!o.unitless.empty()) args.insert(args.end(), {"--unitless", o.unitless});
             std::vector<char*> argv;
             for (auto& a : args) argv.push_back(a.data());

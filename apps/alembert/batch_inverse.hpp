@@ -13,6 +13,7 @@ struct BatchInverseOptions {
     std::string out;            ///< one directory per trial (named by its file's stem) and summary.csv
     double cutoff_hz = 6.0;
     bool compiled = false;
+    bool tape = false;
     std::string unitless;
     unsigned jobs = 1;          ///< trials run at once (0: one per core)
     std::string shard;          ///< "I/N": only this task's share, for cluster array jobs

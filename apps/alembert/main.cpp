@@ -134,6 +134,7 @@ struct RunOptions {
     bool quiet = false;
     std::string out = ".";
     int digits = 6;
+    bool tape = false;
     LimitOptions limits;
 };
 
@@ -144,6 +145,7 @@ int run_script(const RunOptions& o) {
     Interpreter interp(std::cout, std::cerr, !o.quiet);
     interp.set_output_dir(o.out);
     interp.set_digits(o.digits);
+    if (o.tape) interp.set_evaluation(alembert::lang::Evaluation::tape);
     apply(o.limits, interp);
     return exit_status(interp.run(text, display_name(o.file)));
 }
@@ -156,6 +158,7 @@ struct ModelCommandOptions {
     std::string motion;
     double cutoff_hz = 6.0;
     bool compiled = false;
+    bool tape = false;
     std::string unitless;
     std::string language;
     std::string name;
@@ -171,7 +174,7 @@ int run_model_command(const ModelCommandOptions& o, bool inverse) {
         const std::string self = std::filesystem::read_symlink("/proc/self/exe", ec).string();
         if (!check_output_dir(o.out)) return kUsageError;
         return alembert::cli::run_inverse_batch({.model = o.file, .pattern = o.motion, .out = o.out,
-                                                 .cutoff_hz = o.cutoff_hz, .compiled = o.compiled,
+                                                 .cutoff_hz = o.cutoff_hz, .compiled = o.compiled, .tape = o.tape,
                                                  .unitless = o.unitless, .jobs = o.jobs, .shard = o.shard},
                                                 ec ? "/proc/self/exe" : self.c_str());
     }
@@ -188,7 +191,9 @@ int run_model_command(const ModelCommandOptions& o, bool inverse) {
     apply(o.limits, interp);
     RunStatus s = interp.run(text, display_name(o.file));
     if (s != RunStatus::ok) return exit_status(s);
-    return exit_status(inverse ? interp.run_inverse(o.motion, o.cutoff_hz, o.compiled, o.unitless)
+    using alembert::lang::Evaluation;
+    const Evaluation evaluation = o.compiled ? Evaluation::compiled : o.tape ? Evaluation::tape : Evaluation::automatic;
+    return exit_status(inverse ? interp.run_inverse(o.motion, o.cutoff_hz, evaluation, o.unitless)
                                : interp.run_codegen(o.language, o.name));
 }
 
@@ -490,6 +495,9 @@ int main(int argc, char** argv) {
                           "significant digits of printed numbers, 1 to 17 (default: 6; a script's "
                           "digits statement changes it; CSV files always read back exactly)")
                  ->check(CLI::Range(1, 17));
+             c.add_flag("--tape", run_opts.tape,
+                        "evaluate simulate and inverse on the interpreted tape unless a statement says "
+                        "compiled (default: compiled C code where a C compiler is found, cached)");
              add_limit_options(c, run_opts.limits);
          },
          [&] { return run_script(run_opts); }},
@@ -513,7 +521,11 @@ int main(int argc, char** argv) {
              c.add_option("--cutoff", inverse_opts.cutoff_hz,
                           "low-pass Butterworth cutoff in Hz before differentiating (0: no filter; default 6)")
                  ->check(CLI::NonNegativeNumber);
-             c.add_flag("--compiled", inverse_opts.compiled, "evaluate through compiled C code");
+             CLI::Option* compiled = c.add_flag("--compiled", inverse_opts.compiled,
+                                                "evaluate through compiled C code and say so (the default where a "
+                                                "C compiler is found, cached)");
+             c.add_flag("--tape", inverse_opts.tape, "evaluate on the interpreted tape: run no compiler")
+                 ->excludes(compiled);
              c.add_option("--unitless", inverse_opts.unitless,
                           "read coordinate columns without a unit in the header in this unit (deg, rad, m, mm)");
              add_limit_options(c, inverse_opts.limits);

@@ -52,6 +52,8 @@ const System* Interpreter::system() const { return impl_->sys.get(); }
 void Interpreter::set_output_dir(const std::string& dir) { impl_->output_dir = dir.empty() ? "." : dir; }
 
 void Interpreter::set_model_only(bool model_only) { impl_->model_only = model_only; }
+void Interpreter::set_evaluation(Evaluation evaluation) { impl_->evaluation = evaluation; }
+void Interpreter::set_compile_limit(std::size_t operations) { impl_->compile_limit = operations; }
 void Interpreter::set_session(bool session) { impl_->session = session; }
 
 void Interpreter::set_allow_outside_output(bool allow) { impl_->allow_outside_output = allow; }
@@ -84,7 +86,7 @@ RunStatus run_command(Interpreter::Impl& m, const std::string& who, F&& f) {
 
 }  // namespace
 
-RunStatus Interpreter::run_inverse(const std::string& motion_csv, double cutoff_hz, bool compiled,
+RunStatus Interpreter::run_inverse(const std::string& motion_csv, double cutoff_hz, Evaluation evaluation,
                                   const std::string& unitless_unit) {
     Impl& m = *impl_;
     return run_command(m, m.script_file, [&] {
@@ -97,7 +99,7 @@ RunStatus Interpreter::run_inverse(const std::string& motion_csv, double cutoff_
         r.motion_file = motion_csv;
         r.cutoff_hz = cutoff_hz;
         r.unitless_unit = unitless_unit;
-        r.compiled = compiled;
+        r.evaluation = evaluation;
         r.dir = m.output_dir;
         m.run_inverse(r, {1, 1});
     });

@@ -92,7 +92,7 @@ struct InverseRequest {
     std::string motion_file{};  ///< a motion table; empty: the prescribed motion
     double cutoff_hz = 6.0;
     std::string unitless_unit{};  ///< how to read coordinate columns without a unit ("": refuse non-SI)
-    bool compiled = false;
+    Evaluation evaluation = Evaluation::automatic;
     std::string dir{};
     std::vector<Word> plotted{};  ///< `plot` names; `plot none` is the single word none
 };
@@ -145,6 +145,8 @@ struct Interpreter::Impl {
     std::string script_name = "model";  ///< the script's stem, naming the model in messages and files
     std::vector<std::string> including{};  ///< the files `include` is running, outermost first
     bool model_only = false;          ///< skip simulate, inverse and codegen
+    Evaluation evaluation = Evaluation::automatic;  ///< simulate's and inverse's without a clause
+    std::size_t compile_limit = kCompileByDefaultLimit;  ///< the largest function compiled by default
     bool session = false;             ///< an interactive session: a constant may be given a new value
     std::vector<PendingSymbol> pending_symbols{};  ///< declared before newtonian
     /// What simulate and inverse computed, in run order, for the report.
@@ -205,10 +207,13 @@ struct Interpreter::Impl {
     bool is_coordinate(const ex& x, int order);
     std::string output_path(const Statement& s) const;
     std::string input_path(const std::string& written) const;
-    /// Native code through the codegen layer when `compiled` (else the tape); `why_not` gets
-    /// the reason when it falls back to the tape.
-    static FunctionMaker function_maker(bool compiled, std::string* why_not);
-    std::string evaluator_note(bool compiled, const std::string& why_not) const;
+    /// How statement `s` evaluates: its `compiled` or `tape` clause, else the run's default.
+    Evaluation evaluation_of(const Statement& s) const;
+    /// Native code through the codegen layer unless `e` is the tape; `why_not` gets the reason
+    /// when it falls back to the tape.
+    FunctionMaker function_maker(Evaluation e, std::string* why_not) const;
+    /// What the transcript says of the evaluation ("" when there is nothing to say).
+    static std::string evaluator_note(Evaluation e, const std::string& why_not);
 
     // ---- names and objects -----------------------------------------------------------------
     System& model(Location where);

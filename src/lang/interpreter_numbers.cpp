@@ -8,6 +8,7 @@
 #include <cmath>
 #include <filesystem>
 #include <functional>
+#include <iostream>
 #include <sstream>
 
 #include "alembert/biomech/lab_files.hpp"
@@ -116,10 +117,33 @@ Dimension residual_dimension_of(const ex& e, const std::function<Dimension(const
 
 // ---- evaluation through compiled code ----------------------------------------------------
 
-FunctionMaker Interpreter::Impl::function_maker(bool compiled, std::string* why_not) {
-    if (!compiled) return {};
-    return [why_not](const SymbolTable& t, const std::vector<ex>& in, const std::vector<ex>& out) {
-        auto native = std::make_shared<NativeExpressions>(CompiledExpressions(t, in, out));
+Evaluation Interpreter::Impl::evaluation_of(const Statement& s) const {
+    if (s.flag("compiled")) return Evaluation::compiled;
+    if (s.flag("tape")) return Evaluation::tape;
+    return evaluation;
+}
+
+FunctionMaker Interpreter::Impl::function_maker(Evaluation e, std::string* why_not) const {
+    if (e == Evaluation::tape) return {};
+    NativeOptions options;
+    if (isatty(STDERR_FILENO) != 0)  // a compilation of seconds is not a hang: say what it is
+        options.on_compile = [](std::size_t operations, bool done) {
+            if (done) std::cerr << "\r\033[K" << std::flush;
+            else std::cerr << "compiling " << operations << " operations of C (once: cached for later runs)..." << std::flush;
+        };
+    const std::size_t limit = compile_limit;
+    return [e, why_not, options, limit](const SymbolTable& t, const std::vector<ex>& in, const std::vector<ex>& out) {
+        CompiledExpressions tape(t, in, out);
+        if (e == Evaluation::automatic && tape.operation_count() > limit) {
+            // the C compiler takes about half a millisecond per operation (bench/README.md)
+            NumericFunction f = make_tape_function(std::move(tape));
+            if (why_not && why_not->empty())
+                *why_not = std::to_string(f.operation_count) + " operations take the C compiler tens of seconds " +
+                           "(past " + std::to_string(limit) +
+                           " only on request): write 'compiled' to compile them once, cached for later runs";
+            return f;
+        }
+        auto native = std::make_shared<NativeExpressions>(std::move(tape), options);
         NumericFunction f;
         f.input_count = native->input_count();
         f.output_count = native->output_count();
@@ -131,10 +155,10 @@ FunctionMaker Interpreter::Impl::function_maker(bool compiled, std::string* why_
     };
 }
 
-std::string Interpreter::Impl::evaluator_note(bool compiled, const std::string& why_not) const {
-    if (!compiled) return "";
-    if (why_not.empty()) return "evaluated by compiled C code";
-    return "evaluated on the tape, not compiled: " + why_not;
+std::string Interpreter::Impl::evaluator_note(Evaluation e, const std::string& why_not) {
+    if (e == Evaluation::tape) return "";
+    if (!why_not.empty()) return "evaluated on the tape, not compiled: " + why_not;
+    return e == Evaluation::compiled ? "evaluated by compiled C code" : "";
 }
 
 // ---- settings ----------------------------------------------------------------------------
@@ -399,7 +423,8 @@ void Interpreter::Impl::simulate(const Statement& s) {
     }
     r.options.progress = isatty(STDERR_FILENO) != 0;
     std::string why_not;
-    r.make = function_maker(s.flag("compiled"), &why_not);
+    const Evaluation evaluation = evaluation_of(s);
+    r.make = function_maker(evaluation, &why_not);
     SimulationResult res = guard(s.location, [&] { return run_simulation(sys, r); },
                                  "check the initial values and the loads; a singular mass matrix "
                                  "means the coordinates do not fix the model's configuration");
@@ -412,7 +437,7 @@ void Interpreter::Impl::simulate(const Statement& s) {
     out << ": " << res.table.row_count() << " rows";
     if (r.options.integrator != Integrator::dopri5)
         out << ", integrated by " << to_string(r.options.integrator) << " in " << res.steps << " steps";
-    std::string note = evaluator_note(s.flag("compiled"), why_not);
+    std::string note = evaluator_note(evaluation, why_not);
     if (!note.empty()) out << ", " << note;
     out << "\nwrote " << file_list(plot, "simulation.csv");
     if (!plot.drawn) out << " (no plot: " << plot.message << ")";
@@ -471,7 +496,7 @@ void Interpreter::Impl::inverse(const Statement& s) {
             throw ScriptError(q.value->location, "the cutoff frequency must be 0 (no filter) or positive", "");
         r.cutoff_hz = hz;
     }
-    r.compiled = s.flag("compiled");
+    r.evaluation = evaluation_of(s);
     r.dir = output_path(s);
     if (s.lists.count("plot")) r.plotted = s.lists.at("plot");
     run_inverse(r, s.location);
@@ -482,7 +507,7 @@ void Interpreter::Impl::run_inverse(const InverseRequest& r, Location where) {
     const SymbolTable& table = sys.symbols();
     std::vector<TimeVariable> q = default_coordinates();
     std::string why_not;
-    FunctionMaker make = function_maker(r.compiled, &why_not);
+    FunctionMaker make = function_maker(r.evaluation, &why_not);
     // force plates: their records give the plate symbols' values at each time
     std::shared_ptr<PlateInputs> plate_data = plate_inputs();
     if (plate_data) make = with_plate_inputs(make, plate_data);
@@ -575,7 +600,7 @@ void Interpreter::Impl::run_inverse(const InverseRequest& r, Location where) {
     std::ostringstream out;
     out << "inverse dynamics over " << span << ", t = " << transcript.number(t.columns[0].front()) << " to "
         << transcript.number(t.columns[0].back()) << " s: " << t.row_count() << " samples";
-    std::string note = evaluator_note(r.compiled, why_not);
+    std::string note = evaluator_note(r.evaluation, why_not);
     if (!note.empty()) out << ", " << note;
     out << "\nwrote " << file_list(rep.plot, rep.csv);
     if (!rep.plot.drawn) out << " (no plot: " << rep.plot.message << ")";
@@ -683,11 +708,17 @@ void parse_run(StatementParser& p, Statement& s) {
             s.words["from"] = p.text("the motion table's path");
             if (p.accept_word("cutoff")) s.quantities["cutoff"] = p.quantity();
         } else if (k == "codegen" && p.accept_word("name")) s.words["name"] = p.name("an identifier for the files");
-        else if (k != "codegen" && p.accept_word("compiled")) s.flags["compiled"] = true;
+        else if (k != "codegen" && (p.at_word("compiled") || p.at_word("tape"))) {
+            const Word w = p.take_word();
+            if (s.flags.count(w.text == "tape" ? "compiled" : "tape"))
+                throw ScriptError(w.location, "'compiled' and 'tape' both given",
+                                  "keep one: compiled C code is the default where a C compiler is found");
+            s.flags[w.text] = true;
+        }
         else if (k != "codegen" && p.accept_word("plot")) s.lists["plot"] = p.name_list("a column to plot, or none");
         else if (p.accept_word("to")) s.words["to"] = p.text("the output directory");
-        else p.fail_expected(k == "simulate" ? "'compiled' or 'to'"
-                             : k == "inverse" ? "'for', 'from', 'compiled' or 'to'"
+        else p.fail_expected(k == "simulate" ? "'compiled', 'tape', 'plot' or 'to'"
+                             : k == "inverse" ? "'for', 'from', 'compiled', 'tape', 'plot' or 'to'"
                                               : "'for', 'name' or 'to'");
     }
     if (k == "inverse" && !s.lists.count("loads"))
@@ -767,10 +798,10 @@ std::vector<StatementSpec> number_statements() {
          .run = [](M& m, const Statement& s) { m.add_event(s); }},
         {.keyword = "simulate", .family = family,
          .help = "integrates the equations of motion; writes a table and its plots",
-         .forms = {{"`simulate` [`compiled`] [`plot` *columns* \\| `plot none`] [`to` *\"dir\"*]",
+         .forms = {{"`simulate` [`compiled` \\| `tape`] [`plot` *columns* \\| `plot none`] [`to` *\"dir\"*]",
                     "simulate to \"fall\"",
                     "`run_simulation`, then `write_table_and_plot(..., \"simulation\")`: `simulation.csv`, `.png`, `.svg`; prints a table of about ten rows, the energy check (conservative models: an `energy` column) and the drift of each constraint; `plot` chooses the columns drawn, `plot none` draws none (runs over 4000 rows are drawn from rows keeping each column's extremes)"}},
-         .clauses = {"compiled", "plot", "to"}, .parse = parse_run,
+         .clauses = {"compiled", "tape", "plot", "to"}, .parse = parse_run,
          .run = [](M& m, const Statement& s) { m.simulate(s); }},
         {.keyword = "motion", .family = family,
          .help = "prescribes coordinates as formulas of time, for inverse",
@@ -780,13 +811,13 @@ std::vector<StatementSpec> number_statements() {
          .parse = parse_motion, .run = [](M& m, const Statement& s) { m.set_prescribed_motion(s); }},
         {.keyword = "inverse", .family = family,
          .help = "inverse dynamics over the prescribed motion or a motion table",
-         .forms = {{"`inverse for` *loads* [`plot` *loads* \\| `plot none`] [`to` *\"dir\"*]",
+         .forms = {{"`inverse for` *loads* [`compiled` \\| `tape`] [`plot` *loads* \\| `plot none`] [`to` *\"dir\"*]",
                     "inverse for T_A, T_B, T_C",
                     "`compile_inverse_dynamics` + `run_inverse_dynamics` over the prescribed motion, sampled every output step to the final time: `torques.csv`, `.png`, `.svg`"},
-                   {"`inverse for` *loads* `from` *\"file.csv\"* [`cutoff` *f*] [`compiled`] [`plot` ...] [`to` *\"dir\"*]",
+                   {"`inverse for` *loads* `from` *\"file.csv\"* [`cutoff` *f*] [`compiled` \\| `tape`] [`plot` ...] [`to` *\"dir\"*]",
                     "inverse for T_A, T_B, T_C from \"motion.csv\" cutoff 6 Hz",
                     "the same over a motion table (columns `t [s]` and one per coordinate, units in the header), filtered at f (default 6 Hz; 0: none) and differentiated"}},
-         .clauses = {"for", "from", "cutoff", "compiled", "plot", "to"}, .parse = parse_run,
+         .clauses = {"for", "from", "cutoff", "compiled", "tape", "plot", "to"}, .parse = parse_run,
          .run = [](M& m, const Statement& s) { m.inverse(s); }},
         {.keyword = "report", .family = family,
          .help = "writes an HTML report: road-map with free-body diagrams, equations, plots, motion",

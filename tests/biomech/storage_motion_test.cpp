@@ -41,7 +41,7 @@ TEST(StorageMotion, AMotFileDrivesInverseDynamicsLikeTheSameCsv) {
         interp.set_model_only(true);
         interp.set_output_dir(out.string());
         EXPECT_EQ(interp.run(text.str(), "model.alb"), RunStatus::ok) << e.str();
-        EXPECT_EQ(interp.run_inverse(motion.string(), 6.0, false), RunStatus::ok) << e.str();
+        EXPECT_EQ(interp.run_inverse(motion.string(), 6.0), RunStatus::ok) << e.str();
         return alembert::read_csv((out / "loads.csv").string());
     };
     const alembert::Table a = run(src / "examples/sit_to_stand_inverse/motion.csv", dir / "csv");

@@ -54,6 +54,9 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     {
         alembert::lang::Interpreter interp(out, err, true);
         interp.set_output_dir(g_out.string());
+        // the tape: a compiler run per input would slow the search a hundredfold (the
+        // statements' own `compiled` clause still reaches the compiled path)
+        interp.set_evaluation(alembert::lang::Evaluation::tape);
         status = interp.run(text, "fuzz.alb");
     }
     // empty the output directory for the next input

@@ -12,6 +12,7 @@
 #include <filesystem>
 #include <fstream>
 #include <numbers>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <unistd.h>
@@ -111,7 +112,7 @@ TEST(Simulate, StopWhenEndsTheRunWhereTheExpressionCrossesAndCompiledCodeAgreesW
     TempDir dir;
     Script r(dir.path);
     r.run(sit_to_stand_model() + kFall + "stop when dot(pos(Ccm, N_o), Ny>) = 50 cm falling\n" +
-          "simulate to \"tape\"\nsimulate compiled to \"native\"\n");
+          "simulate tape to \"tape\"\nsimulate to \"native\"\n");
     alembert::Table a = alembert::read_csv((dir.path / "tape/simulation.csv").string());
     alembert::Table b = alembert::read_csv((dir.path / "native/simulation.csv").string());
     const std::size_t h = a.column_index("height");
@@ -124,6 +125,94 @@ TEST(Simulate, StopWhenEndsTheRunWhereTheExpressionCrossesAndCompiledCodeAgreesW
         for (std::size_t k = 0; k < a.row_count(); ++k)
             EXPECT_NEAR(a.columns[c][k], b.columns[c][k], 1e-9 * (1 + std::abs(a.columns[c][k])));
     EXPECT_NE(r.out.str().find("stopped when dot(pos(Ccm, N_o), Ny>) = 50 cm"), std::string::npos) << r.out.str();
+}
+
+// The environment variable `name` set to `value` for one scope, then restored.
+class ScopedEnv {
+public:
+    ScopedEnv(const char* name, const std::string& value) : name_(name) {
+        if (const char* old = std::getenv(name)) old_ = old;
+        ::setenv(name, value.c_str(), 1);
+    }
+    ~ScopedEnv() {
+        if (old_) ::setenv(name_, old_->c_str(), 1);
+        else ::unsetenv(name_);
+    }
+    ScopedEnv(const ScopedEnv&) = delete;
+    ScopedEnv& operator=(const ScopedEnv&) = delete;
+
+private:
+    const char* name_;
+    std::optional<std::string> old_;
+};
+
+std::size_t libraries_in(const fs::path& dir) {
+    std::size_t n = 0;
+    std::error_code ec;
+    for (const fs::directory_entry& e : fs::directory_iterator(dir, ec)) n += e.path().extension() == ".so";
+    return n;
+}
+
+TEST(Simulate, CompiledCodeIsTheDefaultTapeRunsNoCompilerAndEitherGivesTheSameMotion) {
+    TempDir dir;
+    const fs::path cache = dir.path / "tmp" / "alembert-native";
+    fs::create_directories(dir.path / "tmp");
+    ScopedEnv tmpdir("TMPDIR", (dir.path / "tmp").string());
+    const std::string model = sit_to_stand_model() + kFall + "final time 1 s\n";
+    {
+        Script r(dir.path);
+        r.run(model + "simulate tape to \"tape\"\n");
+        EXPECT_EQ(libraries_in(cache), 0u) << "the tape ran a compiler";
+    }
+    Script r(dir.path);
+    r.run(model + "simulate to \"default\"\n");
+    EXPECT_GT(libraries_in(cache), 0u) << "the default compiled nothing";
+    EXPECT_EQ(r.out.str().find("evaluated"), std::string::npos) << "compiled by default goes unsaid: " << r.out.str();
+    alembert::Table a = alembert::read_csv((dir.path / "tape/simulation.csv").string());
+    alembert::Table b = alembert::read_csv((dir.path / "default/simulation.csv").string());
+    ASSERT_EQ(a.row_count(), b.row_count());
+    for (std::size_t c = 0; c < a.names.size(); ++c)
+        for (std::size_t k = 0; k < a.row_count(); ++k)
+            EXPECT_NEAR(a.columns[c][k], b.columns[c][k], 1e-9 * (1 + std::abs(a.columns[c][k])));
+    // (that a second run loads the cached library instead of compiling is for separate
+    // processes: tests/lang/determinism_test.sh; a second model built in this process has new
+    // symbols, so its code may differ in the order of terms)
+    {
+        // no compiler: the tape, and the transcript says why
+        ScopedEnv cc("CC", "alembert-no-such-compiler");
+        Script none(dir.path);
+        none.run(model + "simulate to \"none\"\n");
+        EXPECT_NE(none.out.str().find("evaluated on the tape, not compiled: NativeExpressions: no C compiler "
+                                      "'alembert-no-such-compiler' found"),
+                  std::string::npos)
+            << none.out.str();
+    }
+    {
+        // the run's default is the tape (alembert run --tape): a statement's `compiled` still compiles
+        Script tape(dir.path);
+        tape.interp.set_evaluation(Evaluation::tape);
+        tape.run(model + "simulate to \"run_tape\"\nsimulate compiled to \"said\"\n");
+        EXPECT_NE(tape.out.str().find("evaluated by compiled C code"), std::string::npos) << tape.out.str();
+        EXPECT_EQ(tape.out.str().find("evaluated by compiled C code"), tape.out.str().rfind("evaluated by compiled C code"));
+    }
+    {
+        // past the compile limit the default is the tape, and the transcript says how to compile
+        Script big(dir.path);
+        big.interp.set_compile_limit(10);
+        big.run(model + "simulate to \"limit\"\n");
+        EXPECT_NE(big.out.str().find("evaluated on the tape, not compiled: "), std::string::npos) << big.out.str();
+        EXPECT_NE(big.out.str().find("operations take the C compiler tens of seconds (past 10 only on request): "
+                                     "write 'compiled' to compile them once"),
+                  std::string::npos)
+            << big.out.str();
+        alembert::Table c = alembert::read_csv((dir.path / "limit/simulation.csv").string());
+        ASSERT_EQ(c.row_count(), a.row_count());
+        for (std::size_t k = 0; k < a.row_count(); ++k)
+            EXPECT_NEAR(c.columns[1][k], a.columns[1][k], 1e-9 * (1 + std::abs(a.columns[1][k])));
+    }
+    Script both(dir.path);
+    EXPECT_EQ(both.interp.run(model + "simulate compiled tape\n", "test.alb"), RunStatus::script_error);
+    EXPECT_NE(both.err.str().find("'compiled' and 'tape' both given"), std::string::npos) << both.err.str();
 }
 
 TEST(Simulate, TheIntegratorStatementChoosesTheMethodAndEachFindsTheSameStop) {

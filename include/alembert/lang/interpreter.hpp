@@ -20,6 +20,27 @@ namespace alembert::lang {
 /// The default of Interpreter::set_max_terms().
 inline constexpr std::size_t kDefaultMaxTerms = 100000;
 
+/// The default of Interpreter::set_compile_limit(): GCC -O2 takes about 0.4 ms per operation of
+/// generated C (3 s for the KUKA arm's 8,000 operations; bench/README.md), so a function this
+/// large takes about ten seconds to compile, against about a nanosecond per operation saved
+/// per call over the tape.
+inline constexpr std::size_t kCompileByDefaultLimit = 25000;
+
+/// How `simulate` and `inverse` evaluate their equations (Interpreter::set_evaluation, the
+/// statements' `compiled` and `tape` clauses).
+enum class Evaluation {
+    /// Compiled C code where a C compiler is found (CC, else cc) for every function of at
+    /// most Interpreter::set_compile_limit() operations, the tape otherwise. The choice does not
+    /// depend on whether the code was compiled before: a library is cached by a hash of its
+    /// source, so only the first run of a model pays the compiler. The transcript names the
+    /// reason when the tape is used.
+    automatic,
+    /// Compiled C code, and the transcript says so (or why the tape is used instead).
+    compiled,
+    /// The interpreted tape (alembert::CompiledExpressions): no compiler is run.
+    tape,
+};
+
 /// How a run ended, as the command-line tool maps it to its exit status.
 enum class RunStatus {
     ok = 0,              ///< every statement ran
@@ -84,6 +105,13 @@ public:
     /// estimated before expanding: multinomial counts for powers of sums); a larger expansion
     /// is refused with a script error instead of exhausting memory (`--max-terms`).
     void set_max_terms(std::size_t max_terms);
+    /// How `simulate` and `inverse` statements without a `compiled` or `tape` clause evaluate
+    /// their equations (default: Evaluation::automatic; `alembert run --tape`: the tape).
+    void set_evaluation(Evaluation evaluation);
+    /// The largest function (in operations after common-subexpression elimination) that
+    /// Evaluation::automatic compiles; a larger one is evaluated on the tape unless the
+    /// statement says `compiled` (default kCompileByDefaultLimit).
+    void set_compile_limit(std::size_t operations);
     /// With `model_only`, run() builds the model and skips `simulate`, `inverse` and `codegen`
     /// (the `alembert inverse` and `alembert codegen` commands run the script this way).
     void set_model_only(bool model_only);
@@ -94,10 +122,11 @@ public:
     /// Inverse dynamics of the model over the motion table `motion_csv` (relative to the
     /// current directory) for every load measure the script declares, written to the output
     /// directory as torques.csv and its plot: `alembert inverse`. `cutoff_hz` 0 turns the
-    /// filter off; `compiled` evaluates through compiled C code; `unitless_unit` (deg, rad,
-    /// m, mm; empty: none) is how to read coordinate columns without a unit in the header
+    /// filter off; `evaluation` is how the equations are evaluated; `unitless_unit` (deg,
+    /// rad, m, mm; empty: none) is how to read coordinate columns without a unit in the header
     /// (MotionFilterOptions::unitless_unit). Errors go to `err`.
-    RunStatus run_inverse(const std::string& motion_csv, double cutoff_hz, bool compiled,
+    RunStatus run_inverse(const std::string& motion_csv, double cutoff_hz,
+                          Evaluation evaluation = Evaluation::automatic,
                           const std::string& unitless_unit = "");
     /// Code for the model in `language` (c, cpp, matlab, python) written to the output
     /// directory, named `name` (empty: the script's name): `alembert codegen`.
