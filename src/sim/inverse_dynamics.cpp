@@ -5,10 +5,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <optional>
 #include <sstream>
 
 #include "alembert/eom/planner.hpp"
 #include "alembert/eom/statics.hpp"
+#include "alembert/eom/tree_dynamics.hpp"
 #include "alembert/error.hpp"
 #include "number_text.hpp"
 
@@ -17,6 +19,27 @@ namespace alembert {
 namespace {
 
 using detail::number;
+
+// The recursive rows of a tree (form_tree_equations: about each joint, accumulated from the tip
+// inward, so their size grows linearly in the number of bodies where the planned road-map's
+// closed forms grow as its square) as equations in `loads`, where they serve: a tree with as
+// many load measures as coordinates, each of which enters the rows (motor torques and forces on
+// the bodies do; joint reactions do not, and need the road-map's rows about other points).
+std::optional<LinearSystem> tree_rows_for(const System& sys, const std::vector<TimeVariable>& q,
+                                          const std::vector<ex>& loads) {
+    if (loads.empty() || loads.size() != q.size() || !sys.constraints().empty()) return std::nullopt;
+    std::optional<TreeEquations> tree = form_tree_equations_if_tree(sys, q);
+    if (!tree) return std::nullopt;
+    auto in_rows = [&](const ex& x) {
+        return std::any_of(tree->residuals.begin(), tree->residuals.end(), [&](const ex& r) { return r.has(x); });
+    };
+    if (!std::all_of(loads.begin(), loads.end(), in_rows)) return std::nullopt;
+    // another unknown left in the rows (a reaction that did not cancel symbolically) is for
+    // the road-map to keep out
+    for (const ex& u : sys.symbols().symbols(SymbolKind::unknown))
+        if (std::find(loads.begin(), loads.end(), u) == loads.end() && in_rows(u)) return std::nullopt;
+    return form_linear_system(tree->residuals, loads);
+}
 
 std::string printed(const ex& e) {
     std::ostringstream s;
@@ -209,6 +232,8 @@ InverseDynamics compile_inverse_dynamics(const SymbolTable& table, const LinearS
 InverseDynamics compile_inverse_dynamics(const System& sys, const std::vector<TimeVariable>& q,
                                          const std::vector<ex>& loads, const std::string& model,
                                          const FunctionMaker& make) {
+    if (std::optional<LinearSystem> tree = tree_rows_for(sys, q, loads))
+        return compile_inverse_dynamics(sys.symbols(), *tree, q, model, make);
     std::vector<RoadmapRow> rows = plan_roadmap(sys, q, loads, Analysis::dynamics);
     InverseDynamics id = compile_inverse_dynamics(
         sys.symbols(), form_linear_system(residuals_of(rows), loads), q, model, make);

@@ -5,9 +5,13 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <random>
 
+#include "alembert/eom/equations.hpp"
+#include "alembert/eom/planner.hpp"
+#include "alembert/eom/statics.hpp"
 #include "alembert/error.hpp"
 #include "alembert/sim/inverse_analysis.hpp"
 #include "alembert/mech/sample_models.hpp"
@@ -36,6 +40,38 @@ TEST(InverseDynamics, PlanarChainsMatchTheHandWrittenNewtonEulerRecursion) {
             for (std::size_t i = 0; i < un; ++i)
                 EXPECT_NEAR(ours[i], theirs[i], 1e-12 * (1 + std::abs(theirs[i])))
                     << "n = " << n << ", joint " << i + 1;
+        }
+    }
+}
+
+TEST(InverseDynamics, TreesUseTheRecursiveRowsAndAgreeWithThePlannedRoadmap) {
+    // a tree with one motor torque per coordinate takes form_tree_equations' rows; the loads
+    // are those of the planned road-map's rows, compiled here as before, at random states
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> value(-1.5, 1.5);
+    struct Case {
+        const char* name;
+        SampleModel model;
+    };
+    Case cases[] = {{"arm", make_kuka_iiwa14()}, {"spatial chain", make_n_link_pendulum(4, ChainKind::spatial)}};
+    for (Case& c : cases) {
+        const System& sys = c.model.system;
+        InverseDynamics tree = compile_inverse_dynamics(sys, c.model.q, c.model.unknowns, c.name);
+        const std::vector<RoadmapRow> rows = plan_roadmap(sys, c.model.q, c.model.unknowns, Analysis::dynamics);
+        InverseDynamics planned = compile_inverse_dynamics(
+            sys.symbols(), form_linear_system(residuals_of(rows), c.model.unknowns), c.model.q, c.name);
+        EXPECT_TRUE(tree.solved()) << c.name << ": each motor torque enters its own rows only";
+        EXPECT_LT(tree.function().operation_count, planned.function().operation_count)
+            << c.name << ": the recursive rows were not used";
+        const std::size_t n = c.model.q.size();
+        std::vector<double> q(n), qd(n), qdd(n), a(n), b(n);
+        for (int trial = 0; trial < 10; ++trial) {
+            for (std::size_t i = 0; i < n; ++i) q[i] = value(rng), qd[i] = value(rng), qdd[i] = value(rng);
+            tree.calc_loads(0.0, q.data(), qd.data(), qdd.data(), a.data());
+            planned.calc_loads(0.0, q.data(), qd.data(), qdd.data(), b.data());
+            double scale = 1;
+            for (double x : b) scale = std::max(scale, std::abs(x));
+            for (std::size_t i = 0; i < n; ++i) EXPECT_NEAR(a[i], b[i], 1e-12 * scale) << c.name << ", load " << i;
         }
     }
 }

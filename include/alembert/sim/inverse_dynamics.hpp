@@ -94,7 +94,11 @@ InverseDynamics compile_inverse_dynamics(const SymbolTable& table, const LinearS
 
 /// Plans the MG road-map of `sys` for the load measures `loads` (one row per measure, about
 /// the joint where the other unknown forces drop out) and compiles it, with the residuals of
-/// the model's constraints (set_constraints) so a motion can be checked against them.
+/// the model's constraints (set_constraints) so a motion can be checked against them. Where
+/// the model is a tree (explain_not_tree) with as many load measures as coordinates, each
+/// entering the rows (motor torques, forces on bodies; not joint reactions), the same rows are
+/// formed recursively instead (form_tree_equations: their size grows linearly in the number of
+/// bodies, the planned closed forms' as its square); the loads are the same.
 /// @throws as plan_roadmap and compile_inverse_dynamics above.
 InverseDynamics compile_inverse_dynamics(const System& sys, const std::vector<TimeVariable>& q,
                                          const std::vector<ex>& loads, const std::string& model,
