@@ -56,13 +56,14 @@ BallJoint add_ball_joint(System& sys, RigidBody& B, const Frame& parent) {
                          "frame; pass the frame of the body it hangs from (or N)");
     BallJoint j;
     const std::string& b = B.name();
-    for (const char* e : {"e0_", "e1_", "e2_", "e3_"}) j.quaternion.push_back(st.add_variable(e + b, 2));
+    for (const char* e : {"e0_", "e1_", "e2_", "e3_"})
+        j.quaternion.push_back(st.add_variable(e + b, 2));
     for (const char* w : {"w1_", "w2_", "w3_"}) j.angular.push_back(st.add_variable(w + b, 1));
     // R_PB by the Euler parameters, ^P w^B in B's axes
     F.orient_dcm(parent, euler_parameter_rotation(j.quaternion[0].d(0), j.quaternion[1].d(0),
                                                   j.quaternion[2].d(0), j.quaternion[3].d(0)));
-    F.set_ang_vel(parent, j.angular[0].d(0) * F.x() + j.angular[1].d(0) * F.y() +
-                              j.angular[2].d(0) * F.z());
+    F.set_ang_vel(
+        parent, j.angular[0].d(0) * F.x() + j.angular[1].d(0) * F.y() + j.angular[2].d(0) * F.z());
     return j;
 }
 

@@ -35,8 +35,10 @@ struct SphericalPendulum {
     static constexpr double mA = 1.5, mB = 0.8, g = 9.81;
     static constexpr double cA[3] = {0.05, -0.02, -0.3}, cB[3] = {-0.03, 0.04, -0.25};
     static constexpr double p[3] = {0.02, 0.01, -0.6}, r_BP[3] = {0.1, -0.05, -0.4};
-    static constexpr double IA[3][3] = {{0.05, 0.004, -0.002}, {0.004, 0.06, 0.003}, {-0.002, 0.003, 0.02}};
-    static constexpr double IB[3][3] = {{0.03, -0.002, 0.001}, {-0.002, 0.025, 0.002}, {0.001, 0.002, 0.01}};
+    static constexpr double IA[3][3] = {
+        {0.05, 0.004, -0.002}, {0.004, 0.06, 0.003}, {-0.002, 0.003, 0.02}};
+    static constexpr double IB[3][3] = {
+        {0.03, -0.002, 0.001}, {-0.002, 0.025, 0.002}, {0.001, 0.002, 0.01}};
     explicit SphericalPendulum(double gravity = g) {
         SymbolTable& st = sys.symbols();
         const Frame& N = sys.newtonian();
@@ -60,7 +62,8 @@ struct SphericalPendulum {
         for (const char* name : {"TA1", "TA2", "TA3", "TB1", "TB2", "TB3", "Fx", "Fy", "Fz"})
             loads.push_back(st.add_unknown(name));
         sys.add_torque_pair(*A, N, loads[0] * FA.x() + loads[1] * FA.y() + loads[2] * FA.z(), "TA");
-        sys.add_torque_pair(*B, FA, loads[3] * FB.x() + loads[4] * FB.y() + loads[5] * FB.z(), "TB");
+        sys.add_torque_pair(*B, FA, loads[3] * FB.x() + loads[4] * FB.y() + loads[5] * FB.z(),
+                            "TB");
         Point& P = sys.add_point("P", B);
         P.set_pos(sys.point("B_o"), r_BP[0] * FB.x() + r_BP[1] * FB.y() + r_BP[2] * FB.z());
         sys.add_force(P, loads[6] * N.x() + loads[7] * N.y() + loads[8] * N.z(), "F");
@@ -185,7 +188,8 @@ TEST(BallJoint, DoubleSphericalPendulumRowsAgreeWithKanesMethodInTheSameSpeeds) 
         // forward dynamics: at the recursion's accelerations Kane's rows vanish
         exmap fd = at;
         const std::vector<ex> u = s.speeds();
-        for (std::size_t r = 0; r < 6; ++r) fd[st.dt(u[r])] = st.evaluate(tree.accelerations[r], at);
+        for (std::size_t r = 0; r < 6; ++r)
+            fd[st.dt(u[r])] = st.evaluate(tree.accelerations[r], at);
         for (const ex& e : kane.residuals) EXPECT_NEAR(st.evaluate(e, fd), 0, kBallExact * 100);
     }
 }
@@ -246,17 +250,17 @@ TEST(BallJoint, UnloadedDoubleSphericalPendulumConservesEnergyAndUnitQuaternions
         double kinetic, total;
     };
     auto energy = [&](const State& y) {
-        const Eigen::Matrix3d R_NA = rotation_of(y.segment<4>(0)), R_AB = rotation_of(y.segment<4>(4));
+        const Eigen::Matrix3d R_NA = rotation_of(y.segment<4>(0)),
+                              R_AB = rotation_of(y.segment<4>(4));
         const Eigen::Matrix3d R_NB = R_NA * R_AB;
         const Eigen::Vector3d w_NA_A = y.segment<3>(8);
         const Eigen::Vector3d w_NB_B = R_AB.transpose() * w_NA_A + y.segment<3>(11);
         const Eigen::Vector3d v_Acm = R_NA * w_NA_A.cross(cA);
         const Eigen::Vector3d v_Bcm = R_NA * w_NA_A.cross(p) + R_NB * w_NB_B.cross(cB);
         const double z_A = (R_NA * cA)[2], z_B = (R_NA * p + R_NB * cB)[2];
-        const double kinetic = 0.5 * SphericalPendulum::mA * v_Acm.squaredNorm() +
-                               0.5 * w_NA_A.dot(IA * w_NA_A) +
-                               0.5 * SphericalPendulum::mB * v_Bcm.squaredNorm() +
-                               0.5 * w_NB_B.dot(IB * w_NB_B);
+        const double kinetic =
+            0.5 * SphericalPendulum::mA * v_Acm.squaredNorm() + 0.5 * w_NA_A.dot(IA * w_NA_A) +
+            0.5 * SphericalPendulum::mB * v_Bcm.squaredNorm() + 0.5 * w_NB_B.dot(IB * w_NB_B);
         return Energy{kinetic, kinetic + SphericalPendulum::g * (SphericalPendulum::mA * z_A +
                                                                  SphericalPendulum::mB * z_B)};
     };

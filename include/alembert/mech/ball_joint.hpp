@@ -39,7 +39,7 @@ std::vector<ex> euler_parameter_rates(const std::vector<ex>& e, const std::vecto
 /// e0 >= 0 (e and -e are the same rotation).
 struct BallJoint {
     std::vector<TimeVariable> quaternion{};  ///< e0, e1, e2, e3 (to second order, for methods
-                                            ///< that differentiate the orientation twice)
+                                             ///< that differentiate the orientation twice)
     std::vector<TimeVariable> angular{};     ///< w1, w2, w3 (first order)
     /// e0, e1, e2, e3.
     std::vector<TimeVariable> coordinates() const;
