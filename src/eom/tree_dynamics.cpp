@@ -289,12 +289,6 @@ public:
         return st_.name_subexpression(e);
     }
     Col3 operator()(const Col3& v) const { return v.map([&](const ex& e) { return (*this)(e); }); }
-    Mat3 operator()(const Mat3& M) const {
-        Mat3 out;
-        for (int i = 0; i < 3; ++i)
-            for (int j = 0; j < 3; ++j) out(i, j) = (*this)(M(i, j));
-        return out;
-    }
     Spatial operator()(const Spatial& s) const { return {(*this)(s.w), (*this)(s.v)}; }
     // a symmetric matrix: the upper triangle named, mirrored
     Spatial6 symmetric(const Spatial6& M) const {
@@ -404,9 +398,10 @@ TreeEquations form_on_tree(const System& sys, const Speeds& sp, Tree& tree) {
     std::vector<Col3> w(nb);  // ^N w^B in B
     for (std::size_t k = 0; k < nb; ++k) {
         Node& n = nodes[k];
-        // the rotation named entry by entry: one by Euler parameters (a polynomial in each
-        // entry) is formed once, not expanded into every product with a number
-        n.R = name(n.R);
+        // a rotation's polynomial entries named (Euler parameters' quadratics): each is formed
+        // once, not expanded into every product with a number; a hinge's sines and cosines stay
+        for (ex& e : n.R.m)
+            if (is_a<GiNaC::add>(e)) e = name(e);
         X[k] = motion_transform(n.R, n.r);
         Mat3 Rt = n.R.transpose();
         Col3 w_P = n.parent >= 0 ? w[static_cast<std::size_t>(n.parent)] : Col3{};
