@@ -31,8 +31,8 @@ public:
                 made.push_back(SimTK::MobilizedBody::Free(parent, SimTK::Transform(at), body,
                                                           SimTK::Transform()));
             else if (s.dofs == 3)
-                made.push_back(SimTK::MobilizedBody::Gimbal(parent, SimTK::Transform(at), body,
-                                                            SimTK::Transform()));
+                made.push_back(SimTK::MobilizedBody::Ball(parent, SimTK::Transform(at), body,
+                                                          SimTK::Transform()));
             else
                 made.push_back(SimTK::MobilizedBody::Pin(parent, SimTK::Transform(z_to_y, at), body,
                                                          SimTK::Transform(z_to_y)));

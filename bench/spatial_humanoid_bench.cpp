@@ -11,6 +11,7 @@
 #include <alembert/codegen/code_plan.hpp>
 #include <alembert/codegen/codegen.hpp>
 #include <alembert/eom/tree_dynamics.hpp>
+#include <alembert/mech/ball_joint.hpp>
 #include <alembert/mech/sample_models.hpp>
 
 #include <Eigen/Dense>
@@ -32,8 +33,8 @@
 #include <mujoco/mujoco.h>
 #endif
 #ifdef ALEMBERT_BENCH_DART
+#include <dart/dynamics/BallJoint.hpp>
 #include <dart/dynamics/BodyNode.hpp>
-#include <dart/dynamics/EulerJoint.hpp>
 #include <dart/dynamics/FreeJoint.hpp>
 #include <dart/dynamics/Inertia.hpp>
 #include <dart/dynamics/RevoluteJoint.hpp>
@@ -54,13 +55,15 @@ using Vec = std::array<double, kN>;
 using Mat = std::array<double, kN * kN>;  // row by row
 
 // ---- the generated code -----------------------------------------------------------------------
-// Generated functions take q, q', q'' arrays of one entry per speed. The free joint's entries
-// are: q = (x, y, z, e1, e2, e3), the position of pelvis_o and the vector part of the unit
-// quaternion, whose scalar part is e0 = +sqrt(1 - e1^2 - e2^2 - e3^2) (every orientation has
-// Euler parameters with e0 >= 0); q' = (x', y', z', w1, w2, w3) and q'' their rates, w in the
-// pelvis frame; loads (F in N axes, T in pelvis axes). So the model is formed again with the
-// pelvis oriented by (sqrt(1 - ev.ev), ev) and its angular velocity set in the rates ev':
-// the rows and accelerations are those of make_humanoid's speeds, read with w = ev'.
+// Generated functions take q, q', q'' arrays of one entry per speed. Each unit quaternion (the
+// free joint's and each ball joint's Euler parameters) enters by its vector part ev, its scalar
+// part being e0 = +sqrt(1 - ev.ev) (every orientation has Euler parameters with e0 >= 0), and
+// its three speeds w (the body's angular velocity in its parent, body axes) as q'. The free
+// joint's entries are q = (x, y, z, ev) of the pelvis, q' = (x', y', z', w), its loads F in N
+// axes and T in pelvis axes; a ball's are q = ev, q' = w, its loads the torque components
+// along the segment's axes; a hinge's its angle, rate and torque. So the model is formed again
+// with each such frame oriented by (sqrt(1 - ev.ev), ev) and its angular velocity set in the
+// rates ev': the rows and accelerations are those of make_humanoid's speeds, read with w = ev'.
 struct Generated {
     using Init = void (*)(void*, const void*);
     using Inverse = void (*)(const void*, double, const double*, const double*, const double*,
@@ -72,23 +75,23 @@ struct Generated {
     Generated() : model(make_humanoid()) {
         System& sys = model.system;
         SymbolTable& st = sys.symbols();
-        const Frame& N = sys.newtonian();
-        Frame& P = sys.frame("pelvis");
-        std::vector<TimeVariable> ev;
-        for (const char* name : {"ev1", "ev2", "ev3"}) ev.push_back(st.add_variable(name, 2));
-        const ex e1 = ev[0].d(0), e2 = ev[1].d(0), e3 = ev[2].d(0);
-        const ex e0 = GiNaC::sqrt(1 - e1 * e1 - e2 * e2 - e3 * e3);
-        Mat3 R;
-        R(0, 0) = 1 - 2 * (e2 * e2 + e3 * e3);
-        R(1, 1) = 1 - 2 * (e1 * e1 + e3 * e3);
-        R(2, 2) = 1 - 2 * (e1 * e1 + e2 * e2);
-        R(0, 1) = 2 * (e1 * e2 - e0 * e3), R(1, 0) = 2 * (e1 * e2 + e0 * e3);
-        R(0, 2) = 2 * (e1 * e3 + e0 * e2), R(2, 0) = 2 * (e1 * e3 - e0 * e2);
-        R(1, 2) = 2 * (e2 * e3 - e0 * e1), R(2, 1) = 2 * (e2 * e3 + e0 * e1);
-        P.orient_dcm(N, R);
-        P.set_ang_vel(N, ev[0].d(1) * P.x() + ev[1].d(1) * P.y() + ev[2].d(1) * P.z());
-        q = {model.q[0], model.q[1], model.q[2], ev[0], ev[1], ev[2]};
-        q.insert(q.end(), model.q.begin() + 7, model.q.end());
+        // each quaternion (e0_<B>..e3_<B>) by its vector part
+        for (std::size_t i = 0; i < model.q.size(); ++i) {
+            const std::string& name = model.q[i].name();
+            if (name.rfind("e0_", 0) != 0) {
+                q.push_back(model.q[i]);
+                continue;
+            }
+            Frame& B = sys.frame(name.substr(3));
+            std::vector<TimeVariable> ev;
+            for (const char* e : {"ev1_", "ev2_", "ev3_"}) ev.push_back(st.add_variable(e + B.name(), 2));
+            const ex e1 = ev[0].d(0), e2 = ev[1].d(0), e3 = ev[2].d(0);
+            B.orient_dcm(*B.parent(), euler_parameter_rotation(
+                                          GiNaC::sqrt(1 - e1 * e1 - e2 * e2 - e3 * e3), e1, e2, e3));
+            B.set_ang_vel(*B.parent(), ev[0].d(1) * B.x() + ev[1].d(1) * B.y() + ev[2].d(1) * B.z());
+            q.insert(q.end(), ev.begin(), ev.end());
+            i += 3;
+        }
         TreeEquations t = form_tree_equations(sys, q);
         joints = t.joints;
         DynamicsEquations eq{q, t.residuals, model.unknowns, std::nullopt, t.accelerations};
@@ -122,20 +125,30 @@ struct Generated {
         mass_forcing = reinterpret_cast<MassForcing>(::dlsym(handle, "humanoid_mass_forcing"));
         context.resize(size() / sizeof(double) + 1);
         init(context.data(), nullptr);
-        // a random state: unit quaternion with e0 >= 0, angles, speeds, rates, loads
+        // a random state: angles, speeds, rates, loads, and per free or ball joint a unit
+        // quaternion with e0 >= 0 (its vector part in q) and its rotation R_PB
         std::mt19937 rng(42);
         std::uniform_real_distribution<double> d(-1, 1);
-        for (int i = 0; i < 4; ++i) e[i] = d(rng);
-        const double norm = std::sqrt(e[0] * e[0] + e[1] * e[1] + e[2] * e[2] + e[3] * e[3]);
-        for (double& x : e) x /= (e[0] < 0 ? -norm : norm);
         for (int i = 0; i < kN; ++i) qg[i] = d(rng), u[i] = d(rng), udot[i] = d(rng), tau[i] = 10 * d(rng);
-        for (int i = 0; i < 3; ++i) qg[3 + i] = e[1 + i];
+        segs = segments();
+        for (const HumanoidSegment& seg : segs) {
+            std::array<double, 4> e4{1, 0, 0, 0};
+            if (seg.dofs != 1) {
+                for (double& x : e4) x = d(rng);
+                const double norm = std::sqrt(e4[0] * e4[0] + e4[1] * e4[1] + e4[2] * e4[2] + e4[3] * e4[3]);
+                for (double& x : e4) x /= (e4[0] < 0 ? -norm : norm);
+                for (int i = 0; i < 3; ++i) qg[seg.speed + (seg.dofs == 6 ? 3 : 0) + i] = e4[1 + i];
+            }
+            quaternions.push_back(e4);
+            rotations.push_back(Eigen::Quaterniond(e4[0], e4[1], e4[2], e4[3]).toRotationMatrix());
+        }
+        e = quaternions[0];
+        R_NP = rotations[0];
         inverse(context.data(), 0, qg.data(), u.data(), udot.data(), id_out.data());
         if (forward(context.data(), 0, qg.data(), u.data(), tau.data(), fd_out.data()) != 0)
             throw std::runtime_error("generated forward dynamics failed");
         Vec f{};
         mass_forcing(context.data(), 0, qg.data(), u.data(), tau.data(), M.data(), f.data());
-        R_NP = Eigen::Quaterniond(e[0], e[1], e[2], e[3]).toRotationMatrix();
     }
     ~Generated() {
         if (handle) ::dlclose(handle);
@@ -160,12 +173,9 @@ struct Generated {
         std::vector<HumanoidSegment> out;
         for (const RigidBody* B : model.links) {
             HumanoidSegment s;
-            const TreeJoint* j = &joint_of(B);
+            const TreeJoint* j = &joint_of(B);  // one joint per segment: no gimbal stages
             s.dofs = static_cast<int>(j->coordinates.size());
-            while (j->parent && segment_index(j->parent) < 0) {  // through the gimbal stages
-                j = &joint_of(j->parent);
-                s.dofs += static_cast<int>(j->coordinates.size());
-            }
+            s.speed = static_cast<int>(j->coordinates.front());
             s.parent = j->parent ? segment_index(j->parent) : -1;
             if (j->parent) {
                 const Body& parent = *j->parent;
@@ -193,6 +203,9 @@ struct Generated {
     Forward forward = nullptr;
     MassForcing mass_forcing = nullptr;
     std::vector<double> context;
+    std::vector<HumanoidSegment> segs;
+    std::vector<std::array<double, 4>> quaternions;  // per segment: its joint's (1 0 0 0: a hinge)
+    std::vector<Eigen::Matrix3d> rotations;          // per segment: R_PB of its joint's quaternion
     std::array<double, 4> e{};  // the pelvis's unit quaternion
     Eigen::Matrix3d R_NP;
     Vec qg{}, u{}, udot{}, tau{}, id_out{}, fd_out{};
@@ -281,11 +294,13 @@ BENCHMARK(HumanoidGeneratedForward);
 BENCHMARK(HumanoidGeneratedMassMatrix);
 
 #ifdef ALEMBERT_BENCH_MUJOCO
-// ---- MuJoCo: nested bodies at the joint centres, a free joint for the pelvis, three hinges
-// about x, y, z (in that order: body-fixed X-Y-Z) for a ball, a hinge about y; the inertial at
-// the mass centre with the principal moments; no geoms. MuJoCo's free joint has our
-// coordinates: qpos (position, quaternion w x y z), qvel (velocity in the world, angular
-// velocity in the body), so no state is converted.
+// ---- MuJoCo: nested bodies at the joint centres, a free joint for the pelvis, a ball joint
+// for a ball, a hinge about y; the inertial at the mass centre with the principal moments; no
+// geoms. MuJoCo's free and ball joints have our coordinates: qpos (the free joint's position
+// and quaternion w x y z, a ball's quaternion w x y z in its parent), qvel (the free joint's
+// velocity in the world and angular velocity in the body, a ball's angular velocity in the
+// child's frame), qfrc likewise, so no speed, rate or load is converted: the state's
+// quaternions are written out whole.
 struct MujocoHumanoid {
     explicit MujocoHumanoid(const std::vector<HumanoidSegment>& s) {
         std::string xml = "<mujoco><option gravity=\"0 0 -9.81\"/><worldbody>";
@@ -296,9 +311,7 @@ struct MujocoHumanoid {
                           seg.at[2]);
             xml += buf;
             if (seg.dofs == 6) xml += "<freejoint/>";
-            if (seg.dofs == 3)
-                xml += "<joint type=\"hinge\" axis=\"1 0 0\"/><joint type=\"hinge\" axis=\"0 1 0\"/>"
-                       "<joint type=\"hinge\" axis=\"0 0 1\"/>";
+            if (seg.dofs == 3) xml += "<joint type=\"ball\"/>";
             if (seg.dofs == 1) xml += "<joint type=\"hinge\" axis=\"0 1 0\"/>";
             std::snprintf(buf, sizeof buf,
                           "<inertial pos=\"%.17g %.17g %.17g\" mass=\"%.17g\" diaginertia=\"%.17g "
@@ -320,7 +333,8 @@ struct MujocoHumanoid {
         m = mj_loadXML(path.c_str(), nullptr, error, sizeof error);
         std::remove(path.c_str());
         if (!m) throw std::runtime_error(std::string("MuJoCo: ") + error);
-        if (m->nv != kN) throw std::runtime_error("MuJoCo: the humanoid has " + std::to_string(m->nv) + " dofs");
+        if (m->nv != kN || m->nq != bench::kHumanoidCoordinates)
+            throw std::runtime_error("MuJoCo: the humanoid has " + std::to_string(m->nv) + " dofs");
         d = mj_makeData(m);
     }
     ~MujocoHumanoid() {
@@ -328,9 +342,16 @@ struct MujocoHumanoid {
         mj_deleteModel(m);
     }
     void set(const Generated& g) {
-        for (int i = 0; i < 3; ++i) d->qpos[i] = g.qg[i];
-        for (int i = 0; i < 4; ++i) d->qpos[3 + i] = g.e[i];
-        for (int i = 6; i < kN; ++i) d->qpos[i + 1] = g.qg[i];
+        int p = 0;  // qpos of the segment's joint
+        for (std::size_t k = 0; k < g.segs.size(); ++k) {
+            const HumanoidSegment& seg = g.segs[k];
+            if (seg.dofs == 6)
+                for (int i = 0; i < 3; ++i) d->qpos[p++] = g.qg[seg.speed + i];
+            if (seg.dofs == 1)
+                d->qpos[p++] = g.qg[seg.speed];
+            else
+                for (int i = 0; i < 4; ++i) d->qpos[p++] = g.quaternions[k][i];
+        }
         for (int i = 0; i < kN; ++i) d->qvel[i] = g.u[i], d->qacc[i] = g.udot[i];
     }
     void inverse(mjtNum* out) {
@@ -413,11 +434,13 @@ BENCHMARK(HumanoidMujocoMassMatrix);
 #endif
 
 #ifdef ALEMBERT_BENCH_DART
-// ---- DART: a dart::dynamics::FreeJoint for the pelvis, EulerJoints (X-Y-Z) for the balls, RevoluteJoints
+// ---- DART: a dart::dynamics::FreeJoint for the pelvis, BallJoints for the balls, RevoluteJoints
 // about y. DART's free joint has its own coordinates (exponential map; the pelvis's angular
 // velocity and origin velocity in pelvis axes; torque and force in pelvis axes), so the state
 // is converted once, outside the timed loop, through DART's dart::dynamics::FreeJoint setters, and its
-// results are converted back for the agreement check.
+// results are converted back for the agreement check. A BallJoint's positions are the
+// exponential map of R_PB (converted once, BallJoint::convertToPositions); its velocities,
+// accelerations and forces are ours (angular velocity and torque in the child's axes).
 struct DartHumanoid {
     explicit DartHumanoid(const std::vector<HumanoidSegment>& s) {
         using namespace dart::dynamics;
@@ -435,10 +458,9 @@ struct DartHumanoid {
                 auto pair = skel->createJointAndBodyNodePair<dart::dynamics::FreeJoint>(parent, p, body);
                 j = pair.first, b = pair.second;
             } else if (seg.dofs == 3) {
-                EulerJoint::Properties p;
-                p.mAxisOrder = EulerJoint::AxisOrder::XYZ;
+                dart::dynamics::BallJoint::Properties p;
                 p.mName = "joint" + std::to_string(k);
-                auto pair = skel->createJointAndBodyNodePair<EulerJoint>(parent, p, body);
+                auto pair = skel->createJointAndBodyNodePair<dart::dynamics::BallJoint>(parent, p, body);
                 j = pair.first, b = pair.second;
             } else {
                 RevoluteJoint::Properties p;
@@ -466,8 +488,12 @@ struct DartHumanoid {
         T.linear() = g.R_NP;
         T.translation() = Eigen::Vector3d(g.qg[0], g.qg[1], g.qg[2]);
         Eigen::VectorXd q(kN);
-        q.head<6>() = dart::dynamics::FreeJoint::convertToPositions(T);
         for (int i = 6; i < kN; ++i) q[i] = g.qg[i];
+        q.head<6>() = dart::dynamics::FreeJoint::convertToPositions(T);
+        for (std::size_t k = 0; k < g.segs.size(); ++k)
+            if (g.segs[k].dofs == 3)
+                q.segment<3>(g.segs[k].speed) =
+                    dart::dynamics::BallJoint::convertToPositions(g.rotations[k]);
         skel->setPositions(q);
         Eigen::VectorXd v = Eigen::VectorXd::Zero(kN), a = Eigen::VectorXd::Zero(kN);
         for (int i = 6; i < kN; ++i) v[i] = g.u[i], a[i] = g.udot[i];
@@ -576,33 +602,55 @@ BENCHMARK(HumanoidDartMassMatrix);
 
 #ifdef ALEMBERT_BENCH_SIMBODY
 // ---- Simbody (humanoid_simbody.cpp): its Free mobilizer has q = (quaternion, position) and
-// u = (angular velocity, velocity) in ground axes, rotation first; the state is converted
-// once, outside the timed loop, and the results back for the agreement check.
+// u = (angular velocity, velocity) in ground axes, rotation first; its Ball mobilizer q = the
+// quaternion and u = the angular velocity in the parent's axes, R_PB w (so u' = R_PB w', as
+// R_PB' w = R_PB (w x w) = 0, and the generalized forces R_PB T). The state is converted once,
+// outside the timed loop, and the results back for the agreement check.
 struct SimbodyState {
     explicit SimbodyState(const Generated& g) {
-        const Eigen::Matrix3d& R = g.R_NP;
-        for (int i = 0; i < 4; ++i) q[i] = g.e[i];
-        for (int i = 0; i < 3; ++i) q[4 + i] = g.qg[i];
-        for (int i = 6; i < kN; ++i) q[i + 1] = g.qg[i];
-        const Eigen::Vector3d w = R * Eigen::Vector3d(g.u[3], g.u[4], g.u[5]);
-        const Eigen::Vector3d w_d = R * Eigen::Vector3d(g.udot[3], g.udot[4], g.udot[5]);
-        const Eigen::Vector3d T = R * Eigen::Vector3d(g.tau[3], g.tau[4], g.tau[5]);
-        for (int i = 0; i < 3; ++i) {
-            u[i] = w[i], u[3 + i] = g.u[i];
-            udot[i] = w_d[i], udot[3 + i] = g.udot[i];
-            tau[i] = T[i], tau[3 + i] = g.tau[i];
-        }
-        for (int i = 6; i < kN; ++i) u[i] = g.u[i], udot[i] = g.udot[i], tau[i] = g.tau[i];
         T_speeds = Eigen::MatrixXd::Identity(kN, kN);
-        T_speeds.topLeftCorner<6, 6>().setZero();
-        T_speeds.block<3, 3>(0, 3) = R;
-        T_speeds.block<3, 3>(3, 0).setIdentity();
+        int p = 0;  // q of the segment's mobilizer
+        for (std::size_t k = 0; k < g.segs.size(); ++k) {
+            const HumanoidSegment& seg = g.segs[k];
+            const int o = seg.speed;
+            if (seg.dofs == 1) {
+                q[p++] = g.qg[o];
+                u[o] = g.u[o], udot[o] = g.udot[o], tau[o] = g.tau[o];
+                continue;
+            }
+            for (int i = 0; i < 4; ++i) q[p++] = g.quaternions[k][i];
+            if (seg.dofs == 6) {
+                for (int i = 0; i < 3; ++i) q[p++] = g.qg[o + i];
+                for (int i = 0; i < 3; ++i)
+                    u[o + 3 + i] = g.u[o + i], udot[o + 3 + i] = g.udot[o + i], tau[o + 3 + i] = g.tau[o + i];
+            }
+            // the rotation's speeds, rates and torques: ours at w (after the free joint's
+            // translation), Simbody's first, in the parent's axes
+            const int w = seg.dofs == 6 ? o + 3 : o;
+            const Eigen::Matrix3d& R_PB = g.rotations[k];
+            const Eigen::Vector3d u_w = R_PB * Eigen::Vector3d(g.u[w], g.u[w + 1], g.u[w + 2]);
+            const Eigen::Vector3d u_dot_w = R_PB * Eigen::Vector3d(g.udot[w], g.udot[w + 1], g.udot[w + 2]);
+            const Eigen::Vector3d T = R_PB * Eigen::Vector3d(g.tau[w], g.tau[w + 1], g.tau[w + 2]);
+            for (int i = 0; i < 3; ++i) u[o + i] = u_w[i], udot[o + i] = u_dot_w[i], tau[o + i] = T[i];
+            T_speeds.block(o, o, seg.dofs, seg.dofs).setZero();
+            T_speeds.block<3, 3>(o, w) = R_PB;
+            if (seg.dofs == 6) T_speeds.block<3, 3>(o + 3, o).setIdentity();
+        }
     }
-    // Simbody's (rotational, translational) generalized forces or accelerations to ours
-    Vec to_ours(const Vec& s, const Eigen::Matrix3d& R) const {
+    // Simbody's generalized forces or accelerations to ours: u_simbody = T u_ours with T
+    // orthogonal, so both go back by T^T (rotation and translation swapped, R_PB^T)
+    Vec to_ours(const Vec& s, const Generated& g) const {
         Vec out = s;
-        const Eigen::Vector3d rot = R.transpose() * Eigen::Vector3d(s[0], s[1], s[2]);
-        for (int i = 0; i < 3; ++i) out[i] = s[3 + i], out[3 + i] = rot[i];
+        for (std::size_t k = 0; k < g.segs.size(); ++k) {
+            const HumanoidSegment& seg = g.segs[k];
+            const int o = seg.speed;
+            if (seg.dofs == 1) continue;
+            const int w = seg.dofs == 6 ? o + 3 : o;
+            const Eigen::Vector3d rot = g.rotations[k].transpose() * Eigen::Vector3d(s[o], s[o + 1], s[o + 2]);
+            if (seg.dofs == 6)
+                for (int i = 0; i < 3; ++i) out[o + i] = s[o + 3 + i];
+            for (int i = 0; i < 3; ++i) out[w + i] = rot[i];
+        }
         return out;
     }
     std::array<double, bench::kHumanoidCoordinates> q{};
@@ -621,7 +669,7 @@ void HumanoidSimbodyInverse(benchmark::State& state) {
     const SimbodyState s(g);
     Vec out{};
     simbody().inverse(s.q.data(), s.u.data(), s.udot.data(), out.data());
-    const Vec ours = s.to_ours(out, g.R_NP);
+    const Vec ours = s.to_ours(out, g);
     if (!agrees(state, max_diff(ours, g.id_out, kN), g.id_out, kN)) return;
     for (auto _ : state) {
         simbody().inverse(s.q.data(), s.u.data(), s.udot.data(), out.data());
@@ -635,7 +683,7 @@ void HumanoidSimbodyForward(benchmark::State& state) {
     const SimbodyState s(g);
     Vec out{};
     simbody().forward(s.q.data(), s.u.data(), s.tau.data(), out.data());
-    const Vec ours = s.to_ours(out, g.R_NP);
+    const Vec ours = s.to_ours(out, g);
     if (!agrees(state, max_diff(ours, g.fd_out, kN), g.fd_out, kN)) return;
     for (auto _ : state) {
         simbody().forward(s.q.data(), s.u.data(), s.tau.data(), out.data());

@@ -14,6 +14,7 @@
 #include "alembert/vec/frame.hpp"
 #include "alembert/vec/rotation.hpp"
 #include "alembert/vec/vector.hpp"
+#include "alembert/mech/ball_joint.hpp"
 #include "alembert/mech/body.hpp"
 #include "alembert/mech/constraint.hpp"
 #include "alembert/mech/free_joint.hpp"

@@ -398,6 +398,10 @@ TreeEquations form_on_tree(const System& sys, const Speeds& sp, Tree& tree) {
     std::vector<Col3> w(nb);  // ^N w^B in B
     for (std::size_t k = 0; k < nb; ++k) {
         Node& n = nodes[k];
+        // a rotation's polynomial entries named (Euler parameters' quadratics): each is formed
+        // once, not expanded into every product with a number; a hinge's sines and cosines stay
+        for (ex& e : n.R.m)
+            if (is_a<GiNaC::add>(e)) e = name(e);
         X[k] = motion_transform(n.R, n.r);
         Mat3 Rt = n.R.transpose();
         Col3 w_P = n.parent >= 0 ? w[static_cast<std::size_t>(n.parent)] : Col3{};

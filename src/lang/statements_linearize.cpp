@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <sstream>
 
+#include "alembert/lang/parser.hpp"
 #include "interpreter_impl.hpp"
 #include "statement_parser.hpp"
 

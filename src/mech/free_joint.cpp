@@ -20,16 +20,12 @@ std::vector<ex> FreeJoint::speeds() const {
 }
 
 std::vector<ex> FreeJoint::coordinate_rates() const {
-    std::vector<ex> rates;
+    std::vector<ex> rates, e, w;
     for (const TimeVariable& x : position) rates.push_back(x.d(1));
-    const ex e0 = quaternion[0].d(0), e1 = quaternion[1].d(0), e2 = quaternion[2].d(0),
-             e3 = quaternion[3].d(0);
-    const ex w1 = angular[0].d(0), w2 = angular[1].d(0), w3 = angular[2].d(0);
-    // e' = 1/2 Q(e) w, w in body axes
-    rates.push_back(ex(-1) / 2 * (e1 * w1 + e2 * w2 + e3 * w3));
-    rates.push_back(ex(1) / 2 * (e0 * w1 + e2 * w3 - e3 * w2));
-    rates.push_back(ex(1) / 2 * (e0 * w2 + e3 * w1 - e1 * w3));
-    rates.push_back(ex(1) / 2 * (e0 * w3 + e1 * w2 - e2 * w1));
+    for (const TimeVariable& x : quaternion) e.push_back(x.d(0));
+    for (const TimeVariable& x : angular) w.push_back(x.d(0));
+    const std::vector<ex> e_dot = euler_parameter_rates(e, w);
+    rates.insert(rates.end(), e_dot.begin(), e_dot.end());
     return rates;
 }
 
@@ -43,21 +39,10 @@ FreeJoint add_free_joint(System& sys, RigidBody& B) {
     FreeJoint j;
     const std::string& b = B.name();
     for (const char* x : {"x_", "y_", "z_"}) j.position.push_back(st.add_variable(x + b, 2));
-    for (const char* e : {"e0_", "e1_", "e2_", "e3_"}) j.quaternion.push_back(st.add_variable(e + b, 2));
-    for (const char* w : {"w1_", "w2_", "w3_"}) j.angular.push_back(st.add_variable(w + b, 1));
-    const ex e0 = j.quaternion[0].d(0), e1 = j.quaternion[1].d(0), e2 = j.quaternion[2].d(0),
-             e3 = j.quaternion[3].d(0);
-    // R_NB = (e0^2 - ev.ev) I + 2 ev ev^T + 2 e0 [ev]x
-    Mat3 R;
-    R(0, 0) = e0 * e0 + e1 * e1 - e2 * e2 - e3 * e3;
-    R(1, 1) = e0 * e0 - e1 * e1 + e2 * e2 - e3 * e3;
-    R(2, 2) = e0 * e0 - e1 * e1 - e2 * e2 + e3 * e3;
-    R(0, 1) = 2 * (e1 * e2 - e0 * e3), R(1, 0) = 2 * (e1 * e2 + e0 * e3);
-    R(0, 2) = 2 * (e1 * e3 + e0 * e2), R(2, 0) = 2 * (e1 * e3 - e0 * e2);
-    R(1, 2) = 2 * (e2 * e3 - e0 * e1), R(2, 1) = 2 * (e2 * e3 + e0 * e1);
-    F.orient_dcm(N, R);
-    F.set_ang_vel(N, j.angular[0].d(0) * F.x() + j.angular[1].d(0) * F.y() +
-                         j.angular[2].d(0) * F.z());
+    // the orientation and angular velocity in N: a ball joint to N
+    const BallJoint ball = add_ball_joint(sys, B, N);
+    j.quaternion = ball.quaternion;
+    j.angular = ball.angular;
     sys.point(b + "_o").set_pos(sys.origin(), j.position[0].d(0) * N.x() +
                                                   j.position[1].d(0) * N.y() +
                                                   j.position[2].d(0) * N.z());

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Sample model: a 15-segment human on a floating base (32 degrees of freedom), de Leva's
 // segment parameters.
+#include "alembert/mech/ball_joint.hpp"
 #include "alembert/mech/free_joint.hpp"
 #include "alembert/mech/sample_models.hpp"
 
@@ -66,44 +67,47 @@ public:
     }
 
     // B joined to `parent` at `at` (in the parent's frame, from its origin) by a hinge about
-    // the axis `a` shared by both frames, with the motor torque T_<B> about it
+    // the axis `a` shared by both frames, with the motor torque T_<B> about it; its speed is
+    // its angle's rate
     void hinge(RigidBody& B, RigidBody& parent, const double at[3], Axis a) {
-        turn(B.name(), B, parent.body_frame(), a, "");
+        const Frame& from = parent.body_frame();
+        TimeVariable q = st_.add_variable("q_" + B.name(), 2);
+        Frame& F = B.body_frame();
+        F.orient_axis(from, a, q.d(0));
+        ex T = st_.add_unknown("T_" + B.name());
+        const Vector axis = a == Axis::x ? F.x() : a == Axis::y ? F.y() : F.z();
+        sys_.add_torque_pair(B, from, T * axis, "T_" + B.name());
+        m_.q.push_back(q);
+        m_.speeds.push_back(q.d(1));
+        m_.coordinate_rates.push_back(q.d(1));
+        m_.unknowns.push_back(T);
         locate(B, parent, at);
     }
 
-    // B joined to `parent` by a ball joint: body-fixed X-Y-Z angles q_<B>_x, q_<B>_y, q_<B>_z
-    // through two massless gimbal stages <B>_1, <B>_2 (so that each motor torque T_<B>_x ...
-    // about its own axis is the generalized force of its angle, as a gimbal's motors are)
+    // B joined to `parent` at `at` by a ball joint (add_ball_joint: Euler parameters
+    // e0_<B>..e3_<B>, speeds w1_<B>..w3_<B> in B's axes) with the motor torque
+    // T_<B>_x Bx> + T_<B>_y By> + T_<B>_z Bz> on B from the parent: the joint's partial angular
+    // velocities are B's axes, so each component is exactly the generalized force of its speed
     void ball(RigidBody& B, RigidBody& parent, const double at[3]) {
-        RigidBody& g1 = sys_.add_rigid_body(B.name() + "_1");
-        RigidBody& g2 = sys_.add_rigid_body(B.name() + "_2");
-        for (RigidBody* g : {&g1, &g2}) {
-            g->set_mass(0);
-            g->cm().set_pos(sys_.point(g->name() + "_o"), Vector());
-            g->set_inertia(g->cm(), 0, 0, 0);
+        const BallJoint j = add_ball_joint(sys_, B, parent.body_frame());
+        const Frame& F = B.body_frame();
+        const Vector axes[3] = {F.x(), F.y(), F.z()};
+        Vector T;
+        for (int i = 0; i < 3; ++i) {
+            const ex T_i = st_.add_unknown("T_" + B.name() + "_" + "xyz"[i]);
+            T = T + T_i * axes[i];
+            m_.unknowns.push_back(T_i);
         }
-        turn(B.name(), g1, parent.body_frame(), Axis::x, "_x");
-        turn(B.name(), g2, g1.body_frame(), Axis::y, "_y");
-        turn(B.name(), B, g2.body_frame(), Axis::z, "_z");
-        locate(g1, parent, at);
-        const double zero[3] = {0, 0, 0};
-        locate(g2, g1, zero);
-        locate(B, g2, zero);
+        sys_.add_torque_pair(B, parent.body_frame(), T, "T_" + B.name());
+        const std::vector<TimeVariable> q = j.coordinates();
+        const std::vector<ex> u = j.speeds(), rates = j.coordinate_rates();
+        m_.q.insert(m_.q.end(), q.begin(), q.end());
+        m_.speeds.insert(m_.speeds.end(), u.begin(), u.end());
+        m_.coordinate_rates.insert(m_.coordinate_rates.end(), rates.begin(), rates.end());
+        locate(B, parent, at);
     }
 
 private:
-    void turn(const std::string& joint, RigidBody& B, const Frame& from, Axis a,
-              const std::string& suffix) {
-        TimeVariable q = st_.add_variable("q_" + joint + suffix, 2);
-        Frame& F = B.body_frame();
-        F.orient_axis(from, a, q);
-        ex T = st_.add_unknown("T_" + joint + suffix);
-        const Vector axis = a == Axis::x ? F.x() : a == Axis::y ? F.y() : F.z();
-        sys_.add_torque_pair(B, from, T * axis, "T_" + joint + suffix);
-        m_.q.push_back(q);
-        m_.unknowns.push_back(T);
-    }
     void locate(RigidBody& B, RigidBody& parent, const double at[3]) {
         const Frame& P = parent.body_frame();
         sys_.point(B.name() + "_o").set_pos(sys_.point(parent.name() + "_o"),
@@ -201,11 +205,6 @@ SampleModel make_humanoid() {
         RigidBody& foot = b.segment("foot" + s, foot_p);
         const double ankle[3] = {0, 0, -kShank.length};
         b.hinge(foot, shank, ankle, Axis::y);
-    }
-    // the joints' speeds are their angles' rates
-    for (std::size_t j = free.coordinates().size(); j < m.q.size(); ++j) {
-        m.speeds.push_back(m.q[j].d(1));
-        m.coordinate_rates.push_back(m.q[j].d(1));
     }
     sys.set_gravity(-g * N.z());
     return m;

@@ -11,6 +11,7 @@
 #include "alembert/eom/newton_euler.hpp"
 #include "alembert/eom/planner.hpp"
 #include "alembert/eom/statics.hpp"
+#include "alembert/error.hpp"
 #include "alembert/mech/inertia.hpp"
 #include "alembert/mech/sample_models.hpp"
 #include "support/expect.hpp"

@@ -32,7 +32,7 @@ struct TreeEquations {
     /// The bodies, parents before children.
     std::vector<TreeJoint> joints{};
     /// The speeds u the rows and accelerations are formed for, in order: the coordinates'
-    /// rates q' (the default), or the speeds chosen (a free joint's angular velocity).
+    /// rates q' (the default), or the speeds chosen (a free or ball joint's angular velocity).
     std::vector<ex> speeds{};
     /// One residual per coordinate, in the order of the coordinates: for a coordinate q_r of the
     /// joint of body B, the road-map row with system S = B and every body beyond it, about B's
@@ -75,7 +75,8 @@ TreeEquations form_tree_equations(const System& sys, const std::vector<TimeVaria
 /// Each joint owns the speeds whose rates its body's relative accelerations hold; the joint's
 /// partial motions are the derivatives of those accelerations by the u'. The rows equal Kane's
 /// equations in these speeds (Kane 1985, sec. 2.12) and are linear in the u'. The kinematic
-/// equations q' = k(q, u) are the caller's (for a free joint, FreeJoint::coordinate_rates).
+/// equations q' = k(q, u) are the caller's (FreeJoint::coordinate_rates and
+/// BallJoint::coordinate_rates for the free and ball joints).
 /// @throws alembert::ArgumentError if a speed is not such a symbol; alembert::ModelError if
 ///         the model is not a tree (explain_not_tree) or a speed moves no joint or two.
 TreeEquations form_tree_equations(const System& sys, const std::vector<TimeVariable>& q,

@@ -4,6 +4,7 @@
 
 #include <vector>
 
+#include "alembert/mech/ball_joint.hpp"
 #include "alembert/mech/system.hpp"
 
 namespace alembert {
@@ -21,7 +22,8 @@ namespace alembert {
 ///     e' = 1/2 Q(e) w:   e0' = -1/2 (e1 w1 + e2 w2 + e3 w3),
 ///                        (e1, e2, e3)' = 1/2 (e0 w + (e1, e2, e3) x w)
 /// keep |e| = 1 exactly; a numerical integration drifts off it slowly (normalise e now and
-/// then). R_NB = (e0^2 - ev.ev) I + 2 ev ev^T + 2 e0 [ev]x, with ev = (e1, e2, e3).
+/// then). R_NB = (e0^2 - ev.ev) I + 2 ev ev^T + 2 e0 [ev]x, with ev = (e1, e2, e3). Its
+/// rotation is a ball joint to N (add_ball_joint), whose code it shares.
 struct FreeJoint {
     std::vector<TimeVariable> position{};    ///< x, y, z (declared to second order)
     std::vector<TimeVariable> quaternion{};  ///< e0, e1, e2, e3 (to second order, for methods

@@ -78,17 +78,22 @@ SampleModel make_kuka_iiwa14();
 /// masses, mass centres and radii of gyration of de Leva (1996, J. Biomech. 29:1223, Table 4,
 /// male, 73 kg) and his mean segment lengths. Segments: pelvis (his lower trunk), torso (middle
 /// and upper trunk as one body), head, and per side upper arm, forearm, hand, thigh, shank,
-/// foot; every frame parallel to N when all angles are zero (x forward, y left, z up).
+/// foot; every frame parallel to N when all angles are zero and all Euler parameters
+/// (1, 0, 0, 0) (x forward, y left, z up).
 /// Joints: the pelvis free in N (add_free_joint: x, y, z and Euler parameters e0..e3 of
 /// pelvis, speeds x', y', z', w1..w3 in the pelvis frame; force F_pelvis at pelvis_o along N,
-/// torque T_pelvis along the pelvis axes); ball joints (body-fixed X-Y-Z angles q_B_x, q_B_y,
-/// q_B_z through massless gimbal bodies B_1, B_2) at the lumbar joint, neck, shoulders and
-/// hips; hinges about y (q_B) at the elbows, wrists, knees and ankles; a motor torque T_...
-/// about each joint axis between the bodies it joins. The joints' lateral offsets (hips
-/// +-0.085 m, shoulders +-0.175 m) and the ankle's place over the foot are round values, not
-/// from the table. Gravity -g Nz (g = 9.81). q: the free joint's 7 coordinates then the 26
-/// angles; speeds: the free joint's 6 then the angles' rates; unknowns: one per speed, in
-/// their order; links: the 15 segments, pelvis first.
+/// torque T_pelvis along the pelvis axes); ball joints (add_ball_joint: Euler parameters
+/// e0_B..e3_B of segment B in its parent, speeds w1_B..w3_B its angular velocity in the
+/// parent in B's axes) at the lumbar joint, neck, shoulders and hips, each with the motor
+/// torque T_B_x Bx> + T_B_y By> + T_B_z Bz> on B from its parent (each component the
+/// generalized force of its speed); hinges about y (q_B) at the elbows, wrists, knees and
+/// ankles with a motor torque T_B about the axis between the bodies it joins: 15 bodies, one
+/// joint each. The joints' lateral offsets (hips +-0.085 m, shoulders +-0.175 m) and the
+/// ankle's place over the foot are round values, not from the table. Gravity -g Nz
+/// (g = 9.81). q (39), segment by segment: the free joint's 7 coordinates, each ball's 4 Euler
+/// parameters, each hinge's angle; speeds (32) likewise: the free joint's 6, each ball's
+/// w1..w3, each hinge angle's rate; coordinate_rates: q' in these speeds (e' = 1/2 Q(e) w);
+/// unknowns: one per speed, in their order; links: the 15 segments, pelvis first.
 SampleModel make_humanoid();
 
 /// A built model with chosen speeds and motion constraints, in the terms of Kane's method.
