@@ -139,5 +139,18 @@ printf 'newtonian N\nparticle Q\nvariable x'"''"' m\nconstant m = 1 kg\nmass Q =
 expect run_out 0 "$alembert" run "$tmp/sim.alb" --out "$tmp/simout"
 [[ -f $tmp/simout/simulation.csv ]] || { echo "FAIL run_out: simulation.csv not in --out"; fails=$((fails + 1)); }
 
+# compiled C by default, cached in $TMPDIR/alembert-native; --tape runs no compiler; inverse
+# takes --compiled or --tape, not both
+count_libraries() { find "$1" -name '*.so' 2>/dev/null | wc -l; }
+mkdir -p "$tmp/cache_tape" "$tmp/cache_default"
+TMPDIR=$tmp/cache_tape expect run_tape 0 "$alembert" run --tape "$tmp/sim.alb" --out "$tmp/simtape"
+[[ $(count_libraries "$tmp/cache_tape") == 0 ]] || { echo "FAIL run_tape: a library was compiled"; fails=$((fails + 1)); }
+TMPDIR=$tmp/cache_default expect run_compiled 0 "$alembert" run "$tmp/sim.alb" --out "$tmp/simdefault"
+[[ $(count_libraries "$tmp/cache_default") -gt 0 ]] || { echo "FAIL run_compiled: no library compiled by default"; fails=$((fails + 1)); }
+TMPDIR=$tmp/cache_tape expect inverse_tape 0 "$alembert" inverse "$model" --motion "$motion" --out "$tmp/invtape" --tape
+[[ $(count_libraries "$tmp/cache_tape") == 0 ]] || { echo "FAIL inverse_tape: a library was compiled"; fails=$((fails + 1)); }
+expect inverse_compiled_and_tape 2 "$alembert" inverse "$model" --motion "$motion" --out "$tmp/invboth" --compiled --tape
+contains inverse_compiled_and_tape "$tmp/err" "excludes"
+
 (( fails == 0 )) && echo "cli_test: OK"
 exit $(( fails > 0 ))
