@@ -4,7 +4,10 @@
 
 #include <algorithm>
 #include <charconv>
+#include <iterator>
 #include <sstream>
+#include <tuple>
+#include <unordered_map>
 #include <vector>
 
 #include "alembert/sym/simplify.hpp"
@@ -48,7 +51,12 @@ std::string print_numeric(const numeric& n) {
     return os.str();
 }
 
-Printed p(const ex& e);
+// GiNaC's hash of an expression, for memo tables keyed by expressions
+struct PrintKeyHash {
+    std::size_t operator()(const ex& e) const { return e.gethash(); }
+};
+template <class V>
+using PrintMemo = std::unordered_map<ex, V, PrintKeyHash, ex_is_equal>;
 
 std::string paren(const Printed& x, int min_prec) {
     return x.prec < min_prec ? "(" + x.text + ")" : x.text;
@@ -67,47 +75,11 @@ std::string lower(std::string s) {
     return s;
 }
 
-std::string print_factors(std::vector<ex> fs) {
-    std::vector<std::pair<std::tuple<int, std::string, std::string>, std::string>> items;
-    for (const ex& f : fs) {
-        std::string t = paren(p(f), kProduct + 1);
-        if (is_a<add>(f)) t = "(" + p(f).text + ")";
-        items.push_back({{factor_rank(f), lower(t), t}, t});
-    }
-    std::sort(items.begin(), items.end());
-    std::string out;
-    for (std::size_t i = 0; i < items.size(); ++i) out += (i ? "*" : "") + items[i].second;
-    return out;
-}
-
-// GiNaC's choice between s and -s inside a product depends on its internal (address-dependent)
-// term order, so products print their sums in one canonical sign and carry the sign themselves.
 // -s, negated term by term (GiNaC may hold -s as the product (-1)*s)
 ex negated(const ex& s) {
     ex neg = 0;
     for (std::size_t i = 0; i < s.nops(); ++i) neg += -s.op(i);
     return neg;
-}
-
-// True if the sum s should print as -(-s): -s prints with a leading plus and s does not, or,
-// when both or neither do, -s prints first in text order. The choice is the same for s and -s,
-// so a sign taken out once is never taken out again.
-bool should_flip(const ex& s) {
-    if (!is_a<add>(s)) return false;
-    ex n = negated(s);
-    if (!is_a<add>(n)) return false;
-    Printed a = p(s), b = p(n);
-    if (a.negative != b.negative) return a.negative;
-    return b.text < a.text;
-}
-
-// sin, cos or tan of a sum that leads negative: the argument's sign is taken out
-// (cos(-s) = cos(s), sin(-s) = -sin(s)), for the same reason
-bool trig_of_negative(const ex& f, bool& odd) {
-    if (!is_a<function>(f) || f.nops() != 1 || !should_flip(f.op(0))) return false;
-    const std::string& name = ex_to<function>(f).get_name();
-    odd = name == "sin" || name == "tan";
-    return odd || name == "cos";
 }
 
 ex flip_trig(const ex& f) {
@@ -116,154 +88,342 @@ ex flip_trig(const ex& f) {
     return name == "sin" ? sin(a) : name == "cos" ? cos(a) : tan(a);
 }
 
-// a factor with the sign of a sum (or of a trigonometric function's argument) fixed as
-// above; `flip` toggles for each sign moved out of the factor
-ex canonical_factor(const ex& f, bool& flip) {
-    bool odd = false;
-    if (should_flip(f)) {
-        flip = !flip;
-        return negated(f);
+// Prints expressions with every decision about a subexpression (its text, its sign, its sort
+// key) made once and remembered: an expression is a DAG whose shared nodes are reached many
+// times, and deciding a product's sign prints its sums, so without the memo the cost grows
+// exponentially with the depth of nesting. With it, each distinct node is printed once and the
+// cost is the size of the text written.
+class Printer {
+public:
+    const Printed& p(const ex& e) {
+        auto it = printed_.find(e);
+        if (it != printed_.end()) return it->second;
+        Printed out = print_node(e);
+        return printed_.emplace(e, std::move(out)).first->second;
     }
-    if (trig_of_negative(f, odd)) {
-        if (odd) flip = !flip;
-        return flip_trig(f);
-    }
-    if (is_a<power>(f) && is_a<numeric>(f.op(1)) && ex_to<numeric>(f.op(1)).is_integer()) {
-        bool inner = false;
-        ex b = canonical_factor(f.op(0), inner);
-        if (inner && ex_to<numeric>(f.op(1)).is_odd()) flip = !flip;
-        return pow(b, f.op(1));
-    }
-    return f;
-}
 
-Printed print_mul(const ex& e) {
-    numeric c = 1;
-    std::vector<ex> num, den;
-    bool flip = false;
-    for (std::size_t i = 0; i < e.nops(); ++i) {
-        const bool flip_before = flip;
-        ex f = is_a<numeric>(e.op(i)) ? e.op(i) : canonical_factor(e.op(i), flip);
-        if (is_a<mul>(f)) {
-            // GiNaC may return the canonical form as a product (a power of a sum with a
-            // numeric content, say); printing that would come back here without end, so the
-            // factor keeps its own form (factors of a product are never products themselves)
-            f = e.op(i);
-            flip = flip_before;
+private:
+    PrintMemo<Printed> printed_;
+    PrintMemo<bool> flips_;
+    PrintMemo<std::vector<std::string>> names_;
+
+    Printed print_node(const ex& e) {
+        if (is_a<symbol>(e)) return {ex_to<symbol>(e).get_name(), kAtom};
+        if (is_a<numeric>(e)) {
+            const numeric& n = ex_to<numeric>(e);
+            std::string s = print_numeric(n);
+            bool neg = n.is_real() && n < 0;
+            return {s, neg || (n.is_rational() && !n.is_integer()) ? kSum : kAtom, neg};
         }
-        if (is_a<numeric>(f)) {
-            c *= ex_to<numeric>(f);
-        } else if (is_a<power>(f) && is_a<numeric>(f.op(1)) && ex_to<numeric>(f.op(1)) < 0) {
-            den.push_back(pow(f.op(0), -f.op(1)));
-        } else {
-            num.push_back(f);
+        if (is_a<add>(e)) return print_add(e);
+        if (is_a<mul>(e)) return print_mul(e);
+        if (is_a<power>(e)) return print_power(e);
+        if (is_a<function>(e)) {
+            bool odd = false;
+            if (trig_of_negative(e, odd)) {
+                const Printed& t = p(flip_trig(e));
+                return odd ? Printed{"-" + t.text, kSum, true} : t;
+            }
+            std::string s = ex_to<function>(e).get_name() + "(";
+            for (std::size_t i = 0; i < e.nops(); ++i) s += (i ? ", " : "") + p(e.op(i)).text;
+            return {s + ")", kAtom};
         }
+        if (is_a<relational>(e)) {
+            const char* op = " = ";
+            return {p(e.op(0)).text + op + p(e.op(1)).text, 0};
+        }
+        std::ostringstream os;
+        os << e;
+        return {os.str(), kAtom};
     }
-    if (flip) c = -c;
-    bool neg = c.is_real() && c < 0;
-    if (neg) c = -c;
-    numeric cn = c.is_rational() ? c.numer() : c, cd = c.is_rational() ? c.denom() : numeric(1);
-    std::string s;
-    if (!(cn == 1) || num.empty()) s = print_numeric(cn);
-    if (!num.empty()) s += (s.empty() ? "" : "*") + print_factors(num);
-    if (!(cd == 1)) den.push_back(cd);
-    if (!den.empty()) {
-        bool single = den.size() == 1 && !is_a<mul>(den[0]) && !is_a<add>(den[0]);
-        std::string d = den.size() == 1 && is_a<numeric>(den[0])
-                            ? print_numeric(ex_to<numeric>(den[0]))
-                            : print_factors(den);
-        s += "/" + (single ? paren(p(den[0]), kPower) : "(" + d + ")");
-    }
-    return {neg ? "-" + s : s, neg ? kSum : kProduct, neg};
-}
 
-// sort key of a term: the names of its symbols, then higher degree first
-std::tuple<std::string, int, std::string> term_key(const ex& t, const std::string& text) {
-    std::vector<std::string> names;
-    for (auto it = t.preorder_begin(); it != t.preorder_end(); ++it)
-        if (is_a<symbol>(*it)) names.push_back(ex_to<symbol>(*it).get_name());
-    std::sort(names.begin(), names.end());
-    std::string k;
-    for (const auto& n : names) k += n + ",";
-    int degree = static_cast<int>(names.size());
-    std::string body = text[0] == '-' ? text.substr(1) : text;
-    return {k, -degree, body};
-}
+    std::string print_factors(const std::vector<ex>& fs) {
+        std::vector<std::pair<std::tuple<int, std::string, std::string>, std::string>> items;
+        for (const ex& f : fs) {
+            std::string t = is_a<add>(f) ? "(" + p(f).text + ")" : paren(p(f), kProduct + 1);
+            items.push_back({{factor_rank(f), lower(t), t}, t});
+        }
+        std::sort(items.begin(), items.end());
+        std::string out;
+        for (std::size_t i = 0; i < items.size(); ++i) out += (i ? "*" : "") + items[i].second;
+        return out;
+    }
 
-Printed print_add(const ex& e) {
-    std::vector<std::pair<std::tuple<std::string, int, std::string>, Printed>> terms;
-    for (std::size_t i = 0; i < e.nops(); ++i) {
-        Printed t = p(e.op(i));
-        terms.push_back({term_key(e.op(i), t.text), t});
+    // GiNaC's choice between s and -s inside a product depends on its internal
+    // (address-dependent) term order, so products print their sums in one canonical sign and
+    // carry the sign themselves.
+    // True if the sum s should print as -(-s): -s prints with a leading plus and s does not,
+    // or, when both or neither do, -s prints first in text order. The choice is the same for s
+    // and -s, so a sign taken out once is never taken out again.
+    bool should_flip(const ex& s) {
+        if (!is_a<add>(s)) return false;
+        auto it = flips_.find(s);
+        if (it != flips_.end()) return it->second;
+        bool flip = false;
+        ex n = negated(s);
+        if (is_a<add>(n)) {
+            const Printed &a = p(s), &b = p(n);
+            flip = a.negative != b.negative ? a.negative : b.text < a.text;
+        }
+        flips_.emplace(s, flip);
+        return flip;
     }
-    // numbers go last
-    std::stable_sort(terms.begin(), terms.end(), [](const auto& a, const auto& b) {
-        bool an = std::get<0>(a.first).empty(), bn = std::get<0>(b.first).empty();
-        if (an != bn) return bn;
-        return a.first < b.first;
-    });
-    std::string s;
-    for (std::size_t i = 0; i < terms.size(); ++i) {
-        const Printed& t = terms[i].second;
-        if (i == 0) s = t.text;
-        else if (t.negative) s += " - " + t.text.substr(1);
-        else s += " + " + t.text;
-    }
-    return {s, kSum, !s.empty() && s[0] == '-'};
-}
 
-Printed print_power(const ex& e) {
-    const ex &b = e.op(0), &x = e.op(1);
-    if (x.is_equal(numeric(1, 2))) return {"sqrt(" + p(b).text + ")", kAtom};
-    if (is_a<numeric>(x) && ex_to<numeric>(x) < 0) {
-        Printed d = p(pow(b, -x));
-        return {"1/" + paren(d, kPower), kProduct};
+    // sin, cos or tan of a sum that leads negative: the argument's sign is taken out
+    // (cos(-s) = cos(s), sin(-s) = -sin(s)), for the same reason
+    bool trig_of_negative(const ex& f, bool& odd) {
+        if (!is_a<function>(f) || f.nops() != 1 || !should_flip(f.op(0))) return false;
+        const std::string& name = ex_to<function>(f).get_name();
+        odd = name == "sin" || name == "tan";
+        return odd || name == "cos";
     }
-    // an even power of a sum prints the sum with a leading plus: (-s)^2 = s^2
-    bool even = is_a<numeric>(x) && ex_to<numeric>(x).is_even();
-    bool flip = false;
-    ex base = is_a<numeric>(x) && ex_to<numeric>(x).is_integer() ? canonical_factor(b, flip) : b;
-    Printed pb = p(base), px = p(x);
-    std::string text = paren(pb, kAtom) + "^" + paren(px, kAtom);
-    // an odd power carries the sign out, printed here: GiNaC would fold -(base^x) back into
-    // the power it came from
-    if (flip && !even) return {"-" + text, kSum, true};
-    return {text, kPower};
-}
 
-Printed p(const ex& e) {
-    if (is_a<symbol>(e)) return {ex_to<symbol>(e).get_name(), kAtom};
-    if (is_a<numeric>(e)) {
-        const numeric& n = ex_to<numeric>(e);
-        std::string s = print_numeric(n);
-        bool neg = n.is_real() && n < 0;
-        return {s, neg || (n.is_rational() && !n.is_integer()) ? kSum : kAtom, neg};
-    }
-    if (is_a<add>(e)) return print_add(e);
-    if (is_a<mul>(e)) return print_mul(e);
-    if (is_a<power>(e)) return print_power(e);
-    if (is_a<function>(e)) {
+    // a factor with the sign of a sum (or of a trigonometric function's argument) fixed as
+    // above; `flip` toggles for each sign moved out of the factor
+    ex canonical_factor(const ex& f, bool& flip) {
         bool odd = false;
-        if (trig_of_negative(e, odd)) {
-            Printed t = p(flip_trig(e));
-            return odd ? Printed{"-" + t.text, kSum, true} : t;
+        if (should_flip(f)) {
+            flip = !flip;
+            return negated(f);
         }
-        std::string s = ex_to<function>(e).get_name() + "(";
-        for (std::size_t i = 0; i < e.nops(); ++i) s += (i ? ", " : "") + p(e.op(i)).text;
-        return {s + ")", kAtom};
+        if (trig_of_negative(f, odd)) {
+            if (odd) flip = !flip;
+            return flip_trig(f);
+        }
+        if (is_a<power>(f) && is_a<numeric>(f.op(1)) && ex_to<numeric>(f.op(1)).is_integer()) {
+            bool inner = false;
+            ex b = canonical_factor(f.op(0), inner);
+            if (inner && ex_to<numeric>(f.op(1)).is_odd()) flip = !flip;
+            return pow(b, f.op(1));
+        }
+        return f;
     }
-    if (is_a<relational>(e)) {
-        const char* op = " = ";
-        return {p(e.op(0)).text + op + p(e.op(1)).text, 0};
+
+    Printed print_mul(const ex& e) {
+        numeric c = 1;
+        std::vector<ex> num, den;
+        bool flip = false;
+        for (std::size_t i = 0; i < e.nops(); ++i) {
+            const bool flip_before = flip;
+            ex f = is_a<numeric>(e.op(i)) ? e.op(i) : canonical_factor(e.op(i), flip);
+            if (is_a<mul>(f)) {
+                // GiNaC may return the canonical form as a product (a power of a sum with a
+                // numeric content, say); printing that would come back here without end, so
+                // the factor keeps its own form (factors of a product are never products)
+                f = e.op(i);
+                flip = flip_before;
+            }
+            if (is_a<numeric>(f)) {
+                c *= ex_to<numeric>(f);
+            } else if (is_a<power>(f) && is_a<numeric>(f.op(1)) && ex_to<numeric>(f.op(1)) < 0) {
+                den.push_back(pow(f.op(0), -f.op(1)));
+            } else {
+                num.push_back(f);
+            }
+        }
+        if (flip) c = -c;
+        bool neg = c.is_real() && c < 0;
+        if (neg) c = -c;
+        numeric cn = c.is_rational() ? c.numer() : c, cd = c.is_rational() ? c.denom() : numeric(1);
+        std::string s;
+        if (!(cn == 1) || num.empty()) s = print_numeric(cn);
+        if (!num.empty()) s += (s.empty() ? "" : "*") + print_factors(num);
+        if (!(cd == 1)) den.push_back(cd);
+        if (!den.empty()) {
+            bool single = den.size() == 1 && !is_a<mul>(den[0]) && !is_a<add>(den[0]);
+            std::string d = den.size() == 1 && is_a<numeric>(den[0])
+                                ? print_numeric(ex_to<numeric>(den[0]))
+                                : print_factors(den);
+            s += "/" + (single ? paren(p(den[0]), kPower) : "(" + d + ")");
+        }
+        return {neg ? "-" + s : s, neg ? kSum : kProduct, neg};
     }
-    std::ostringstream os;
-    os << e;
-    return {os.str(), kAtom};
-}
+
+    // the names of the symbols of e, one for each place a symbol stands, sorted
+    const std::vector<std::string>& names(const ex& e) {
+        auto it = names_.find(e);
+        if (it != names_.end()) return it->second;
+        std::vector<std::string> out;
+        if (is_a<symbol>(e)) {
+            out.push_back(ex_to<symbol>(e).get_name());
+        } else {
+            for (std::size_t i = 0; i < e.nops(); ++i) {
+                const std::vector<std::string>& c = names(e.op(i));
+                std::vector<std::string> merged;
+                merged.reserve(out.size() + c.size());
+                std::merge(out.begin(), out.end(), c.begin(), c.end(), std::back_inserter(merged));
+                out = std::move(merged);
+            }
+        }
+        return names_.emplace(e, std::move(out)).first->second;
+    }
+
+    // sort key of a term: the names of its symbols, then higher degree first
+    std::tuple<std::string, int, std::string> term_key(const ex& t, const std::string& text) {
+        const std::vector<std::string>& ns = names(t);
+        std::string k;
+        for (const auto& n : ns) k += n + ",";
+        int degree = static_cast<int>(ns.size());
+        std::string body = text[0] == '-' ? text.substr(1) : text;
+        return {k, -degree, body};
+    }
+
+    Printed print_add(const ex& e) {
+        std::vector<std::pair<std::tuple<std::string, int, std::string>, const Printed*>> terms;
+        for (std::size_t i = 0; i < e.nops(); ++i) {
+            const Printed& t = p(e.op(i));
+            terms.push_back({term_key(e.op(i), t.text), &t});
+        }
+        // numbers go last
+        std::stable_sort(terms.begin(), terms.end(), [](const auto& a, const auto& b) {
+            bool an = std::get<0>(a.first).empty(), bn = std::get<0>(b.first).empty();
+            if (an != bn) return bn;
+            return a.first < b.first;
+        });
+        std::string s;
+        for (std::size_t i = 0; i < terms.size(); ++i) {
+            const Printed& t = *terms[i].second;
+            if (i == 0) s = t.text;
+            else if (t.negative) s.append(" - ").append(t.text, 1);
+            else s.append(" + ").append(t.text);
+        }
+        return {s, kSum, !s.empty() && s[0] == '-'};
+    }
+
+    Printed print_power(const ex& e) {
+        const ex &b = e.op(0), &x = e.op(1);
+        if (x.is_equal(numeric(1, 2))) return {"sqrt(" + p(b).text + ")", kAtom};
+        if (is_a<numeric>(x) && ex_to<numeric>(x) < 0) {
+            const Printed& d = p(pow(b, -x));
+            return {"1/" + paren(d, kPower), kProduct};
+        }
+        // an even power of a sum prints the sum with a leading plus: (-s)^2 = s^2
+        bool even = is_a<numeric>(x) && ex_to<numeric>(x).is_even();
+        bool flip = false;
+        ex base = is_a<numeric>(x) && ex_to<numeric>(x).is_integer() ? canonical_factor(b, flip) : b;
+        std::string text = paren(p(base), kAtom) + "^" + paren(p(x), kAtom);
+        // an odd power carries the sign out, printed here: GiNaC would fold -(base^x) back
+        // into the power it came from
+        if (flip && !even) return {"-" + text, kSum, true};
+        return {text, kPower};
+    }
+};
 
 }  // namespace
 
-std::string to_string(const ex& e) { return p(e).text; }
+std::string to_string(const ex& e) { return Printer().p(e).text; }
+
+std::vector<std::string> to_strings(const std::vector<ex>& exprs) {
+    Printer printer;
+    std::vector<std::string> out;
+    out.reserve(exprs.size());
+    for (const ex& e : exprs) out.push_back(printer.p(e).text);
+    return out;
+}
+
+namespace {
+
+// Names subexpressions bottom-up over the DAG so that every printed line stays short.
+class Abbreviator : public map_function {
+public:
+    Abbreviator(std::size_t width, std::string stem, std::size_t first)
+        : width_(std::max<std::size_t>(width, 20)), stem_(std::move(stem)), next_(first) {}
+
+    // how many parents each node has, a node's children counted on its first visit only
+    void count_uses(const ex& e) {
+        if (e.nops() == 0) return;
+        if (++uses_[e] > 1) return;
+        for (std::size_t i = 0; i < e.nops(); ++i) count_uses(e.op(i));
+    }
+
+    ex operator()(const ex& e) override {
+        if (e.nops() == 0) return e;
+        auto it = done_.find(e);
+        if (it != done_.end()) return it->second;
+        ex out = shortened(e.map(*this));
+        auto u = uses_.find(e);
+        if (u != uses_.end() && u->second > 1 && out.nops() > 0 && count_ops(out) >= 2)
+            out = name(out);
+        done_.emplace(e, out);
+        return out;
+    }
+
+    // the root of a result: shortened, never named
+    std::string result(const ex& e) {
+        ex x = e.nops() == 0 ? e : (*this)(e);
+        return to_string(x);
+    }
+
+    std::vector<std::string> definitions;
+
+private:
+    std::size_t width_;
+    std::string stem_;
+    std::size_t next_;
+    PrintMemo<std::size_t> uses_;
+    PrintMemo<ex> done_;
+
+    ex name(const ex& x) {
+        std::string n = stem_ + std::to_string(next_++);
+        definitions.push_back(n + " = " + to_string(x));
+        return symbol(n);
+    }
+
+    // x, whose operands are already short, with operands named until its line fits: the
+    // longest first, then, for a sum or product of many short operands, runs of them
+    ex shortened(ex x) {
+        if (to_string(x).size() <= width_ || x.nops() == 0) return x;
+        if (is_a<add>(x) || is_a<mul>(x) || is_a<power>(x) || is_a<function>(x)) {
+            std::vector<std::pair<std::size_t, std::size_t>> longest;  // (length, index)
+            for (std::size_t i = 0; i < x.nops(); ++i)
+                if (x.op(i).nops() > 0) longest.push_back({to_string(x.op(i)).size(), i});
+            std::sort(longest.rbegin(), longest.rend());
+            exmap named;
+            std::size_t total = to_string(x).size();
+            for (const auto& [len, i] : longest) {
+                if (total <= width_ || len <= stem_.size() + 4) break;
+                named[x.op(i)] = name(x.op(i));
+                total -= len;
+            }
+            if (!named.empty()) x = x.subs(named, subs_options::no_pattern);
+        }
+        if ((is_a<add>(x) || is_a<mul>(x)) && to_string(x).size() > width_) {
+            // runs of operands, each run a line of its own
+            const bool sum = is_a<add>(x);
+            ex whole = sum ? ex(0) : ex(1), run = sum ? ex(0) : ex(1);
+            std::size_t run_length = 0;
+            for (std::size_t i = 0; i < x.nops(); ++i) {
+                const std::size_t len = to_string(x.op(i)).size() + 3;
+                if (run_length + len > width_ && run_length > 0) {
+                    const ex r = run.nops() > 0 ? name(run) : run;
+                    whole = sum ? whole + r : whole * r;
+                    run = sum ? ex(0) : ex(1);
+                    run_length = 0;
+                }
+                run = sum ? run + x.op(i) : run * x.op(i);
+                run_length += len;
+            }
+            whole = sum ? whole + run : whole * run;
+            x = shortened(whole);
+        }
+        return x;
+    }
+};
+
+}  // namespace
+
+AbbreviatedText abbreviate(const std::vector<ex>& exprs, std::size_t width, const std::string& stem,
+                           std::size_t first) {
+    Abbreviator a(width, stem, first);
+    for (const ex& e : exprs) a.count_uses(e);
+    AbbreviatedText out;
+    for (const ex& e : exprs) {
+        out.results.push_back(a.result(e));
+        out.defined_before.push_back(a.definitions.size());
+    }
+    out.definitions = std::move(a.definitions);
+    return out;
+}
 
 void print(std::ostream& os, const ex& e) { os << to_string(e); }
 

@@ -9,7 +9,9 @@
 #include <numbers>
 #include <optional>
 #include <random>
+#include <limits>
 #include <set>
+#include <unordered_map>
 
 #include "alembert/sym/print.hpp"
 #include "alembert/sym/symbol_table.hpp"
@@ -18,22 +20,48 @@ namespace alembert {
 
 using namespace GiNaC;
 
-std::size_t count_ops(const ex& e) {
-    if (is_a<symbol>(e)) return 0;
-    if (is_a<numeric>(e)) {
-        const numeric& n = ex_to<numeric>(e);
-        return (n.is_negative() ? 1 : 0) + (n.is_rational() && !n.is_integer() ? 1 : 0);
+namespace {
+
+// count_ops over the DAG: each distinct node's count is computed once (a shared node reached
+// by many parents would otherwise be walked once per path, exponentially many with depth);
+// sums saturate instead of wrapping
+class OpCounter {
+public:
+    std::size_t ops(const ex& e) {
+        if (is_a<symbol>(e)) return 0;
+        if (is_a<numeric>(e)) {
+            const numeric& n = ex_to<numeric>(e);
+            return (n.is_negative() ? 1 : 0) + (n.is_rational() && !n.is_integer() ? 1 : 0);
+        }
+        const basic* key = &ex_to<basic>(e);
+        auto it = memo_.find(key);
+        if (it != memo_.end()) return it->second;
+        std::size_t n = 0;
+        for (std::size_t i = 0; i < e.nops(); ++i) n = plus(n, ops(e.op(i)));
+        if (is_a<add>(e) || is_a<mul>(e)) {
+            // -x is one negation, not a product by -1 plus a negative number
+            const ex& last = e.op(e.nops() - 1);
+            if (is_a<mul>(e) && is_a<numeric>(last) && last.is_equal(-1)) n = plus(n, e.nops() - 2);
+            else n = plus(n, e.nops() - 1);
+        } else {
+            n = plus(n, 1);  // power, function, other
+        }
+        alive_.push_back(e);  // the address stays this node's while it is remembered
+        memo_.emplace(key, n);
+        return n;
     }
-    std::size_t n = 0;
-    for (std::size_t i = 0; i < e.nops(); ++i) n += count_ops(e.op(i));
-    if (is_a<add>(e) || is_a<mul>(e)) {
-        // -x is one negation, not a product by -1 plus a negative number
-        const ex& last = e.op(e.nops() - 1);
-        if (is_a<mul>(e) && is_a<numeric>(last) && last.is_equal(-1)) return n + e.nops() - 2;
-        return n + e.nops() - 1;
+
+private:
+    static std::size_t plus(std::size_t a, std::size_t b) {
+        return a > std::numeric_limits<std::size_t>::max() - b ? std::numeric_limits<std::size_t>::max() : a + b;
     }
-    return n + 1;  // power, function, other
-}
+    std::unordered_map<const basic*, std::size_t> memo_;
+    std::vector<ex> alive_;
+};
+
+}  // namespace
+
+std::size_t count_ops(const ex& e) { return OpCounter().ops(e); }
 
 namespace {
 

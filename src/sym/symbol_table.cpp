@@ -6,6 +6,7 @@
 #include <cmath>
 #include <optional>
 #include <sstream>
+#include <unordered_set>
 
 #include <ginac/hash_map.h>
 
@@ -573,9 +574,24 @@ double SymbolTable::evaluate(const ex& e, const exmap& values) const {
 }
 
 GiNaC::exset symbols_of(const ex& e) {
+    // a walk over the DAG: a node shared by many parents is entered once (GiNaC's own
+    // traversals walk the tree, whose size grows exponentially with the depth of sharing)
     GiNaC::exset out;
-    for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it)
-        if (GiNaC::is_a<GiNaC::symbol>(*it)) out.insert(*it);
+    // (op() of a sum may build a term anew, so the nodes entered are kept alive while their
+    // addresses are remembered)
+    std::unordered_set<const GiNaC::basic*> entered;
+    std::vector<ex> alive, stack{e};
+    while (!stack.empty()) {
+        ex x = std::move(stack.back());
+        stack.pop_back();
+        if (GiNaC::is_a<GiNaC::symbol>(x)) {
+            out.insert(x);
+            continue;
+        }
+        if (x.nops() == 0 || !entered.insert(&GiNaC::ex_to<GiNaC::basic>(x)).second) continue;
+        for (std::size_t i = 0; i < x.nops(); ++i) stack.push_back(x.op(i));
+        alive.push_back(std::move(x));
+    }
     return out;
 }
 

@@ -2,6 +2,12 @@
 // The printer: primes and an order independent of symbol creation order.
 #include "alembert/sym/print.hpp"
 
+#include <cmath>
+#include <functional>
+#include <limits>
+#include <map>
+
+#include "alembert/sym/simplify.hpp"
 #include "alembert/sym/symbol_table.hpp"
 #include "support/expect.hpp"
 
@@ -66,4 +72,98 @@ TEST(Print, SignsOfSumsAndTrigArgumentsDoNotDependOnHowTheyWereBuilt) {
     EXPECT_EQ(to_string(pow(c - b, 2)), "(b - c)^2");
     EXPECT_EQ(to_string(a * pow(c - b, 3)), to_string(-a * pow(b - c, 3)));
     EXPECT_EQ(to_string(a + sin(c - b)), "a - sin(b - c)");
+}
+
+namespace {
+
+// the value of `text` (as printed, names without primes) at the point `at`, read back with
+// GiNaC's parser; names missing from `at` get a value from their spelling
+double value_of(const std::string& text, GiNaC::symtab& names, std::map<std::string, double>& at) {
+    GiNaC::parser reader(names);
+    ex e = reader(text);
+    names = reader.get_syms();
+    GiNaC::exmap values;
+    for (const auto& [name, sym] : names) {
+        if (!at.count(name)) at[name] = 0.3 + 0.1 * static_cast<double>(std::hash<std::string>{}(name) % 13);
+        values[sym] = at[name];
+    }
+    return GiNaC::ex_to<GiNaC::numeric>(GiNaC::evalf(e.subs(values))).to_double();
+}
+
+// e_{k+1} = a_k*(e_k - b_k) + cos(q_k - e_k)*c_k: a sum in a product at every level, where
+// deciding a product's sign once printed each sum twice per level (2^depth prints)
+ex nested(const std::vector<ex>& a, int depth) {
+    ex e = a[0];
+    for (int k = 0; k < depth; ++k)
+        e = a[k % a.size()] * (e - a[(k + 1) % a.size()]) +
+            cos(a[(k + 2) % a.size()] - a[(k + 3) % a.size()]) * a[(k + 4) % a.size()];
+    return e;
+}
+
+}  // namespace
+
+TEST(Print, DeepNestingPrintsInTimeLinearInTheTextAndReadsBackToTheSameValue) {
+    // 400 levels: the printer that decided each sum's sign by printing it twice would take
+    // about 2^400 steps here, so this test not finishing is the regression it guards against
+    SymbolTable s;
+    std::vector<ex> a;
+    for (int i = 0; i < 7; ++i) a.push_back(s.add_constant("a" + std::to_string(i)));
+    ex e = nested(a, 400);
+    std::string text = to_string(e);
+    GiNaC::symtab names;
+    std::map<std::string, double> at;
+    const double printed = value_of(text, names, at);
+    GiNaC::exmap values;
+    for (std::size_t i = 0; i < a.size(); ++i) values[a[i]] = at.at("a" + std::to_string(i));
+    const double formed = GiNaC::ex_to<GiNaC::numeric>(GiNaC::evalf(e.subs(values))).to_double();
+    EXPECT_NEAR(printed, formed, 1e-9 * std::max(1.0, std::abs(formed)));
+}
+
+TEST(Print, SharedSubexpressionsAreCountedAndScannedOncePerNode) {
+    // a DAG whose tree has 2^80 leaves: count_ops and symbols_of must walk its 80 nodes
+    SymbolTable s;
+    ex x = s.add_constant("x"), y = s.add_constant("y");
+    ex e = x;
+    for (int k = 0; k < 80; ++k) e = sin(e) * x + cos(e) * y;
+    EXPECT_EQ(symbols_of(e).size(), 2u);
+    // the count saturates rather than wrapping
+    EXPECT_EQ(count_ops(e), std::numeric_limits<std::size_t>::max());
+    ex small = x;
+    for (int k = 0; k < 3; ++k) small = sin(small) * x + cos(small) * y;
+    // 4 ops per level on top of two copies of the level below: 2*(2*(2*0 + 5) + 5) + 5
+    EXPECT_EQ(count_ops(small), 35u);
+}
+
+TEST(Print, AbbreviatedLinesAreShortDefinedBeforeUseAndMeanTheExpression) {
+    SymbolTable s;
+    std::vector<ex> a;
+    for (int i = 0; i < 7; ++i) a.push_back(s.add_constant("a" + std::to_string(i)));
+    ex wide = 0;
+    for (int i = 0; i < 300; ++i) wide += (i % 5 + 1) * a[i % 7] * a[(i / 7) % 7] * sin(a[(i * 3) % 7] + i);
+    std::vector<ex> exprs{nested(a, 60), wide, nested(a, 30) * wide};
+    AbbreviatedText t = abbreviate(exprs, 100, "w");
+    ASSERT_EQ(t.results.size(), exprs.size());
+    GiNaC::symtab names;
+    std::map<std::string, double> at;
+    std::size_t next = 0;
+    for (std::size_t i = 0; i < exprs.size(); ++i) {
+        for (; next < t.defined_before[i]; ++next) {
+            const std::string& line = t.definitions[next];
+            EXPECT_LE(line.size(), 110u) << line;
+            const std::size_t eq = line.find(" = ");
+            ASSERT_NE(eq, std::string::npos);
+            const std::string name = line.substr(0, eq);
+            EXPECT_EQ(name, "w" + std::to_string(next + 1));
+            // defined before use: the name is not yet known to the reader
+            EXPECT_FALSE(at.count(name)) << name << " used before its definition";
+            at[name] = value_of(line.substr(eq + 3), names, at);
+        }
+        EXPECT_LE(t.results[i].size(), 110u) << t.results[i];
+        const double printed = value_of(t.results[i], names, at);
+        GiNaC::exmap values;
+        for (std::size_t k = 0; k < a.size(); ++k) values[a[k]] = at.at("a" + std::to_string(k));
+        const double formed = GiNaC::ex_to<GiNaC::numeric>(GiNaC::evalf(exprs[i].subs(values))).to_double();
+        EXPECT_NEAR(printed, formed, 1e-9 * std::max(1.0, std::abs(formed))) << "expression " << i;
+    }
+    EXPECT_EQ(next, t.definitions.size());
 }

@@ -18,6 +18,9 @@ using GiNaC::ex;
 /// by degree. Derivatives print with primes (qA', qA'') because that is their symbol name.
 std::string to_string(const ex& e);
 
+/// The texts of `exprs` printed with one memo, so subexpressions they share are printed once.
+std::vector<std::string> to_strings(const std::vector<ex>& exprs);
+
 /// Streams `to_string(e)`.
 void print(std::ostream& os, const ex& e);
 
@@ -27,5 +30,24 @@ class SymbolTable;
 /// of `table` that `printed` names, directly or through another definition, in dependency order
 /// (calc_used_intermediates, definitions made readable with calc_readable); empty if none.
 std::string format_intermediates(const SymbolTable& table, const std::vector<ex>& printed);
+
+/// Results too long to read as one line each, printed as MotionGenesis prints them: numbered
+/// intermediates ("z1 = ..."), each defined before its first use, and every line at most about
+/// `width` characters (a line is longer only where one function call or power alone is).
+struct AbbreviatedText {
+    std::vector<std::string> definitions;  ///< "z1 = ...", in dependency order
+    std::vector<std::string> results;      ///< each expression's text, using the definitions
+    /// how many definitions precede results[i]: a reader of results[i] needs only those, so the
+    /// expressions may themselves be definitions printed in order (each after what it uses)
+    std::vector<std::size_t> defined_before;
+};
+
+/// `exprs` abbreviated as above: a subexpression of two or more operations used more than
+/// once is named, and so are the longest operands of a line that would pass `width`, and runs
+/// of operands of a sum or product too long for one line. The names are `stem` followed by
+/// `first`, `first` + 1, ...; they stand only for the printed text. Linear in the number of
+/// distinct subexpressions times the width: nothing is printed whole to decide.
+AbbreviatedText abbreviate(const std::vector<ex>& exprs, std::size_t width = 100,
+                           const std::string& stem = "z", std::size_t first = 1);
 
 }  // namespace alembert
