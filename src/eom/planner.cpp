@@ -346,6 +346,16 @@ std::vector<RoadmapRow> plan_roadmap(const System& sys,
     // and keeping earlier coordinates in their own rows when a constraint row must take one
     // (the constraint rows then read as the equations of the dependent coordinates)
     const std::size_t n = shared.size();
+    // which unknowns each probe holds: an index built once (one pass over each probe's DAG),
+    // not a scan of the whole probe for every pair of unknown and row
+    std::vector<GiNaC::exset> held(n_rows);
+    std::vector<std::size_t> n_held(n_rows, 0);
+    for (std::size_t i = 0; i < n_rows; ++i) {
+        if (probe[i].is_zero()) continue;
+        const GiNaC::exset syms = symbols_of(probe[i]);
+        for (const ex& x : shared)
+            if (syms.count(x)) held[i].insert(x), ++n_held[i];
+    }
     std::vector<std::vector<double>> cost(n, std::vector<double>(n_rows, kInfeasible));
     for (std::size_t k = 0; k < n; ++k) {
         for (std::size_t i = 0; i < n_rows; ++i) {
@@ -357,10 +367,8 @@ std::vector<RoadmapRow> plan_roadmap(const System& sys,
                 cost[k][i] = 0;
                 continue;
             }
-            if (probe[i].is_zero() || !probe[i].has(shared[k])) continue;
-            double others = 0;
-            for (const ex& x : shared)
-                if (!x.is_equal(shared[k]) && probe[i].has(x)) others += 1;
+            if (!held[i].count(shared[k])) continue;
+            const double others = static_cast<double>(n_held[i] - 1);
             cost[k][i] = 1 + others + (i >= coordinates.size()
                                            ? 0.5 * static_cast<double>(n - k) / static_cast<double>(n + 1)
                                            : 0);
@@ -392,7 +400,7 @@ std::vector<RoadmapRow> plan_roadmap(const System& sys,
                              [&](const ReactionComponent& rc) { return rc.measure.is_equal(x); });
             RoadmapRow r = plan_reaction(sys, *jr, *c, analysis);
             form_roadmap_row(sys, r, unknowns);
-            if (!r.equation.has(x))
+            if (!symbols_of(r.equation).count(x))
                 throw ModelError("plan_roadmap(): the row of the reaction measure '" +
                                  to_string(x) + "' of '" + jr->name +
                                  "' does not hold it (S = what moves beyond '" + jr->child->name() +

@@ -63,6 +63,7 @@ std::vector<std::string> describe_free_body_diagram(const System& sys, const Bod
 std::vector<std::string> describe_free_body_diagram(const System& sys, const BodySet& S,
                                                     const ex& equation) {
     std::vector<std::string> out;
+    const GiNaC::exset in_equation = symbols_of(equation);  // once, not a scan per measure
     for (const Load& l : sys.loads()) {
         if (!member(S, l.on) || member(S, l.from)) continue;
         std::string what = l.label.empty() ? (l.kind == LoadKind::force ? "force" : "torque")
@@ -76,7 +77,7 @@ std::vector<std::string> describe_free_body_diagram(const System& sys, const Bod
                     if (sys.symbols().owns(s) && sys.symbols().kind(s) == SymbolKind::unknown) {
                         unknown = true;
                         if (equation.is_zero() ||
-                            (equation.has(s) &&
+                            (in_equation.count(s) &&
                              !detail::is_zero_at_random_states(
                                  sys.symbols(), equation.diff(GiNaC::ex_to<GiNaC::symbol>(s)))))
                             kept = true;
@@ -114,8 +115,9 @@ namespace {
 void list_additional_unknowns(const System& sys, RoadmapRow& row, const std::vector<ex>& unknowns) {
     const SymbolTable& st = sys.symbols();
     row.additional_unknowns.clear();
+    const GiNaC::exset in_equation = symbols_of(row.equation);
     for (const ex& x : unknowns) {
-        if (x.is_equal(row.variable) || !row.equation.has(x)) continue;
+        if (x.is_equal(row.variable) || !in_equation.count(x)) continue;
         if (st.owns(x) && st.kind(x) == SymbolKind::unknown &&
             detail::is_zero_at_random_states(st, row.equation.diff(GiNaC::ex_to<GiNaC::symbol>(x))))
             continue;
@@ -256,7 +258,8 @@ std::string json_escape(const std::string& s, bool for_script) {
     return o;
 }
 
-std::string format_roadmap_table(const System& sys, const std::vector<RoadmapRow>& rows) {
+std::string format_roadmap_table(const System& sys, const std::vector<RoadmapRow>& rows,
+                                 bool with_equations) {
     const std::vector<std::string> head{"variable", "translate/rotate", "direction",
                                         "system S", "FBD of S", "about point", "equation",
                                         "additional unknowns"};
@@ -293,6 +296,7 @@ std::string format_roadmap_table(const System& sys, const std::vector<RoadmapRow
             out += line(cells);
         }
     }
+    if (!with_equations) return out;
     out += "\n";
     for (const RoadmapRow& r : rows)
         out += "E_" + to_string(r.variable) + ": 0 = " + to_string(readable(sys, r.equation)) + "\n";

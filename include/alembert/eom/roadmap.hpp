@@ -66,8 +66,10 @@ std::vector<std::string> describe_free_body_diagram(const System& sys, const Bod
                                                     const ex& equation);
 
 /// The road-map as an aligned text table (variable | translate/rotate | direction | system S |
-/// FBD of S | about point | equation | additional unknowns), followed by the equations.
-std::string format_roadmap_table(const System& sys, const std::vector<RoadmapRow>& rows);
+/// FBD of S | about point | equation | additional unknowns), followed by the equations
+/// (E_x: 0 = ..., each simplified where it is small enough), unless `with_equations` is false.
+std::string format_roadmap_table(const System& sys, const std::vector<RoadmapRow>& rows,
+                                 bool with_equations = true);
 
 /// The road-map as JSON: an array of row objects with the same fields as the table.
 std::string format_roadmap_json(const System& sys, const std::vector<RoadmapRow>& rows);
