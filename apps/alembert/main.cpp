@@ -112,6 +112,7 @@ bool check_output_dir(const std::string& dir) {
 struct LimitOptions {
     bool allow_outside_out = false;
     std::size_t max_terms = alembert::lang::kDefaultMaxTerms;
+    std::size_t print_limit = alembert::lang::kDefaultPrintLimit;
 };
 
 void add_limit_options(CLI::App& c, LimitOptions& o) {
@@ -120,11 +121,17 @@ void add_limit_options(CLI::App& c, LimitOptions& o) {
     c.add_option("--max-terms", o.max_terms,
                  "largest expansion expand() and simplify() may form (default 100000)")
         ->check(CLI::PositiveNumber);
+    c.add_option("--print-limit", o.print_limit,
+                 "equations of more operations than this go to NAME.txt in --out, abbreviated "
+                 "(numbered intermediates, short lines), and the transcript summarises them "
+                 "(default 20000)")
+        ->check(CLI::PositiveNumber);
 }
 
 void apply(const LimitOptions& o, Interpreter& interp) {
     interp.set_allow_outside_output(o.allow_outside_out);
     interp.set_max_terms(o.max_terms);
+    interp.set_print_limit(o.print_limit);
 }
 
 // ---- subcommands ------------------------------------------------------------------------

@@ -59,6 +59,7 @@ void Interpreter::set_session(bool session) { impl_->session = session; }
 void Interpreter::set_allow_outside_output(bool allow) { impl_->allow_outside_output = allow; }
 
 void Interpreter::set_max_terms(std::size_t max_terms) { impl_->max_terms = max_terms; }
+void Interpreter::set_print_limit(std::size_t ops) { impl_->print_limit = ops; }
 
 namespace {
 

@@ -6,8 +6,13 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <filesystem>
+#include <map>
 
+#include "alembert/cleanup.hpp"
 #include "alembert/lang/parser.hpp"
+#include "alembert/sym/cse.hpp"
+#include "alembert/sym/print.hpp"
 #include "interpreter_impl.hpp"
 #include "statement_parser.hpp"
 
@@ -44,10 +49,96 @@ std::vector<ex> measures_of(const Value& v) {
 
 }  // namespace
 
+namespace {
+
+std::string with_separators(std::size_t n) {
+    std::string digits = std::to_string(n), out;
+    for (std::size_t i = 0; i < digits.size(); ++i) {
+        if (i && (digits.size() - i) % 3 == 0) out += ',';
+        out += digits[i];
+    }
+    return out;
+}
+
+// "q1'', q2'', ..., q20''": a long list by its ends
+std::string short_list(const std::vector<ex>& xs) {
+    std::string out;
+    for (std::size_t i = 0; i < xs.size(); ++i) {
+        if (xs.size() > 6 && i == 3) {
+            out += ", ...";
+            i = xs.size() - 2;
+            continue;
+        }
+        out += (i ? ", " : "") + to_string(xs[i]);
+    }
+    return out;
+}
+
+// the intermediates of `table` that `exprs` reach, directly or through other definitions, in
+// the table's (dependency) order
+std::vector<ex> reached_intermediates(const SymbolTable& table, const std::vector<ex>& exprs) {
+    std::map<std::size_t, ex> by_position;
+    std::map<ex, std::size_t, GiNaC::ex_is_less> position;
+    const std::vector<ex>& all = table.intermediates();
+    for (std::size_t i = 0; i < all.size(); ++i) position.emplace(all[i], i);
+    std::vector<ex> work(exprs.begin(), exprs.end());
+    while (!work.empty()) {
+        ex e = work.back();
+        work.pop_back();
+        for (const ex& s : symbols_of(e)) {
+            auto it = position.find(s);
+            if (it == position.end() || !by_position.emplace(it->second, s).second) continue;
+            work.push_back(table.definition(s));
+        }
+    }
+    std::vector<ex> out;
+    for (auto& [i, z] : by_position) out.push_back(z);
+    return out;
+}
+
+}  // namespace
+
+std::string Interpreter::Impl::print_large(const std::string& name, const std::vector<std::string>& labels,
+                                           const std::vector<ex>& eqs, const std::vector<ex>& unknowns) {
+    if (!sys) return {};
+    const SymbolTable& table = sys->symbols();
+    // measured over the DAG (count_ops memoizes shared nodes), never by printing
+    const std::size_t ops = count_ops_with_intermediates(table, eqs);
+    if (ops <= print_limit) return {};
+    const std::vector<ex> used = reached_intermediates(table, eqs);
+    std::vector<ex> all;
+    for (const ex& z : used) all.push_back(table.definition(z));
+    all.insert(all.end(), eqs.begin(), eqs.end());
+    constexpr std::size_t kWidth = 100;
+    AbbreviatedText a = abbreviate(all, kWidth, "z", table.intermediates().size() + 1);
+    std::string text = "% " + name + ": " + std::to_string(eqs.size()) + " equations" +
+                       (unknowns.empty() ? "" : " in " + short_list(unknowns)) + "\n";
+    std::size_t next = 0, lines = 0;
+    for (std::size_t i = 0; i < all.size(); ++i) {
+        for (; next < a.defined_before[i]; ++next, ++lines) text += a.definitions[next] + "\n";
+        text += (i < used.size() ? to_string(used[i]) + " = " : labels[i - used.size()]) + a.results[i] + "\n";
+        ++lines;
+    }
+    const std::string file = name + ".txt";
+    write_file_atomically(std::filesystem::path(output_dir) / file, text, "'" + name + "'");
+    return name + ": " + std::to_string(eqs.size()) + " equations" +
+           (unknowns.empty() ? "" : " in " + short_list(unknowns)) + ", " + with_separators(ops) +
+           " operations: too long to print here; written to " + file + " as " + with_separators(lines) +
+           " lines of at most about " + std::to_string(kWidth) + " characters, " +
+           with_separators(used.size() + a.definitions.size()) +
+           " of them intermediates (print them here with --print-limit " + std::to_string(ops) + ")\n";
+}
+
 // Equations print as a person reads them: short intermediates written out, the result
 // simplified and collected in the symbols it is solved for (calc_readable), and every
-// intermediate still named defined first (format_intermediates).
-void Interpreter::Impl::print_equations(const std::string& name, const std::vector<ex>& eqs) {
+// intermediate still named defined first (format_intermediates). Past print_limit they go to
+// a file, abbreviated (print_large).
+void Interpreter::Impl::print_equations(const std::string& name, const std::vector<ex>& eqs,
+                                        const std::vector<ex>& unknowns) {
+    std::vector<std::string> labels;
+    for (std::size_t i = 0; i < eqs.size(); ++i) labels.push_back(name + "[" + std::to_string(i + 1) + "]: 0 = ");
+    std::string large = print_large(name, labels, eqs, unknowns);
+    if (!large.empty()) return transcript.result(large);
     std::vector<ex> shown = eqs;
     if (sys)
         for (ex& e : shown) e = calc_readable(sys->symbols(), e);
@@ -125,10 +216,20 @@ void Interpreter::Impl::show(const Statement& s) {
     transcript.result(definitions_for(v) + label + print(v));
 }
 
-namespace {
 // a road-map's table with short intermediates of its equations written out and the others
-// defined before it
-std::string format_readable_roadmap(const System& m, std::vector<RoadmapRow> rows) {
+// defined before it; past print_limit, the table and a summary of the equations, which go to
+// a file (print_large)
+std::string Interpreter::Impl::format_readable_roadmap(const std::string& name, const System& m,
+                                                       std::vector<RoadmapRow> rows) {
+    std::vector<std::string> labels;
+    std::vector<ex> eqs, unknowns;
+    for (const RoadmapRow& r : rows) {
+        labels.push_back("E_" + to_string(r.variable) + ": 0 = ");
+        eqs.push_back(r.equation);
+        unknowns.push_back(r.variable);
+    }
+    std::string large = print_large(name, labels, eqs, unknowns);
+    if (!large.empty()) return format_roadmap_table(m, rows, false) + "\n" + large;
     std::vector<ex> shown;
     for (RoadmapRow& r : rows) {
         r.equation = calc_inlined_intermediates(m.symbols(), r.equation);
@@ -136,7 +237,6 @@ std::string format_readable_roadmap(const System& m, std::vector<RoadmapRow> row
     }
     return format_intermediates(m.symbols(), shown) + format_roadmap_table(m, rows);
 }
-}  // namespace
 
 void Interpreter::Impl::roadmap(const Statement& s) {
     System& m = model(s.location);
@@ -148,7 +248,7 @@ void Interpreter::Impl::roadmap(const Statement& s) {
                               "plan one with 'roadmap " + n.text + " for x, y' or add rows with 'row " +
                                   n.text + " for x ...'");
         last_roadmap = n.text;
-        transcript.result("MG road-map " + n.text + "\n" + format_readable_roadmap(m, it->second.rows));
+        transcript.result("MG road-map " + n.text + "\n" + format_readable_roadmap(n.text, m, it->second.rows));
         return;
     }
     if (names.count(n.text) && !roadmaps.count(n.text)) declare_name(n, NameKind::value);
@@ -163,7 +263,7 @@ void Interpreter::Impl::roadmap(const Statement& s) {
     values[n.text] = array_value(residuals_of(rows));
     last_roadmap = n.text;
     transcript.result("MG road-map " + n.text + " (" + (analysis == Analysis::statics ? "statics" : "dynamics") +
-                      ")\n" + guard(n.location, [&] { return format_readable_roadmap(m, rows); }));
+                      ")\n" + guard(n.location, [&] { return format_readable_roadmap(n.text, m, rows); }));
 }
 
 void Interpreter::Impl::row(const Statement& s) {
@@ -239,7 +339,9 @@ void Interpreter::Impl::methods(const Statement& s) {
     values[n.text] = array_value(eqs);
     formed_here.residuals = eqs;
     formed[n.text] = std::move(formed_here);
-    print_equations(n.text, eqs);
+    std::vector<ex> accelerations;
+    for (const TimeVariable& x : q) accelerations.push_back(x.d(x.order()));
+    print_equations(n.text, eqs, accelerations);
 }
 
 void Interpreter::Impl::solve(const Statement& s) {

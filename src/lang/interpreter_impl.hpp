@@ -153,6 +153,7 @@ struct Interpreter::Impl {
     std::vector<ReportHistory> histories{};
     bool allow_outside_output = false;  ///< `to` may leave output_dir (--allow-outside-out)
     std::size_t max_terms = kDefaultMaxTerms;  ///< largest expansion expand/simplify may form
+    std::size_t print_limit = kDefaultPrintLimit;  ///< larger equations go to a file, abbreviated
     std::vector<ScriptMarker> markers{};  ///< `marker` statements, in order
     std::vector<ScriptPlate> plates{};    ///< `plate` statements, in order
 
@@ -256,7 +257,15 @@ struct Interpreter::Impl {
 
     // ---- output ----------------------------------------------------------------------------
     std::string print(const Value& v) const;
-    void print_equations(const std::string& name, const std::vector<ex>& eqs);
+    void print_equations(const std::string& name, const std::vector<ex>& eqs,
+                         const std::vector<ex>& unknowns = {});
+    /// Equations past print_limit: written abbreviated to NAME.txt in the output directory,
+    /// labelled `labels[i]`; returns the transcript's summary. Empty when they are short
+    /// enough to print whole.
+    std::string format_readable_roadmap(const std::string& name, const System& m,
+                                        std::vector<RoadmapRow> rows);
+    std::string print_large(const std::string& name, const std::vector<std::string>& labels,
+                            const std::vector<ex>& eqs, const std::vector<ex>& unknowns);
     std::string definitions_for(const Value& v) const;
 
     /// Runs `f`, turning library and GiNaC exceptions into a ScriptError at `where`.

@@ -2,10 +2,16 @@
 // Equations a person can read: every intermediate a transcript names is defined before it is
 // used, printed equations mean what was formed, and they are shorter than as formed.
 #include <gtest/gtest.h>
+#include <unistd.h>
 
+#include <ginac/ginac.h>
+
+#include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <functional>
 #include <iostream>
+#include <map>
 #include <regex>
 #include <set>
 #include <sstream>
@@ -252,4 +258,100 @@ TEST(Readable, AnAngleShiftedByPiPrintsWithoutTheShift) {
     EXPECT_EQ(s.run("simplify(sin(qB + pi))\n"), "= -sin(qB)\n");
     // a half turn written as a decimal number (as 180 deg arrives) counts too
     EXPECT_EQ(s.run("simplify(cos(qB - pi/2) + cos(qC + 3.141592653589793))\n"), "= sin(qB) - cos(qC)\n");
+}
+
+namespace {
+
+// an n-link spatial chain, each link turning about z or x of the one before (as
+// bench/pipeline/chain.py writes it), ending with Kane's equations and a road-map
+std::string spatial_chain(int n) {
+    std::string names, coords, torques, q;
+    for (int i = 1; i <= n; ++i) {
+        const std::string k = std::to_string(i), sep = i > 1 ? ", " : "";
+        names += sep + "B" + k;
+        coords += sep + "q" + k + "''";
+        torques += sep + "T" + k + " N*m";
+        q += sep + "q" + k;
+    }
+    std::string s = "newtonian N\nbody " + names + "\nconstant g = 9.81 m/s^2, L = 0.1 m, mL = 0.2 kg, IL = 0.0002 kg*m^2\n" +
+                    "variable " + coords + "\nunknown " + torques + "\n";
+    std::string ts;
+    for (int i = 1; i <= n; ++i) {
+        const std::string k = std::to_string(i), p = i == 1 ? "N" : "B" + std::to_string(i - 1);
+        const std::string axis = i % 2 ? "z" : "x";
+        s += "rotate B" + k + " from " + p + " about " + axis + " by q" + k + "\n";
+        s += "translate B" + k + "_o from " + (i == 1 ? "N_o by 0>" : p + "_o by -L*" + p + "y>") + "\n";
+        s += "translate B" + k + "cm from B" + k + "_o by -L/2*B" + k + "y>\n";
+        s += "mass B" + k + " = mL; inertia B" + k + " = IL, IL/10, IL\n";
+        s += "torque T" + k + " on B" + k + " from " + p + " = T" + k + "*B" + k + axis + ">\n";
+        ts += (i > 1 ? ", T" : "T") + k;
+    }
+    return s + "gravity -g*Ny>\nkane K for " + q + "\nroadmap E for " + ts + "\n";
+}
+
+// "name = rhs" and "K[i]: 0 = rhs" lines of a transcript or file, in order: each one's value
+// at a point given by the names' spelling, intermediates from the lines before them
+std::map<std::string, double> values_of_lines(const std::string& text) {
+    std::map<std::string, double> at;
+    GiNaC::symtab names;
+    std::istringstream in(text);
+    std::string line;
+    static const std::regex labelled(R"(^([A-Za-z_][A-Za-z0-9_']*(\[[0-9]+\])?)(: 0)? = (.*)$)");
+    while (std::getline(in, line)) {
+        std::smatch m;
+        if (line.rfind("> ", 0) == 0 || !std::regex_match(line, m, labelled)) continue;
+        std::string rhs = std::regex_replace(m[4].str(), std::regex("'"), "_d");
+        GiNaC::parser reader(names);
+        GiNaC::ex e;
+        try {
+            e = reader(rhs);
+        } catch (const std::exception&) {
+            continue;  // not an equation (a table row, a message)
+        }
+        names = reader.get_syms();
+        GiNaC::exmap values;
+        for (const auto& [name, sym] : names) {
+            if (!at.count(name)) at[name] = 0.2 + 0.07 * static_cast<double>(std::hash<std::string>{}(name) % 17);
+            values[sym] = at[name];
+        }
+        const std::string lhs = std::regex_replace(m[1].str(), std::regex("'"), "_d");
+        at[lhs] = GiNaC::ex_to<GiNaC::numeric>(GiNaC::evalf(e.subs(values))).to_double();
+    }
+    return at;
+}
+
+}  // namespace
+
+TEST(Readable, EquationsPastThePrintLimitGoToAFileAbbreviatedAndMeanWhatIsPrintedWhole) {
+    const fs::path dir = fs::temp_directory_path() / ("alembert_print_limit_" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    const std::string script = spatial_chain(4);
+    Session whole;
+    whole.interp.set_output_dir(dir.string());
+    const std::string printed = whole.run(script);
+    Session cut;
+    cut.interp.set_output_dir(dir.string());
+    cut.interp.set_print_limit(50);
+    const std::string summary = cut.run(script);
+    // the transcript says what and where, and holds no equation
+    EXPECT_NE(summary.find("K: 4 equations in q1'', q2'', q3'', q4''"), std::string::npos) << summary;
+    EXPECT_NE(summary.find("written to K.txt"), std::string::npos) << summary;
+    EXPECT_NE(summary.find("written to E.txt"), std::string::npos) << summary;
+    EXPECT_EQ(summary.find("K[1]: 0 ="), std::string::npos) << summary;
+    EXPECT_LT(summary.size(), printed.size() / 4);
+    for (const char* name : {"K", "E"}) {
+        const std::string file = read(dir / (std::string(name) + ".txt"));
+        for (const std::string& bad : undefined_intermediates(file)) ADD_FAILURE() << name << ": " << bad;
+        std::istringstream in(file);
+        std::string line;
+        while (std::getline(in, line)) EXPECT_LE(line.size(), 130u) << line;
+        // the file's equations have the values of the ones printed whole
+        const auto a = values_of_lines(printed), b = values_of_lines(file);
+        for (int i = 1; i <= 4; ++i) {
+            const std::string label = name == std::string("K") ? "K[" + std::to_string(i) + "]" : "E_T" + std::to_string(i);
+            ASSERT_TRUE(a.count(label) && b.count(label)) << label;
+            EXPECT_NEAR(a.at(label), b.at(label), 1e-9 * std::max(1.0, std::abs(a.at(label)))) << label;
+        }
+    }
+    fs::remove_all(dir);
 }

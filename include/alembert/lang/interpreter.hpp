@@ -17,6 +17,10 @@ class System;
 
 namespace alembert::lang {
 
+/// The default of Interpreter::set_print_limit(): equations past this many operations (written
+/// out, the intermediates they reach counted once) go to a file, abbreviated.
+inline constexpr std::size_t kDefaultPrintLimit = 20000;
+
 /// The default of Interpreter::set_max_terms().
 inline constexpr std::size_t kDefaultMaxTerms = 100000;
 
@@ -105,6 +109,12 @@ public:
     /// estimated before expanding: multinomial counts for powers of sums); a larger expansion
     /// is refused with a script error instead of exhausting memory (`--max-terms`).
     void set_max_terms(std::size_t max_terms);
+    /// Equations (kane, lagrange, road-maps, printed arrays) of more operations than `ops`,
+    /// the intermediates they reach counted once, are not printed whole in the transcript: they
+    /// go to NAME.txt in the output directory as MotionGenesis prints long results (numbered
+    /// intermediates, each defined before its first use, lines of at most 100 characters), and
+    /// the transcript says how many there are, in which unknowns, and where (`--print-limit`).
+    void set_print_limit(std::size_t ops);
     /// How `simulate` and `inverse` statements without a `compiled` or `tape` clause evaluate
     /// their equations (default: Evaluation::automatic; `alembert run --tape`: the tape).
     void set_evaluation(Evaluation evaluation);
