@@ -120,6 +120,8 @@ std::string Interpreter::Impl::print_large(const std::string& name, const std::v
         ++lines;
     }
     const std::string file = name + ".txt";
+    std::error_code ec;
+    std::filesystem::create_directories(output_dir, ec);  // a failure is reported by the write
     write_file_atomically(std::filesystem::path(output_dir) / file, text, "'" + name + "'");
     return name + ": " + std::to_string(eqs.size()) + " equations" +
            (unknowns.empty() ? "" : " in " + short_list(unknowns)) + ", " + with_separators(ops) +

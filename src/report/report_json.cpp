@@ -350,8 +350,8 @@ std::string equation_tex(const ex& e, const ex& variable) {
     return out + " \\end{aligned}";
 }
 
-// the intermediates `e` uses, with those their definitions use, in dependency order, as TeX
-std::vector<std::string> intermediate_definitions(const System& sys, const ex& e) {
+// the names of the intermediates `e` uses, with those their definitions use (at most 200)
+std::set<std::string> intermediates_used(const System& sys, const ex& e) {
     const SymbolTable& st = sys.symbols();
     std::set<std::string> used;
     std::vector<ex> todo{e};
@@ -363,11 +363,40 @@ std::vector<std::string> intermediate_definitions(const System& sys, const ex& e
                 used.insert(st.name(s)).second)
                 todo.push_back(st.definition(s));
     }
-    std::vector<std::string> defs;
+    return used;
+}
+
+// the intermediates the rows use, each once for the whole page, in dependency order: their
+// names, their definitions as TeX, and for each row the positions of those it uses (rows of
+// one model share most of theirs; repeating them per row made a 7-joint arm's page 2 MB)
+struct PageIntermediates {
+    std::vector<std::string> names, tex;
+    std::vector<std::vector<std::size_t>> of_row;
+};
+
+PageIntermediates page_intermediates(const System& sys, const std::vector<RoadmapRow>& rows) {
+    const SymbolTable& st = sys.symbols();
+    std::vector<std::set<std::string>> used;
+    std::set<std::string> all;
+    for (const RoadmapRow& r : rows) {
+        used.push_back(intermediates_used(sys, r.equation));
+        all.insert(used.back().begin(), used.back().end());
+    }
+    PageIntermediates p;
+    std::map<std::string, std::size_t> position;
     for (const ex& z : st.intermediates())
-        if (used.count(st.name(z)))
-            defs.push_back(to_latex(z) + " = " + to_latex(st.definition(z)));
-    return defs;
+        if (all.count(st.name(z))) {
+            position[st.name(z)] = p.names.size();
+            p.names.push_back(st.name(z));
+            p.tex.push_back(to_latex(z) + " = " + to_latex(st.definition(z)));
+        }
+    for (const auto& u : used) {
+        std::vector<std::size_t> idx;
+        for (const std::string& n : u) idx.push_back(position.at(n));
+        std::sort(idx.begin(), idx.end());
+        p.of_row.push_back(std::move(idx));
+    }
+    return p;
 }
 
 // the direction as the road-map table writes it: in N when it is constant there
@@ -422,7 +451,7 @@ std::string matrices_json(const System& sys, const LinearSystem& m) {
 }
 
 std::string row_json(const System& sys, const Evaluation& ev, const RoadmapRow& r,
-                     const std::string& equation) {
+                     const std::string& equation, const std::vector<std::size_t>& intermediates) {
     std::vector<std::string> extra, names;
     for (const ex& x : r.additional_unknowns) extra.push_back(to_string(x));
     for (const Body* b : r.system) names.push_back(b->name());
@@ -435,7 +464,9 @@ std::string row_json(const System& sys, const Evaluation& ev, const RoadmapRow& 
     o.add("system", str_arr(names)).add("fbd", str_arr(r.fbd));
     o.add("about", str(r.about ? r.about->name() : "")).add("constraint", str(r.constraint));
     o.add("equation", str(equation));
-    o.add("intermediates", str_arr(intermediate_definitions(sys, r.equation)));
+    std::string idx = "[";
+    for (std::size_t i = 0; i < intermediates.size(); ++i) idx += (i ? "," : "") + std::to_string(intermediates[i]);
+    o.add("intermediates", idx + "]");
     o.add("additional_unknowns", str_arr(extra)).add("note", str(r.note));
     o.add("diagram", r.motion == Motion::constraint ? "null" : diagram_json(sys, ev, r));
     return o.done();
@@ -802,11 +833,12 @@ std::string report_detail::render_latex(const ReportContent& c,
     for (std::size_t i = 0; i < c.rows.size(); ++i) {
         const RoadmapRow& r = c.rows[i];
         t += "\\[ E_{" + to_latex(r.variable) + "}: \\quad " + equations.at(i) + " \\]\n";
-        std::vector<std::string> defs = intermediate_definitions(sys, r.equation);
-        if (!defs.empty()) {
-            t += "where\n";
-            for (const std::string& d : defs) t += "\\[ " + d + " \\]\n";
-        }
+    }
+    // the intermediates the equations name, once for all of them
+    const PageIntermediates zs = page_intermediates(sys, c.rows);
+    if (!zs.tex.empty()) {
+        t += "where\n";
+        for (const std::string& d : zs.tex) t += "\\[ " + d + " \\]\n";
     }
     if (c.matrices) {
         t += "\\subsection*{Mass matrix and forcing}\n$M(q)\\,\\ddot q = f(q, \\dot q, t)$:\n";
@@ -911,8 +943,9 @@ std::string report_detail::render_json(const ReportContent& c,
     bool planar = true;
     std::string geometry = geometry_json(sys, ev, placed, &planar);
     std::vector<std::string> rows, histories, config;
+    const PageIntermediates zs = page_intermediates(sys, c.rows);
     for (std::size_t i = 0; i < c.rows.size(); ++i)
-        rows.push_back(row_json(sys, ev, c.rows[i], equations.at(i)));
+        rows.push_back(row_json(sys, ev, c.rows[i], equations.at(i), zs.of_row[i]));
     if (c.plot_histories)
         for (const ReportHistory& h : c.histories) {
             std::string one = history_json(c, h);
@@ -930,6 +963,7 @@ std::string report_detail::render_json(const ReportContent& c,
         .add("notes", str_arr(c.notes))
         .add("model", model_json(c));
     o.add("configuration", arr(config)).add("geometry", geometry).add("roadmap", arr(rows));
+    o.add("intermediates", str_arr(zs.tex));
     o.add("histories", arr(histories)).add("animation", animation_json(c, placed));
     o.add("checks", checks_json(c));
     if (c.matrices) o.add("matrices", matrices_json(sys, *c.matrices));

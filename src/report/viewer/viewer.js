@@ -71,6 +71,20 @@
     return box;
   }
 
+  // equations longer than this (TeX characters) are folded, and typeset when opened
+  var LONG_TEX = 12000;
+
+  // a <details> whose content fill() writes the first time it is opened
+  function folded(parent, cls, summary, fill) {
+    var d = el("details", cls ? {"class": cls} : {}, parent);
+    el("summary", {}, d, summary);
+    var done = false;
+    d.addEventListener("toggle", function () {
+      if (d.open && !done) { done = true; fill(d); }
+    });
+    return d;
+  }
+
   // ---- geometry: the plane of planar models, an oblique view of spatial ones ----------------
   // spatial models: turned about Ny by view.turn, then tilted by view.tilt (radians)
   var view = {turn: 0.6, tilt: 0.35};
@@ -289,11 +303,18 @@
       else el("p", {"class": "note"}, pic, "constraint " + row.constraint + ": no free-body diagram");
       var eq = el("div", {"class": "eq-box"}, body);
       el("div", {"class": "eq-name"}, eq, "E_" + row.variable + ":");
-      tex(eq, row.equation, true);
+      if (row.equation.length <= LONG_TEX) {
+        tex(eq, row.equation, true);
+      } else {
+        // a long equation is typeset when asked for: typesetting every one of a large model's
+        // rows on opening made the page take a minute to show
+        folded(eq, "equation-folded", "the equation, " + Math.round(row.equation.length / 1000) +
+               "k characters of TeX: open to typeset it", function (d) { tex(d, row.equation, true); });
+      }
       if (row.intermediates.length) {
-        var d = el("details", {}, eq);
-        el("summary", {}, d, row.intermediates.length + " named intermediates");
-        row.intermediates.forEach(function (z) { tex(d, z, true); });
+        folded(eq, "", row.intermediates.length + " named intermediates", function (d) {
+          row.intermediates.forEach(function (k) { tex(d, data.intermediates[k], true); });
+        });
       }
       if (row.note) el("p", {"class": "note"}, eq, row.note);
     });
