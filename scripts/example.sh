@@ -1,13 +1,14 @@
 #!/usr/bin/env bash
-# Builds the release preset and runs the main example, the seed's sit-to-stand model, through
-# the alembert command: `alembert run examples/sit_to_stand/model.alb`. The files it writes
-# (the torques of rising, their plot) go to build/example-output.
+# Installs what building and running the examples needs (not the test tools), builds the
+# `alembert` command alone (release preset, no tests or example programs) and runs the main
+# example, the seed's sit-to-stand model: `alembert run examples/sit_to_stand/model.alb`.
+# The files it writes (the torques of rising, their plot) go to build/example-output.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-bash scripts/install_deps.sh
-cmake --preset release
-cmake --build --preset release -j2
+bash scripts/install_deps.sh example
+cmake --preset release -DALEMBERT_BUILD_TESTS=OFF -DALEMBERT_BUILD_EXAMPLES=OFF
+cmake --build --preset release -j2 --target alembert_cli
 
 exe=build/release/bin/alembert
 if [[ ! -x $exe ]]; then

@@ -1,21 +1,36 @@
 #!/usr/bin/env bash
 # Installs the Debian packages Alembert needs, only those that are missing.
+# Usage: install_deps.sh [example|test]
+#   example: what building the `alembert` command and running the examples need
+#   test (default): that, plus what the test suite and CI need (GoogleTest, Google Benchmark,
+#            clang for the sanitizer pass and fuzzing, Python's NumPy and SciPy for the
+#            generated Python, Chromium for the report's browser test, LaTeX for roadmap.tex)
 set -euo pipefail
+
+profile=${1:-test}
+case $profile in
+  example|test) ;;
+  *) echo "install_deps: unknown profile '$profile' (use example or test)" >&2; exit 2 ;;
+esac
 
 packages=(
   build-essential cmake pkg-config
   libginac-dev libcln-dev libeigen3-dev
-  libgtest-dev libgmock-dev googletest libbenchmark-dev
   libboost-dev libfmt-dev libcli11-dev libedit-dev
   libsundials-dev              # the bdf integrator (SUNDIALS CVODE)
-  gnuplot-nox
-  clang libclang-rt-14-dev  # the sanitizer pass builds the fuzz target (docs/fuzzing.md)
-  python3-numpy python3-scipy  # the tests run the generated Python
+  gnuplot-nox                  # the plots simulate and inverse draw
   libjs-katex                  # HTML reports typeset their equations with KaTeX (inlined)
   libjs-three                  # HTML reports show motion in 3D with three.js (inlined)
-  chromium                     # the tests open the HTML report in headless Chromium
-  texlive-latex-base texlive-pictures  # the tests compile the reports' LaTeX (TikZ diagrams)
 )
+if [[ $profile == test ]]; then
+  packages+=(
+    libgtest-dev libgmock-dev googletest libbenchmark-dev
+    clang libclang-rt-14-dev     # the sanitizer pass builds the fuzz target (docs/fuzzing.md)
+    python3-numpy python3-scipy  # the tests run the generated Python
+    chromium                     # the tests open the HTML report in headless Chromium
+    texlive-latex-base texlive-pictures  # the tests compile the reports' LaTeX (TikZ diagrams)
+  )
+fi
 # Not installed here (CI does without them): the peers of bench/spatial_peers_bench,
 #   libmujoco-dev libqhull-dev libdart-dev libsimbody-dev
 
@@ -27,7 +42,7 @@ for p in "${packages[@]}"; do
 done
 
 if (( ${#missing[@]} == 0 )); then
-  echo "install_deps: all dependencies present"
+  echo "install_deps: all dependencies present ($profile)"
   exit 0
 fi
 
