@@ -302,6 +302,18 @@ void Interpreter::Impl::add_outputs(const Statement& s) {
                 throw ScriptError(labels[i].text.empty() ? e.location : labels[i].location,
                                   "there is already an output named '" + name + "'", "name each column once");
         Value v = eval(e);
+        // a column named like a symbol of the model holds that symbol: a motion table or a
+        // reader of the CSV takes a column 'q' for the coordinate q
+        const SymbolTable& symbols = model(e.location).symbols();
+        if (!labels[i].text.empty() && symbols.contains(name) &&
+            !(v.kind == Kind::scalar && v.s.is_equal(symbols.symbol(name)))) {
+            const std::string held = v.kind == Kind::scalar ? to_string(v.s) : "a matrix";
+            throw ScriptError(labels[i].location,
+                              "the output column '" + name + "' would hold " + held + ", not " + name +
+                                  "; a column named like the " + to_string(symbols.kind(symbols.symbol(name))) +
+                                  " " + name + " is read as " + name + " (a motion table, a plot)",
+                              "name the column after what it holds: output " + name + "_2 = " + held);
+        }
         if (v.kind == Kind::matrix) {
             // a matrix is a column per entry, name_ij (row i, column j)
             if (!s.units[i].empty())
@@ -773,7 +785,7 @@ std::vector<StatementSpec> number_statements() {
                     "`SimulationOptions::max_output_rows` (default 1000000): `simulate` and `inverse` refuse, before they start, a run that would write more rows"},
                    {"`output` *expr* [`in` *unit*], *name* `=` *expr* [`in` *unit*], ...",
                     "output qA in deg, h = dot(pos(Ccm, N_o), Ny>) in cm",
-                    "`SimulationRequest::outputs` (a name alone names its column; other expressions need `name =`; without `in`, a declared unit or SI)"}},
+                    "`SimulationRequest::outputs` (a name alone names its column; other expressions need `name =`, and a column named like a symbol of the model holds that symbol, `output q = 2*q` is an error; without `in`, a declared unit or SI)"}},
          .clauses = {"in"}, .parse = parse_output, .run = [](M& m, const Statement& s) { m.add_outputs(s); }},
         {.keyword = "tolerance", .family = family, .help = "sets the integrator's tolerances",
          .forms = {{"`tolerance` [`abs` *a*] [`rel` *r*]",
@@ -816,7 +828,7 @@ std::vector<StatementSpec> number_statements() {
                     "`compile_inverse_dynamics` + `run_inverse_dynamics` over the prescribed motion, sampled every output step to the final time: `torques.csv`, `.png`, `.svg`"},
                    {"`inverse for` *loads* `from` *\"file.csv\"* [`cutoff` *f*] [`compiled` \\| `tape`] [`plot` ...] [`to` *\"dir\"*]",
                     "inverse for T_A, T_B, T_C from \"motion.csv\" cutoff 6 Hz",
-                    "the same over a motion table (columns `t [s]` and one per coordinate, units in the header), filtered at f (default 6 Hz; 0: none) and differentiated"}},
+                    "the same over a motion table (columns `t [s]` and one per coordinate, units in the header), filtered at f in cycles per second (default 6 Hz; a bare number is Hz; 0: none) and differentiated"}},
          .clauses = {"for", "from", "cutoff", "compiled", "tape", "plot", "to"}, .parse = parse_run,
          .run = [](M& m, const Statement& s) { m.inverse(s); }},
         {.keyword = "report", .family = family,

@@ -51,6 +51,8 @@ struct Script {
     }
 };
 
+bool has(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
 // a particle of mass m at distance L below a pin at N_o, on a massless rod A turned by q about
 // Nz, with the pin's force on A declared as a reaction R = Rx Nx + Ry Ny
 const std::string kPendulum =
@@ -107,6 +109,18 @@ TEST(SilentAnswers, ASwingingPendulumWritesThePinForceOfNewtonsLawAtEverySample)
         largest_speed = std::max(largest_speed, std::abs(w));
     }
     EXPECT_GT(largest_speed, 2.0);  // it swings: the q'^2 term is tested, not only the weight
+}
+
+// ---- output columns ---------------------------------------------------------------------
+
+TEST(SilentAnswers, AnOutputNamedLikeACoordinateMustHoldThatCoordinate) {
+    TempDir dir;
+    Script r(dir.path);
+    r.run(kPendulum);
+    const std::string e = r.fails("output q = 2*q\n");
+    EXPECT_TRUE(has(e, "the output column 'q' would hold 2*q, not q")) << e;
+    // the same expression under its own name, and the coordinate under its own, are fine
+    r.run("output q_twice = 2*q, q = q in deg\n");
 }
 
 }  // namespace silent_answers
