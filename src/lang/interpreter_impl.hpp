@@ -251,6 +251,9 @@ struct Interpreter::Impl {
     std::vector<ex> array(const Expr& e, const std::string& what);
     void check_dimension(const Dimension& got, const Dimension& expected, const std::string& what,
                          Location where) const;
+    /// The first number or name in `e` written in a unit that counts revolutions (Hz, rpm,
+    /// rev), or nullptr: with pi beside it, a trigonometric argument would count 2*pi twice.
+    const Expr* revolution_rate_in(const Expr& e) const;
     /// The monogram name of a kinematic call such as vel(Bcm, N) (v_Bcm_N>), or "".
     std::string monogram(const Expr& call) const;
 

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <functional>
 #include <iostream>
+#include <numbers>
 #include <sstream>
 
 #include "alembert/biomech/lab_files.hpp"
@@ -242,8 +243,8 @@ void Interpreter::Impl::set_prescribed_motion(const Statement& s) {
         bool specified = table.kind(x) == SymbolKind::specified && table.derivative_order(x) == 0;
         if (!is_coordinate(x, 0) && !specified)
             throw ScriptError(b.name.location, "'" + b.name.text + "' is not a coordinate or a specified quantity",
-                              "prescribe coordinates or specified quantities: motion qA = 30*sin(2*pi*f*t) deg, "
-                              "with constant f = 1 Hz");
+                              "prescribe coordinates or specified quantities: motion qA = 30*sin(w*t) deg, "
+                              "with constant w = 1 Hz");
         ex f = quantity_expression(b.quantity, symbol_dimension(b.name.text), "the motion of " + b.name.text);
         for (const ex& v : table.symbols(SymbolKind::variable))
             if (table.depends_on(f, v))
@@ -503,7 +504,10 @@ void Interpreter::Impl::inverse(const Statement& s) {
     }
     if (s.quantities.count("cutoff")) {
         const Quantity& q = s.quantities.at("cutoff");
+        // a filter's cutoff counts cycles per second: 6 Hz (= 6 rev/s, 12*pi rad/s in SI) is 6
+        // cycles per second, and a bare number is read in Hz
         double hz = number_of(q, pow(Dimension::time(), -1), "the cutoff frequency", q.value->location);
+        if (!q.unit.empty() || carries_unit(*q.value)) hz /= 2 * std::numbers::pi;
         if (!(hz >= 0) || !std::isfinite(hz))
             throw ScriptError(q.value->location, "the cutoff frequency must be 0 (no filter) or positive", "");
         r.cutoff_hz = hz;

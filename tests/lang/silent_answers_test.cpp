@@ -123,4 +123,46 @@ TEST(SilentAnswers, AnOutputNamedLikeACoordinateMustHoldThatCoordinate) {
     r.run("output q_twice = 2*q, q = q in deg\n");
 }
 
+// ---- units ------------------------------------------------------------------------------
+
+TEST(SilentAnswers, OneHertzIsOneRevolutionPerSecondAsSixtyRpmIs) {
+    TempDir dir;
+    Script r(dir.path);
+    r.run("digits 17\nnewtonian N\nconstant f = 1 Hz, n = 60 rpm, v = 1 rev/s, w = 2*pi rad/s\n"
+          "evaluate f - n\nevaluate f - v\nevaluate f - w\nevaluate f\n");
+    const std::string out = r.out.str();
+    EXPECT_TRUE(has(out, "= 0 1/s\n= 0 1/s\n= 0 1/s\n= 6.2831853071795862 1/s")) << out;
+    // 2*pi beside a rate in Hz would count the cycle twice
+    const std::string e = r.fails("x = sin(2*pi*f*t)\n");
+    EXPECT_TRUE(has(e, "'f' is a rate in revolutions")) << e;
+    r.run("x = sin(f*t)\nevaluate x at t = 0.25 s\n");
+    EXPECT_TRUE(has(r.out.str(), "= 1\n")) << r.out.str();  // a quarter turn at one turn per second
+}
+
+TEST(SilentAnswers, AFiltersCutoffInHertzCountsCyclesPerSecond) {
+    // the same motion table filtered at 6 Hz, at 360 rpm and at a bare 6: the same torques
+    TempDir dir;
+    Script r(dir.path);
+    const std::string data =
+        (fs::path(ALEMBERT_SOURCE_DIR) / "examples/sit_to_stand_inverse/motion.csv").string();
+    std::string model;
+    {
+        std::ifstream in(fs::path(ALEMBERT_SOURCE_DIR) / "examples/sit_to_stand/model.alb");
+        std::string line;
+        while (std::getline(in, line) && line.rfind("angvel", 0) != 0) model += line + "\n";
+    }
+    r.run(model + "inverse for T_A, T_B, T_C from \"" + data + "\" cutoff 6 Hz tape to \"hz\"\n" +
+          "inverse for T_A, T_B, T_C from \"" + data + "\" cutoff 360 rpm tape to \"rpm\"\n" +
+          "inverse for T_A, T_B, T_C from \"" + data + "\" cutoff 6 tape to \"bare\"\n");
+    alembert::Table hz = alembert::read_csv((dir.path / "hz/torques.csv").string());
+    alembert::Table rpm = alembert::read_csv((dir.path / "rpm/torques.csv").string());
+    alembert::Table bare = alembert::read_csv((dir.path / "bare/torques.csv").string());
+    ASSERT_EQ(hz.row_count(), bare.row_count());
+    ASSERT_EQ(hz.row_count(), rpm.row_count());
+    for (std::size_t k = 0; k < hz.row_count(); ++k) {
+        EXPECT_NEAR(hz.columns[1][k], bare.columns[1][k], 1e-9 * (1 + std::abs(bare.columns[1][k])));
+        EXPECT_NEAR(rpm.columns[1][k], bare.columns[1][k], 1e-9 * (1 + std::abs(bare.columns[1][k])));
+    }
+}
+
 }  // namespace silent_answers
