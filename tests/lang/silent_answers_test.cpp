@@ -165,4 +165,73 @@ TEST(SilentAnswers, AFiltersCutoffInHertzCountsCyclesPerSecond) {
     }
 }
 
+// ---- inverse dynamics -------------------------------------------------------------------
+
+namespace {
+
+// a rod A turned by q1 about Nz, its mass centre at L along Ax, driven by a torque T1 cos(q1):
+// about the pin, T1 cos q1 - m g L cos q1 - I q1'' = 0 (I = m L^2 about the pin), so at a
+// steady rate T1 = m g L = 19.62 N*m, and where cos q1 = 0 nothing determines T1
+const std::string kCrank =
+    "newtonian N\nbody A\nconstant m = 2 kg, L = 1 m, g = 9.81 m/s^2\nvariable q1''\n"
+    "constant w1 = 60 deg/s, w2 = 180 deg/s\nunknown T1 N*m\nrotate A from N about z by q1\ntranslate A_o from N_o by 0>\n"
+    "translate Acm from A_o by L*Ax>\nmass A = m\ninertia A = 0, 0, 0\ngravity -g*Ny>\n"
+    "torque drive on A from N = T1*cos(q1)*Nz>\n";
+
+}  // namespace
+
+TEST(SilentAnswers, ATorqueWhoseCoefficientVanishesAtASampleIsNotDeterminedThere) {
+    TempDir dir;
+    Script r(dir.path);
+    // away from 90 deg: T1 = m g L at every sample
+    r.run(kCrank + "motion q1 = w1*t\nfinal time 1 s\noutput step 0.1 s\ninverse for T1 to \"away\"\n");
+    alembert::Table t = alembert::read_csv((dir.path / "away/torques.csv").string());
+    ASSERT_EQ(t.row_count(), 11u);
+    for (double T : t.columns[1]) EXPECT_NEAR(T, m * g * L, 1e-12);
+    // through 90 deg at t = 0.5 s: cos q1 is 6e-17 there, zero against its size 1
+    const std::string e = r.fails("motion q1 = w2*t\ninverse for T1 to \"through\"\n");
+    EXPECT_TRUE(has(e, "the load measures T1 are not determined at 1 of 11 samples: t = 0.5 s (sample 6)")) << e;
+    EXPECT_TRUE(has(e, "T1 is not determined: its coefficient in its equation is")) << e;
+    EXPECT_FALSE(fs::exists(dir.path / "through/torques.csv"));
+}
+
+namespace {
+
+// a cart C (mass M) on Nx pushed by F, with a rod R (mass mr, length Lr, inertia mr Lr^2/12
+// about its centre) pinned at the cart and turned by th from the upright. Kane's equation
+// for th: (mr Lr/2) (g sin th + x'' cos th) - (mr Lr^2/3) th'' = 0; for x:
+// F = (M + mr) x'' + (mr Lr/2)(-th'' cos th + th'^2 sin th)
+const std::string kCart =
+    "newtonian N\nparticle C\nbody R\nconstant M = 2 kg, mr = 0.5 kg, Lr = 1 m, g = 9.81 m/s^2\n"
+    "constant a = 1 m/s^2\nvariable x'' m, th''\nunknown F N\ntranslate C from N_o by x*Nx>\n"
+    "rotate R from N about z by th\ntranslate R_o from C by 0>\ntranslate Rcm from R_o by Lr/2*Ry>\n"
+    "mass C = M\nmass R = mr\ninertia R = 0, 0, mr*Lr^2/12\ngravity -g*Ny>\n"
+    "force push on C = F*Nx>\nfinal time 1 s\noutput step 0.25 s\n";
+constexpr double M = 2, mr = 0.5, Lr = 1, acc = 1;
+
+}  // namespace
+
+TEST(SilentAnswers, AnUnderActuatedMotionThatTheRodsEquationAllowsGivesThePush) {
+    // x = a t^2/2 with the rod leaning at tan th = -a/g holds the rod's equation: F = (M + mr) a
+    TempDir dir;
+    Script r(dir.path);
+    r.run(kCart + "motion x = a*t^2/2, th = -atan(a/g)\ninverse for F\n");
+    alembert::Table t = alembert::read_csv((dir.path / "forces.csv").string());
+    ASSERT_EQ(t.row_count(), 5u);
+    for (double F : t.columns[1]) EXPECT_NEAR(F, (M + mr) * acc, 1e-12);
+}
+
+TEST(SilentAnswers, AnUnderActuatedMotionThatBreaksTheRodsEquationIsRefusedNamingIt) {
+    // held upright (th = 0) while the cart accelerates: the rod's equation is off by
+    // mr Lr a / 2 = 0.25 N*m at every sample, and no push F makes that motion
+    TempDir dir;
+    Script r(dir.path);
+    const std::string e = r.fails(kCart + "motion x = a*t^2/2, th = 0\ninverse for F\n");
+    EXPECT_TRUE(has(e, "the motion does not satisfy Kane's equation for th, which the loads F were "
+                       "not solved from, at 5 of 5 samples")) << e;
+    EXPECT_TRUE(has(e, "its largest residual is 0.25 (SI)") || has(e, "its largest residual is -0.25 (SI)")) << e;
+    EXPECT_FALSE(fs::exists(dir.path / "forces.csv"));
+    EXPECT_EQ(mr * Lr * acc / 2, 0.25);
+}
+
 }  // namespace silent_answers
