@@ -155,6 +155,9 @@ struct Interpreter::Impl {
     std::size_t max_terms = kDefaultMaxTerms;  ///< largest expansion expand/simplify may form
     std::vector<ScriptMarker> markers{};  ///< `marker` statements, in order
     std::vector<ScriptPlate> plates{};    ///< `plate` statements, in order
+    /// Where each frame was oriented (the `rotate` statement's target): a frame has one
+    /// orientation, and a second `rotate` of it is refused rather than replacing the first.
+    std::map<const Frame*, Word> oriented{};
 
     // ---- statements ------------------------------------------------------------------------
     /// Runs one parsed statement: its StatementSpec::run from the registry (statements.hpp),
