@@ -202,6 +202,23 @@ std::vector<ex> solve_symbolic(const LinearSystem& sys, const SymbolicSolveOptio
                          e.what() + ")" +
                          (why.empty() ? "; check that every unknown appears in the equations" : why));
     }
+    // a singular but consistent system comes back with free parameters (vars) in the
+    // solution: the equations do not determine those unknowns, whatever GiNaC writes for them
+    std::string undetermined;
+    for (unsigned i = 0; i < n; ++i) {
+        bool free = false;
+        for (unsigned j = 0; j < n && !free; ++j) free = x(i, 0).has(vars(j, 0));
+        if (free) undetermined += (undetermined.empty() ? "" : ", ") + to_string(sys.unknowns[i]);
+    }
+    if (!undetermined.empty()) {
+        report(steps);
+        std::string why = explain_dependent_unknowns(at_generic_state(sys.A), sys.unknowns);
+        throw SolveError("solve_symbolic(): the equations do not determine " + undetermined +
+                         " (the coefficient matrix is singular: some equations repeat others)" +
+                         (why.empty() ? "; replace the repeated equations with independent ones, "
+                                        "or give some of these unknowns values"
+                                      : why));
+    }
     std::vector<ex> out;
     for (unsigned i = 0; i < n; ++i) {
         report(i + 1);

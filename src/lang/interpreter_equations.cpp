@@ -260,6 +260,20 @@ void Interpreter::Impl::roadmap(const Statement& s) {
     std::vector<TimeVariable> q = default_coordinates();
     Analysis analysis = s.flag("statics") ? Analysis::statics : Analysis::dynamics;
     std::vector<RoadmapRow> rows = guard(n.location, [&] { return plan_roadmap(m, q, unknowns, analysis); });
+    // a row is solved for its unknown: one that does not hold it (0 = 0 for a speed) would
+    // leave the unknown at whatever a solve starts from
+    for (const RoadmapRow& r : rows)
+        if (!m.symbols().depends_on(r.equation, r.variable)) {
+            const auto w = std::find_if(s.lists.at("unknowns").begin(), s.lists.at("unknowns").end(),
+                                        [&](const Word& u) { return symbol(u, "").is_equal(r.variable); });
+            const std::string x = to_string(r.variable);
+            throw ScriptError(w != s.lists.at("unknowns").end() ? w->location : n.location,
+                              "the road-map has no row that holds " + x + ": the row planned for it reads 0 = " +
+                                  to_string(calc_readable(m.symbols(), r.equation)) + ", without " + x,
+                              "road-maps solve for accelerations (q''), coordinates (statics) and load "
+                              "measures; for another unknown write a row that holds it yourself (row " +
+                                  n.text + " for " + x + " rotate S about O along u>), then solve it");
+        }
     names[n.text] = {NameKind::value, n.location};
     roadmaps[n.text].rows = rows;
     values[n.text] = array_value(residuals_of(rows));

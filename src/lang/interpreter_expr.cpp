@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Expressions: values, dimension checks, functions and the monogram names of kinematic calls.
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <sstream>
@@ -102,6 +103,43 @@ bool carries_unit(const Expr& e) {
     for (const ExprPtr& a : e.args)
         if (a && carries_unit(*a)) return true;
     return false;
+}
+
+namespace {
+
+// a rate in a unit that counts revolutions (1 Hz = 1 rev/s = 2*pi rad/s, 1 rpm = 2*pi/60 rad/s)
+bool counts_revolutions(const UnitText& u) {
+    bool rev = false, per = false;
+    for (const UnitText::Factor& f : u.factors) {
+        if (f.name.text == "Hz" || f.name.text == "rpm") return true;
+        rev = rev || f.name.text == "rev";
+        per = per || f.power < 0;
+    }
+    return rev && per;
+}
+
+bool holds_pi(const Expr& e) {
+    if (e.kind == Expr::Kind::name && e.text == "pi") return true;
+    return std::any_of(e.args.begin(), e.args.end(), [](const ExprPtr& a) { return a && holds_pi(*a); });
+}
+
+}  // namespace
+
+const Expr* Interpreter::Impl::revolution_rate_in(const Expr& e) const {
+    if (e.kind == Expr::Kind::number && counts_revolutions(e.unit)) return &e;
+    if (e.kind == Expr::Kind::name) {
+        const std::size_t p = e.text.find('\'');
+        auto it = units.find(e.text.substr(0, p));
+        if (it != units.end() && it->second.display) {
+            const std::string& t = it->second.display->text;
+            if (t.find("Hz") != std::string::npos || t.find("rpm") != std::string::npos ||
+                t.find("rev/") != std::string::npos)
+                return &e;
+        }
+    }
+    for (const ExprPtr& a : e.args)
+        if (const Expr* r = a ? revolution_rate_in(*a) : nullptr) return r;
+    return nullptr;
 }
 
 Value Interpreter::Impl::number_with_unit(const Expr& e, const ex& n) {
@@ -380,6 +418,19 @@ Value Interpreter::Impl::eval_call(const Expr& e) {
         want(1, f + "(x)");
         Value x = eval(*a[0]);
         if (x.kind != Kind::scalar) throw ScriptError(a[0]->location, f + "() takes a scalar", "");
+        // 2*pi*f*t with f in Hz counts the 2*pi of a cycle twice (1 Hz = 2*pi rad/s)
+        if (f == "sin" || f == "cos" || f == "tan")
+            if (const Expr* rate = revolution_rate_in(*a[0]); rate && holds_pi(*a[0])) {
+                const std::string what = rate->kind == Expr::Kind::name
+                                             ? "'" + rate->text + "' is a rate in revolutions"
+                                             : "this rate is in revolutions";
+                throw ScriptError(rate->location,
+                                  what + " (1 Hz = 1 rev/s = 2*pi rad/s, 1 rpm = 2*pi/60 rad/s), so "
+                                         "the 2*pi of a cycle is already in it, and with pi beside "
+                                         "it it counts twice",
+                                  "drop the 2*pi: " + f + "(w*t) with constant w = 1 Hz turns once per "
+                                  "second; or give the rate in rad/s");
+            }
         Dimension d = Dimension::none();
         if (f == "abs") d = x.dim;
         else if (f == "sqrt") {
@@ -394,9 +445,9 @@ Value Interpreter::Impl::eval_call(const Expr& e) {
         } else if (x.dim.known && x.dim.exponent == std::array<int, 3>{0, 0, 1}) {
             throw ScriptError(a[0]->location,
                               "the argument of " + f + "() must be an angle or a number, but this is a time (s)",
-                              "scale time by a frequency or a period: " + f + "(2*pi*f*t) with constant f = 1 Hz, "
-                              "or " + f + "(2*pi*t/T) with constant T = 2 s, or " + f +
-                              "(w*t) with constant w = 3 rad/s");
+                              "scale time by a rate or a period: " + f + "(w*t) with constant w = 1 Hz "
+                              "(one cycle per second) or w = 3 rad/s, or " + f +
+                              "(2*pi*t/T) with constant T = 2 s");
         } else {
             check_dimension(x.dim, Dimension::none(), "the argument of " + f + "()", a[0]->location);
         }

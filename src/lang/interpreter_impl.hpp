@@ -156,6 +156,9 @@ struct Interpreter::Impl {
     std::size_t print_limit = kDefaultPrintLimit;  ///< larger equations go to a file, abbreviated
     std::vector<ScriptMarker> markers{};  ///< `marker` statements, in order
     std::vector<ScriptPlate> plates{};    ///< `plate` statements, in order
+    /// Where each frame was oriented (the `rotate` statement's target): a frame has one
+    /// orientation, and a second `rotate` of it is refused rather than replacing the first.
+    std::map<const Frame*, Word> oriented{};
 
     // ---- statements ------------------------------------------------------------------------
     /// Runs one parsed statement: its StatementSpec::run from the registry (statements.hpp),
@@ -252,6 +255,9 @@ struct Interpreter::Impl {
     std::vector<ex> array(const Expr& e, const std::string& what);
     void check_dimension(const Dimension& got, const Dimension& expected, const std::string& what,
                          Location where) const;
+    /// The first number or name in `e` written in a unit that counts revolutions (Hz, rpm,
+    /// rev), or nullptr: with pi beside it, a trigonometric argument would count 2*pi twice.
+    const Expr* revolution_rate_in(const Expr& e) const;
     /// The monogram name of a kinematic call such as vel(Bcm, N) (v_Bcm_N>), or "".
     std::string monogram(const Expr& call) const;
 

@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <functional>
 #include <iostream>
+#include <numbers>
 #include <sstream>
 
 #include "alembert/biomech/lab_files.hpp"
@@ -242,8 +243,8 @@ void Interpreter::Impl::set_prescribed_motion(const Statement& s) {
         bool specified = table.kind(x) == SymbolKind::specified && table.derivative_order(x) == 0;
         if (!is_coordinate(x, 0) && !specified)
             throw ScriptError(b.name.location, "'" + b.name.text + "' is not a coordinate or a specified quantity",
-                              "prescribe coordinates or specified quantities: motion qA = 30*sin(2*pi*f*t) deg, "
-                              "with constant f = 1 Hz");
+                              "prescribe coordinates or specified quantities: motion qA = 30*sin(w*t) deg, "
+                              "with constant w = 1 Hz");
         ex f = quantity_expression(b.quantity, symbol_dimension(b.name.text), "the motion of " + b.name.text);
         for (const ex& v : table.symbols(SymbolKind::variable))
             if (table.depends_on(f, v))
@@ -302,6 +303,18 @@ void Interpreter::Impl::add_outputs(const Statement& s) {
                 throw ScriptError(labels[i].text.empty() ? e.location : labels[i].location,
                                   "there is already an output named '" + name + "'", "name each column once");
         Value v = eval(e);
+        // a column named like a symbol of the model holds that symbol: a motion table or a
+        // reader of the CSV takes a column 'q' for the coordinate q
+        const SymbolTable& symbols = model(e.location).symbols();
+        if (!labels[i].text.empty() && symbols.contains(name) &&
+            !(v.kind == Kind::scalar && v.s.is_equal(symbols.symbol(name)))) {
+            const std::string held = v.kind == Kind::scalar ? to_string(v.s) : "a matrix";
+            throw ScriptError(labels[i].location,
+                              "the output column '" + name + "' would hold " + held + ", not " + name +
+                                  "; a column named like the " + to_string(symbols.kind(symbols.symbol(name))) +
+                                  " " + name + " is read as " + name + " (a motion table, a plot)",
+                              "name the column after what it holds: output " + name + "_2 = " + held);
+        }
         if (v.kind == Kind::matrix) {
             // a matrix is a column per entry, name_ij (row i, column j)
             if (!s.units[i].empty())
@@ -491,7 +504,10 @@ void Interpreter::Impl::inverse(const Statement& s) {
     }
     if (s.quantities.count("cutoff")) {
         const Quantity& q = s.quantities.at("cutoff");
+        // a filter's cutoff counts cycles per second: 6 Hz (= 6 rev/s, 12*pi rad/s in SI) is 6
+        // cycles per second, and a bare number is read in Hz
         double hz = number_of(q, pow(Dimension::time(), -1), "the cutoff frequency", q.value->location);
+        if (!q.unit.empty() || carries_unit(*q.value)) hz /= 2 * std::numbers::pi;
         if (!(hz >= 0) || !std::isfinite(hz))
             throw ScriptError(q.value->location, "the cutoff frequency must be 0 (no filter) or positive", "");
         r.cutoff_hz = hz;
@@ -773,7 +789,7 @@ std::vector<StatementSpec> number_statements() {
                     "`SimulationOptions::max_output_rows` (default 1000000): `simulate` and `inverse` refuse, before they start, a run that would write more rows"},
                    {"`output` *expr* [`in` *unit*], *name* `=` *expr* [`in` *unit*], ...",
                     "output qA in deg, h = dot(pos(Ccm, N_o), Ny>) in cm",
-                    "`SimulationRequest::outputs` (a name alone names its column; other expressions need `name =`; without `in`, a declared unit or SI)"}},
+                    "`SimulationRequest::outputs` (a name alone names its column; other expressions need `name =`, and a column named like a symbol of the model holds that symbol, `output q = 2*q` is an error; without `in`, a declared unit or SI)"}},
          .clauses = {"in"}, .parse = parse_output, .run = [](M& m, const Statement& s) { m.add_outputs(s); }},
         {.keyword = "tolerance", .family = family, .help = "sets the integrator's tolerances",
          .forms = {{"`tolerance` [`abs` *a*] [`rel` *r*]",
@@ -816,7 +832,7 @@ std::vector<StatementSpec> number_statements() {
                     "`compile_inverse_dynamics` + `run_inverse_dynamics` over the prescribed motion, sampled every output step to the final time: `torques.csv`, `.png`, `.svg`"},
                    {"`inverse for` *loads* `from` *\"file.csv\"* [`cutoff` *f*] [`compiled` \\| `tape`] [`plot` ...] [`to` *\"dir\"*]",
                     "inverse for T_A, T_B, T_C from \"motion.csv\" cutoff 6 Hz",
-                    "the same over a motion table (columns `t [s]` and one per coordinate, units in the header), filtered at f (default 6 Hz; 0: none) and differentiated"}},
+                    "the same over a motion table (columns `t [s]` and one per coordinate, units in the header), filtered at f in cycles per second (default 6 Hz; a bare number is Hz; 0: none) and differentiated"}},
          .clauses = {"for", "from", "cutoff", "compiled", "tape", "plot", "to"}, .parse = parse_run,
          .run = [](M& m, const Statement& s) { m.inverse(s); }},
         {.keyword = "report", .family = family,

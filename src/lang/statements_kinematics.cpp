@@ -48,6 +48,15 @@ void run_rotate(Interpreter::Impl& m, const Statement& s) {
     const Word& from = s.word("from");
     Frame& B = m.frame(target);
     Frame& A = m.frame(from);
+    // one orientation per frame: a second would silently replace the first (and the
+    // coordinates of the first would drop out of every equation)
+    if (auto first = m.oriented.find(&B); first != m.oriented.end())
+        throw ScriptError(target.location,
+                          "'" + target.text + "' is already oriented from '" + first->second.text + "'" +
+                              at_line(first->second.location) +
+                              "; a frame has one orientation, and this rotate would replace it",
+                          "remove one of the two rotate statements, or orient a new frame (frame " +
+                              target.text + "2) from " + from.text);
     const std::string& kind = s.word("kind").text;
     auto angle = [&](const ExprPtr& e) { return m.scalar(*e, Dimension::none(), "the rotation angle"); };
     static const std::vector<ExprPtr> none;
@@ -83,6 +92,7 @@ void run_rotate(Interpreter::Impl& m, const Statement& s) {
             B.orient_dcm(A, v.m);
         });
     }
+    m.oriented[&B] = from;
 }
 
 // ---- translate ---------------------------------------------------------------------------

@@ -25,7 +25,9 @@ const Entry kUnits[] = {
     {"rev", 2 * std::numbers::pi, Dimension::none()},
     {"N", 1, Dimension::force()},       {"kN", 1000, Dimension::force()},
     {"J", 1, Dimension::torque()},      {"W", 1, {{2, 1, -3}, true}},
-    {"Hz", 1, {{0, 0, -1}, true}},      {"rpm", 2 * std::numbers::pi / 60, {{0, 0, -1}, true}},
+    // rates of rotation count revolutions: 1 Hz = 1 rev/s = 2*pi rad/s, as 60 rpm
+    {"Hz", 2 * std::numbers::pi, {{0, 0, -1}, true}},
+    {"rpm", 2 * std::numbers::pi / 60, {{0, 0, -1}, true}},
     // US customary units, exact by their definitions (NIST SP 811): the international inch
     // and foot, the avoirdupois pound mass, the pound force (lbm times standard gravity
     // 9.80665 m/s^2) and the slug (lbf*s^2/ft)

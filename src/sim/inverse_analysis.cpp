@@ -105,10 +105,16 @@ Table calc_inverse_dynamics(const InverseDynamics& id, const MotionSamples& moti
                             "the model cannot make mean nothing: give coordinates that satisfy "
                             "the constraint (compute the dependent coordinates from it)");
     }
-    // the loads at every sample; samples where they are not determined are gathered
+    // the loads at every sample; samples where they are not determined are gathered, and so
+    // are those where an equation the loads were not solved from does not hold
     std::vector<std::size_t> undetermined;
     std::string first_problem, first_state;
     double worst_rcond = 1;
+    const std::vector<std::string>& unused = id.unused_equation_names();
+    std::vector<double> unused_out(2 * unused.size());
+    std::vector<std::vector<std::size_t>> unmet(unused.size());
+    std::vector<double> unmet_worst(unused.size(), 0.0), unmet_size(unused.size(), 0.0);
+    std::vector<std::size_t> unmet_at(unused.size(), 0);
     for (std::size_t s = 0; s < motion.t.size(); ++s) {
         gather(s);
         double rcond = 1;
@@ -125,6 +131,16 @@ Table calc_inverse_dynamics(const InverseDynamics& id, const MotionSamples& moti
         }
         table.columns[0].push_back(motion.t[s]);
         for (std::size_t j = 0; j < k; ++j) table.columns[j + 1].push_back(loads[j] / factor[j]);
+        if (unused.empty()) continue;
+        id.calc_unused_residuals(motion.t[s], q.data(), qd.data(), qdd.data(), loads.data(),
+                                 unused_out.data());
+        for (std::size_t e = 0; e < unused.size(); ++e) {
+            const double r = unused_out[e], size = unused_out[unused.size() + e];
+            if (std::abs(r) <= InverseDynamics::kUnusedEquationTolerance * size) continue;
+            unmet[e].push_back(s);
+            if (!(std::abs(r) <= std::abs(unmet_worst[e])))
+                unmet_worst[e] = r, unmet_size[e] = size, unmet_at[e] = s;
+        }
     }
     if (!undetermined.empty()) {
         std::string measures;
@@ -138,6 +154,21 @@ Table calc_inverse_dynamics(const InverseDynamics& id, const MotionSamples& moti
                          "hold it (a singular configuration, e.g. a closed loop losing rank); "
                          "no values are written: keep the motion away from it, or list loads "
                          "that act in that configuration");
+    }
+    for (std::size_t e = 0; e < unused.size(); ++e) {
+        if (unmet[e].empty()) continue;
+        std::string measures;
+        for (const std::string& l : id.load_names()) measures += (measures.empty() ? "" : ", ") + l;
+        throw ArgumentError(who + "the motion does not satisfy " + unused[e] + ", which the loads " +
+                            measures + " were not solved from, at " + std::to_string(unmet[e].size()) +
+                            " of " + std::to_string(motion.t.size()) + " samples: " +
+                            sample_runs(unmet[e], motion.t) + "; its largest residual is " +
+                            detail::number(unmet_worst[e]) + " (SI) at t = " +
+                            detail::number(motion.t[unmet_at[e]]) + " s, against terms of size " +
+                            detail::number(unmet_size[e]) +
+                            "; no values of these loads make this motion: prescribe a motion the "
+                            "model can make with them (simulate it), or list a load that acts on "
+                            "that coordinate");
     }
     return table;
 }

@@ -5,9 +5,11 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <map>
 #include <optional>
 #include <sstream>
 
+#include "alembert/eom/kane.hpp"
 #include "alembert/eom/planner.hpp"
 #include "alembert/eom/statics.hpp"
 #include "alembert/eom/tree_dynamics.hpp"
@@ -47,7 +49,37 @@ std::string printed(const ex& e) {
     return s.str();
 }
 
+// calc_size_bound, bottom-up over the expression's shared nodes (each once)
+ex size_bound(const ex& e, std::map<ex, ex, GiNaC::ex_is_less>& seen) {
+    if (auto it = seen.find(e); it != seen.end()) return it->second;
+    ex b;
+    if (GiNaC::is_a<GiNaC::numeric>(e)) {
+        b = GiNaC::abs(e);
+    } else if (GiNaC::is_a<GiNaC::add>(e)) {
+        b = 0;
+        for (const ex& term : e) b += size_bound(term, seen);
+    } else if (GiNaC::is_a<GiNaC::mul>(e)) {
+        b = 1;
+        for (const ex& factor : e) b *= size_bound(factor, seen);
+    } else if (GiNaC::is_a<GiNaC::power>(e) && GiNaC::is_a<GiNaC::numeric>(e.op(1)) &&
+               GiNaC::ex_to<GiNaC::numeric>(e.op(1)).is_pos_integer()) {
+        b = GiNaC::pow(size_bound(e.op(0), seen), e.op(1));
+    } else if (GiNaC::is_the_function<GiNaC::sin_SERIAL>(e) ||
+               GiNaC::is_the_function<GiNaC::cos_SERIAL>(e)) {
+        b = 1;
+    } else {
+        b = GiNaC::abs(e);
+    }
+    seen.emplace(e, b);
+    return b;
+}
+
 }  // namespace
+
+ex calc_size_bound(const ex& e) {
+    std::map<ex, ex, GiNaC::ex_is_less> seen;
+    return size_bound(e, seen);
+}
 
 InverseDynamics::InverseDynamics(std::string model, StateLayout layout, NumericFunction loads,
                                  bool solved)
@@ -118,6 +150,18 @@ std::string InverseDynamics::try_calc_loads(double t, const double* q, const dou
                 return printed(layout_.unknowns[i]) + " is " + number(loads[i]) +
                        " (its coefficient in its equation vanishes)";
             }
+        // a coefficient zero against the size of its terms (cos(q1) = 6e-17 at 90 deg)
+        if (coefficient_sizes_.evaluate) {
+            coefficient_sizes_.evaluate(in, sizes_out_.data());
+            for (std::size_t i = 0; i < k; ++i) {
+                const double c = sizes_out_[i], size = sizes_out_[k + i];
+                if (std::abs(c) > kMinReciprocalCondition * size) continue;
+                *rcond = size > 0 ? std::abs(c) / size : 0.0;
+                return printed(layout_.unknowns[i]) + " is not determined: its coefficient in its "
+                       "equation is " + number(c) + ", zero against the size " + number(size) +
+                       " of its terms (below " + number(kMinReciprocalCondition) + " of it)";
+            }
+        }
         return "";
     }
     // unsolved form: A T = b by LU with a condition check
@@ -155,6 +199,44 @@ void InverseDynamics::set_constraints(std::vector<std::string> names, NumericFun
                            "one output per name (" + std::to_string(names.size()) + ")");
     constraint_names_ = std::move(names);
     constraints_ = std::move(residuals);
+}
+
+void InverseDynamics::set_coefficient_sizes(NumericFunction sizes) {
+    const std::size_t k = load_count();
+    ALEMBERT_CHECK_ARG(solved_ && sizes.input_count == function_.input_count &&
+                           sizes.output_count == 2 * k && sizes.evaluate,
+                       "InverseDynamics('" + model_ + "')::set_coefficient_sizes(): the solved "
+                       "form needs a function of [t, q, q', q''] giving " +
+                           std::to_string(2 * k) + " outputs (each coefficient, then its size)");
+    coefficient_sizes_ = std::move(sizes);
+    sizes_out_.resize(2 * k);
+}
+
+void InverseDynamics::set_unused_equations(std::vector<std::string> names, NumericFunction residuals) {
+    const std::size_t inputs = function_.input_count + load_count();
+    ALEMBERT_CHECK_ARG(residuals.input_count == inputs && residuals.output_count == 2 * names.size() &&
+                           residuals.evaluate,
+                       "InverseDynamics('" + model_ + "')::set_unused_equations(): the function "
+                       "takes " + std::to_string(residuals.input_count) + " inputs and gives " +
+                           std::to_string(residuals.output_count) + " outputs; it needs " +
+                           std::to_string(inputs) + " inputs [t, q, q', q'', loads] and a residual "
+                           "and a size per name (" + std::to_string(2 * names.size()) + ")");
+    unused_names_ = std::move(names);
+    unused_ = std::move(residuals);
+    unused_in_.resize(inputs);
+}
+
+void InverseDynamics::calc_unused_residuals(double t, const double* q, const double* qd,
+                                            const double* qdd, const double* loads,
+                                            double* residuals) const {
+    if (unused_names_.empty()) return;
+    const std::size_t n = coordinate_count(), k = load_count();
+    double* in = unused_in_.data();
+    in[0] = t;
+    for (std::size_t i = 0; i < n; ++i)
+        in[1 + i] = q[i], in[1 + n + i] = qd[i], in[1 + 2 * n + i] = qdd[i];
+    std::copy(loads, loads + k, in + 1 + 3 * n);
+    unused_.evaluate(in, residuals);
 }
 
 void InverseDynamics::calc_constraint_residuals(double t, const double* q, const double* qd,
@@ -226,7 +308,15 @@ InverseDynamics compile_inverse_dynamics(const SymbolTable& table, const LinearS
                             "first and second derivatives: give a constant a value, or make a "
                             "load measure one of the unknowns");
     }
-    return InverseDynamics(model, std::move(layout), std::move(f), solved);
+    InverseDynamics id(model, std::move(layout), std::move(f), solved);
+    if (solved) {
+        // each coefficient with the size of its terms, for a zero test relative to the row
+        std::vector<ex> sizes;
+        for (unsigned c = 0; c < k; ++c) sizes.push_back(eqs.A(static_cast<unsigned>(row_of[c]), c));
+        for (unsigned c = 0; c < k; ++c) sizes.push_back(calc_size_bound(sizes[c]));
+        id.set_coefficient_sizes(make_numeric_function(table, in, sizes, {}));
+    }
+    return id;
 }
 
 InverseDynamics compile_inverse_dynamics(const System& sys, const std::vector<TimeVariable>& q,
@@ -237,9 +327,33 @@ InverseDynamics compile_inverse_dynamics(const System& sys, const std::vector<Ti
     std::vector<RoadmapRow> rows = plan_roadmap(sys, q, loads, Analysis::dynamics);
     InverseDynamics id = compile_inverse_dynamics(
         sys.symbols(), form_linear_system(residuals_of(rows), loads), q, model, make);
-    // the constraints a motion must satisfy
-    if (sys.constraints().empty()) return id;
     const SymbolTable& table = sys.symbols();
+    if (sys.constraints().empty()) {
+        // fewer loads act than there are coordinates: the rows leave equations of motion out,
+        // and a motion no load can make would get loads all the same; Kane's equation of
+        // every coordinate is kept to check each sample against
+        std::vector<ex> kane = form_kane_equations(sys, q);
+        std::size_t acting = 0;
+        for (const ex& T : loads)
+            acting += std::any_of(kane.begin(), kane.end(), [&](const ex& r) { return table.depends_on(r, T); });
+        if (acting < q.size()) {
+            std::vector<ex> in{table.time()}, checks;
+            const StateLayout& layout = id.layout();
+            in.insert(in.end(), layout.coordinates.begin(), layout.coordinates.end());
+            in.insert(in.end(), layout.rates.begin(), layout.rates.end());
+            in.insert(in.end(), layout.accelerations.begin(), layout.accelerations.end());
+            in.insert(in.end(), loads.begin(), loads.end());
+            std::vector<std::string> names;
+            for (std::size_t i = 0; i < q.size(); ++i) {
+                names.push_back("Kane's equation for " + q[i].name());
+                checks.push_back(table.expand_intermediates(kane[i]));
+            }
+            for (std::size_t i = 0; i < q.size(); ++i) checks.push_back(calc_size_bound(checks[i]));
+            id.set_unused_equations(std::move(names), make_numeric_function(table, in, checks, {}));
+        }
+        return id;
+    }
+    // the constraints a motion must satisfy
     std::vector<ex> in{table.time()}, residuals;
     const StateLayout& layout = id.layout();
     in.insert(in.end(), layout.coordinates.begin(), layout.coordinates.end());

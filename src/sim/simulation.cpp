@@ -405,7 +405,26 @@ SimulationResult run_simulation(const System& sys, const SimulationRequest& requ
     const std::string who = "run_simulation('" + request.model + "'): ";
     const std::vector<TimeVariable>& q = request.coordinates;
 
-    // load measures: the given formulas, the constraint forces solved for, the rest zero
+    // the measures solved with the accelerations: the constraint forces, and the declared
+    // joint reactions an output or a stop condition reads (non-contributing, they are absent
+    // from the equations of motion; setting them to zero like an idle motor would print 0)
+    std::vector<ex> solved = request.constraint_forces;
+    const auto is_solved = [&](const ex& m) {
+        return std::any_of(solved.begin(), solved.end(), [&](const ex& c) { return c.is_equal(m); });
+    };
+    for (const JointReaction& reaction : sys.joint_reactions())
+        for (const ReactionComponent& measure : reaction.components) {
+            const ex& x = measure.measure;
+            if (is_solved(x) || request.inputs.count(x)) continue;
+            const auto reads = [&](const ex& e) { return table.depends_on(e, x); };
+            if (std::any_of(request.outputs.begin(), request.outputs.end(),
+                            [&](const OutputSpec& o) { return reads(o.expression); }) ||
+                std::any_of(request.events.begin(), request.events.end(),
+                            [&](const EventSpec& e) { return reads(e.expression); }))
+                solved.push_back(x);
+        }
+
+    // load measures: the given formulas, the measures solved for, the rest zero
     exmap loads;
     for (const auto& [measure, formula] : request.inputs)
         ALEMBERT_CHECK_ARG(table.owns(measure) && table.kind(measure) == SymbolKind::unknown,
@@ -413,9 +432,7 @@ SimulationResult run_simulation(const System& sys, const SimulationRequest& requ
                                "', which is not a load measure of the model (declare it with "
                                "add_unknown and use it in a load)");
     for (const ex& measure : table.symbols(SymbolKind::unknown)) {
-        if (std::any_of(request.constraint_forces.begin(), request.constraint_forces.end(),
-                        [&](const ex& c) { return c.is_equal(measure); }))
-            continue;
+        if (is_solved(measure)) continue;
         auto it = request.inputs.find(measure);
         loads[measure] = it == request.inputs.end() ? ex(0) : it->second;
     }
@@ -431,7 +448,7 @@ SimulationResult run_simulation(const System& sys, const SimulationRequest& requ
         // inputs given by their formulas (they sit inside the recursion's named intermediates, out
         // of reach of a substitution); otherwise the dense equations with the loads substituted
         std::optional<TreeEquations> tree;
-        if (allow_tree && request.constraint_forces.empty() && sys.constraints().empty() &&
+        if (allow_tree && solved.empty() && sys.constraints().empty() &&
             request.specified.empty())
             tree = form_tree_equations_if_tree(sys, q);
         std::vector<ex> measures;
@@ -470,7 +487,7 @@ SimulationResult run_simulation(const System& sys, const SimulationRequest& requ
                 f->evaluate(in->data(), u);
             };
         } else {
-            LinearSystem eqs = form_forward_equations(sys, q, request.constraint_forces);
+            LinearSystem eqs = form_forward_equations(sys, q, solved);
             if (!request.specified.empty()) {
                 // a specified quantity may sit inside a named intermediate's definition
                 eqs.A = GiNaC::ex_to<GiNaC::matrix>(table.expand_intermediates(eqs.A));
@@ -491,7 +508,7 @@ SimulationResult run_simulation(const System& sys, const SimulationRequest& requ
         if (request.checks) {
             bool conservative = request.specified.empty();  // a driven quantity does work
             exmap without_constraint_forces = loads;
-            for (const ex& c : request.constraint_forces) without_constraint_forces[c] = 0;
+            for (const ex& c : solved) without_constraint_forces[c] = 0;
             for (const ex& f : form_generalized_active_forces(sys, q, LoadSelection::nonconservative))
                 conservative = conservative && equal(f.subs(without_constraint_forces), 0);
             if (conservative)

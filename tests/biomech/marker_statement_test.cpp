@@ -128,8 +128,9 @@ marker BM on B at Bcm
         return interp.run(model + tail, (dir / "arm.alb").string());
     };
     std::ostringstream out1, err1, out2, err2;
+    // f = 0.5 Hz = 0.5 rev/s = pi rad/s: the arguments f*t turn once every 2 s
     ASSERT_EQ(run("constant f = 0.5 Hz\n"
-                  "motion qz = 0.3*sin(2*pi*f*t), qx = 0.2 + 0.4*sin(2*pi*f*t), qe = 0.5 + 0.3*cos(2*pi*f*t)\n"
+                  "motion qz = 0.3*sin(f*t), qx = 0.2 + 0.4*sin(f*t), qe = 0.5 + 0.3*cos(f*t)\n"
                   "final time 3 s\noutput step 0.01 s\ninverse for Tz, Tx, Te to \"formula\"\n",
                   out1, err1),
               RunStatus::ok)

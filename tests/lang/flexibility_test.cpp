@@ -107,14 +107,16 @@ TEST(TimeInFunctions, PeriodsAndFrequenciesMakeTimeAnAngle) {
     ScriptSession r;
     r.ok("digits 12\nnewtonian N\nframe A\nconstant T = 4 s, f = 0.25 Hz\nvariable q'' deg\n"
          "rotate A from N about z by q\n");
-    // at t = 1 s: sin(2 pi t/T) = sin(pi/2) = 1, and 30 sin(2 pi f t) deg = 30 deg
+    // at t = 1 s: sin(2 pi t/T) = sin(pi/2) = 1, and with f = 0.25 Hz = 0.25 rev/s,
+    // sin(f t) = sin(pi/2) = 1 too: a rate in Hz already counts the 2 pi of a cycle
     EXPECT_NEAR(number_after(r.ok("evaluate sin(2*pi*t/T) at t = 1 s"), "= "), 1.0, 1e-12);
-    r.ok("motion q = 30*sin(2*pi*f*t) deg\n");
+    EXPECT_NEAR(number_after(r.ok("evaluate sin(f*t) at t = 1 s"), "= "), 1.0, 1e-12);
+    r.ok("motion q = 30*sin(f*t) deg\n");
     // t alone in sin() shows the fix
     std::string e = r.fails("x = sin(t)");
     EXPECT_TRUE(has(e, "test.alb:1:9: error: the argument of sin() must be an angle or a number, but this is a time (s)"))
         << e;
-    EXPECT_TRUE(has(e, "sin(2*pi*f*t) with constant f = 1 Hz")) << e;
+    EXPECT_TRUE(has(e, "sin(w*t) with constant w = 1 Hz (one cycle per second)")) << e;
 }
 
 // ---- positive constants and US customary units ----------------------------------------------

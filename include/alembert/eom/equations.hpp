@@ -57,7 +57,8 @@ double estimate_solution_terms(const LinearSystem& sys);
 /// Meant for small systems (a handful of unknowns): sizes grow quickly beyond that, so a
 /// system whose expected size (estimate_solution_terms()) passes options.max_terms is refused
 /// before any work, and options.progress hears of each step.
-/// @throws alembert::SolveError if A is singular, or if the expected size passes the limit
+/// @throws alembert::SolveError if A is singular (naming the unknowns the equations do not
+///         determine when they are consistent), or if the expected size passes the limit
 ///         (the message names the size and the limit, and suggests solving numerically at
 ///         given values, generating code, or raising SymbolicSolveOptions::max_terms).
 std::vector<ex> solve_symbolic(const LinearSystem& sys, const SymbolicSolveOptions& options = {});

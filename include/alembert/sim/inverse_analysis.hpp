@@ -38,7 +38,10 @@ struct InverseAnalysisOptions {
 /// @throws alembert::ArgumentError if a coordinate of the model is missing from the motion,
 ///         the options' lists have the wrong length or two columns would share a name, or
 ///         if the motion violates a constraint of the model beyond
-///         options.constraint_tolerance (naming it, the samples, times and the residual);
+///         options.constraint_tolerance (naming it, the samples, times and the residual), or
+///         an equation of motion the loads were not solved from
+///         (InverseDynamics::unused_equation_names) beyond
+///         InverseDynamics::kUnusedEquationTolerance of the size of its terms;
 ///         alembert::SolveError listing the samples (times) where the loads are not
 ///         determined: A singular or nearly singular (reciprocal condition estimate below
 ///         InverseDynamics::kMinReciprocalCondition) or a load not finite. No number is

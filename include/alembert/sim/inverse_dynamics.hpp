@@ -67,6 +67,29 @@ public:
     void calc_constraint_residuals(double t, const double* q, const double* qd, const double* qdd,
                                    double* residuals) const;
 
+    /// The size of each load's coefficient in the solved form (T_i = b_i / c_i): `sizes`
+    /// evaluates [c_1..c_k, |c_1|..|c_k|] over [t, q, q', q''], where |c_i| bounds c_i by the
+    /// sizes of its terms (calc_size_bound). try_calc_loads takes T_i as not determined where
+    /// |c_i| <= kMinReciprocalCondition |c_i|_bound: a coefficient such as cos(q1) at q1 = 90
+    /// deg is 6e-17 in floating point, not 0, and b_i / c_i there is noise.
+    /// @throws alembert::ArgumentError if the sizes do not match (or the form is unsolved).
+    void set_coefficient_sizes(NumericFunction sizes);
+
+    /// Equations of motion the load measures are not solved from (an under-actuated model:
+    /// fewer loads acting than coordinates), to be checked at each sample: `residuals`
+    /// evaluates [r_1..r_m, s_1..s_m] over [t, q, q', q'', T_1..T_k], each residual r_j with
+    /// the size s_j of its terms; `names` names them ("Kane's equation for th").
+    /// @throws alembert::ArgumentError if the sizes do not match.
+    void set_unused_equations(std::vector<std::string> names, NumericFunction residuals);
+    /// Names of the equations set by set_unused_equations (empty: none).
+    const std::vector<std::string>& unused_equation_names() const { return unused_names_; }
+    /// The residuals and their sizes (2 m values: r_1..r_m, s_1..s_m) of the unused equations
+    /// at (t, q, q', q'') with the load measures `loads`.
+    void calc_unused_residuals(double t, const double* q, const double* qd, const double* qdd,
+                               const double* loads, double* residuals) const;
+    /// A motion satisfies an unused equation where |r_j| <= kUnusedEquationTolerance s_j.
+    static constexpr double kUnusedEquationTolerance = 1e-9;
+
 private:
     [[noreturn]] void fail(const std::string& what, double t, const double* q,
                            const double* qd) const;
@@ -81,7 +104,18 @@ private:
     mutable Eigen::PartialPivLU<Eigen::MatrixXd> lu_;
     std::vector<std::string> constraint_names_;
     NumericFunction constraints_;
+    NumericFunction coefficient_sizes_;
+    mutable std::vector<double> sizes_out_;
+    std::vector<std::string> unused_names_;
+    NumericFunction unused_;
+    mutable std::vector<double> unused_in_;
 };
+
+/// An upper bound of |e| from the sizes of its terms, as an expression: |a + b| <= |a| + |b|,
+/// |a b| <= |a| |b|, |sin x|, |cos x| <= 1, and |x| for anything else (symbols,
+/// intermediates, other functions). The scale a relative zero test compares e with: e = cos(q)
+/// has size 1, so cos(90 deg) = 6e-17 is zero against it.
+ex calc_size_bound(const ex& e);
 
 /// Compiles equations `eqs` that are linear in load measures (eqs.unknowns, e.g. joint
 /// torques; A T = b) as functions of t and the coordinates `q` with their first and second
@@ -94,7 +128,11 @@ InverseDynamics compile_inverse_dynamics(const SymbolTable& table, const LinearS
 
 /// Plans the MG road-map of `sys` for the load measures `loads` (one row per measure, about
 /// the joint where the other unknown forces drop out) and compiles it, with the residuals of
-/// the model's constraints (set_constraints) so a motion can be checked against them. Where
+/// the model's constraints (set_constraints) so a motion can be checked against them. A model
+/// without constraints in which fewer of `loads` act than it has coordinates (a cart driven
+/// by F carrying a rod on a pin) has equations the loads are not solved from: Kane's
+/// equations F_r + F_r* = 0 of every coordinate are set as unused equations
+/// (set_unused_equations), so calc_inverse_dynamics checks that the motion satisfies them. Where
 /// the model is a tree (explain_not_tree) with as many load measures as coordinates, each
 /// entering the rows (motor torques, forces on bodies; not joint reactions), the same rows are
 /// formed recursively instead (form_tree_equations: their size grows linearly in the number of

@@ -151,7 +151,8 @@ struct SimulationRequest {
     /// force); see compile_forward_dynamics.
     std::vector<ex> constraint_forces{};
     /// Values of the other load measures as formulas of t, q, q' (a motor law); a load
-    /// measure of the model not given here is zero.
+    /// measure of the model not given here is zero, except a measure of a declared joint
+    /// reaction that an output or event reads: it is solved for with the accelerations.
     exmap inputs{};
     /// Values of specified symbols and of the derivatives of them the model uses, as formulas
     /// of t, q, q' (a driven base motion x_b = 0.1*sin(2*pi*t), x_b' and x_b''); substituted
@@ -178,7 +179,10 @@ struct SimulationRequest {
 /// A model without constraints whose bodies form a tree in relative coordinates
 /// (form_tree_equations_if_tree) is integrated on its explicit accelerations from the
 /// articulated-body recursion, with the load measures evaluated from their formulas at each
-/// call; any other model on compile_forward_dynamics' equations with the inputs substituted. The declared constraints must hold at
+/// call; any other model on compile_forward_dynamics' equations with the inputs substituted.
+/// The measures of declared joint reactions (System::add_joint_reaction) that an output or an
+/// event reads are solved for at each step with the accelerations, from the road-map's
+/// reaction rows (they do no work, so Kane's equations alone do not hold them). The declared constraints must hold at
 /// the initial state (their residuals, the rates of configuration residuals, within
 /// options.constraint_tolerance): the initial values are not moved onto them silently; and
 /// their drift columns must stay within the same tolerance during the run.
