@@ -304,7 +304,13 @@ ex simplify_node(const ex& e) {
     }
     if (has_symbolic_denominator(e)) {
         ex n = normal(best);
-        if (has_trig(n)) n = fold(expand(numer(n))) / fold(expand(denom(n)));
+        if (has_trig(n)) {
+            // numerator and denominator from one call: numer() and denom() each normalise
+            // anew, and GiNaC may return (a, b) from one and (-a, -b) from the other, which
+            // flipped the sign of the result
+            const ex nd = n.numer_denom();
+            n = fold(expand(nd.op(0))) / fold(expand(nd.op(1)));
+        }
         if (count_ops(n) < count_ops(best)) best = n;
     }
     return best;
