@@ -105,6 +105,7 @@ void run_linearize(Interpreter::Impl& m, const Statement& s) {
     System& sys = m.model(s.location);
     const SymbolTable& table = sys.symbols();
     const Word& n = s.word("name");
+    StepIndicator busy("linearize " + n.text);
 
     // ---- the equations: formed by kane or lagrange, and still what the name holds
     auto formed = m.formed.find(n.text);
@@ -160,6 +161,18 @@ void run_linearize(Interpreter::Impl& m, const Statement& s) {
         if (!op.count(u)) op[u] = 0;
     for (const ex& r : o.inputs)
         if (!op.count(r)) op[r] = 0;
+    if (s.has_word("parameter")) {
+        // a sweep: the constants other than the swept one take their values before linearizing,
+        // so A is formed in numbers and the swept constant alone (kept symbolic in all 26
+        // constants of a bicycle, solving for the rates took a minute and a half)
+        const ex swept = m.symbol(s.word("parameter"), "a constant");
+        exmap values;
+        for (const ex& c : table.symbols(SymbolKind::constant))
+            if (!c.is_equal(swept) && !op.count(c))
+                if (const auto value = table.value(c)) values[c] = GiNaC::numeric(*value);
+        for (auto& [x, v] : op) v = v.subs(values, GiNaC::subs_options::no_pattern);  // u3 = v/r_R
+        op.insert(values.begin(), values.end());
+    }
     o.operating_point = op;
     LinearizedEquations lin = m.guard(n.location, [&] { return linearize(table, f, o); },
                                       "choose another operating point, or other coordinates");

@@ -5,8 +5,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numeric>
 #include <string>
+#include <utility>
 
 #include "alembert/error.hpp"
 
@@ -18,6 +20,16 @@ bool is_unstable_at(const std::function<Eigen::MatrixXd(double)>& A_of, double p
     Eigen::MatrixXd A = A_of(p);
     return classify_stability(calc_eigen(A).values, zero_real_part_tolerance(A)) ==
            Stability::unstable;
+}
+
+// the largest real part of the eigenvalues of A(p), and the tolerance below which a real part
+// counts as zero there
+std::pair<double, double> largest_real_part_at(const std::function<Eigen::MatrixXd(double)>& A_of,
+                                               double p) {
+    Eigen::MatrixXd A = A_of(p);
+    double g = -std::numeric_limits<double>::infinity();
+    for (const std::complex<double>& l : calc_eigen(A).values) g = std::max(g, l.real());
+    return {g, zero_real_part_tolerance(A)};
 }
 
 }  // namespace
@@ -280,7 +292,7 @@ std::vector<StabilityChange> find_stability_changes(
     for (double p : samples) unstable.push_back(is_unstable_at(A_of, p));
     for (std::size_t i = 0; i + 1 < samples.size(); ++i) {
         if (unstable[i] == unstable[i + 1]) continue;
-        // ---- bisection: lo keeps the verdict of samples[i], hi that of samples[i + 1]
+        // ---- bisection on the verdict: lo keeps that of samples[i], hi that of samples[i + 1]
         double lo = samples[i], hi = samples[i + 1];
         const double goal = 1e-12 * (std::abs(lo) + std::abs(hi) + 1);
         for (int it = 0; it < 200 && hi - lo > goal; ++it) {
@@ -290,7 +302,33 @@ std::vector<StabilityChange> find_stability_changes(
             else
                 hi = mid;
         }
-        out.push_back({lo + (hi - lo) / 2, unstable[i + 1]});
+        double at = lo + (hi - lo) / 2;
+        // The verdict changes where the largest real part passes the zero tolerance, not where
+        // it is zero: off by tolerance / slope (1e-2 of a damped oscillator's damping, 2.5e-4
+        // m/s of a bicycle's capsize speed). On the unstable side the largest real part is the
+        // crossing mode's; two values of it there, a little way off, extrapolate linearly to
+        // its zero. (A mode on the axis on the stable side, such as an ignorable coordinate's
+        // zero eigenvalue, does not disturb this, as a bisection on its sign would be.)
+        const double side = unstable[i + 1] ? 1.0 : -1.0;  // towards the unstable side
+        const double room = unstable[i + 1] ? samples[i + 1] - at : at - samples[i];
+        double h = std::min(room / 6, 1e-4 * (samples[i + 1] - samples[i]));
+        // twice: the second time from near the zero with a step a hundred times smaller, which
+        // leaves the curvature of the real part out of the answer
+        for (int pass = 0; pass < 2 && h > goal; ++pass, h /= 100) {
+            // three points, to see the real part is straight there: a pair of real eigenvalues
+            // that meet at zero and turn imaginary (x'' = (1 - p) x) vanishes like a square
+            // root, and its verdict is already within tolerance^2 of the zero
+            const double p1 = at + side * h, p2 = at + 2 * side * h, p3 = at + 3 * side * h;
+            const double g1 = largest_real_part_at(A_of, p1).first, g2 = largest_real_part_at(A_of, p2).first,
+                         g3 = largest_real_part_at(A_of, p3).first;
+            const double slope = (g2 - g1) / (p2 - p1);
+            const bool straight = std::abs((g3 - g2) - (g2 - g1)) <= 1e-3 * std::abs(g2 - g1);
+            if (!(straight && g1 > 0 && g2 > g1 && std::isfinite(slope) && slope * side > 0)) break;
+            const double zero = p1 - g1 / slope;
+            if (!(zero >= samples[i] && zero <= samples[i + 1])) break;
+            at = zero;
+        }
+        out.push_back({at, unstable[i + 1]});
     }
     return out;
 }

@@ -169,7 +169,9 @@ TEST(LinearAnalysis, StabilityChangesAreFoundByBisection) {
     std::vector<StabilityChange> c = find_stability_changes(linear, grid);
     ASSERT_EQ(c.size(), 1u);
     EXPECT_TRUE(c[0].becomes_unstable);
-    EXPECT_NEAR(c[0].at, 1.0, 1e-6);  // the tolerance band of the verdict: 1e-6
+    // the mode crosses the axis: the zero of its real part, not where it passes the
+    // verdict's tolerance band (1e-6 here, which put the change at 1 + 1e-6)
+    EXPECT_NEAR(c[0].at, 1.0, 1e-12);
     // x'' = (1 - p) x: lambda = +-sqrt(1 - p), unstable below p = 1 and marginal above; the
     // real part vanishes like sqrt, so the band 1e-6 moves the boundary by only 1e-12
     auto spring = [](double p) {
@@ -181,6 +183,22 @@ TEST(LinearAnalysis, StabilityChangesAreFoundByBisection) {
     ASSERT_EQ(c.size(), 1u);
     EXPECT_FALSE(c[0].becomes_unstable);
     EXPECT_NEAR(c[0].at, 1.0, 1e-10);
+}
+
+TEST(LinearAnalysis, ADampedOscillatorLosesStabilityExactlyWhereItsDampingChangesSign) {
+    // m x'' + c x' + k x = 0 with k/m = 10000 s^-2: real parts -c/(2m), zero at c = 0. The
+    // verdict's tolerance (1e-6 of the largest entry of A, 1e-2 here) put the change at
+    // c = -0.02 when the sweep bisected on the verdict.
+    auto damped = [](double c) {
+        Eigen::MatrixXd A(2, 2);
+        A << 0, 1, -10000, -c;
+        return A;
+    };
+    std::vector<double> grid{-1, -0.5, 0.25, 0.5, 1};
+    std::vector<StabilityChange> ch = find_stability_changes(damped, grid);
+    ASSERT_EQ(ch.size(), 1u);
+    EXPECT_FALSE(ch[0].becomes_unstable);  // unstable for negative damping, stable above
+    EXPECT_NEAR(ch[0].at, 0.0, 1e-12);
 }
 
 }  // namespace

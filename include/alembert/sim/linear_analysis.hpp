@@ -76,8 +76,10 @@ struct LqrSolution {
 LqrSolution solve_lqr(const Eigen::MatrixXd& A, const Eigen::MatrixXd& B, const Eigen::MatrixXd& Q,
                       const Eigen::MatrixXd& R);
 
-/// A change of stability along a parameter p: between two samples of a sweep, refined by
-/// bisection on "the largest real part is above the tolerance" to within 1e-12 (|p| + 1).
+/// A change of stability along a parameter p: between two samples of a sweep, found by
+/// bisection on "the largest real part is above the tolerance" to within 1e-12 (|p| + 1), then
+/// moved to where the crossing mode's real part is zero (not where it passes the tolerance) by
+/// linear extrapolation of the largest real part from two points on the unstable side.
 struct StabilityChange {
     double at = 0;                  ///< the parameter value where it changes
     bool becomes_unstable = false;  ///< true: stable or marginal below, unstable above
