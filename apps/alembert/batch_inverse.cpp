@@ -8,6 +8,9 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <array>
+#include <cerrno>
+#include <csignal>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -49,6 +52,49 @@ void show_progress(std::size_t done, std::size_t total, std::size_t failed) {
               << " trials" << (failed ? ", " + std::to_string(failed) + " failed" : "") << std::flush;
 }
 
+// the signal that interrupted the batch (SIGINT, SIGTERM, SIGHUP), 0 while none has
+volatile std::sig_atomic_t g_batch_signal = 0;
+extern "C" void on_batch_signal(int sig) { g_batch_signal = sig; }
+
+// While a batch runs, an interruption is noted rather than ending the process at once: the
+// running trials are stopped, what they left is removed, the finished trials' summary is
+// written, and then the process ends by the same signal through the handlers it had (which
+// remove registered temporary files and give the shell the signal's exit status).
+class BatchInterruption {
+public:
+    BatchInterruption() {
+        struct sigaction sa {};
+        sa.sa_handler = on_batch_signal;
+        sigemptyset(&sa.sa_mask);
+        sa.sa_flags = 0;  // no SA_RESTART: waitpid returns EINTR and the loop sees the signal
+        for (std::size_t i = 0; i < kSignals.size(); ++i) {
+            ::sigaction(kSignals[i], nullptr, &old_[i]);
+            // a signal ignored by the parent (nohup) stays ignored
+            if (old_[i].sa_handler != SIG_IGN) ::sigaction(kSignals[i], &sa, nullptr);
+        }
+    }
+    ~BatchInterruption() { restore(); }
+    void restore() {
+        if (restored_) return;
+        restored_ = true;
+        for (std::size_t i = 0; i < kSignals.size(); ++i) ::sigaction(kSignals[i], &old_[i], nullptr);
+    }
+    // ends the process by the signal that interrupted the batch, through the old handlers
+    [[noreturn]] void end_by_signal() {
+        const int sig = g_batch_signal;
+        restore();
+        std::raise(sig);
+        std::signal(sig, SIG_DFL);  // the old handler returned: end by the default action
+        std::raise(sig);
+        std::_Exit(128 + sig);
+    }
+
+private:
+    static constexpr std::array<int, 3> kSignals{SIGINT, SIGTERM, SIGHUP};
+    std::array<struct sigaction, 3> old_{};
+    bool restored_ = false;
+};
+
 }  // namespace
 
 int run_inverse_batch(const BatchInverseOptions& o, const char* self) {
@@ -78,6 +124,9 @@ int run_inverse_batch(const BatchInverseOptions& o, const char* self) {
     std::map<pid_t, std::size_t> running;
     std::vector<std::unique_ptr<ChildProcess>> guards;
     std::size_t next = 0, done = 0, failed = 0;
+    g_batch_signal = 0;
+    BatchInterruption interruption;
+    std::vector<bool> stopped(trials.size(), false);  // trials stopped by the interruption
     auto finish = [&](pid_t pid, int status) {
         const std::size_t i = running.at(pid);
         running.erase(pid);
@@ -85,6 +134,15 @@ int run_inverse_batch(const BatchInverseOptions& o, const char* self) {
         TrialOutcome& out = outcomes[i];
         out.trial = trials[i];
         out.ok = WIFEXITED(status) && WEXITSTATUS(status) == 0;
+        if (g_batch_signal && !out.ok) {
+            // stopped part-way: nothing it wrote is a result
+            stopped[i] = true;
+            out.message = "interrupted before it finished; its results were removed";
+            std::error_code ec;
+            fs::remove_all(dir, ec);
+            ++done;
+            return;
+        }
         if (out.ok) {
             try {
                 // the table inverse wrote: loads.csv, or torques.csv / forces.csv when all of one kind
@@ -102,8 +160,15 @@ int run_inverse_batch(const BatchInverseOptions& o, const char* self) {
         ++done;
         if (progress) show_progress(done, trials.size(), failed);
     };
+    bool stopping = false;
     while (done < trials.size()) {
-        while (next < trials.size() && running.size() < jobs) {
+        if (g_batch_signal && !stopping) {
+            // stop: start no more trials, and end the running ones
+            stopping = true;
+            for (const auto& [pid, i] : running) ::kill(pid, SIGTERM);
+        }
+        if (stopping && running.empty()) break;
+        while (!stopping && next < trials.size() && running.size() < jobs) {
             const fs::path dir = fs::path(o.out) / fs::path(trials[next]).stem();
             std::error_code ec;
             fs::create_directories(dir, ec);
@@ -134,8 +199,29 @@ int run_inverse_batch(const BatchInverseOptions& o, const char* self) {
         int status = 0;
         const pid_t pid = ::waitpid(-1, &status, 0);
         if (pid > 0 && running.count(pid)) finish(pid, status);
+        else if (pid < 0 && errno != EINTR) break;
     }
     if (progress) std::cerr << "\n";
+    if (stopping) {
+        // the trials that finished keep their results and their summary; the others are named
+        std::vector<TrialOutcome> finished;
+        std::size_t not_run = 0, interrupted = 0;
+        for (std::size_t i = 0; i < trials.size(); ++i) {
+            if (i >= next) ++not_run;
+            else if (stopped[i]) ++interrupted;
+            else finished.push_back(outcomes[i]);
+        }
+        const std::string summary = (fs::path(o.out) / "summary.csv").string();
+        try {
+            write_batch_summary(finished, summary);
+        } catch (const Error& e) {
+            std::cerr << "alembert inverse: " << e.what() << "\n";
+        }
+        std::cerr << "alembert inverse: interrupted: " << finished.size() << " of " << trials.size()
+                  << " trials finished (summary in " << summary << "), " << interrupted
+                  << " stopped and their results removed, " << not_run << " not started\n";
+        interruption.end_by_signal();
+    }
 
     // the summary
     const std::string summary = (fs::path(o.out) / "summary.csv").string();

@@ -33,12 +33,6 @@ std::string gp_quoted(const std::string& s) {
     return q + "'";
 }
 
-std::string shell_quoted(const std::string& s) {
-    std::string q = "'";
-    for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    return q + "'";
-}
-
 std::string label(const Table& t, std::size_t c) {
     return t.units[c].empty() ? t.names[c] : t.names[c] + " [" + t.units[c] + "]";
 }
@@ -95,10 +89,25 @@ std::string gnuplot_program() {
     return env && *env ? env : "gnuplot";
 }
 
+// Started with posix_spawnp, not std::system: system() ignores SIGINT in the calling process
+// while its child runs, so an interrupt that came while gnuplot was being probed was lost and
+// the run went on to exit 0.
 bool gnuplot_available() {
-    const std::string cmd = shell_quoted(gnuplot_program()) + " --version >/dev/null 2>&1";
-    const int status = std::system(cmd.c_str());
-    return status != -1 && WIFEXITED(status) && WEXITSTATUS(status) == 0;
+    std::string program = gnuplot_program(), version = "--version";
+    posix_spawn_file_actions_t quiet;
+    posix_spawn_file_actions_init(&quiet);
+    posix_spawn_file_actions_addopen(&quiet, 1, "/dev/null", O_WRONLY, 0);
+    posix_spawn_file_actions_addopen(&quiet, 2, "/dev/null", O_WRONLY, 0);
+    char* argv[] = {program.data(), version.data(), nullptr};
+    pid_t pid = -1;
+    const int rc = posix_spawnp(&pid, program.c_str(), &quiet, nullptr, argv, environ);
+    posix_spawn_file_actions_destroy(&quiet);
+    if (rc != 0) return false;
+    ChildProcess child(pid);  // terminated if this process is interrupted meanwhile
+    int status = 0;
+    while (::waitpid(pid, &status, 0) < 0)
+        if (errno != EINTR) return false;
+    return WIFEXITED(status) && WEXITSTATUS(status) == 0;
 }
 
 PlotResult plot_csv(const Table& table, const std::string& csv_path, const std::string& output_base,

@@ -61,4 +61,29 @@ status=0; "$alembert" inverse "$model" --motion 'trials/*.csv' --shard 2/2 --out
 [[ $status == 2 ]] && grep -q "write I/N with 0 <= I < N" err.txt || fail "bad shard: status $status, $(cat err.txt)"
 status=0; "$alembert" inverse "$model" --motion 'none/*.trc' --out x 2> err.txt || status=$?
 [[ $status == 2 ]] && grep -q "matches no file" err.txt || fail "empty pattern: status $status, $(cat err.txt)"
+# an interrupted batch (SIGTERM to the batch, as a scheduler sends it; SIGINT from a terminal
+# takes the same path): the trials that finished keep their results and get their summary,
+# the running one is stopped and leaves nothing, and the batch ends by the signal
+mkdir many
+for i in 1 2 3 4 5 6 7 8; do cp trials/a.csv "many/t$i.csv"; done
+"$alembert" inverse "$model" --motion 'many/*.csv' --jobs 1 --tape --out stop > stop.txt 2> stop.err &
+batch=$!
+for _ in $(seq 1 600); do [[ -s stop/t2/loads.csv ]] && break; sleep 0.1; done
+[[ -s stop/t2/loads.csv ]] || fail "interrupted batch: the second trial never finished"
+kill -TERM "$batch"
+status=0; wait "$batch" || status=$?
+[[ $status == 143 ]] || fail "interrupted batch: exit status $status, expected 143 (SIGTERM); $(cat stop.err)"
+[[ -s stop/summary.csv ]] || fail "interrupted batch: no summary.csv for the trials that finished"
+grep -q "interrupted: [0-9]* of 8 trials finished (summary in stop/summary.csv)" stop.err ||
+  fail "interrupted batch: no account of what finished: $(cat stop.err)"
+finished=$(cut -d, -f1 stop/summary.csv | grep -v '^trial$' | sort -u)
+[[ -n $finished ]] || fail "interrupted batch: the summary names no finished trial"
+for d in stop/t*; do
+  t=${d#stop/}
+  # every directory left is a finished trial's, with its table and its log, named in the summary
+  [[ -s $d/loads.csv ]] || fail "interrupted batch: $d was left without loads.csv: $(ls -la "$d")"
+  grep -qx "many/$t.csv" <<<"$finished" || fail "interrupted batch: $d is not in the summary"
+done
+[[ -z $(find stop -name '.*tmp*') ]] || fail "interrupted batch: temporary files were left: $(find stop -name '.*tmp*')"
+
 echo "batch_cli_test: OK"
