@@ -243,6 +243,7 @@ std::string Interpreter::Impl::format_readable_roadmap(const std::string& name, 
 void Interpreter::Impl::roadmap(const Statement& s) {
     System& m = model(s.location);
     const Word& n = s.word("name");
+    StepIndicator busy("roadmap " + n.text + ": planning, forming and printing");
     if (!s.lists.count("unknowns")) {
         auto it = roadmaps.find(n.text);
         if (it == roadmaps.end() || it->second.rows.empty())
@@ -319,6 +320,7 @@ void Interpreter::Impl::row(const Statement& s) {
 void Interpreter::Impl::methods(const Statement& s) {
     System& m = model(s.location);
     const Word& n = s.word("name");
+    StepIndicator busy(s.keyword + " " + n.text + ": forming and printing");
     auto it = names.find(n.text);
     if (it != names.end() && it->second.kind != NameKind::value)
         throw ScriptError(n.location, "'" + n.text + "' is already declared and cannot name equations",
@@ -355,8 +357,12 @@ void Interpreter::Impl::methods(const Statement& s) {
     values[n.text] = array_value(eqs);
     formed_here.residuals = eqs;
     formed[n.text] = std::move(formed_here);
+    // what the equations are in: the accelerations, or the rates of the independent speeds
     std::vector<ex> accelerations;
-    for (const TimeVariable& x : q) accelerations.push_back(x.d(x.order()));
+    if (formed[n.text].kane && !formed[n.text].kane->independent_speeds.empty())
+        for (const ex& u : formed[n.text].kane->independent_speeds) accelerations.push_back(m.symbols().dt(u));
+    else
+        for (const TimeVariable& x : q) accelerations.push_back(x.d(x.order()));
     print_equations(n.text, eqs, accelerations);
 }
 

@@ -132,6 +132,7 @@ exmap Interpreter::Impl::report_configuration(const Statement& s) {
 
 void Interpreter::Impl::report(const Statement& s) {
     if (model_only) return;
+    StepIndicator busy("report: writing the page and roadmap.tex");
     const exmap at = report_configuration(s);
     ReportSettings settings;
     settings.check = s.flag("check");

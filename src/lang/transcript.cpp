@@ -6,6 +6,7 @@
 #include <cstdio>
 
 #include "alembert/error.hpp"
+#include "alembert/sim/progress.hpp"
 
 namespace alembert::lang {
 
@@ -25,6 +26,7 @@ void Transcript::comment(const std::string& text) {
 
 void Transcript::result(const std::string& text) {
     if (muted_) return;
+    StepIndicator::clear_line();  // a step's progress line on the terminal, if one shows
     *out_ << text;
     if (text.empty() || text.back() != '\n') *out_ << "\n";
 }

@@ -36,4 +36,54 @@ void ProgressIndicator::update(double t) {
     std::fflush(stderr);
 }
 
+namespace {
+// the indicator whose thread is running (steps do not nest: the inner one takes over)
+std::atomic<StepIndicator*> g_running{nullptr};
+}  // namespace
+
+StepIndicator::StepIndicator(std::string label, bool enabled, std::chrono::milliseconds delay)
+    : label_(std::move(label)), delay_(delay) {
+    if (enabled && ::isatty(2) == 1) {
+        ticker_ = std::thread([this] { run(); });
+        g_running.store(this);
+    }
+}
+
+void StepIndicator::clear_line() {
+    StepIndicator* s = g_running.load();
+    if (!s) return;
+    std::lock_guard<std::mutex> lock(s->mutex_);
+    if (s->shown_) std::fprintf(stderr, "\r\033[K");
+    s->shown_ = false;
+    std::fflush(stderr);
+}
+
+StepIndicator::~StepIndicator() {
+    if (!ticker_.joinable()) return;
+    StepIndicator* self = this;
+    g_running.compare_exchange_strong(self, nullptr);
+    {
+        std::lock_guard<std::mutex> lock(mutex_);
+        stopping_ = true;
+    }
+    stop_.notify_all();
+    ticker_.join();
+    if (shown_) std::fprintf(stderr, "\r\033[K");
+    std::fflush(stderr);
+}
+
+void StepIndicator::run() {
+    const auto start = std::chrono::steady_clock::now();
+    std::unique_lock<std::mutex> lock(mutex_);
+    auto next = start + delay_;
+    while (!stop_.wait_until(lock, next, [this] { return stopping_; })) {
+        const auto seconds =
+            std::chrono::duration_cast<std::chrono::seconds>(std::chrono::steady_clock::now() - start);
+        std::fprintf(stderr, "\r\033[K%s ... %lld s", label_.c_str(), static_cast<long long>(seconds.count()));
+        std::fflush(stderr);
+        shown_ = true;
+        next += std::chrono::seconds(1);
+    }
+}
+
 }  // namespace alembert

@@ -2,8 +2,12 @@
 // A progress line on a terminal for long runs.
 #pragma once
 
+#include <atomic>
 #include <chrono>
+#include <condition_variable>
+#include <mutex>
 #include <string>
+#include <thread>
 
 namespace alembert {
 
@@ -34,6 +38,36 @@ private:
     std::chrono::milliseconds delay_;
     bool shown_ = false;
     Clock::time_point start_, last_;
+};
+
+/// A one-line indicator "label ... 12 s" on standard error for a step whose progress cannot
+/// be counted (forming equations, planning a road-map, printing, a report): shown only when
+/// standard error is a terminal and the step has lasted `delay`, its elapsed seconds refreshed
+/// every second by a thread of its own, and erased when the step ends (the destructor).
+/// Silent on pipes and in CI.
+class StepIndicator {
+public:
+    explicit StepIndicator(std::string label, bool enabled = true,
+                           std::chrono::milliseconds delay = std::chrono::seconds(2));
+    StepIndicator(const StepIndicator&) = delete;
+    StepIndicator& operator=(const StepIndicator&) = delete;
+    /// Stops the thread and erases the line if one was shown.
+    ~StepIndicator();
+
+    /// Erases the line of the indicator that is running, if any, so that what is printed next
+    /// starts on a clean line (the indicator shows again at its next refresh). Called by
+    /// whatever prints results while a step is under way.
+    static void clear_line();
+
+private:
+    void run();
+    std::string label_;
+    std::chrono::milliseconds delay_;
+    std::mutex mutex_;
+    std::condition_variable stop_;
+    bool stopping_ = false;
+    bool shown_ = false;
+    std::thread ticker_;
 };
 
 }  // namespace alembert
