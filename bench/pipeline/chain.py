@@ -34,5 +34,5 @@ elif step == "roadmap":
 elif step == "simulate":
     L += ["initial " + ", ".join(f"{q} = {0.1 * (1 + i % 3):.1f}" for i, q in enumerate(qs)),
           "final time 1 s", "output step 0.01 s", "output " + ", ".join(qs),
-          "simulate for " + ", ".join(qs)]
+          "simulate plot none"]
 open(out, "w").write("\n".join(L) + "\n")
