@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "alembert/lang/parser.hpp"
+#include "alembert/sym/cse.hpp"
 #include "interpreter_impl.hpp"
 #include "statement_parser.hpp"
 
@@ -161,10 +162,11 @@ void run_linearize(Interpreter::Impl& m, const Statement& s) {
         if (!op.count(u)) op[u] = 0;
     for (const ex& r : o.inputs)
         if (!op.count(r)) op[r] = 0;
-    if (s.has_word("parameter")) {
-        // a sweep: the constants other than the swept one take their values before linearizing,
-        // so A is formed in numbers and the swept constant alone (kept symbolic in all 26
-        // constants of a bicycle, solving for the rates took a minute and a half)
+    if (s.has_word("parameter") && count_ops_with_intermediates(table, f.residuals) > m.print_limit) {
+        // a sweep of equations too large to print (past --print-limit): the constants other
+        // than the swept one take their values before linearizing, so A is formed in numbers
+        // and the swept constant alone (kept symbolic in all 26 constants of a bicycle, solving
+        // for the rates took a minute and a half); smaller models keep A symbolic
         const ex swept = m.symbol(s.word("parameter"), "a constant");
         exmap values;
         for (const ex& c : table.symbols(SymbolKind::constant))
