@@ -21,13 +21,13 @@ std::vector<symbol> symbols(const char* stem, int n) {
     return out;
 }
 
-// sum of n terms c*x_i*x_j*sin(q_k - q_l): what a long equation of motion looks like
+// sum of n distinct terms c*x_i*y_j*z_k*sin(q_l - q_m): what a long equation of motion looks
+// like
 ex wide(int n) {
-    auto x = symbols("x", 40), q = symbols("q", 20);
+    auto x = symbols("x", 100), y = symbols("y", 100), z = symbols("z", 10), q = symbols("q", 7);
     ex s = 0;
     for (int i = 0; i < n; ++i)
-        s += (i % 7 - 3) * x[i % 40] * x[(i / 40) % 40] * sin(q[i % 20] - q[(i / 20) % 20]) +
-             x[(i * 7) % 40] * pow(x[(i * 3) % 40] - q[i % 20], 2 + i % 3);
+        s += (i % 7 + 1) * x[i % 100] * y[(i / 100) % 100] * z[(i / 10000) % 10] * sin(q[i % 7] - q[(i / 7) % 7]);
     return s;
 }
 

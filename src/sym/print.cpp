@@ -70,9 +70,14 @@ int factor_rank(const ex& f) {
     return 2;
 }
 
-std::string lower(std::string s) {
-    for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return s;
+// <0, 0, >0 as a is before, equal to, after b with both lower-cased
+int compare_ignoring_case(const std::string& a, const std::string& b) {
+    const std::size_t n = std::min(a.size(), b.size());
+    for (std::size_t i = 0; i < n; ++i) {
+        const int x = std::tolower(static_cast<unsigned char>(a[i])), y = std::tolower(static_cast<unsigned char>(b[i]));
+        if (x != y) return x < y ? -1 : 1;
+    }
+    return a.size() < b.size() ? -1 : a.size() > b.size() ? 1 : 0;
 }
 
 // -s, negated term by term (GiNaC may hold -s as the product (-1)*s)
@@ -138,14 +143,21 @@ private:
     }
 
     std::string print_factors(const std::vector<ex>& fs) {
-        std::vector<std::pair<std::tuple<int, std::string, std::string>, std::string>> items;
-        for (const ex& f : fs) {
-            std::string t = is_a<add>(f) ? "(" + p(f).text + ")" : paren(p(f), kProduct + 1);
-            items.push_back({{factor_rank(f), lower(t), t}, t});
-        }
-        std::sort(items.begin(), items.end());
+        // sorted by rank, then by text ignoring case, then by text (compared in place: a
+        // lower-cased copy of every factor cost as much as printing it)
+        std::vector<std::pair<int, std::string>> items;
+        for (const ex& f : fs)
+            items.emplace_back(factor_rank(f), is_a<add>(f) ? "(" + p(f).text + ")" : paren(p(f), kProduct + 1));
+        std::sort(items.begin(), items.end(), [](const auto& a, const auto& b) {
+            if (a.first != b.first) return a.first < b.first;
+            const int c = compare_ignoring_case(a.second, b.second);
+            return c != 0 ? c < 0 : a.second < b.second;
+        });
         std::string out;
-        for (std::size_t i = 0; i < items.size(); ++i) out += (i ? "*" : "") + items[i].second;
+        for (std::size_t i = 0; i < items.size(); ++i) {
+            if (i) out += '*';
+            out += items[i].second;
+        }
         return out;
     }
 
