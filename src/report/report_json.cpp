@@ -350,6 +350,21 @@ std::string equation_tex(const ex& e, const ex& variable) {
     return out + " \\end{aligned}";
 }
 
+// equations of more operations than this are typeset abbreviated (written out, as a tree,
+// the TeX of a large model's equation grows exponentially with the sharing in it)
+constexpr std::size_t kAbbreviateOps = 4000;
+
+// "0 = ..." with the named parts of the equation below it, w_1 = ..., each line short, the
+// parts in the order they are needed
+std::string abbreviated_equation_tex(const ex& e) {
+    const AbbreviatedForm f = abbreviate_form({e}, 100, "w");
+    std::string out = "\\begin{aligned} 0 ={} & " + to_latex(f.results.at(0));
+    for (std::size_t i = 0; i < f.definitions.size(); ++i)
+        out += std::string(" \\\\ ") + (i == 0 ? "\\text{with } " : "") + to_latex(f.definitions[i].first) +
+               " ={} & " + to_latex(f.definitions[i].second);
+    return out + " \\end{aligned}";
+}
+
 // the names of the intermediates `e` uses, with those their definitions use (at most 200)
 std::set<std::string> intermediates_used(const System& sys, const ex& e) {
     const SymbolTable& st = sys.symbols();
@@ -778,7 +793,9 @@ std::vector<std::string> report_detail::typeset_equations(const ReportContent& c
     if (!c.system) return out;
     out.reserve(c.rows.size());
     for (const RoadmapRow& r : c.rows)
-        out.push_back(equation_tex(readable_equation(*c.system, r.equation), r.variable));
+        out.push_back(count_ops(r.equation) > kAbbreviateOps
+                          ? abbreviated_equation_tex(r.equation)
+                          : equation_tex(readable_equation(*c.system, r.equation), r.variable));
     return out;
 }
 

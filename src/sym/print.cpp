@@ -361,12 +361,9 @@ public:
     }
 
     // the root of a result: shortened, never named
-    std::string result(const ex& e) {
-        ex x = e.nops() == 0 ? e : (*this)(e);
-        return to_string(x);
-    }
+    ex result(const ex& e) { return e.nops() == 0 ? e : (*this)(e); }
 
-    std::vector<std::string> definitions;
+    std::vector<std::pair<ex, ex>> definitions;  // (name, what it stands for)
 
 private:
     std::size_t width_;
@@ -376,9 +373,9 @@ private:
     PrintMemo<ex> done_;
 
     ex name(const ex& x) {
-        std::string n = stem_ + std::to_string(next_++);
-        definitions.push_back(n + " = " + to_string(x));
-        return symbol(n);
+        const ex z = symbol(stem_ + std::to_string(next_++));
+        definitions.emplace_back(z, x);
+        return z;
     }
 
     // x, whose operands are already short, with operands named until its line fits: the
@@ -424,16 +421,27 @@ private:
 
 }  // namespace
 
-AbbreviatedText abbreviate(const std::vector<ex>& exprs, std::size_t width, const std::string& stem,
-                           std::size_t first) {
+AbbreviatedForm abbreviate_form(const std::vector<ex>& exprs, std::size_t width, const std::string& stem,
+                                std::size_t first) {
     Abbreviator a(width, stem, first);
     for (const ex& e : exprs) a.count_uses(e);
-    AbbreviatedText out;
+    AbbreviatedForm out;
     for (const ex& e : exprs) {
         out.results.push_back(a.result(e));
         out.defined_before.push_back(a.definitions.size());
     }
     out.definitions = std::move(a.definitions);
+    return out;
+}
+
+AbbreviatedText abbreviate(const std::vector<ex>& exprs, std::size_t width, const std::string& stem,
+                           std::size_t first) {
+    AbbreviatedForm f = abbreviate_form(exprs, width, stem, first);
+    AbbreviatedText out;
+    Printer printer;
+    for (const auto& [z, d] : f.definitions) out.definitions.push_back(printer.p(z).text + " = " + printer.p(d).text);
+    for (const ex& r : f.results) out.results.push_back(printer.p(r).text);
+    out.defined_before = std::move(f.defined_before);
     return out;
 }
 

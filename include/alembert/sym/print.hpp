@@ -6,6 +6,7 @@
 
 #include <ostream>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace alembert {
@@ -49,5 +50,15 @@ struct AbbreviatedText {
 /// distinct subexpressions times the width: nothing is printed whole to decide.
 AbbreviatedText abbreviate(const std::vector<ex>& exprs, std::size_t width = 100,
                            const std::string& stem = "z", std::size_t first = 1);
+
+/// The same as expressions, for printers of other notations (TeX): `definitions` pairs each
+/// name's symbol with what it stands for; results and definitions use those symbols.
+struct AbbreviatedForm {
+    std::vector<std::pair<ex, ex>> definitions;
+    std::vector<ex> results;
+    std::vector<std::size_t> defined_before;
+};
+AbbreviatedForm abbreviate_form(const std::vector<ex>& exprs, std::size_t width = 100,
+                                const std::string& stem = "z", std::size_t first = 1);
 
 }  // namespace alembert
