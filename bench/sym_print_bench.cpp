@@ -61,46 +61,29 @@ std::size_t distinct_nodes(const ex& e) {
     return seen.size();
 }
 
-void report(benchmark::State& state, const ex& e, std::size_t chars) {
-    state.counters["nodes"] = static_cast<double>(distinct_nodes(e));
-    state.counters["chars"] = static_cast<double>(chars);
-    state.SetComplexityN(static_cast<benchmark::IterationCount>(distinct_nodes(e)));
-}
-
-void BM_PrintWideSum(benchmark::State& state) {
-    ex e = wide(static_cast<int>(state.range(0)));
+// prints e once per iteration; counters: its distinct nodes and the characters printed
+void time_printing(benchmark::State& state, const ex& e) {
     std::size_t chars = 0;
     for (auto _ : state) {
         std::string s = alembert::to_string(e);
         chars = s.size();
         benchmark::DoNotOptimize(s);
     }
-    report(state, e, chars);
+    const std::size_t nodes = distinct_nodes(e);
+    state.counters["nodes"] = static_cast<double>(nodes);
+    state.counters["chars"] = static_cast<double>(chars);
+    state.SetComplexityN(static_cast<benchmark::IterationCount>(nodes));
 }
+
+void BM_PrintWideSum(benchmark::State& state) { time_printing(state, wide(static_cast<int>(state.range(0)))); }
 BENCHMARK(BM_PrintWideSum)->RangeMultiplier(10)->Range(100, 100000)->Unit(benchmark::kMillisecond)->Complexity();
 
-void BM_PrintDeepTree(benchmark::State& state) {
-    ex e = deep(static_cast<int>(state.range(0)));
-    std::size_t chars = 0;
-    for (auto _ : state) {
-        std::string s = alembert::to_string(e);
-        chars = s.size();
-        benchmark::DoNotOptimize(s);
-    }
-    report(state, e, chars);
-}
-BENCHMARK(BM_PrintDeepTree)->RangeMultiplier(4)->Range(64, 4096)->Unit(benchmark::kMillisecond)->Complexity();
+void BM_PrintDeepTree(benchmark::State& state) { time_printing(state, deep(static_cast<int>(state.range(0)))); }
+BENCHMARK(BM_PrintDeepTree)->RangeMultiplier(4)->Range(64, 1024)->Unit(benchmark::kMillisecond)->Complexity();
 
 void BM_PrintBalancedTree(benchmark::State& state) {
     int next = 0;
-    ex e = balanced(static_cast<int>(state.range(0)), next);
-    std::size_t chars = 0;
-    for (auto _ : state) {
-        std::string s = alembert::to_string(e);
-        chars = s.size();
-        benchmark::DoNotOptimize(s);
-    }
-    report(state, e, chars);
+    time_printing(state, balanced(static_cast<int>(state.range(0)), next));
 }
 BENCHMARK(BM_PrintBalancedTree)->DenseRange(8, 18, 2)->Unit(benchmark::kMillisecond);
 
