@@ -4,10 +4,12 @@
 
 #include <algorithm>
 #include <limits>
+#include <memory>
 
 #include "alembert/error.hpp"
 #include "alembert/sym/print.hpp"
 #include "alembert/sym/simplify.hpp"
+#include "free_body_rows.hpp"
 #include "zero_test.hpp"
 
 namespace alembert {
@@ -26,8 +28,44 @@ struct Plan {
     Motion motion = Motion::rotate;
     Vector u;
     const Point* O = nullptr;
+    std::shared_ptr<Point> own;  // O when it is no point of the model
     std::string note;
 };
+
+// the position of P from N_o, or false when P was never located
+bool position_of(const System& sys, const Point& P, Vector& r) {
+    try {
+        r = P.pos_from(sys.origin());
+        return true;
+    } catch (const ModelError&) {
+        return false;
+    }
+}
+
+// The instantaneous centre of S's motion when only q changes: the point whose partial
+// velocity is zero, r^{IC/cm} = w x v / (w . w) for the partial angular velocity w and the
+// mass centre's partial velocity v (planar motion: v normal to w). A point of the model there
+// stands for it (a point of S first: a rolling disk's contact point); else a point IC_q.
+void locate_instantaneous_centre(const System& sys, const TimeVariable& q, const Body& B,
+                                 const Vector& w, const Vector& v, Plan& p) {
+    Vector r_cm;
+    if (!position_of(sys, B.cm(), r_cm) ||
+        !detail::is_zero_at_random_states(sys.symbols(), dot(w, v)))
+        return;
+    const Vector r = r_cm + cross(w, v) / dot(w, w);
+    for (int pass = 0; pass < 2 && !p.O; ++pass)
+        for (const Point* P : sys.points()) {
+            const bool on_S = P->owner() && std::find(p.S.begin(), p.S.end(), P->owner()) != p.S.end();
+            Vector rp;
+            if (on_S != (pass == 0) || !position_of(sys, *P, rp) || !zero(sys, rp - r)) continue;
+            p.O = P;
+            break;
+        }
+    if (p.O) return;
+    p.own = std::make_shared<Point>("IC_" + q.name());
+    p.own->set_pos(sys.origin(), r);
+    p.O = p.own.get();
+}
 
 Plan plan_coordinate(const System& sys, const TimeVariable& q) {
     const Frame& N = sys.newtonian();
@@ -75,6 +113,11 @@ Plan plan_coordinate(const System& sys, const TimeVariable& q) {
             break;
         }
     }
+    // none: the instantaneous centre, where workless contact forces pass (not with declared
+    // constraints, whose forces do work when q alone changes)
+    if (!p.O && sys.constraints().empty())
+        locate_instantaneous_centre(sys, q, *p.S[static_cast<std::size_t>(turning - pw.begin())],
+                                    w0, pv[static_cast<std::size_t>(turning - pw.begin())], p);
     if (!p.O) {
         p.note = "no point of S stays fixed when only " + q.name() +
                  " changes; no about point eliminates the constraint forces";
@@ -315,8 +358,13 @@ std::vector<RoadmapRow> plan_roadmap(const System& sys,
             shared.push_back(x);
     }
     const std::size_t n_rows = coordinates.size() + constraint_rows.size();
+    std::vector<Plan> plans;
+    for (const TimeVariable& q : coordinates) plans.push_back(plan_coordinate(sys, q));
+    // why the rows of the coordinates and constraints alone do not serve (then the free-body
+    // rows of what carries the unknown loads are searched too)
+    std::string refusal;
     if (shared.size() > n_rows)
-        throw ModelError(
+        refusal = (
             "plan_roadmap(): " + std::to_string(shared.size()) + " unknowns but only " +
             std::to_string(coordinates.size()) + " coordinates and " +
             std::to_string(constraint_rows.size()) + " constraint rows" +
@@ -326,72 +374,111 @@ std::vector<RoadmapRow> plan_roadmap(const System& sys,
             "; each row determines one unknown, so declare fewer unknowns, declare "
             "the model's constraints, or declare constraint forces as joint "
             "reactions (System::add_joint_reaction, the reaction statement)");
-    std::vector<Plan> plans;
-    for (const TimeVariable& q : coordinates) plans.push_back(plan_coordinate(sys, q));
 
-    // a statics-style equation per coordinate, to see which load measures it holds
-    std::vector<ex> probe(n_rows);
-    for (std::size_t i = 0; i < coordinates.size(); ++i) {
-        if (plans[i].S.empty() || (plans[i].motion == Motion::rotate && !plans[i].O)) continue;
-        RoadmapRow r{.variable = coordinates[i].symbol(), .motion = plans[i].motion,
-                     .direction = plans[i].u, .system = plans[i].S, .about = plans[i].O,
-                     .analysis = Analysis::statics};
-        probe[i] = form_roadmap_equation(sys, r);
-    }
-    for (std::size_t c = 0; c < constraint_rows.size(); ++c)
-        probe[coordinates.size() + c] = constraint_rows[c].equation;
-
-    // each unknown to its own row: a coordinate (or its derivative) to its coordinate's row,
-    // else a row whose equation holds it, preferring rows with the fewest other unknowns,
-    // and keeping earlier coordinates in their own rows when a constraint row must take one
-    // (the constraint rows then read as the equations of the dependent coordinates)
     const std::size_t n = shared.size();
-    // which unknowns each probe holds: an index built once (one pass over each probe's DAG),
-    // not a scan of the whole probe for every pair of unknown and row
-    std::vector<GiNaC::exset> held(n_rows);
-    std::vector<std::size_t> n_held(n_rows, 0);
-    for (std::size_t i = 0; i < n_rows; ++i) {
-        if (probe[i].is_zero()) continue;
-        const GiNaC::exset syms = symbols_of(probe[i]);
-        for (const ex& x : shared)
-            if (syms.count(x)) held[i].insert(x), ++n_held[i];
-    }
-    std::vector<std::vector<double>> cost(n, std::vector<double>(n_rows, kInfeasible));
-    for (std::size_t k = 0; k < n; ++k) {
+    std::vector<int> row_of;
+    if (refusal.empty()) {
+        // a statics-style equation per coordinate, to see which load measures it holds
+        std::vector<ex> probe(n_rows);
+        for (std::size_t i = 0; i < coordinates.size(); ++i) {
+            if (plans[i].S.empty() || (plans[i].motion == Motion::rotate && !plans[i].O)) continue;
+            RoadmapRow r{.variable = coordinates[i].symbol(), .motion = plans[i].motion,
+                         .direction = plans[i].u, .system = plans[i].S, .about = plans[i].O,
+                         .analysis = Analysis::statics};
+            probe[i] = form_roadmap_equation(sys, r);
+        }
+        for (std::size_t c = 0; c < constraint_rows.size(); ++c)
+            probe[coordinates.size() + c] = constraint_rows[c].equation;
+
+        // each unknown to its own row: a coordinate (or its derivative) to its coordinate's row,
+        // else a row whose equation holds it, preferring rows with the fewest other unknowns,
+        // and keeping earlier coordinates in their own rows when a constraint row must take one
+        // (the constraint rows then read as the equations of the dependent coordinates)
+        // which unknowns each probe holds: an index built once (one pass over each probe's DAG),
+        // not a scan of the whole probe for every pair of unknown and row
+        std::vector<GiNaC::exset> held(n_rows);
+        std::vector<std::size_t> n_held(n_rows, 0);
         for (std::size_t i = 0; i < n_rows; ++i) {
-            bool own = false;
-            if (i < coordinates.size())
-                for (int d = 0; d <= coordinates[i].order(); ++d)
-                    if (shared[k].is_equal(coordinates[i].d(d))) own = true;
-            if (own) {
-                cost[k][i] = 0;
-                continue;
+            if (probe[i].is_zero()) continue;
+            const GiNaC::exset syms = symbols_of(probe[i]);
+            for (const ex& x : shared)
+                if (syms.count(x)) held[i].insert(x), ++n_held[i];
+        }
+        std::vector<std::vector<double>> cost(n, std::vector<double>(n_rows, kInfeasible));
+        for (std::size_t k = 0; k < n; ++k) {
+            for (std::size_t i = 0; i < n_rows; ++i) {
+                bool own = false;
+                if (i < coordinates.size())
+                    for (int d = 0; d <= coordinates[i].order(); ++d)
+                        if (shared[k].is_equal(coordinates[i].d(d))) own = true;
+                if (own) {
+                    cost[k][i] = 0;
+                    continue;
+                }
+                if (!held[i].count(shared[k])) continue;
+                const double others = static_cast<double>(n_held[i] - 1);
+                cost[k][i] = 1 + others + (i >= coordinates.size()
+                                               ? 0.5 * static_cast<double>(n - k) / static_cast<double>(n + 1)
+                                               : 0);
             }
-            if (!held[i].count(shared[k])) continue;
-            const double others = static_cast<double>(n_held[i] - 1);
-            cost[k][i] = 1 + others + (i >= coordinates.size()
-                                           ? 0.5 * static_cast<double>(n - k) / static_cast<double>(n + 1)
-                                           : 0);
+        }
+        row_of = n ? assign_min_cost(cost) : std::vector<int>{};
+        if (n && row_of.empty()) {
+            // name an unknown no row can hold, or say that they compete
+            for (std::size_t k = 0; k < n && refusal.empty(); ++k)
+                if (std::all_of(cost[k].begin(), cost[k].end(), [](double c) { return c >= kInfeasible; }))
+                    refusal = "plan_roadmap(): no road-map row holds the unknown '" +
+                              to_string(shared[k]) +
+                              "'; check that it acts on a body that moves, or that it is not "
+                              "internal to every system the planner found";
+            if (refusal.empty())
+                refusal = "plan_roadmap(): the unknowns " + list_text(shared) +
+                          " cannot each be given a row of their own (too many of them appear "
+                          "only in the same rows); declare the model's constraints or fewer "
+                          "unknowns";
+        }
+        for (std::size_t k = 0; k < row_of.size() && refusal.empty(); ++k) {
+            const std::size_t i = static_cast<std::size_t>(row_of[k]);
+            if (i < coordinates.size() && plans[i].motion == Motion::rotate && !plans[i].O)
+                refusal = "plan_roadmap(): " + plans[i].note + " (unknown '" + to_string(shared[k]) + "')";
         }
     }
-    std::vector<int> row_of = n ? assign_min_cost(cost) : std::vector<int>{};
-    if (n && row_of.empty()) {
-        // name an unknown no row can hold, or say that they compete
-        for (std::size_t k = 0; k < n; ++k)
-            if (std::all_of(cost[k].begin(), cost[k].end(), [](double c) { return c >= kInfeasible; }))
-                throw ModelError("plan_roadmap(): no road-map row holds the unknown '" +
-                                 to_string(shared[k]) +
-                                 "'; check that it acts on a body that moves, or that it is not "
-                                 "internal to every system the planner found");
-        throw ModelError("plan_roadmap(): the unknowns " + list_text(shared) +
-                         " cannot each be given a row of their own (too many of them appear "
-                         "only in the same rows); declare the model's constraints or fewer "
-                         "unknowns");
+
+    // the free-body rows: contact forces as unknowns in minimal coordinates (the road-map's
+    // column 4: release the contact along u, S is what would move), about points chosen so
+    // that each row holds as few unknowns as possible
+    const bool free_body = !refusal.empty();
+    std::vector<RoadmapRow> free_rows;
+    if (free_body) {
+        std::vector<detail::FixedRow> fixed;
+        for (std::size_t i = 0; i < coordinates.size(); ++i) {
+            const Plan& p = plans[i];
+            if (p.S.empty() || (p.motion == Motion::rotate && !p.O) || !p.note.empty()) continue;
+            RoadmapRow r{.variable = ex(), .motion = p.motion, .direction = p.u, .system = p.S,
+                         .about = p.O, .analysis = analysis};
+            r.about_owned = p.own;
+            r.equation = form_roadmap_equation(sys, r);
+            fixed.push_back({std::move(r), static_cast<int>(i)});
+        }
+        for (const RoadmapRow& r : constraint_rows)
+            fixed.push_back({r, detail::FixedRow::kAnyCoordinate});
+        try {
+            free_rows = detail::plan_free_body_rows(sys, coordinates, fixed, shared, unknowns, analysis);
+        } catch (const ModelError& e) {
+            throw ModelError(refusal + ". Free-body rows of the bodies the unknown loads act on: " +
+                             e.what() +
+                             " (declare each contact force on the body it acts on, with its "
+                             "measure an unknown, or fewer unknowns)");
+        }
     }
 
     // the rows, in the order of the unknowns
     std::vector<RoadmapRow> rows;
     std::vector<bool> reaction_row;
+    for (RoadmapRow& r : free_rows) {
+        rows.push_back(std::move(r));
+        reaction_row.push_back(false);
+    }
     std::size_t k = 0;
     for (const ex& x : unknowns) {
         if (const JointReaction* jr = sys.reaction_of(x)) {
@@ -410,6 +497,7 @@ std::vector<RoadmapRow> plan_roadmap(const System& sys,
             reaction_row.push_back(true);
             continue;
         }
+        if (free_body) continue;  // its row is among the free-body rows
         const std::size_t i = static_cast<std::size_t>(row_of[k++]);
         reaction_row.push_back(false);
         if (i >= coordinates.size()) {
@@ -431,6 +519,7 @@ std::vector<RoadmapRow> plan_roadmap(const System& sys,
                      .system = p.S,
                      .about = p.O,
                      .analysis = analysis};
+        r.about_owned = p.own;
         r.note = p.note;
         form_roadmap_row(sys, r, unknowns);
         rows.push_back(std::move(r));
@@ -455,7 +544,7 @@ std::vector<RoadmapRow> plan_roadmap(const System& sys,
         for (std::size_t i : block) {
             RoadmapRow& r = rows[i];
             if (r.motion == Motion::constraint || !r.note.empty()) continue;
-            if (has_reaction && block.size() > 1) {
+            if ((has_reaction || free_body) && block.size() > 1) {
                 // a block of rows with reaction measures: name the rows it is solved with
                 std::vector<ex> with;
                 for (std::size_t j : block)
@@ -463,7 +552,7 @@ std::vector<RoadmapRow> plan_roadmap(const System& sys,
                 r.note = "solve together with the rows of " + list_text(with);
                 continue;
             }
-            if (reaction_row[i]) continue;
+            if (reaction_row[i] || free_body) continue;  // the others are solved before
             // the load measures left (other accelerations in a row are expected: they couple)
             std::vector<ex> loads;
             for (const ex& x : r.additional_unknowns)
@@ -477,7 +566,7 @@ std::vector<RoadmapRow> plan_roadmap(const System& sys,
     }
     // with reaction measures, the rows in the order of solution; without, in the order of the
     // unknowns, as callers that pair row k with unknown k expect
-    if (n_reactions == 0) return rows;
+    if (n_reactions == 0 && !free_body) return rows;
     std::vector<RoadmapRow> ordered;
     for (const std::vector<std::size_t>& block : blocks)
         for (std::size_t i : block) ordered.push_back(std::move(rows[i]));

@@ -10,6 +10,7 @@
 #include "alembert/error.hpp"
 #include "alembert/sym/print.hpp"
 #include "alembert/sym/simplify.hpp"
+#include "free_body_rows.hpp"
 #include "zero_test.hpp"
 
 namespace alembert {
@@ -95,15 +96,17 @@ std::vector<std::string> describe_free_body_diagram(const System& sys, const Bod
         for (std::size_t i = 0; i < S.size(); ++i) g += (i ? ", " : " ") + S[i]->cm().name();
         out.push_back(g);
     }
-    // joints: points of S located from a point that is not on S carry unknown contact loads
-    // (a declared reaction's measures, listed above, stand for them)
+    // joints: points of S that are points of a body outside S too (located from one at an
+    // offset fixed in it: a pin, a weld) carry unknown contact loads; a point placed at an
+    // offset that changes with the coordinates (a disk's centre, a cart on a rail, a rod's
+    // foot on the floor) is no joint (a declared reaction's measures, listed above, stand for
+    // a joint's force)
     for (const Point* p : sys.points()) {
-        if (!member(S, p->owner()) || !p->located_from()) continue;
-        const Point* from = p->located_from();
-        if (member(S, from->owner()) || sys.find_joint_reaction(*p, from->owner(), p->owner()))
-            continue;
-        out.push_back("joint force at " + p->name() + " from " +
-                      body_or_ground(sys, from->owner()) + " (unknown)");
+        const Body* from = nullptr;
+        if (!member(S, p->owner()) || !detail::joined_at(sys, *p, &from)) continue;
+        if (member(S, from) || sys.find_joint_reaction(*p, from, p->owner())) continue;
+        out.push_back("joint force at " + p->name() + " from " + body_or_ground(sys, from) +
+                      " (unknown)");
     }
     return out;
 }

@@ -457,9 +457,10 @@ TEST(Report, AtNamesCoordinatesOnly) {
 TEST(Report, AModelThePlannerCannotPlanGetsANoteInsteadOfARoadmap) {
     TempDir dir;
     Script r(dir.path);
-    // a pendulum hung from nowhere: no point of A is fixed, so no about point removes the pivot
+    // a body on a helix (turning about Nz> while its centre rises along it): no point of A is
+    // fixed, and its motion is a screw, so it has no instantaneous centre either
     r.run("newtonian N\nbody A\nvariable q'\nconstant L = 1 m, m = 1 kg, I = 1 kg*m^2, g = 9.81 m/s^2\n"
-          "rotate A from N about z by q\ntranslate Acm from N_o by L*Ay>\nmass A = m\ninertia A = 0, 0, I\n"
+          "rotate A from N about z by q\ntranslate Acm from N_o by L*Ay> + q*L*Nz>\nmass A = m\ninertia A = 0, 0, I\n"
           "gravity -g*Ny>\nreport\n");
     std::ifstream in(dir.path / "index.html");
     std::stringstream page;

@@ -2,6 +2,7 @@
 // MG road-map rows: one equation per unknown from a chosen system, direction and point.
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -37,6 +38,11 @@ struct RoadmapRow {
     std::vector<std::string> fbd{};       ///< the free-body diagram of S: loads from outside
     std::vector<ex> additional_unknowns{};  ///< unknowns in E other than `variable`
     std::string note{};                   ///< the planner's remarks (empty when all is well)
+
+    /// An about point off the bodies the planner located for this row (the instantaneous
+    /// centre of S's motion, the intersection of two unknown forces' lines of action);
+    /// `about` points to it. Null when O is a point of the model.
+    std::shared_ptr<const Point> about_owned{};
 };
 
 /// The residual E of a row (see RoadmapRow for the formula and sign).
