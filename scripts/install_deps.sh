@@ -2,7 +2,8 @@
 # Installs the Debian packages Alembert needs, only those that are missing.
 # Usage: install_deps.sh [example|test]
 #   example: what building the `alembert` command and running the examples need
-#   test (default): that, plus what the test suite and CI need (GoogleTest, Google Benchmark,
+#   test (default): that, plus what the test suite and CI need (SUNDIALS for the bdf
+#            integrator, whose Debian package brings MPI, PETSc and gfortran; GoogleTest, Google Benchmark,
 #            clang for the sanitizer pass and fuzzing, Python's NumPy and SciPy for the
 #            generated Python, Chromium for the report's browser test, LaTeX for roadmap.tex)
 set -euo pipefail
@@ -17,13 +18,13 @@ packages=(
   build-essential cmake pkg-config
   libginac-dev libcln-dev libeigen3-dev
   libboost-dev libfmt-dev libcli11-dev libedit-dev
-  libsundials-dev              # the bdf integrator (SUNDIALS CVODE)
   gnuplot-nox                  # the plots simulate and inverse draw
   libjs-katex                  # HTML reports typeset their equations with KaTeX (inlined)
   libjs-three                  # HTML reports show motion in 3D with three.js (inlined)
 )
 if [[ $profile == test ]]; then
   packages+=(
+    libsundials-dev              # the bdf integrator (SUNDIALS CVODE; optional in a build)
     libgtest-dev libgmock-dev googletest libbenchmark-dev
     clang libclang-rt-14-dev     # the sanitizer pass builds the fuzz target (docs/fuzzing.md)
     python3-numpy python3-scipy  # the tests run the generated Python

@@ -679,6 +679,11 @@ void run_integrator_choice(Interpreter::Impl& m, const Statement& s) {
                           "choose dopri5 (the default), rkf78 or bulirsch_stoer (tight tolerances), "
                           "or bdf (stiff models): integrator rkf78");
     }
+    if (!integrator_available(m.numbers.options.integrator))
+        throw ScriptError(w.location,
+                          "this alembert was built without SUNDIALS CVODE, which is the bdf integrator",
+                          "install it and build again (Debian: apt-get install libsundials-dev, or "
+                          "bash scripts/install_deps.sh test), or choose dopri5, rkf78 or bulirsch_stoer");
 }
 
 // output step h, or columns: expr [in unit], name = expr [in unit], ...

@@ -1,5 +1,11 @@
 // SPDX-License-Identifier: MIT
 // The BDF integrator: SUNDIALS CVODE stepping one step at a time, with its dense output.
+// Built without SUNDIALS (src/sim/CMakeLists.txt), asking for it says how to get it.
+#include "dense_stepper.hpp"
+
+#include "alembert/error.hpp"
+
+#if ALEMBERT_HAVE_SUNDIALS
 #include <cvode/cvode.h>
 #include <nvector/nvector_serial.h>
 #include <sundials/sundials_context.h>
@@ -10,9 +16,6 @@
 #include <exception>
 #include <stdexcept>
 #include <string>
-
-#include "alembert/error.hpp"
-#include "dense_stepper.hpp"
 
 namespace alembert::detail {
 
@@ -132,8 +135,27 @@ private:
 
 }  // namespace
 
+bool have_cvode() { return true; }
+
 std::unique_ptr<DenseStepper> make_cvode_bdf_stepper(double abs_tol, double rel_tol, OdeRhs f) {
     return std::make_unique<CvodeBdf>(abs_tol, rel_tol, std::move(f));
 }
 
 }  // namespace alembert::detail
+
+#else
+
+namespace alembert::detail {
+
+bool have_cvode() { return false; }
+
+std::unique_ptr<DenseStepper> make_cvode_bdf_stepper(double, double, OdeRhs) {
+    throw ArgumentError(
+        "the bdf integrator is SUNDIALS CVODE, and this build of Alembert was made without it: "
+        "install it (Debian: apt-get install libsundials-dev, or bash scripts/install_deps.sh "
+        "test) and build again, or choose dopri5, rkf78 or bulirsch_stoer");
+}
+
+}  // namespace alembert::detail
+
+#endif

@@ -41,6 +41,10 @@ std::unique_ptr<DenseStepper> make_dense_stepper(Integrator method, double abs_t
                                                  double rel_tol, OdeRhs f);
 
 /// The CVODE BDF stepper (cvode_stepper.cpp).
+/// @throws alembert::ArgumentError, saying how to get SUNDIALS, in a build without it.
 std::unique_ptr<DenseStepper> make_cvode_bdf_stepper(double abs_tol, double rel_tol, OdeRhs f);
+
+/// Whether this build has SUNDIALS CVODE (the bdf integrator).
+bool have_cvode();
 
 }  // namespace alembert::detail

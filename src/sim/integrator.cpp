@@ -29,6 +29,10 @@ Integrator parse_integrator(std::string_view name) {
                         "'; choose one of " + list);
 }
 
+bool integrator_available(Integrator method) {
+    return method != Integrator::bdf || detail::have_cvode();
+}
+
 namespace detail {
 
 namespace {

@@ -36,6 +36,10 @@ std::string_view to_string(Integrator method);
 /// Every method's name, in the order of the enumeration.
 const std::vector<std::string>& integrator_names();
 
+/// Whether this build of Alembert has `method`: every method but bdf always; bdf where it was
+/// built with SUNDIALS CVODE (ALEMBERT_WITH_SUNDIALS, docs/building.md).
+bool integrator_available(Integrator method);
+
 /// The method named `name` (see to_string).
 /// @throws alembert::ArgumentError listing the names if `name` is none of them.
 Integrator parse_integrator(std::string_view name);
