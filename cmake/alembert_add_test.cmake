@@ -2,12 +2,16 @@ include_guard(GLOBAL)
 include(GoogleTest)
 include(${CMAKE_CURRENT_LIST_DIR}/alembert_warnings.cmake)
 
-# alembert_add_test(<name> SOURCES <files...> [LIBS <targets...>] [LABELS <labels...>])
+# alembert_add_test(<name> SOURCES <files...> [LIBS <targets...>] [LABELS <labels...>]
+#                   [LARGE <gtest filter>])
 # Builds test_<name> against GTest::gtest_main, LIBS and alembert_test_support,
 # and registers its test cases with CTest. LABELS defaults to the name of the
-# current source directory (sym, vec, mech, ...).
+# current source directory (sym, vec, mech, ...). The test cases LARGE matches (a
+# --gtest_filter pattern, e.g. "WhippleBicycle.*:BicycleScript.*") also get the label
+# `large`: models that take seconds here and minutes under the sanitizers, whose code paths
+# smaller models of the same kind cover (the sanitizer pass of scripts/test.sh leaves them out).
 function(alembert_add_test name)
-  cmake_parse_arguments(PARSE_ARGV 1 ARG "" "" "SOURCES;LIBS;LABELS")
+  cmake_parse_arguments(PARSE_ARGV 1 ARG "" "LARGE" "SOURCES;LIBS;LABELS")
   if(NOT ARG_LABELS)
     get_filename_component(ARG_LABELS ${CMAKE_CURRENT_SOURCE_DIR} NAME)
   endif()
@@ -15,7 +19,18 @@ function(alembert_add_test name)
   add_executable(${target} ${ARG_SOURCES})
   target_link_libraries(${target} PRIVATE GTest::gtest_main ${ARG_LIBS} alembert_test_support)
   alembert_set_warnings(${target})
-  gtest_discover_tests(${target}
-    DISCOVERY_TIMEOUT 60
-    PROPERTIES LABELS "${ARG_LABELS}")
+  if(ARG_LARGE)
+    gtest_discover_tests(${target}
+      DISCOVERY_TIMEOUT 60
+      TEST_FILTER "-${ARG_LARGE}"
+      PROPERTIES LABELS "${ARG_LABELS}")
+    gtest_discover_tests(${target}
+      DISCOVERY_TIMEOUT 60
+      TEST_FILTER "${ARG_LARGE}"
+      PROPERTIES LABELS "${ARG_LABELS};large")
+  else()
+    gtest_discover_tests(${target}
+      DISCOVERY_TIMEOUT 60
+      PROPERTIES LABELS "${ARG_LABELS}")
+  endif()
 endfunction()
