@@ -15,6 +15,8 @@ import sys
 import tempfile
 import zlib
 
+from report_examples import FEATURES
+
 failures = []
 # headless Chromium draws WebGL (the 3D view) in software; saying so keeps its console quiet
 WEBGL = ["--enable-unsafe-swiftshader"]
@@ -291,13 +293,15 @@ def three_d(cli, source, work, browser):
 
 
 def examples(cli, source, work, browser):
-    """Every example's report: written, drawn without errors, one free-body diagram per
-    road-map row with an arrow per load on S, every equation typeset, plots and animation
-    where the script computed histories, a screenshot that is not blank."""
+    """One example's report per feature (report_examples.FEATURES; main() opens the
+    sit-to-stand page): written, drawn without errors, one free-body diagram per road-map row
+    with an arrow per load on S, every equation typeset, plots and animation where the script
+    computed histories, a screenshot that is not blank."""
     import time
     folder = os.path.join(source, "examples")
-    for name in sorted(os.listdir(folder)):
+    for name in sorted(n for n in FEATURES if n != "sit_to_stand"):
         model = os.path.join(folder, name, "model.alb")
+        check(os.path.isfile(model), "%s (%s): the example is there" % (name, FEATURES[name]))
         if not os.path.isfile(model):
             continue
         out = os.path.join(work, "examples", name)

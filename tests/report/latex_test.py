@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: MIT
-"""LaTeX out for every example: `alembert report MODEL` writes roadmap.tex beside the page, with
+"""LaTeX out for one example per feature of a report (report_examples.py): `alembert report MODEL` writes roadmap.tex beside the page, with
 the road-map table (a line per row), a TikZ free-body diagram per row that has one (an arrow
 per load on S, as many as the HTML report draws), every row's equation and the document's end;
 where pdflatex is installed (Debian's texlive-latex-base and texlive-pictures;
@@ -15,6 +15,8 @@ import re
 import shutil
 import subprocess
 import sys
+
+from report_examples import FEATURES
 
 failures = []
 
@@ -36,8 +38,9 @@ def main():
               "checking the documents' structure only")
     folder = os.path.join(source, "examples")
     alone_checked = False
-    for name in sorted(os.listdir(folder)):
+    for name in sorted(FEATURES):
         model = os.path.join(folder, name, "model.alb")
+        check(os.path.isfile(model), "%s (%s): the example is there" % (name, FEATURES[name]))
         if not os.path.isfile(model):
             continue
         out = os.path.join(work, name)
