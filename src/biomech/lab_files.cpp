@@ -154,17 +154,20 @@ MarkerTable read_trc(const std::string& path) {
                                     std::to_string(result.markers.size()) +
                                     " markers' X, Y, Z; remove the extra cells or name the marker");
         double t = 0;
-        if (cells.size() < 2 || !parse_number(cells[1], t) || std::isnan(t))
+        if (cells.size() < 2 || !parse_number(cells[1], t) || !std::isfinite(t))
             fail(path, line_no, "the time cell '" + (cells.size() > 1 ? cells[1] : "") +
-                                    "' is not a number; each row starts with frame and time");
+                                    "' is not a finite number; each row starts with frame and time");
         table.columns[0].push_back(t);
         for (std::size_t c = 2; c < cells_max; ++c) {
             double v = kMissing;
-            if (c < cells.size() && !cells[c].empty() && !parse_number(cells[c], v)) {
+            // an infinite coordinate is refused here, where its marker and row are known
+            // (NaN, as some exporters write a gap, is a gap)
+            if (c < cells.size() && !cells[c].empty() &&
+                (!parse_number(cells[c], v) || std::isinf(v))) {
                 const std::size_t m = (c - 2) / 3;
                 fail(path, line_no, "marker '" + result.markers[m] + "' " + "XYZ"[(c - 2) % 3] +
                                         ": '" + cells[c] +
-                                        "' is not a number; leave the cell empty where the "
+                                        "' is not a finite number; leave the cell empty where the "
                                         "marker was not seen");
             }
             table.columns[c - 1].push_back(v * unit.factor);
