@@ -535,8 +535,8 @@ Value Interpreter::Impl::eval_call(const Expr& e) {
                 throw ScriptError(e.location,
                                   f + "(): expanding the expression would form up to " + n.str() +
                                       " terms, more than the limit of " + std::to_string(max_terms),
-                                  "factor or split the expression, or raise the limit with --max-terms "
-                                  "(Interpreter::set_max_terms)");
+                                  "factor or split the expression, or raise the limit with --max-terms N "
+                                  "(alembert run --max-terms N script.alb)");
             }
             return f == "simplify" ? alembert::simplify(s) : GiNaC::expand(s);
         };

@@ -279,6 +279,11 @@ struct Interpreter::Impl {
     auto guard(Location where, F&& f, const std::string& hint = "") -> decltype(f());
 };
 
+/// A library error's message as a script's user reads it: C++ function prefixes
+/// ("Frame::orient_axis(): ") dropped, API advice ("call A.set_inertia(...)") written as the
+/// statement to write ("inertia A = Ixx, Iyy, Izz"), option names as their statements.
+std::string in_script_words(const std::string& library_message);
+
 /// What a kind of name is, for messages: "a frame", "a rigid body", ...
 const char* kind_word(NameKind k);
 /// " (line N)": where a name was declared, for messages.
@@ -296,9 +301,9 @@ auto Interpreter::Impl::guard(Location where, F&& f, const std::string& hint) ->
     } catch (const InternalError&) {
         throw;
     } catch (const Error& e) {
-        throw ScriptError(where, e.what(), hint);
+        throw ScriptError(where, in_script_words(e.what()), hint);
     } catch (const std::exception& e) {
-        throw ScriptError(where, std::string("the computation failed: ") + e.what(),
+        throw ScriptError(where, "the computation failed: " + in_script_words(e.what()),
                           "check for a division by zero or a singular configuration at this point");
     }
 }

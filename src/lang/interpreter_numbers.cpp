@@ -438,9 +438,16 @@ void Interpreter::Impl::simulate(const Statement& s) {
     std::string why_not;
     const Evaluation evaluation = evaluation_of(s);
     r.make = function_maker(evaluation, &why_not);
-    SimulationResult res = guard(s.location, [&] { return run_simulation(sys, r); },
-                                 "check the initial values and the loads; a singular mass matrix "
-                                 "means the coordinates do not fix the model's configuration");
+    // the hint is for a failed solve; other errors carry their own fix
+    SimulationResult res = guard(s.location, [&] {
+        try {
+            return run_simulation(sys, r);
+        } catch (const SolveError& e) {
+            throw ScriptError(s.location, in_script_words(e.what()),
+                              "check the initial values and the loads; a singular mass matrix "
+                              "means the coordinates do not fix the model's configuration");
+        }
+    });
     PlotOptions plot_options = plot_options_of(s, res.table.names);
     PlotResult plot = guard(s.location, [&] { return write_table_and_plot(res.table, dir, "simulation", plot_options); });
     record_history("simulation", res.table, nullptr);
@@ -527,8 +534,16 @@ void Interpreter::Impl::run_inverse(const InverseRequest& r, Location where) {
     // force plates: their records give the plate symbols' values at each time
     std::shared_ptr<PlateInputs> plate_data = plate_inputs();
     if (plate_data) make = with_plate_inputs(make, plate_data);
-    InverseDynamics id = guard(where, [&] { return compile_inverse_dynamics(sys, q, r.loads, script_name, make); },
-                               "list as many load measures as the model has coordinates, one acting at each joint");
+    // the hint is for a count of load measures that does not match the equations
+    InverseDynamics id = guard(where, [&] {
+        try {
+            return compile_inverse_dynamics(sys, q, r.loads, script_name, make);
+        } catch (const ArgumentError& e) {
+            if (std::string(e.what()).find(" equations for ") == std::string::npos) throw;
+            throw ScriptError(where, in_script_words(e.what()),
+                              "list as many load measures as the model has coordinates, one acting at each joint");
+        }
+    });
     InverseAnalysisOptions opts;
     {
         Statement plot;  // the `plot` clause against the load measures' columns
