@@ -113,6 +113,15 @@ struct ScriptPlate {
     PlateSymbols symbols{};
 };
 
+/// A load along the line between two points (`spring`, `damper`, `attraction`): its direction
+/// is P - Q over its length, undefined where the points coincide.
+struct ScriptLineLoad {
+    std::string kind{};  ///< the statement's keyword
+    Word label{};
+    const Point* P = nullptr;
+    const Point* Q = nullptr;
+};
+
 /// Code generation: from a `codegen` statement or `alembert codegen`.
 struct CodegenRequest {
     Word language{};
@@ -156,6 +165,7 @@ struct Interpreter::Impl {
     std::size_t print_limit = kDefaultPrintLimit;  ///< larger equations go to a file, abbreviated
     std::vector<ScriptMarker> markers{};  ///< `marker` statements, in order
     std::vector<ScriptPlate> plates{};    ///< `plate` statements, in order
+    std::vector<ScriptLineLoad> line_loads{};  ///< `spring`, `damper`, `attraction`, in order
     /// Where each frame was oriented (the `rotate` statement's target): a frame has one
     /// orientation, and a second `rotate` of it is refused rather than replacing the first.
     std::map<const Frame*, Word> oriented{};
@@ -210,6 +220,9 @@ struct Interpreter::Impl {
     ex quantity_expression(const Quantity& q, const Dimension& expected, const std::string& what);
     bool is_coordinate(const ex& x, int order);
     std::string output_path(const Statement& s) const;
+    /// Refuses a spring, damper or attraction whose end points coincide at the initial state
+    /// (`at`: every coordinate and speed, t): its direction is 0/0 there.
+    void check_line_loads_apart(const exmap& at, const std::vector<TimeVariable>& q) const;
     std::string input_path(const std::string& written) const;
     /// How statement `s` evaluates: its `compiled` or `tape` clause, else the run's default.
     Evaluation evaluation_of(const Statement& s) const;

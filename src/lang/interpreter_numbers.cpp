@@ -162,6 +162,35 @@ std::string Interpreter::Impl::evaluator_note(Evaluation e, const std::string& w
     return e == Evaluation::compiled ? "evaluated by compiled C code" : "";
 }
 
+void Interpreter::Impl::check_line_loads_apart(const exmap& at, const std::vector<TimeVariable>& q) const {
+    const System& m = *sys;
+    for (const ScriptLineLoad& l : line_loads) {
+        const Vector r = l.P->pos_from(*l.Q);
+        double length = 0;
+        try {
+            length = std::sqrt(m.symbols().evaluate(dot(r, r), at));
+        } catch (const Error&) {
+            continue;  // a value missing: the run names it
+        }
+        if (length != 0) continue;
+        std::string state;
+        for (int k = 0; k < 2; ++k)
+            for (const TimeVariable& v : q) {
+                auto it = at.find(v.d(k));
+                if (it == at.end() || !GiNaC::is_a<GiNaC::numeric>(it->second)) continue;
+                state += (state.empty() ? "" : ", ") + m.symbols().name(v.d(k)) + " = " +
+                         transcript.number(GiNaC::ex_to<GiNaC::numeric>(it->second).to_double());
+            }
+        throw ScriptError(l.label.location,
+                          "the " + l.kind + " '" + l.label.text + "' joins " + l.P->name() + " and " + l.Q->name() +
+                              ", which coincide at the start (" + state +
+                              "): the direction of its force, from one end to the other, is undefined there",
+                          "start with its ends apart (initial values that separate " + l.P->name() + " and " +
+                              l.Q->name() + "), or, if it acts along a fixed line, write its force instead: force " +
+                              l.label.text + " on " + l.P->name() + " = ... along that line");
+    }
+}
+
 // ---- settings ----------------------------------------------------------------------------
 
 ex Interpreter::Impl::quantity_expression(const Quantity& q, const Dimension& expected,
@@ -434,6 +463,12 @@ void Interpreter::Impl::simulate(const Statement& s) {
                                             [&](const std::string& n) { return symbol_dimension(n); });
         if (d.known && !d.is_none()) r.constraint_units[c.name] = si_unit(d);
     }
+    // a spring, damper or attraction between coincident points has no direction at the start
+    exmap at{{table.time(), r.options.t_initial}};
+    for (const TimeVariable& v : r.coordinates)
+        for (int k = 0; k < 2; ++k) at[v.d(k)] = 0;
+    for (const auto& [x, value] : r.initial_values) at[x] = value;
+    check_line_loads_apart(at, r.coordinates);
     r.options.progress = isatty(STDERR_FILENO) != 0;
     std::string why_not;
     const Evaluation evaluation = evaluation_of(s);
