@@ -138,6 +138,18 @@ MarkerCoordinates Interpreter::Impl::coordinates_from_markers(const std::string&
     }
     // the trial: read, gaps filled, coordinates from the segments' angles
     MarkerTable trial = read_trc(path);
+    // every marker the script declares is in the file, under the same name
+    for (const ScriptMarker& k : markers) {
+        if (std::find(trial.markers.begin(), trial.markers.end(), k.name.text) != trial.markers.end()) continue;
+        std::string list;
+        for (const std::string& name : trial.markers) list += (list.empty() ? "" : ", ") + name;
+        throw ScriptError(k.name.location,
+                          "the marker '" + k.name.text + "' is not in the marker file '" + path +
+                              "' (read by the statement at line " + std::to_string(where.line) +
+                              "); the file's markers are: " + list,
+                          "name the marker as the file does (marker " + trial.markers.front() + " on " + k.body +
+                              " at " + k.point + "), or remove this marker statement");
+    }
     const TimeBaseReport base = regularize_time_base(trial.table, 0, path);
     if (spatial) return spatial_coordinates_from_markers(trial, base, q, where, note);
     const MarkerCoordinates mc = calc_coordinates_from_markers(sys.symbols(), q, model_markers, trial);
