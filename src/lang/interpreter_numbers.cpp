@@ -199,9 +199,22 @@ ex Interpreter::Impl::quantity_expression(const Quantity& q, const Dimension& ex
     if (v.kind != Kind::scalar)
         throw ScriptError(q.value->location, what + " must be a scalar", "take a measure with dot(v>, Nx>)");
     if (q.unit.empty()) {
-        if (v.dim.conflicts(expected) && !v.s.is_zero())
+        if (v.dim.conflicts(expected) && !v.s.is_zero()) {
+            // a bare number wants a unit; an expression of the wrong dimension, a factor
+            std::string hint = "check the units of the quantities in it";
+            if (v.dim.is_none() && expected.known && !expected.is_none())
+                hint = "give the number a unit, e.g. " +
+                       (GiNaC::is_a<GiNaC::numeric>(v.s)
+                            ? transcript.number(GiNaC::ex_to<GiNaC::numeric>(v.s).to_double()) + " "
+                            : std::string("(...) ")) +
+                       si_unit(expected);
+            else if (expected.is_none() && v.dim.known)
+                hint = "it must have no unit: multiply it by a constant declared in " +
+                       si_unit(Dimension::none() / v.dim) + " (or divide it by one in " + si_unit(v.dim) +
+                       ") so that the units cancel";
             throw ScriptError(q.value->location, what + " must be " + describe(expected) + ", but it is " + describe(v.dim),
-                              expected.known ? "give the number a unit, e.g. " + si_unit(expected) : "check the units");
+                              hint);
+        }
         return v.s;
     }
     Unit u = parse_unit(q.unit);
@@ -733,12 +746,17 @@ void run_integrator_choice(Interpreter::Impl& m, const Statement& s) {
 
 // output step h, or columns: expr [in unit], name = expr [in unit], ...
 void parse_output(StatementParser& p, Statement& s) {
-    if (p.at_word("step") && p.peek(1).kind == TokenKind::number) {
+    // a number after step or limit, signed or not, is the setting (its sign is checked where it runs)
+    auto number_follows = [&] {
+        return p.peek(1).kind == TokenKind::number ||
+               ((p.peek(1).is("-") || p.peek(1).is("+")) && p.peek(2).kind == TokenKind::number);
+    };
+    if (p.at_word("step") && number_follows()) {
         p.next();
         s.quantities["step"] = p.quantity();
         return;
     }
-    if (p.at_word("limit") && p.peek(1).kind == TokenKind::number) {
+    if (p.at_word("limit") && number_follows()) {
         p.next();
         s.quantities["limit"] = p.quantity();
         return;
