@@ -92,8 +92,8 @@ MarkerTable read_trc(const std::string& path) {
     auto header_number = [&](const std::string& key) {
         double v = 0;
         std::string text = header_value(key);
-        if (!parse_number(text, v) || !(v > 0))
-            fail(path, 3, "the header's " + key + " is '" + text + "'; it must be a positive number");
+        if (!parse_number(text, v) || !(v > 0) || !std::isfinite(v))
+            fail(path, 3, "the header's " + key + " is '" + text + "'; it must be a positive, finite number");
         return v;
     };
     MarkerTable result;
@@ -250,8 +250,8 @@ StorageFile read_storage(const std::string& path) {
                                     std::to_string(labels.size()) + " column labels; give every column a value");
         for (std::size_t c = 0; c < cells.size(); ++c) {
             double v = 0;
-            if (!parse_number(cells[c], v))
-                fail(path, line_no, "column '" + labels[c] + "': '" + cells[c] + "' is not a number");
+            if (!parse_number(cells[c], v) || std::isinf(v))
+                fail(path, line_no, "column '" + labels[c] + "': '" + cells[c] + "' is not a finite number");
             table.columns[c].push_back(v);
         }
         table.lines.push_back(line_no);

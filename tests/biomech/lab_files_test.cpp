@@ -91,6 +91,13 @@ TEST(ReadTrc, AnInfiniteCellIsRefusedAtItsMarkerAndLine) {
     std::ofstream(time) << head << "2\tinf\t1\t2\t3\t4\t5\t6\n3\t0.02\t1\t2\t3\t4\t5\t6\n";
     EXPECT_THROW_MSG(read_trc(time.string()), ArgumentError,
                      "inf_time.trc:8: the time cell 'inf' is not a finite number");
+    // the header's numbers too: a DataRate of inf was read without a word
+    const fs::path rate = lab_scratch("inf_rate.trc");
+    std::string inf_head = head;
+    inf_head.replace(inf_head.find("100\t100\t3"), 3, "inf");
+    std::ofstream(rate) << inf_head << "2\t0.01\t1\t2\t3\t4\t5\t6\n";
+    EXPECT_THROW_MSG(read_trc(rate.string()), ArgumentError,
+                     "inf_rate.trc:3: the header's DataRate is 'inf'; it must be a positive, finite number");
 }
 
 TEST(ReadStorage, ReadsAnOpenSimMotionWithItsDegreesFlag) {
@@ -115,6 +122,11 @@ TEST(ReadStorage, MalformedHeadersAndRowsAreRefused) {
                      "wrong_columns.mot:7: 2 column labels, but the header says nColumns=3");
     EXPECT_THROW_MSG(read_storage(test::biomech_data("bad_degrees.sto")), ArgumentError,
                      "bad_degrees.sto:3: inDegrees is 'maybe'; write inDegrees=yes or inDegrees=no");
+    const fs::path inf = lab_scratch("inf_cell.sto");
+    std::ofstream(inf) << "Coordinates\nnRows=2\nnColumns=2\ninDegrees=no\nendheader\ntime\tq\n"
+                          "0\t1\n0.01\tinf\n";
+    EXPECT_THROW_MSG(read_storage(inf.string()), ArgumentError,
+                     "inf_cell.sto:8: column 'q': 'inf' is not a finite number");
     const fs::path p = lab_scratch("short_row.sto");
     std::ofstream(p) << "x\nendheader\ntime\ta\tb\n0\t1\t2\n0.1\t1\n";
     EXPECT_THROW_MSG(read_storage(p.string()), ArgumentError,
