@@ -297,6 +297,9 @@ struct Interpreter::Impl {
 /// statement to write ("inertia A = Ixx, Iyy, Izz"), option names as their statements.
 std::string in_script_words(const std::string& library_message);
 
+/// The hint for a unit of the wrong dimension: the units that fit, "write it in m/s^2 ...".
+std::string unit_of_dimension_hint(const Dimension& expected);
+
 /// What a kind of name is, for messages: "a frame", "a rigid body", ...
 const char* kind_word(NameKind k);
 /// " (line N)": where a name was declared, for messages.

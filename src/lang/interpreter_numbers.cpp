@@ -221,7 +221,7 @@ ex Interpreter::Impl::quantity_expression(const Quantity& q, const Dimension& ex
     if (u.dimension.conflicts(expected))
         throw ScriptError(q.unit.location, what + " must be " + describe(expected) + ", but " + u.text +
                                                " is " + describe(u.dimension),
-                          "write it in a unit of the declared dimension");
+                          unit_of_dimension_hint(expected));
     check_dimension(v.dim * u.dimension, expected, what, q.value->location);
     return v.s * u.scale;
 }

@@ -46,6 +46,15 @@ const std::vector<Rewrite>& script_rewrites() {
             {R"re(\(Frame::set_ang_vel\))re", "(angvel B in N = ...)"},
             {R"re(form it with form_constraint_row\(\))re", "form it with: row E for x constraint name"},
             {R"re(\bSymbolTable: )re", ""},
+            {R"re(the position of '(\w+)' from '(\w+)' is not defined; locate one from the other \(set_pos\), directly or through other points)re",
+             "the position of '$1' from '$2' is not defined; locate one from the other, directly or through other "
+             "points (translate $1 from $2 by ...)"},
+            {R"re(orient one relative to the other or to a common frame)re",
+             "orient one relative to the other or to a common frame (rotate ... from ...)"},
+            {R"re( and 0 dependent speeds \(\); name one dependent speed per constraint)re",
+             " and no dependent speeds; name one dependent speed per constraint (... constraints [...] dependent u2)"},
+            {R"re(; name one dependent speed per constraint$)re",
+             "; name one dependent speed per constraint (... constraints [...] dependent u2)"},
             {R"re('([^']+)' has no value; give it one \(constants: set_value\))re",
              "'$1' has no value; give it one after 'at', or, for a constant, where it is declared (constant $1 = ...)"},
             {R"re(orient '(\w+)' first)re", "orient '$1' first (rotate $1 from ... before this statement)"},
@@ -78,6 +87,11 @@ const std::vector<Rewrite>& script_rewrites() {
 }  // namespace
 
 std::string in_script_words(const std::string& library_message) {
+    // the words to rewrite open a message; a long one (a printed expression) keeps its tail
+    // as it is, which also keeps std::regex's recursive matcher off long inputs
+    constexpr std::size_t kHead = 4000;
+    if (library_message.size() > kHead)
+        return in_script_words(library_message.substr(0, kHead)) + library_message.substr(kHead);
     std::string s = library_message;
     // a derivative to declare: as many primes as its order, "variable w''"
     static const std::regex add_variable(
@@ -89,6 +103,14 @@ std::string in_script_words(const std::string& library_message) {
     }
     for (const Rewrite& r : script_rewrites()) s = std::regex_replace(s, r.pattern, r.replacement);
     return s;
+}
+
+std::string unit_of_dimension_hint(const Dimension& expected) {
+    if (!expected.known) return "check the units";
+    if (expected.is_none()) return "write it as an angle (rad, deg, rev) or as a plain number";
+    if (expected == Dimension::none() / Dimension::time())
+        return "write it as a rate: Hz or rpm (cycles), rad/s or deg/s";
+    return "write it in " + si_unit(expected) + " or another unit of " + describe(expected);
 }
 
 }  // namespace alembert::lang
