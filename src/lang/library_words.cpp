@@ -59,6 +59,12 @@ const std::vector<Rewrite>& script_rewrites() {
              "'$1' has no value; give it one after 'at', or, for a constant, where it is declared (constant $1 = ...)"},
             {R"re(orient '(\w+)' first)re", "orient '$1' first (rotate $1 from ... before this statement)"},
             {R"re(orient it relative to another frame first)re", "orient it first (rotate ... from ...)"},
+            {R"re(weigh every state in Q or choose other inputs)re",
+             "give every state a weight above 0 (lqr q1, ..., qn and r1, ...) or choose other inputs"},
+            {R"re(\); use a nonlinear solve)re", "); solve it from a guess (solve E for x guess x = ...)"},
+            {R"re(joint reactions \(System::add_joint_reaction, the reaction statement\))re",
+             "joint reactions (reaction pin between A and B at P force R along u)"},
+            {R"re(\b1 coordinates\b)re", "1 coordinate"},
             // sim: options a statement sets
             {R"re(\(SimulationOptions::max_output_rows; in a script, ([^)]*)\))re", "(raise it with: $1)"},
             {R"re( \(\w+Options::\w+\))re", ""},

@@ -3,6 +3,7 @@
 // marker a .trc file names, so a marker trial gives the model's coordinates.
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <sstream>
 
 #include "alembert/biomech/inverse_kinematics.hpp"
@@ -76,7 +77,11 @@ void run_plate(Interpreter::Impl& m, const Statement& s) {
         if (!(threshold >= 0) || !std::isfinite(threshold))
             throw ScriptError(q.value->location, "the contact threshold must be a force of 0 N or more", "");
     }
-    // the record
+    // the record: an OpenSim storage file, not a marker file
+    if (std::filesystem::path(file.text).extension() == ".trc")
+        throw ScriptError(file.location, "'" + file.text + "' is a marker file (.trc); a plate reads a force record",
+                          "give the force plate's OpenSim file (.mot or .sto); the markers drive the model through "
+                          "inverse for ... from \"" + file.text + "\"");
     ScriptPlate plate{label, {}, {}};
     plate.record = m.guard(file.location, [&] {
         return force_plate_from_table(read_storage(path).table, prefix, threshold);

@@ -261,11 +261,14 @@ LqrSolution solve_lqr(const Eigen::MatrixXd& A, const Eigen::MatrixXd& B, const 
     std::vector<Eigen::Index> stable;
     for (Eigen::Index i = 0; i < 2 * n; ++i) {
         const double re = es.eigenvalues()(i).real();
-        if (std::abs(re) <= tol)
-            throw SolveError("solve_lqr(): the Hamiltonian has the eigenvalue " + std::to_string(re) + " + " +
-                             std::to_string(es.eigenvalues()(i).imag()) +
-                             "i on the imaginary axis: a mode is not stabilisable by the inputs, or Q does "
-                             "not weigh an undamped mode; weigh every state in Q or choose other inputs");
+        if (std::abs(re) <= tol) {
+            std::ostringstream os;  // real part within tol of 0: printed as 0, not 0.000000 or -1e-17
+            os << "solve_lqr(): the Hamiltonian has the eigenvalue 0 " << (es.eigenvalues()(i).imag() < 0 ? "- " : "+ ")
+               << std::abs(es.eigenvalues()(i).imag())
+               << "i on the imaginary axis: a mode is not stabilisable by the inputs, or Q does "
+                  "not weigh an undamped mode; weigh every state in Q or choose other inputs";
+            throw SolveError(os.str());
+        }
         if (re < 0) stable.push_back(i);
     }
     if (static_cast<Eigen::Index>(stable.size()) != n)
