@@ -333,9 +333,14 @@ void Interpreter::Impl::add_outputs(const Statement& s) {
         const Expr& e = *exprs[i];
         std::string name = labels[i].text;
         if (name.empty()) {
-            if (e.kind != Expr::Kind::name)
+            if (e.kind != Expr::Kind::name) {
+                // a vector first: a name would not make it a column
+                if (eval(e).kind == Kind::vector)
+                    throw ScriptError(e.location, "an output is a scalar or a matrix",
+                                      "take a measure with dot(v>, Nx>) and name the column: output v_x = dot(v>, Nx>)");
                 throw ScriptError(e.location, "this output needs a column name",
                                   "name it: output height = dot(pos(Ccm, N_o), Ny>) in m");
+            }
             name = e.text;
         } else if (is_reserved(name)) {
             throw ScriptError(labels[i].location, "'" + name + "' is a word of the language", "choose another column name");

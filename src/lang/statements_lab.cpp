@@ -155,6 +155,17 @@ MarkerCoordinates Interpreter::Impl::coordinates_from_markers(const std::string&
                           "name the marker as the file does (marker " + trial.markers.front() + " on " + k.body +
                               " at " + k.point + "), or remove this marker statement");
     }
+    // each marker's point is fixed in its body: a segment's angle comes from two such points
+    for (const ScriptMarker& k : markers) {
+        const RigidBody& B = sys.rigid_body(k.body);
+        const bool fixed = sys.point(k.point).pos_from(B.cm()).dt_in(B.body_frame()).simplify().is_zero();
+        if (!fixed)
+            throw ScriptError(k.name.location,
+                              "the marker '" + k.name.text + "' is at " + k.point + ", which moves relative to " + k.body +
+                                  ": a marker on " + k.body + " gives " + k.body + "'s angle only at a point fixed in it",
+                              "put the marker at a point of " + k.body + " (point P on " + k.body + "; translate P from " +
+                                  k.body + "_o by ...), or declare it on the body " + k.point + " is fixed in");
+    }
     const TimeBaseReport base = regularize_time_base(trial.table, 0, path);
     if (spatial) return spatial_coordinates_from_markers(trial, base, q, where, note);
     const MarkerCoordinates mc = calc_coordinates_from_markers(sys.symbols(), q, model_markers, trial);
