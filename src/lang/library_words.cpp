@@ -65,6 +65,8 @@ const std::vector<Rewrite>& script_rewrites() {
             {R"re(joint reactions \(System::add_joint_reaction, the reaction statement\))re",
              "joint reactions (reaction pin between A and B at P force R along u)"},
             {R"re(\b1 coordinates\b)re", "1 coordinate"},
+            {R"re(fill it in the capture software, raise the largest gap, or trim the trial)re",
+             "fill it in the capture software, or trim the trial (a script fills gaps of up to 0.1 s)"},
             // sim: options a statement sets
             {R"re(\(SimulationOptions::max_output_rows; in a script, ([^)]*)\))re", "(raise it with: $1)"},
             {R"re( \(\w+Options::\w+\))re", ""},
