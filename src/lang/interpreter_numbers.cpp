@@ -300,20 +300,32 @@ void Interpreter::Impl::set_prescribed_motion(const Statement& s) {
 }
 
 void Interpreter::Impl::set_times_and_tolerances(const Statement& s) {
-    auto positive = [&](const std::string& role, const Dimension& d, const std::string& what) {
+    auto positive = [&](const std::string& role, const Dimension& d, const std::string& what,
+                        const std::string& example) {
         const Quantity& q = s.quantities.at(role);
         double x = number_of(q, d, what, q.value->location);
         if (!(x > 0) || !std::isfinite(x))
-            throw ScriptError(q.value->location, what + " must be positive, not " + format_number(x), "");
+            throw ScriptError(q.value->location, what + " must be positive, not " + format_number(x),
+                              "write " + example);
         return x;
     };
-    if (s.keyword == "final") numbers.options.t_final = positive("time", Dimension::time(), "the final time");
+    if (s.keyword == "final")
+        numbers.options.t_final = positive("time", Dimension::time(), "the final time", "final time 5 s");
     if (s.quantities.count("step"))
-        numbers.options.output_step = positive("step", Dimension::time(), "the output step");
+        numbers.options.output_step = positive("step", Dimension::time(), "the output step", "output step 0.01 s");
     if (s.quantities.count("abs"))
-        numbers.options.abs_tol = positive("abs", Dimension::open(), "the absolute tolerance");
-    if (s.quantities.count("rel"))
-        numbers.options.rel_tol = positive("rel", Dimension::open(), "the relative tolerance");
+        numbers.options.abs_tol = positive("abs", Dimension::open(), "the absolute tolerance", "tolerance abs 1e-10");
+    if (s.quantities.count("rel")) {
+        numbers.options.rel_tol = positive("rel", Dimension::open(), "the relative tolerance", "tolerance rel 1e-10");
+        // a fraction of each state's size: 1 or more lets every step pass, whatever its error
+        if (!(numbers.options.rel_tol < 1)) {
+            const Quantity& q = s.quantities.at("rel");
+            throw ScriptError(q.value->location,
+                              "the relative tolerance must be below 1, not " + format_number(numbers.options.rel_tol) +
+                                  ": it is the error allowed per step as a fraction of each state's size",
+                              "write tolerance rel 1e-10 (the default is 1e-8)");
+        }
+    }
     if (s.quantities.count("limit")) {
         const Quantity& q = s.quantities.at("limit");
         double n = number_of(q, Dimension::none(), "the row limit", q.value->location);

@@ -134,7 +134,16 @@ TEST(ScriptMessages, ANegativeOutputStepIsTheOutputStepNotAColumn) {
     const std::string e =
         error_of(kMessagesPendulum + "inertia A = 0, 0, 1 kg*m^2\noutput step -0.1 s\nsimulate plot none\n");
     EXPECT_NE(e.find("error: the output step must be positive, not -0.1"), std::string::npos) << e;
+    EXPECT_NE(e.find("hint: write output step 0.01 s\n"), std::string::npos) << e;
     EXPECT_EQ(e.find("column name"), std::string::npos) << e;
+}
+
+TEST(ScriptMessages, ARelativeToleranceOfOneOrMoreIsRefused) {
+    // 5 let every step pass whatever its error: a pendulum's q(5 s) came out -6.64 rad, not -3.17,
+    // with exit status 0
+    const std::string e = error_of(kMessagesPendulum + "inertia A = 0, 0, 1 kg*m^2\ntolerance rel 5\n");
+    EXPECT_NE(e.find("error: the relative tolerance must be below 1, not 5"), std::string::npos) << e;
+    EXPECT_NE(e.find("hint: write tolerance rel 1e-10 (the default is 1e-8)\n"), std::string::npos) << e;
 }
 
 TEST(ScriptMessages, AMarkerMissingFromTheFileIsNamedWithTheFile) {
