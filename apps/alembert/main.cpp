@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cmath>
 #include <csignal>
 #include <cstdio>
 #include <cstdlib>
@@ -58,6 +59,14 @@ bool read_script(const std::string& path, std::string& text) {
             std::cerr << "alembert: '" << path << "' is a directory, not a script\n";
             return false;
         }
+        // a lab or motion file given where the script goes: say what reads it
+        const std::string ext = std::filesystem::path(path).extension().string();
+        if (ext == ".trc" || ext == ".mot" || ext == ".sto" || ext == ".csv") {
+            std::cerr << "alembert: '" << path << "' is a data file (" << ext
+                      << "), not a script; a script reads it: inverse for T_A from \"" << path
+                      << "\" (or alembert inverse SCRIPT --motion " << path << ")\n";
+            return false;
+        }
         file.open(path, std::ios::binary);
         if (!file) {
             std::cerr << "alembert: cannot open '" << path << "': " << std::strerror(errno) << "\n";
@@ -108,6 +117,43 @@ bool check_output_dir(const std::string& dir) {
     return true;
 }
 
+// a count of 1 or more, said in words (CLI::PositiveNumber prints the range of a double,
+// 0.000000 to 1.8e308 written out in 309 digits)
+CLI::Validator count_of_one_or_more() {
+    return CLI::Validator(
+        [](std::string& text) -> std::string {
+            std::size_t used = 0;
+            unsigned long long n = 0;
+            try {
+                n = std::stoull(text, &used);
+            } catch (const std::exception&) {
+                used = 0;
+            }
+            if (used == 0 || used != text.size() || text[0] == '-' || n < 1)
+                return "'" + text + "' is not a count: give a whole number, 1 or more (e.g. 100000)";
+            return "";
+        },
+        "COUNT >= 1");
+}
+
+// a number of 0 or more, said in words (CLI::NonNegativeNumber prints a 309-digit range)
+CLI::Validator number_of_zero_or_more() {
+    return CLI::Validator(
+        [](std::string& text) -> std::string {
+            std::size_t used = 0;
+            double x = -1;
+            try {
+                x = std::stod(text, &used);
+            } catch (const std::exception&) {
+                used = 0;
+            }
+            if (used == 0 || used != text.size() || !(x >= 0) || !std::isfinite(x))
+                return "'" + text + "' is not a number of 0 or more (e.g. 6)";
+            return "";
+        },
+        "NUMBER >= 0");
+}
+
 // the settings run, inverse and codegen share
 struct LimitOptions {
     bool allow_outside_out = false;
@@ -120,12 +166,12 @@ void add_limit_options(CLI::App& c, LimitOptions& o) {
                "let a script's 'to \"dir\"' name an absolute path or leave --out through '..'");
     c.add_option("--max-terms", o.max_terms,
                  "largest expansion expand() and simplify() may form (default 100000)")
-        ->check(CLI::PositiveNumber);
+        ->check(count_of_one_or_more());
     c.add_option("--print-limit", o.print_limit,
                  "equations of more operations than this go to NAME.txt in --out, abbreviated "
                  "(numbered intermediates, short lines), and the transcript summarises them "
                  "(default 20000)")
-        ->check(CLI::PositiveNumber);
+        ->check(count_of_one_or_more());
 }
 
 void apply(const LimitOptions& o, Interpreter& interp) {
@@ -527,7 +573,7 @@ int main(int argc, char** argv) {
              c.add_option("--out", inverse_opts.out, "directory for torques.csv, .png and .svg")->required();
              c.add_option("--cutoff", inverse_opts.cutoff_hz,
                           "low-pass Butterworth cutoff in Hz before differentiating (0: no filter; default 6)")
-                 ->check(CLI::NonNegativeNumber);
+                 ->check(number_of_zero_or_more());
              CLI::Option* compiled = c.add_flag("--compiled", inverse_opts.compiled,
                                                 "evaluate through compiled C code and say so (the default where a "
                                                 "C compiler is found, cached)");

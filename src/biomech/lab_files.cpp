@@ -92,8 +92,8 @@ MarkerTable read_trc(const std::string& path) {
     auto header_number = [&](const std::string& key) {
         double v = 0;
         std::string text = header_value(key);
-        if (!parse_number(text, v) || !(v > 0))
-            fail(path, 3, "the header's " + key + " is '" + text + "'; it must be a positive number");
+        if (!parse_number(text, v) || !(v > 0) || !std::isfinite(v))
+            fail(path, 3, "the header's " + key + " is '" + text + "'; it must be a positive, finite number");
         return v;
     };
     MarkerTable result;
@@ -154,17 +154,20 @@ MarkerTable read_trc(const std::string& path) {
                                     std::to_string(result.markers.size()) +
                                     " markers' X, Y, Z; remove the extra cells or name the marker");
         double t = 0;
-        if (cells.size() < 2 || !parse_number(cells[1], t) || std::isnan(t))
+        if (cells.size() < 2 || !parse_number(cells[1], t) || !std::isfinite(t))
             fail(path, line_no, "the time cell '" + (cells.size() > 1 ? cells[1] : "") +
-                                    "' is not a number; each row starts with frame and time");
+                                    "' is not a finite number; each row starts with frame and time");
         table.columns[0].push_back(t);
         for (std::size_t c = 2; c < cells_max; ++c) {
             double v = kMissing;
-            if (c < cells.size() && !cells[c].empty() && !parse_number(cells[c], v)) {
+            // an infinite coordinate is refused here, where its marker and row are known
+            // (NaN, as some exporters write a gap, is a gap)
+            if (c < cells.size() && !cells[c].empty() &&
+                (!parse_number(cells[c], v) || std::isinf(v))) {
                 const std::size_t m = (c - 2) / 3;
                 fail(path, line_no, "marker '" + result.markers[m] + "' " + "XYZ"[(c - 2) % 3] +
                                         ": '" + cells[c] +
-                                        "' is not a number; leave the cell empty where the "
+                                        "' is not a finite number; leave the cell empty where the "
                                         "marker was not seen");
             }
             table.columns[c - 1].push_back(v * unit.factor);
@@ -247,8 +250,8 @@ StorageFile read_storage(const std::string& path) {
                                     std::to_string(labels.size()) + " column labels; give every column a value");
         for (std::size_t c = 0; c < cells.size(); ++c) {
             double v = 0;
-            if (!parse_number(cells[c], v))
-                fail(path, line_no, "column '" + labels[c] + "': '" + cells[c] + "' is not a number");
+            if (!parse_number(cells[c], v) || std::isinf(v))
+                fail(path, line_no, "column '" + labels[c] + "': '" + cells[c] + "' is not a finite number");
             table.columns[c].push_back(v);
         }
         table.lines.push_back(line_no);

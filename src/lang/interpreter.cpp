@@ -230,6 +230,12 @@ void Interpreter::Impl::undeclared(const Word& w, const std::string& wanted) con
         throw ScriptError(w.location, "'" + w.text + "' is not declared: " + base +
                                           " has fewer derivatives",
                           "declare it with more primes, e.g. variable " + base + "''");
+    // a unit where a name stands: a unit in parentheses, or a unit without its number
+    if (find_unit(w.text))
+        throw ScriptError(w.location,
+                          "'" + w.text + "' is not declared; it is a unit, but a unit goes right after its number",
+                          "for the unit, write the units after the number without parentheses: 1 m^3/kg/s^2, "
+                          "not 1 m^3/(kg*s^2); for a name, declare " + wanted + " first");
     throw ScriptError(w.location, "'" + w.text + "' is not declared",
                       "declare " + wanted + " first (docs/language.md, Declarations)");
 }
@@ -361,7 +367,7 @@ double Interpreter::Impl::number_of(const Quantity& q, const Dimension& expected
         if (d.conflicts(expected))
             throw ScriptError(q.unit.location, what + " must be " + describe(expected) + ", but " +
                                                    u.text + " is " + describe(d),
-                              "write it in a unit of the declared dimension");
+                              unit_of_dimension_hint(expected));
     }
     if (got) *got = d;
     (void)where;

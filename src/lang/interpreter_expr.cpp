@@ -66,9 +66,13 @@ Value matrix_value(int rows, int cols, std::vector<ex> entries, Dimension dim) {
 
 void Interpreter::Impl::check_dimension(const Dimension& got, const Dimension& expected,
                                         const std::string& what, Location where) const {
-    if (got.conflicts(expected))
-        throw ScriptError(where, what + " must be " + describe(expected) + ", but this is " + describe(got),
-                          "check the units of the quantities in it");
+    if (!got.conflicts(expected)) return;
+    // a bare number wants a unit; a quantity of another dimension, a factor
+    std::string hint = "check the units of the quantities in it";
+    if (got.is_none() && expected.known && !expected.is_none())
+        hint = "give its numbers units so that it comes out in " + si_unit(expected) + " (e.g. 2 " +
+               si_unit(expected) + ")";
+    throw ScriptError(where, what + " must be " + describe(expected) + ", but this is " + describe(got), hint);
 }
 
 ex Interpreter::Impl::scalar(const Expr& e, const Dimension& expected, const std::string& what) {
@@ -535,8 +539,8 @@ Value Interpreter::Impl::eval_call(const Expr& e) {
                 throw ScriptError(e.location,
                                   f + "(): expanding the expression would form up to " + n.str() +
                                       " terms, more than the limit of " + std::to_string(max_terms),
-                                  "factor or split the expression, or raise the limit with --max-terms "
-                                  "(Interpreter::set_max_terms)");
+                                  "factor or split the expression, or raise the limit with --max-terms N "
+                                  "(alembert run --max-terms N script.alb)");
             }
             return f == "simplify" ? alembert::simplify(s) : GiNaC::expand(s);
         };

@@ -113,6 +113,15 @@ struct ScriptPlate {
     PlateSymbols symbols{};
 };
 
+/// A load along the line between two points (`spring`, `damper`, `attraction`): its direction
+/// is P - Q over its length, undefined where the points coincide.
+struct ScriptLineLoad {
+    std::string kind{};  ///< the statement's keyword
+    Word label{};
+    const Point* P = nullptr;
+    const Point* Q = nullptr;
+};
+
 /// Code generation: from a `codegen` statement or `alembert codegen`.
 struct CodegenRequest {
     Word language{};
@@ -156,6 +165,7 @@ struct Interpreter::Impl {
     std::size_t print_limit = kDefaultPrintLimit;  ///< larger equations go to a file, abbreviated
     std::vector<ScriptMarker> markers{};  ///< `marker` statements, in order
     std::vector<ScriptPlate> plates{};    ///< `plate` statements, in order
+    std::vector<ScriptLineLoad> line_loads{};  ///< `spring`, `damper`, `attraction`, in order
     /// Where each frame was oriented (the `rotate` statement's target): a frame has one
     /// orientation, and a second `rotate` of it is refused rather than replacing the first.
     std::map<const Frame*, Word> oriented{};
@@ -210,6 +220,9 @@ struct Interpreter::Impl {
     ex quantity_expression(const Quantity& q, const Dimension& expected, const std::string& what);
     bool is_coordinate(const ex& x, int order);
     std::string output_path(const Statement& s) const;
+    /// Refuses a spring, damper or attraction whose end points coincide at the initial state
+    /// (`at`: every coordinate and speed, t): its direction is 0/0 there.
+    void check_line_loads_apart(const exmap& at, const std::vector<TimeVariable>& q) const;
     std::string input_path(const std::string& written) const;
     /// How statement `s` evaluates: its `compiled` or `tape` clause, else the run's default.
     Evaluation evaluation_of(const Statement& s) const;
@@ -279,6 +292,14 @@ struct Interpreter::Impl {
     auto guard(Location where, F&& f, const std::string& hint = "") -> decltype(f());
 };
 
+/// A library error's message as a script's user reads it: C++ function prefixes
+/// ("Frame::orient_axis(): ") dropped, API advice ("call A.set_inertia(...)") written as the
+/// statement to write ("inertia A = Ixx, Iyy, Izz"), option names as their statements.
+std::string in_script_words(const std::string& library_message);
+
+/// The hint for a unit of the wrong dimension: the units that fit, "write it in m/s^2 ...".
+std::string unit_of_dimension_hint(const Dimension& expected);
+
 /// What a kind of name is, for messages: "a frame", "a rigid body", ...
 const char* kind_word(NameKind k);
 /// " (line N)": where a name was declared, for messages.
@@ -296,9 +317,9 @@ auto Interpreter::Impl::guard(Location where, F&& f, const std::string& hint) ->
     } catch (const InternalError&) {
         throw;
     } catch (const Error& e) {
-        throw ScriptError(where, e.what(), hint);
+        throw ScriptError(where, in_script_words(e.what()), hint);
     } catch (const std::exception& e) {
-        throw ScriptError(where, std::string("the computation failed: ") + e.what(),
+        throw ScriptError(where, "the computation failed: " + in_script_words(e.what()),
                           "check for a division by zero or a singular configuration at this point");
     }
 }

@@ -162,6 +162,35 @@ std::string Interpreter::Impl::evaluator_note(Evaluation e, const std::string& w
     return e == Evaluation::compiled ? "evaluated by compiled C code" : "";
 }
 
+void Interpreter::Impl::check_line_loads_apart(const exmap& at, const std::vector<TimeVariable>& q) const {
+    const System& m = *sys;
+    for (const ScriptLineLoad& l : line_loads) {
+        const Vector r = l.P->pos_from(*l.Q);
+        double length = 0;
+        try {
+            length = std::sqrt(m.symbols().evaluate(dot(r, r), at));
+        } catch (const Error&) {
+            continue;  // a value missing: the run names it
+        }
+        if (length != 0) continue;
+        std::string state;
+        for (int k = 0; k < 2; ++k)
+            for (const TimeVariable& v : q) {
+                auto it = at.find(v.d(k));
+                if (it == at.end() || !GiNaC::is_a<GiNaC::numeric>(it->second)) continue;
+                state += (state.empty() ? "" : ", ") + m.symbols().name(v.d(k)) + " = " +
+                         transcript.number(GiNaC::ex_to<GiNaC::numeric>(it->second).to_double());
+            }
+        throw ScriptError(l.label.location,
+                          "the " + l.kind + " '" + l.label.text + "' joins " + l.P->name() + " and " + l.Q->name() +
+                              ", which coincide at the start (" + state +
+                              "): the direction of its force, from one end to the other, is undefined there",
+                          "start with its ends apart (initial values that separate " + l.P->name() + " and " +
+                              l.Q->name() + "), or, if it acts along a fixed line, write its force instead: force " +
+                              l.label.text + " on " + l.P->name() + " = ... along that line");
+    }
+}
+
 // ---- settings ----------------------------------------------------------------------------
 
 ex Interpreter::Impl::quantity_expression(const Quantity& q, const Dimension& expected,
@@ -170,16 +199,29 @@ ex Interpreter::Impl::quantity_expression(const Quantity& q, const Dimension& ex
     if (v.kind != Kind::scalar)
         throw ScriptError(q.value->location, what + " must be a scalar", "take a measure with dot(v>, Nx>)");
     if (q.unit.empty()) {
-        if (v.dim.conflicts(expected) && !v.s.is_zero())
+        if (v.dim.conflicts(expected) && !v.s.is_zero()) {
+            // a bare number wants a unit; an expression of the wrong dimension, a factor
+            std::string hint = "check the units of the quantities in it";
+            if (v.dim.is_none() && expected.known && !expected.is_none())
+                hint = "give the number a unit, e.g. " +
+                       (GiNaC::is_a<GiNaC::numeric>(v.s)
+                            ? transcript.number(GiNaC::ex_to<GiNaC::numeric>(v.s).to_double()) + " "
+                            : std::string("(...) ")) +
+                       si_unit(expected);
+            else if (expected.is_none() && v.dim.known)
+                hint = "it must have no unit: multiply it by a constant declared in " +
+                       si_unit(Dimension::none() / v.dim) + " (or divide it by one in " + si_unit(v.dim) +
+                       ") so that the units cancel";
             throw ScriptError(q.value->location, what + " must be " + describe(expected) + ", but it is " + describe(v.dim),
-                              expected.known ? "give the number a unit, e.g. " + si_unit(expected) : "check the units");
+                              hint);
+        }
         return v.s;
     }
     Unit u = parse_unit(q.unit);
     if (u.dimension.conflicts(expected))
         throw ScriptError(q.unit.location, what + " must be " + describe(expected) + ", but " + u.text +
                                                " is " + describe(u.dimension),
-                          "write it in a unit of the declared dimension");
+                          unit_of_dimension_hint(expected));
     check_dimension(v.dim * u.dimension, expected, what, q.value->location);
     return v.s * u.scale;
 }
@@ -258,20 +300,32 @@ void Interpreter::Impl::set_prescribed_motion(const Statement& s) {
 }
 
 void Interpreter::Impl::set_times_and_tolerances(const Statement& s) {
-    auto positive = [&](const std::string& role, const Dimension& d, const std::string& what) {
+    auto positive = [&](const std::string& role, const Dimension& d, const std::string& what,
+                        const std::string& example) {
         const Quantity& q = s.quantities.at(role);
         double x = number_of(q, d, what, q.value->location);
         if (!(x > 0) || !std::isfinite(x))
-            throw ScriptError(q.value->location, what + " must be positive, not " + format_number(x), "");
+            throw ScriptError(q.value->location, what + " must be positive, not " + format_number(x),
+                              "write " + example);
         return x;
     };
-    if (s.keyword == "final") numbers.options.t_final = positive("time", Dimension::time(), "the final time");
+    if (s.keyword == "final")
+        numbers.options.t_final = positive("time", Dimension::time(), "the final time", "final time 5 s");
     if (s.quantities.count("step"))
-        numbers.options.output_step = positive("step", Dimension::time(), "the output step");
+        numbers.options.output_step = positive("step", Dimension::time(), "the output step", "output step 0.01 s");
     if (s.quantities.count("abs"))
-        numbers.options.abs_tol = positive("abs", Dimension::open(), "the absolute tolerance");
-    if (s.quantities.count("rel"))
-        numbers.options.rel_tol = positive("rel", Dimension::open(), "the relative tolerance");
+        numbers.options.abs_tol = positive("abs", Dimension::open(), "the absolute tolerance", "tolerance abs 1e-10");
+    if (s.quantities.count("rel")) {
+        numbers.options.rel_tol = positive("rel", Dimension::open(), "the relative tolerance", "tolerance rel 1e-10");
+        // a fraction of each state's size: 1 or more lets every step pass, whatever its error
+        if (!(numbers.options.rel_tol < 1)) {
+            const Quantity& q = s.quantities.at("rel");
+            throw ScriptError(q.value->location,
+                              "the relative tolerance must be below 1, not " + format_number(numbers.options.rel_tol) +
+                                  ": it is the error allowed per step as a fraction of each state's size",
+                              "write tolerance rel 1e-10 (the default is 1e-8)");
+        }
+    }
     if (s.quantities.count("limit")) {
         const Quantity& q = s.quantities.at("limit");
         double n = number_of(q, Dimension::none(), "the row limit", q.value->location);
@@ -291,9 +345,14 @@ void Interpreter::Impl::add_outputs(const Statement& s) {
         const Expr& e = *exprs[i];
         std::string name = labels[i].text;
         if (name.empty()) {
-            if (e.kind != Expr::Kind::name)
+            if (e.kind != Expr::Kind::name) {
+                // a vector first: a name would not make it a column
+                if (eval(e).kind == Kind::vector)
+                    throw ScriptError(e.location, "an output is a scalar or a matrix",
+                                      "take a measure with dot(v>, Nx>) and name the column: output v_x = dot(v>, Nx>)");
                 throw ScriptError(e.location, "this output needs a column name",
                                   "name it: output height = dot(pos(Ccm, N_o), Ny>) in m");
+            }
             name = e.text;
         } else if (is_reserved(name)) {
             throw ScriptError(labels[i].location, "'" + name + "' is a word of the language", "choose another column name");
@@ -434,13 +493,26 @@ void Interpreter::Impl::simulate(const Statement& s) {
                                             [&](const std::string& n) { return symbol_dimension(n); });
         if (d.known && !d.is_none()) r.constraint_units[c.name] = si_unit(d);
     }
+    // a spring, damper or attraction between coincident points has no direction at the start
+    exmap at{{table.time(), r.options.t_initial}};
+    for (const TimeVariable& v : r.coordinates)
+        for (int k = 0; k < 2; ++k) at[v.d(k)] = 0;
+    for (const auto& [x, value] : r.initial_values) at[x] = value;
+    check_line_loads_apart(at, r.coordinates);
     r.options.progress = isatty(STDERR_FILENO) != 0;
     std::string why_not;
     const Evaluation evaluation = evaluation_of(s);
     r.make = function_maker(evaluation, &why_not);
-    SimulationResult res = guard(s.location, [&] { return run_simulation(sys, r); },
-                                 "check the initial values and the loads; a singular mass matrix "
-                                 "means the coordinates do not fix the model's configuration");
+    // the hint is for a failed solve; other errors carry their own fix
+    SimulationResult res = guard(s.location, [&] {
+        try {
+            return run_simulation(sys, r);
+        } catch (const SolveError& e) {
+            throw ScriptError(s.location, in_script_words(e.what()),
+                              "check the initial values and the loads; a singular mass matrix "
+                              "means the coordinates do not fix the model's configuration");
+        }
+    });
     PlotOptions plot_options = plot_options_of(s, res.table.names);
     PlotResult plot = guard(s.location, [&] { return write_table_and_plot(res.table, dir, "simulation", plot_options); });
     record_history("simulation", res.table, nullptr);
@@ -527,8 +599,16 @@ void Interpreter::Impl::run_inverse(const InverseRequest& r, Location where) {
     // force plates: their records give the plate symbols' values at each time
     std::shared_ptr<PlateInputs> plate_data = plate_inputs();
     if (plate_data) make = with_plate_inputs(make, plate_data);
-    InverseDynamics id = guard(where, [&] { return compile_inverse_dynamics(sys, q, r.loads, script_name, make); },
-                               "list as many load measures as the model has coordinates, one acting at each joint");
+    // the hint is for a count of load measures that does not match the equations
+    InverseDynamics id = guard(where, [&] {
+        try {
+            return compile_inverse_dynamics(sys, q, r.loads, script_name, make);
+        } catch (const ArgumentError& e) {
+            if (std::string(e.what()).find(" equations for ") == std::string::npos) throw;
+            throw ScriptError(where, in_script_words(e.what()),
+                              "list as many load measures as the model has coordinates, one acting at each joint");
+        }
+    });
     InverseAnalysisOptions opts;
     {
         Statement plot;  // the `plot` clause against the load measures' columns
@@ -688,12 +768,17 @@ void run_integrator_choice(Interpreter::Impl& m, const Statement& s) {
 
 // output step h, or columns: expr [in unit], name = expr [in unit], ...
 void parse_output(StatementParser& p, Statement& s) {
-    if (p.at_word("step") && p.peek(1).kind == TokenKind::number) {
+    // a number after step or limit, signed or not, is the setting (its sign is checked where it runs)
+    auto number_follows = [&] {
+        return p.peek(1).kind == TokenKind::number ||
+               ((p.peek(1).is("-") || p.peek(1).is("+")) && p.peek(2).kind == TokenKind::number);
+    };
+    if (p.at_word("step") && number_follows()) {
         p.next();
         s.quantities["step"] = p.quantity();
         return;
     }
-    if (p.at_word("limit") && p.peek(1).kind == TokenKind::number) {
+    if (p.at_word("limit") && number_follows()) {
         p.next();
         s.quantities["limit"] = p.quantity();
         return;

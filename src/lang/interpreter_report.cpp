@@ -62,7 +62,7 @@ std::string Interpreter::Impl::write_report_to(const std::string& dir, const exm
             c.rows = plan_roadmap(sys, c.coordinates, unknowns);
         } catch (const Error& e) {
             // the rest of the report stands without it
-            c.notes.push_back(std::string("No road-map: the script forms none and planning one failed: ") + e.what() +
+            c.notes.push_back(std::string("No road-map: the script forms none and planning one failed: ") + in_script_words(e.what()) +
                               "; form one in the script (roadmap E for ...) to see it here.");
         }
     }
@@ -95,13 +95,13 @@ std::string Interpreter::Impl::write_report_to(const std::string& dir, const exm
         try {
             c.methods = compare_methods(sys, c.coordinates);
         } catch (const Error& e) {
-            c.notes.push_back(std::string("The methods were not compared: ") + e.what());
+            c.notes.push_back(std::string("The methods were not compared: ") + in_script_words(e.what()));
         }
         if (!sys.joint_reactions().empty()) {
             try {
                 c.reactions = compare_reactions(sys, c.coordinates);
             } catch (const Error& e) {
-                c.notes.push_back(std::string("The joint reactions were not compared: ") + e.what());
+                c.notes.push_back(std::string("The joint reactions were not compared: ") + in_script_words(e.what()));
             }
         }
     }
@@ -110,7 +110,7 @@ std::string Interpreter::Impl::write_report_to(const std::string& dir, const exm
         try {
             c.matrices = form_forward_equations(sys, c.coordinates);
         } catch (const Error& e) {
-            c.notes.push_back(std::string("No mass matrix and forcing: ") + e.what());
+            c.notes.push_back(std::string("No mass matrix and forcing: ") + in_script_words(e.what()));
         }
     }
     if (settings.latex_only) return guard(where, [&] { return alembert::write_report_latex(c, dir); });

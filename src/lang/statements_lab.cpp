@@ -3,6 +3,7 @@
 // marker a .trc file names, so a marker trial gives the model's coordinates.
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <sstream>
 
 #include "alembert/biomech/inverse_kinematics.hpp"
@@ -76,7 +77,11 @@ void run_plate(Interpreter::Impl& m, const Statement& s) {
         if (!(threshold >= 0) || !std::isfinite(threshold))
             throw ScriptError(q.value->location, "the contact threshold must be a force of 0 N or more", "");
     }
-    // the record
+    // the record: an OpenSim storage file, not a marker file
+    if (std::filesystem::path(file.text).extension() == ".trc")
+        throw ScriptError(file.location, "'" + file.text + "' is a marker file (.trc); a plate reads a force record",
+                          "give the force plate's OpenSim file (.mot or .sto); the markers drive the model through "
+                          "inverse for ... from \"" + file.text + "\"");
     ScriptPlate plate{label, {}, {}};
     plate.record = m.guard(file.location, [&] {
         return force_plate_from_table(read_storage(path).table, prefix, threshold);
@@ -138,6 +143,29 @@ MarkerCoordinates Interpreter::Impl::coordinates_from_markers(const std::string&
     }
     // the trial: read, gaps filled, coordinates from the segments' angles
     MarkerTable trial = read_trc(path);
+    // every marker the script declares is in the file, under the same name
+    for (const ScriptMarker& k : markers) {
+        if (std::find(trial.markers.begin(), trial.markers.end(), k.name.text) != trial.markers.end()) continue;
+        std::string list;
+        for (const std::string& name : trial.markers) list += (list.empty() ? "" : ", ") + name;
+        throw ScriptError(k.name.location,
+                          "the marker '" + k.name.text + "' is not in the marker file '" + path +
+                              "' (read by the statement at line " + std::to_string(where.line) +
+                              "); the file's markers are: " + list,
+                          "name the marker as the file does (marker " + trial.markers.front() + " on " + k.body +
+                              " at " + k.point + "), or remove this marker statement");
+    }
+    // each marker's point is fixed in its body: a segment's angle comes from two such points
+    for (const ScriptMarker& k : markers) {
+        const RigidBody& B = sys.rigid_body(k.body);
+        const bool fixed = sys.point(k.point).pos_from(B.cm()).dt_in(B.body_frame()).simplify().is_zero();
+        if (!fixed)
+            throw ScriptError(k.name.location,
+                              "the marker '" + k.name.text + "' is at " + k.point + ", which moves relative to " + k.body +
+                                  ": a marker on " + k.body + " gives " + k.body + "'s angle only at a point fixed in it",
+                              "put the marker at a point of " + k.body + " (point P on " + k.body + "; translate P from " +
+                                  k.body + "_o by ...), or declare it on the body " + k.point + " is fixed in");
+    }
     const TimeBaseReport base = regularize_time_base(trial.table, 0, path);
     if (spatial) return spatial_coordinates_from_markers(trial, base, q, where, note);
     const MarkerCoordinates mc = calc_coordinates_from_markers(sys.symbols(), q, model_markers, trial);

@@ -202,6 +202,7 @@ void run_between(Interpreter::Impl& m, const Statement& s) {
         ex G = m.scalar(*s.exprs.at("constant"), pow(L, 3) / M / pow(T, 2), "a gravitational constant");
         m.guard(label.location, [&] { sys.add_inverse_square_gravity(P, Q, G, label.text); });
     }
+    m.line_loads.push_back({k, label, &P, &Q});
 }
 
 // ---- drag, friction ----------------------------------------------------------------------

@@ -5,8 +5,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <limits>
 #include <numeric>
+#include <sstream>
 #include <string>
 #include <utility>
 
@@ -118,6 +120,16 @@ Stability classify_stability(const std::vector<std::complex<double>>& values, do
     return on_axis ? Stability::marginal : Stability::asymptotically_stable;
 }
 
+namespace {
+
+// sigma_min / sigma_max of singular values sorted down; 0 for a zero or empty matrix
+double svd_reciprocal_condition(const Eigen::VectorXd& sigma) {
+    const Eigen::Index n = sigma.size();
+    return n == 0 || !(sigma(0) > 0) ? 0.0 : sigma(n - 1) / sigma(0);
+}
+
+}  // namespace
+
 Eigen::RowVectorXd place_poles(const Eigen::MatrixXd& A, const Eigen::VectorXd& b,
                                const std::vector<std::complex<double>>& poles) {
     const Eigen::Index n = A.rows();
@@ -163,13 +175,22 @@ Eigen::RowVectorXd place_poles(const Eigen::MatrixXd& A, const Eigen::VectorXd& 
         C.col(j) = col;
         col = A * col;
     }
+    // the reciprocal condition number from the singular values: LU's estimate of it is
+    // meaningless for a singular matrix (it reported 2.25 for one of rank 2 in 4)
+    const Eigen::VectorXd sigma = Eigen::JacobiSVD<Eigen::MatrixXd>(C).singularValues();
+    const double rcond = svd_reciprocal_condition(sigma);
+    if (!(rcond > 1e-12)) {
+        Eigen::Index rank = 0;
+        for (Eigen::Index i = 0; i < n; ++i)
+            if (sigma(i) > 1e-12 * sigma(0)) ++rank;
+        std::ostringstream os;
+        os << "place_poles(): the input cannot steer every state: the controllability matrix "
+              "[b, A b, ...] reaches "
+           << rank << " of the " << n << " states (reciprocal condition number " << std::setprecision(3)
+           << rcond << ", below 1e-12); choose an input that reaches every state, or fewer states";
+        throw SolveError(os.str());
+    }
     Eigen::FullPivLU<Eigen::MatrixXd> lu(C);
-    const double rcond = lu.rcond();
-    if (!lu.isInvertible() || !(rcond > 1e-12))
-        throw SolveError(
-            "place_poles(): the input cannot steer every state (the controllability "
-            "matrix [b, A b, ...] is singular: reciprocal condition " +
-            std::to_string(rcond) + "); choose an input that reaches every state, or fewer states");
     const Eigen::RowVectorXd last_row_of_inverse = lu.inverse().row(n - 1);
     return last_row_of_inverse * phi;
 }
@@ -240,11 +261,14 @@ LqrSolution solve_lqr(const Eigen::MatrixXd& A, const Eigen::MatrixXd& B, const 
     std::vector<Eigen::Index> stable;
     for (Eigen::Index i = 0; i < 2 * n; ++i) {
         const double re = es.eigenvalues()(i).real();
-        if (std::abs(re) <= tol)
-            throw SolveError("solve_lqr(): the Hamiltonian has the eigenvalue " + std::to_string(re) + " + " +
-                             std::to_string(es.eigenvalues()(i).imag()) +
-                             "i on the imaginary axis: a mode is not stabilisable by the inputs, or Q does "
-                             "not weigh an undamped mode; weigh every state in Q or choose other inputs");
+        if (std::abs(re) <= tol) {
+            std::ostringstream os;  // real part within tol of 0: printed as 0, not 0.000000 or -1e-17
+            os << "solve_lqr(): the Hamiltonian has the eigenvalue 0 " << (es.eigenvalues()(i).imag() < 0 ? "- " : "+ ")
+               << std::abs(es.eigenvalues()(i).imag())
+               << "i on the imaginary axis: a mode is not stabilisable by the inputs, or Q does "
+                  "not weigh an undamped mode; weigh every state in Q or choose other inputs";
+            throw SolveError(os.str());
+        }
         if (re < 0) stable.push_back(i);
     }
     if (static_cast<Eigen::Index>(stable.size()) != n)
@@ -256,9 +280,14 @@ LqrSolution solve_lqr(const Eigen::MatrixXd& A, const Eigen::MatrixXd& B, const 
         U2.col(j) = es.eigenvectors().col(stable[static_cast<std::size_t>(j)]).tail(n);
     }
     Eigen::FullPivLU<Eigen::MatrixXcd> lu(U1);
-    if (!lu.isInvertible() || !(lu.rcond() > 1e-12))
-        throw SolveError("solve_lqr(): the stable subspace does not determine P (U1 singular, reciprocal "
-                         "condition " + std::to_string(lu.rcond()) + "): (A, B) is not stabilisable");
+    // the condition number from the singular values (LU's estimate is meaningless when singular)
+    const double rcond_U1 = svd_reciprocal_condition(Eigen::JacobiSVD<Eigen::MatrixXcd>(U1).singularValues());
+    if (!lu.isInvertible() || !(rcond_U1 > 1e-12)) {
+        std::ostringstream os;
+        os << "solve_lqr(): the stable subspace does not determine P (U1 singular, reciprocal condition number "
+           << std::setprecision(3) << rcond_U1 << "): (A, B) is not stabilisable";
+        throw SolveError(os.str());
+    }
     Eigen::MatrixXd P = (U2 * lu.inverse()).real();
     P = (P + P.transpose()) / 2;
 

@@ -222,7 +222,10 @@ Table read_csv(const std::string& path) {
                 (errno == ERANGE && std::fabs(v) > 1) || !std::isfinite(v))
                 throw ArgumentError(where + "cell " + std::to_string(c + 1) + " ('" +
                                     table.names[c] + "') is '" + cells[c] +
-                                    "', not a finite number");
+                                    "', not a finite number" +
+                                    (cells[c].find_first_of(";\t") != std::string::npos
+                                         ? "; separate the columns with commas"
+                                         : ""));
             table.columns[c].push_back(v);
         }
         table.lines.push_back(line_no);

@@ -106,12 +106,15 @@ const Mat3& Frame::rotation_from_parent() const {
 }
 
 void Frame::set_ang_vel(const Frame& reference, const Vector& w) {
+    if (!parent_)
+        throw ArgumentError("Frame::set_ang_vel(): the angular velocity of '" + name_ +
+                            "' is set relative to the frame it is oriented from, and '" + name_ +
+                            "' is not oriented yet; orient '" + name_ + "' first");
     if (parent_ != &reference)
-        throw ArgumentError(
-            "Frame::set_ang_vel(): the angular velocity of '" + name_ + "' can be set in '" +
-            (parent_ ? parent_->name_ : std::string("(no frame)")) +
-            "', the frame it is oriented relative to, not in '" + reference.name_ + "'" +
-            (parent_ ? "" : "; orient '" + name_ + "' first"));
+        throw ArgumentError("Frame::set_ang_vel(): the angular velocity of '" + name_ +
+                            "' can be set in '" + parent_->name_ +
+                            "', the frame it is oriented relative to, not in '" + reference.name_ +
+                            "'");
     w_set_ = w;
     w_edge_cache_.reset();
     invalidate_kinematics();

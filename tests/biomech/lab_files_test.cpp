@@ -54,7 +54,7 @@ TEST(ReadTrc, ReadsMarkersInMetresWithMissingCellsAsNaN) {
 
 TEST(ReadTrc, MalformedFilesNameTheLineWhatAndFix) {
     EXPECT_THROW_MSG(read_trc(test::biomech_data("bad_cell.trc")), ArgumentError,
-                     "bad_cell.trc:8: marker 'HEEL' Y: 'abc' is not a number; leave the cell empty");
+                     "bad_cell.trc:8: marker 'HEEL' Y: 'abc' is not a finite number; leave the cell empty");
     EXPECT_THROW_MSG(read_trc(test::biomech_data("wrong_count.trc")), ArgumentError,
                      "wrong_count.trc:4: 2 marker names, but the header's NumMarkers says 3");
     EXPECT_THROW_MSG(read_trc(test::biomech_data("angle_units.trc")), ArgumentError,
@@ -73,6 +73,31 @@ TEST(ReadTrc, TimesGoingBackwardsAreRefusedAtTheirLine) {
                         "1\t0.01\t1\t2\t3\n2\t0.00\t1\t2\t3\n";
     EXPECT_THROW_MSG(read_trc(p.string()), ArgumentError,
                      "backwards.trc:8: time 0 does not come after 0.01");
+}
+
+TEST(ReadTrc, AnInfiniteCellIsRefusedAtItsMarkerAndLine) {
+    // an infinite coordinate once reached the fit, which then blamed another marker at the
+    // first sample; an infinite time was blamed on the row after it
+    const std::string head = "PathFileType\t4\t(X/Y/Z)\ti.trc\n"
+                             "DataRate\tCameraRate\tNumFrames\tNumMarkers\tUnits\n"
+                             "100\t100\t3\t2\tmm\n"
+                             "Frame#\tTime\tA\t\t\tB\t\t\n\t\tX1\tY1\tZ1\tX2\tY2\tZ2\n\n"
+                             "1\t0.00\t1\t2\t3\t4\t5\t6\n";
+    const fs::path cell = lab_scratch("inf_cell.trc");
+    std::ofstream(cell) << head << "2\t0.01\t1\t2\t3\tinf\t5\t6\n3\t0.02\t1\t2\t3\t4\t5\t6\n";
+    EXPECT_THROW_MSG(read_trc(cell.string()), ArgumentError,
+                     "inf_cell.trc:8: marker 'B' X: 'inf' is not a finite number");
+    const fs::path time = lab_scratch("inf_time.trc");
+    std::ofstream(time) << head << "2\tinf\t1\t2\t3\t4\t5\t6\n3\t0.02\t1\t2\t3\t4\t5\t6\n";
+    EXPECT_THROW_MSG(read_trc(time.string()), ArgumentError,
+                     "inf_time.trc:8: the time cell 'inf' is not a finite number");
+    // the header's numbers too: a DataRate of inf was read without a word
+    const fs::path rate = lab_scratch("inf_rate.trc");
+    std::string inf_head = head;
+    inf_head.replace(inf_head.find("100\t100\t3"), 3, "inf");
+    std::ofstream(rate) << inf_head << "2\t0.01\t1\t2\t3\t4\t5\t6\n";
+    EXPECT_THROW_MSG(read_trc(rate.string()), ArgumentError,
+                     "inf_rate.trc:3: the header's DataRate is 'inf'; it must be a positive, finite number");
 }
 
 TEST(ReadStorage, ReadsAnOpenSimMotionWithItsDegreesFlag) {
@@ -97,6 +122,11 @@ TEST(ReadStorage, MalformedHeadersAndRowsAreRefused) {
                      "wrong_columns.mot:7: 2 column labels, but the header says nColumns=3");
     EXPECT_THROW_MSG(read_storage(test::biomech_data("bad_degrees.sto")), ArgumentError,
                      "bad_degrees.sto:3: inDegrees is 'maybe'; write inDegrees=yes or inDegrees=no");
+    const fs::path inf = lab_scratch("inf_cell.sto");
+    std::ofstream(inf) << "Coordinates\nnRows=2\nnColumns=2\ninDegrees=no\nendheader\ntime\tq\n"
+                          "0\t1\n0.01\tinf\n";
+    EXPECT_THROW_MSG(read_storage(inf.string()), ArgumentError,
+                     "inf_cell.sto:8: column 'q': 'inf' is not a finite number");
     const fs::path p = lab_scratch("short_row.sto");
     std::ofstream(p) << "x\nendheader\ntime\ta\tb\n0\t1\t2\n0.1\t1\n";
     EXPECT_THROW_MSG(read_storage(p.string()), ArgumentError,

@@ -88,6 +88,17 @@ expect max_terms_low 1 "$alembert" run "$tmp/terms.alb" --max-terms 10
 contains max_terms_low "$tmp/err" "terms.alb:3:5: error: expand(): expanding the expression would form up to 21 terms, more than the limit of 10"
 contains max_terms_low "$tmp/err" "raise the limit with --max-terms"
 expect max_terms_zero 2 "$alembert" run "$tmp/terms.alb" --max-terms 0
+# said in words: once "not in range 0.000000 to 1797693...", a 309-digit number
+contains max_terms_zero "$tmp/err" "--max-terms: '0' is not a count: give a whole number, 1 or more (e.g. 100000)"
+if [[ $(wc -c <"$tmp/err") -gt 300 ]]; then echo "FAIL max_terms_zero: the message is $(wc -c <"$tmp/err") bytes"; fails=$((fails + 1)); fi
+expect print_limit_negative 2 "$alembert" run "$tmp/terms.alb" --print-limit -5
+contains print_limit_negative "$tmp/err" "--print-limit: '-5' is not a count: give a whole number, 1 or more"
+expect cutoff_negative 2 "$alembert" inverse "$tmp/terms.alb" --motion m.csv --out "$tmp" --cutoff -1
+contains cutoff_negative "$tmp/err" "--cutoff: '-1' is not a number of 0 or more (e.g. 6)"
+# a data file where the script goes: what reads it, not a lexer error at its first line
+printf 'PathFileType\t4\t(X/Y/Z)\trise.trc\n' >"$tmp/rise.trc"
+expect data_file_as_script 2 "$alembert" run "$tmp/rise.trc"
+contains data_file_as_script "$tmp/err" "rise.trc' is a data file (.trc), not a script; a script reads it: inverse for T_A from"
 
 # job control: background jobs of a script otherwise start with SIGINT ignored, and alembert,
 # like other programs, leaves an ignored SIGINT ignored

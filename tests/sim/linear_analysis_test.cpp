@@ -83,6 +83,18 @@ TEST(LinearAnalysis, AckermannGainOfTheDoubleIntegratorMatchesHandDerivation) {
                      "cannot steer every state");
 }
 
+TEST(LinearAnalysis, UncontrollableSystemIsReportedWithItsTrueConditionNumberZero) {
+    // two double integrators, the input on the first: [b, A b, A^2 b, A^3 b] has columns
+    // (0, 1, 0, 0), (1, 0, 0, 0), 0, 0: rank 2 of 4, singular values 1, 1, 0, 0, condition 0
+    Eigen::MatrixXd A = Eigen::MatrixXd::Zero(4, 4);
+    A(0, 1) = 1;
+    A(2, 3) = 1;
+    Eigen::VectorXd b = Eigen::VectorXd::Zero(4);
+    b(1) = 1;
+    EXPECT_THROW_MSG(place_poles(A, b, {-1.0, -2.0, -3.0, -4.0}), SolveError,
+                     "reaches 2 of the 4 states (reciprocal condition number 0, below 1e-12)");
+}
+
 TEST(LinearAnalysis, LqrGainOfAScalarSystemMatchesTheQuadraticFormula) {
     // x' = a x + b r, cost q x^2 + r0 r^2: the Riccati equation 2 a P - b^2 P^2/r0 + q = 0 has
     // the stabilising root P = r0 (a + sqrt(a^2 + b^2 q/r0))/b^2 and K = b P/r0
