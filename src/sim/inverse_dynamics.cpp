@@ -333,9 +333,14 @@ InverseDynamics compile_inverse_dynamics(const System& sys, const std::vector<Ti
         // and a motion no load can make would get loads all the same; Kane's equation of
         // every coordinate is kept to check each sample against
         std::vector<ex> kane = form_kane_equations(sys, q);
+        // which loads Kane's equations hold: their symbols taken once, through intermediates
+        GiNaC::exset in_kane;
+        for (const ex& r : kane) {
+            const GiNaC::exset leaves = table.calc_leaf_symbols(r);
+            in_kane.insert(leaves.begin(), leaves.end());
+        }
         std::size_t acting = 0;
-        for (const ex& T : loads)
-            acting += std::any_of(kane.begin(), kane.end(), [&](const ex& r) { return table.depends_on(r, T); });
+        for (const ex& T : loads) acting += in_kane.count(T);
         if (acting < q.size()) {
             std::vector<ex> in{table.time()}, checks;
             const StateLayout& layout = id.layout();
