@@ -316,10 +316,17 @@ ex simplify_node(const ex& e) {
     return best;
 }
 
+// each distinct node simplified once: a node shared in the expression's DAG (a mass-matrix
+// entry in several rows, a sine in many terms) is looked up, not simplified again
 struct BottomUp : map_function {
+    std::unordered_map<ex, ex, std::hash<ex>, GiNaC::ex_is_equal> done;
     ex operator()(const ex& e) override {
         if (is_a<symbol>(e) || is_a<numeric>(e)) return e;
-        return simplify_node(e.map(*this));
+        auto it = done.find(e);
+        if (it != done.end()) return it->second;
+        ex r = simplify_node(e.map(*this));
+        done.emplace(e, r);
+        return r;
     }
 };
 }  // namespace
