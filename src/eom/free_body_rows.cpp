@@ -9,7 +9,7 @@
 
 #include "alembert/error.hpp"
 #include "alembert/sym/print.hpp"
-#include "zero_test.hpp"
+#include "alembert/eom/zero_test.hpp"
 
 namespace alembert::detail {
 

@@ -10,7 +10,7 @@
 #include "alembert/sym/print.hpp"
 #include "alembert/sym/simplify.hpp"
 #include "free_body_rows.hpp"
-#include "zero_test.hpp"
+#include "alembert/eom/zero_test.hpp"
 
 namespace alembert {
 
@@ -19,7 +19,7 @@ namespace {
 // zero at random states, through the intermediates (a symbolic test misses cancellations
 // inside them)
 bool zero(const System& sys, const Vector& v) {
-    return detail::is_zero_at_random_states(sys.symbols(), v, sys.newtonian());
+    return is_zero_at_random_states(sys.symbols(), v, sys.newtonian());
 }
 
 // the geometry of one coordinate's row
@@ -50,7 +50,7 @@ void locate_instantaneous_centre(const System& sys, const TimeVariable& q, const
                                  const Vector& w, const Vector& v, Plan& p) {
     Vector r_cm;
     if (!position_of(sys, B.cm(), r_cm) ||
-        !detail::is_zero_at_random_states(sys.symbols(), dot(w, v)))
+        !is_zero_at_random_states(sys.symbols(), dot(w, v)))
         return;
     const Vector r = r_cm + cross(w, v) / dot(w, w);
     for (int pass = 0; pass < 2 && !p.O; ++pass)

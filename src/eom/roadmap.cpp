@@ -11,7 +11,7 @@
 #include "alembert/sym/print.hpp"
 #include "alembert/sym/simplify.hpp"
 #include "free_body_rows.hpp"
-#include "zero_test.hpp"
+#include "alembert/eom/zero_test.hpp"
 
 namespace alembert {
 
@@ -79,7 +79,7 @@ std::vector<std::string> describe_free_body_diagram(const System& sys, const Bod
                         unknown = true;
                         if (equation.is_zero() ||
                             (in_equation.count(s) &&
-                             !detail::is_zero_at_random_states(
+                             !is_zero_at_random_states(
                                  sys.symbols(), equation.diff(GiNaC::ex_to<GiNaC::symbol>(s)))))
                             kept = true;
                     }
@@ -122,7 +122,7 @@ void list_additional_unknowns(const System& sys, RoadmapRow& row, const std::vec
     for (const ex& x : unknowns) {
         if (x.is_equal(row.variable) || !in_equation.count(x)) continue;
         if (st.owns(x) && st.kind(x) == SymbolKind::unknown &&
-            detail::is_zero_at_random_states(st, row.equation.diff(GiNaC::ex_to<GiNaC::symbol>(x))))
+            is_zero_at_random_states(st, row.equation.diff(GiNaC::ex_to<GiNaC::symbol>(x))))
             continue;
         row.additional_unknowns.push_back(x);
     }

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Zero tests at random states, through named intermediates.
-#include "zero_test.hpp"
+#include "alembert/eom/zero_test.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -11,7 +11,7 @@
 #include "alembert/sym/simplify.hpp"
 #include "alembert/vec/frame.hpp"
 
-namespace alembert::detail {
+namespace alembert {
 
 namespace {
 
@@ -85,4 +85,4 @@ bool is_zero_at_random_states(const SymbolTable& st, const Vector& v, const Fram
     return all_zero(st, {c[0], c[1], c[2]});
 }
 
-}  // namespace alembert::detail
+}  // namespace alembert

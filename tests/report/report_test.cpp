@@ -97,6 +97,25 @@ TEST(Report, PointsArePlacedAtTheConfiguration) {
     EXPECT_NE(json.find("{\"body\":\"A\",\"from\":\"A_o\",\"to\":\"B_o\"}"), std::string::npos);
 }
 
+// Whether a model is planar is decided at random states, not by simplifying each point's Nz
+// measure: a 24-link spatial chain's tip, measured in N, would expand into 2^24 terms. The
+// page's geometry (no rows here) is written, the chain is seen as spatial, and its last
+// mass centre placed 23.5 m below N_o; a planar chain of the same length is seen as planar.
+TEST(Report, ALongSpatialChainsGeometryIsWrittenWithoutExpandingItsPositions) {
+    for (ChainKind kind : {ChainKind::spatial, ChainKind::planar}) {
+        SampleModel m = make_n_link_pendulum(24, kind);
+        ReportContent content;
+        content.system = &m.system;
+        content.title = "chain";
+        content.coordinates = m.q;
+        const std::string json = render_report_json(content);
+        EXPECT_NE(json.find(kind == ChainKind::spatial ? "\"planar\":false" : "\"planar\":true"),
+                  std::string::npos);
+        EXPECT_EQ(count(json, "\"segments\":["), 1u);
+        EXPECT_NE(json.find("{\"name\":\"B24cm\",\"at\":[0,-23.5,0]}"), std::string::npos);
+    }
+}
+
 TEST(Report, HistoriesArePlottedAndTheirMotionAnimated) {
     SitToStand s;
     ReportHistory h;

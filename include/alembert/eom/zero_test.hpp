@@ -1,11 +1,12 @@
 // SPDX-License-Identifier: MIT
-// Deciding whether an expression is identically zero by evaluating it at random states.
+// Deciding whether an expression is identically zero by evaluating it at random states, never
+// by expanding it (the positions of a long chain expand exponentially).
 #pragma once
 
 #include "alembert/sym/symbol_table.hpp"
 #include "alembert/vec/vector.hpp"
 
-namespace alembert::detail {
+namespace alembert {
 
 /// True if e is zero at two pseudo-random states: every symbol it depends on through named
 /// intermediates (constants with a value keep it) drawn from ±[0.3, 1.7] with a fixed seed,
@@ -20,4 +21,4 @@ bool is_zero_at_random_states(const SymbolTable& st, const ex& e);
 /// The same for every measure of v in frame F.
 bool is_zero_at_random_states(const SymbolTable& st, const Vector& v, const Frame& F);
 
-}  // namespace alembert::detail
+}  // namespace alembert
