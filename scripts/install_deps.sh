@@ -27,6 +27,7 @@ if [[ $profile == test ]]; then
     libsundials-dev              # the bdf integrator (SUNDIALS CVODE; optional in a build)
     libgtest-dev libgmock-dev googletest libbenchmark-dev
     clang libclang-rt-14-dev     # the sanitizer pass builds the fuzz target (docs/fuzzing.md)
+    libomp-dev                   # clang's OpenMP: SUNDIALS' CMake package asks for it
     python3-numpy python3-scipy  # the tests run the generated Python
     chromium                     # the tests open the HTML report in headless Chromium
     texlive-latex-base texlive-pictures  # the tests compile the reports' LaTeX (TikZ diagrams)
