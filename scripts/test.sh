@@ -11,7 +11,9 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
+installing=$SECONDS
 bash scripts/install_deps.sh test
+installed=$((SECONDS - installing))
 
 logs=$(mktemp -d)
 trap 'rm -rf "$logs"' EXIT
@@ -36,8 +38,13 @@ pass() {
   local name=$1 preset=$2
   shift 2
   local start=$SECONDS rc=0
-  cmake --preset "$preset"
-  cmake --build --preset "$preset" -j2
+  # a pass that cannot configure or build is reported as such, and the script goes on to its
+  # summary
+  if ! cmake --preset "$preset" || ! cmake --build --preset "$preset" -j2; then
+    summary+=("$(printf '%-22s could not configure or build (see above); %d s' "$name" $((SECONDS - start)))")
+    failed=1
+    return 0
+  fi
   local built=$((SECONDS - start))
   ctest --preset "$preset" "$@" 2>&1 | tee "$logs/$name.log" || rc=$?
   read -r p f s t < <(counts "$logs/$name.log")
@@ -80,6 +87,7 @@ fi
 
 echo
 echo "test.sh summary"
+echo "  installing what was missing: $installed s"
 for line in "${summary[@]}"; do echo "  $line"; done
 echo "  total time $((SECONDS / 60)) min $((SECONDS % 60)) s"
 exit "$failed"
