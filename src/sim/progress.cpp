@@ -5,6 +5,7 @@
 #include <unistd.h>
 
 #include <cstdio>
+#include <cstdlib>
 
 namespace alembert {
 
@@ -43,6 +44,12 @@ std::atomic<StepIndicator*> g_running{nullptr};
 
 StepIndicator::StepIndicator(std::string label, bool enabled, std::chrono::milliseconds delay)
     : label_(std::move(label)), delay_(delay) {
+    // ALEMBERT_PROGRESS_DELAY_MS sets the delay for every step (a test shows the line at once)
+    if (const char* ms = std::getenv("ALEMBERT_PROGRESS_DELAY_MS")) {
+        char* end = nullptr;
+        const long v = std::strtol(ms, &end, 10);
+        if (end != ms && *end == '\0' && v >= 0) delay_ = std::chrono::milliseconds(v);
+    }
     if (enabled && ::isatty(2) == 1) {
         ticker_ = std::thread([this] { run(); });
         g_running.store(this);

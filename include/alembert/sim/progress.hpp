@@ -44,7 +44,8 @@ private:
 /// be counted (forming equations, planning a road-map, printing, a report): shown only when
 /// standard error is a terminal and the step has lasted `delay`, its elapsed seconds refreshed
 /// every second by a thread of its own, and erased when the step ends (the destructor).
-/// Silent on pipes and in CI.
+/// Silent on pipes and in CI. The environment variable ALEMBERT_PROGRESS_DELAY_MS, a whole
+/// number of milliseconds, replaces `delay` for every step.
 class StepIndicator {
 public:
     explicit StepIndicator(std::string label, bool enabled = true,
