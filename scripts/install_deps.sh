@@ -28,6 +28,8 @@ if [[ $profile == test ]]; then
     libgtest-dev libgmock-dev googletest libbenchmark-dev
     clang libclang-rt-14-dev     # the sanitizer pass builds the fuzz target (docs/fuzzing.md)
     libomp-dev                   # clang's OpenMP: SUNDIALS' CMake package asks for it
+    llvm                         # llvm-symbolizer: sanitizer reports name functions, and the
+                                 # LeakSanitizer suppressions (cmake/lsan.supp) match by name
     python3-numpy python3-scipy  # the tests run the generated Python
     chromium                     # the tests open the HTML report in headless Chromium
     texlive-latex-base texlive-pictures  # the tests compile the reports' LaTeX (TikZ diagrams)
