@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "alembert/eom/inertia_forces.hpp"
+#include "alembert/eom/readable_equation.hpp"
 #include "alembert/error.hpp"
 #include "alembert/sym/print.hpp"
 #include "alembert/sym/simplify.hpp"
@@ -222,19 +223,6 @@ Cells row_cells(const System& sys, const RoadmapRow& r) {
              r.about ? r.about->name() : "-", eq, extra}};
 }
 
-// an equation as people read it: simplified and collected in the accelerations, when it is
-// small enough for that to be quick
-ex readable(const System& sys, const ex& e) {
-    constexpr std::size_t kMaxOps = 4000;
-    if (count_ops(e) > kMaxOps) return e;
-    std::vector<ex> acc;
-    const SymbolTable& st = sys.symbols();
-    for (const ex& s : symbols_of(e))
-        if (st.owns(s) && st.kind(s) == SymbolKind::variable && st.derivative_order(s) == 2)
-            acc.push_back(s);
-    return acc.empty() ? simplify(e) : collect_in(simplify(e), acc);
-}
-
 }  // namespace
 
 std::string json_escape(const std::string& s, bool for_script) {
@@ -301,14 +289,17 @@ std::string format_roadmap_table(const System& sys, const std::vector<RoadmapRow
     }
     if (!with_equations) return out;
     out += "\n";
+    Simplifier simplifier;
     for (const RoadmapRow& r : rows)
-        out += "E_" + to_string(r.variable) + ": 0 = " + to_string(readable(sys, r.equation)) + "\n";
+        out += "E_" + to_string(r.variable) + ": 0 = " +
+               to_string(readable_equation(sys, r.equation, simplifier)) + "\n";
     return out;
 }
 
 std::string format_roadmap_json(const System& sys, const std::vector<RoadmapRow>& rows) {
     std::ostringstream os;
     os << "[";
+    Simplifier simplifier;
     for (std::size_t i = 0; i < rows.size(); ++i) {
         const RoadmapRow& r = rows[i];
         Cells c = row_cells(sys, r);
@@ -322,7 +313,7 @@ std::string format_roadmap_json(const System& sys, const std::vector<RoadmapRow>
             os << (k ? ", " : "") << "\"" << json_escape(r.fbd[k]) << "\"";
         os << "], \"about\": " << (r.about ? "\"" + json_escape(r.about->name()) + "\"" : "null")
            << ", \"analysis\": \"" << (r.analysis == Analysis::statics ? "statics" : "dynamics")
-           << "\", \"equation\": \"" << json_escape(to_string(readable(sys, r.equation)))
+           << "\", \"equation\": \"" << json_escape(to_string(readable_equation(sys, r.equation, simplifier)))
            << "\", \"additional_unknowns\": [";
         for (std::size_t k = 0; k < r.additional_unknowns.size(); ++k)
             os << (k ? ", " : "") << "\"" << json_escape(to_string(r.additional_unknowns[k]))

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "alembert/eom/readable_equation.hpp"
 #include "alembert/eom/zero_test.hpp"
 #include "alembert/error.hpp"
 #include "alembert/report/report.hpp"
@@ -98,6 +99,25 @@ struct Evaluation {
         Col3 c = v.components_in(sys.newtonian());
         return {at(c[0]), at(c[1]), at(c[2])};
     }
+    /// Where `p` is, measured from the origin in N: evaluated once per point, since every
+    /// row's diagram places the same points
+    const std::vector<double>& position(const Point* p) const {
+        auto it = positions_.find(p);
+        if (it == positions_.end())
+            it = positions_.emplace(p, in_newtonian(p->pos_from(sys.origin()))).first;
+        return it->second;
+    }
+    /// position(p) from its components in N, already at hand
+    const std::vector<double>& position(const Point* p, const Col3& in_n) const {
+        auto it = positions_.find(p);
+        if (it == positions_.end())
+            it = positions_.emplace(p, std::vector<double>{at(in_n[0]), at(in_n[1]), at(in_n[2])})
+                     .first;
+        return it->second;
+    }
+
+private:
+    mutable std::map<const Point*, std::vector<double>> positions_;
 };
 
 std::vector<const Point*> placed_points(const System& sys) {
@@ -224,8 +244,7 @@ std::string geometry_json(const System& sys, const Evaluation& ev,
         // decided at random states, never by expanding: the position of a long chain's tip
         // from the origin, measured in N, expands into exponentially many terms
         if (*planar && !is_zero_at_random_states(sys.symbols(), c[2])) *planar = false;
-        std::vector<double> x = ev.in_newtonian(p->pos_from(sys.origin()));
-        pts.push_back(Obj().add("name", str(p->name())).add("at", num_arr(x)).done());
+        pts.push_back(Obj().add("name", str(p->name())).add("at", num_arr(ev.position(p, c))).done());
     }
     for (const Segment& s : segments_of(sys, placed))
         segs.push_back(
@@ -307,19 +326,6 @@ std::string motion_word(Motion m) {
     return "";
 }
 
-// an equation as people read it: collected in the accelerations when small enough
-ex readable_equation(const System& sys, const ex& e) {
-    if (count_ops(e) > 4000) return e;
-    std::vector<ex> acc;
-    const SymbolTable& st = sys.symbols();
-    for (const ex& s : symbols_of(e))
-        if (st.owns(s) && st.kind(s) == SymbolKind::variable && st.derivative_order(s) == 2)
-            acc.push_back(s);
-    std::sort(acc.begin(), acc.end(),
-              [](const ex& a, const ex& b) { return to_string(a) < to_string(b); });
-    return acc.empty() ? simplify(e) : collect_in(simplify(e), acc);
-}
-
 // "0 = t1 + t2 ...": the terms holding the row's variable first, the others in the order of
 // their printed form; one line per few terms, so long equations wrap
 std::string equation_tex(const ex& e, const ex& variable) {
@@ -353,9 +359,11 @@ std::string equation_tex(const ex& e, const ex& variable) {
     return out + " \\end{aligned}";
 }
 
-// equations of more operations than this are typeset abbreviated (written out, as a tree,
-// the TeX of a large model's equation grows exponentially with the sharing in it)
-constexpr std::size_t kAbbreviateOps = 4000;
+// equations of more operations than this are typeset abbreviated, with numbered intermediates
+// (written out as a tree, the TeX of a large model's equation grows exponentially with the
+// sharing in it; and simplifying a row of 1,500 to 4,000 operations for the page cost the
+// arm's report 2 of its 3.6 s while leaving a wall of a hundred terms)
+constexpr std::size_t kAbbreviateOps = 1500;
 
 // "0 = ..." with the named parts of the equation below it, w_1 = ..., each line short, the
 // parts in the order they are needed
@@ -693,7 +701,7 @@ std::string tikz_diagram(const System& sys, const Evaluation& ev,
     std::vector<const Point*> order;  // the model's order, for the same output run to run
     double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
     for (const Point* p : placed) {
-        std::array<double, 2> q = project(ev.in_newtonian(p->pos_from(sys.origin())), planar);
+        std::array<double, 2> q = project(ev.position(p), planar);
         if (!std::isfinite(q[0]) || !std::isfinite(q[1])) continue;
         at[p] = q;
         order.push_back(p);
@@ -795,10 +803,12 @@ std::vector<std::string> report_detail::typeset_equations(const ReportContent& c
     std::vector<std::string> out;
     if (!c.system) return out;
     out.reserve(c.rows.size());
+    Simplifier simplifier;  // the rows share their kinematics: each node is simplified once
     for (const RoadmapRow& r : c.rows)
         out.push_back(count_ops(r.equation) > kAbbreviateOps
                           ? abbreviated_equation_tex(r.equation)
-                          : equation_tex(readable_equation(*c.system, r.equation), r.variable));
+                          : equation_tex(readable_equation(*c.system, r.equation, simplifier),
+                                         r.variable));
     return out;
 }
 

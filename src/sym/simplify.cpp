@@ -6,6 +6,7 @@
 #include <complex>
 #include <algorithm>
 #include <map>
+#include <memory>
 #include <numbers>
 #include <optional>
 #include <random>
@@ -20,48 +21,113 @@ namespace alembert {
 
 using namespace GiNaC;
 
-namespace {
+// named, not anonymous: Simplifier's memory holds a NodeIndex
+namespace simplify_detail {
 
-// count_ops over the DAG: each distinct node's count is computed once (a shared node reached
-// by many parents would otherwise be walked once per path, exponentially many with depth);
-// sums saturate instead of wrapping
-class OpCounter {
+// the (rest, coefficient) pairs and the numeric coefficient of a sum or product, read where
+// GiNaC keeps them: op(i) of a sum or product makes a new node for each term with a
+// coefficient (3*x, x^2), which walking a large expression would allocate again and again
+struct Pairs : expairseq {
+    static const epvector& of(const expairseq& e) { return e.*(&Pairs::seq); }
+    static const ex& coefficient(const expairseq& e) { return e.*(&Pairs::overall_coeff); }
+};
+
+const numeric& one() {
+    static const numeric n(1);
+    return n;
+}
+
+const numeric& minus_one() {
+    static const numeric n(-1);
+    return n;
+}
+
+std::size_t numeric_ops(const numeric& n) {
+    return (n.is_negative() ? 1 : 0) + (n.is_rational() && !n.is_integer() ? 1 : 0);
+}
+
+// what simplification asks of a node, computed over the DAG: each distinct node once (a shared
+// node reached by many parents would otherwise be walked once per path, exponentially many
+// with depth); operation counts saturate instead of wrapping
+struct Facts {
+    std::size_t ops = 0;       // count_ops
+    bool trig = false;         // holds sin or cos
+    bool denominator = false;  // holds a power with a negative exponent
+};
+
+class NodeIndex {
 public:
-    std::size_t ops(const ex& e) {
-        if (is_a<symbol>(e)) return 0;
-        if (is_a<numeric>(e)) {
-            const numeric& n = ex_to<numeric>(e);
-            return (n.is_negative() ? 1 : 0) + (n.is_rational() && !n.is_integer() ? 1 : 0);
-        }
+    std::size_t ops(const ex& e) { return facts(e).ops; }
+
+    Facts facts(const ex& e) {
+        if (is_a<symbol>(e)) return {};
+        if (is_a<numeric>(e)) return {numeric_ops(ex_to<numeric>(e)), false, false};
         const basic* key = &ex_to<basic>(e);
         auto it = memo_.find(key);
         if (it != memo_.end()) return it->second;
-        std::size_t n = 0;
-        for (std::size_t i = 0; i < e.nops(); ++i) n = plus(n, ops(e.op(i)));
+        Facts f;
+        auto take = [&](const Facts& c) {
+            f.ops = plus(f.ops, c.ops);
+            f.trig = f.trig || c.trig;
+            f.denominator = f.denominator || c.denominator;
+        };
         if (is_a<add>(e) || is_a<mul>(e)) {
+            const bool sum = is_a<add>(e);
+            const expairseq& s = ex_to<expairseq>(e);
+            std::size_t operands = 0;
+            for (const expair& p : Pairs::of(s)) {
+                ++operands;
+                take(facts(p.rest));
+                const numeric& c = ex_to<numeric>(p.coeff);
+                if (c.is_equal(one())) continue;
+                if (sum) {
+                    // rest*c: one more factor, a negation only when c is -1
+                    f.ops = plus(f.ops, c.is_equal(minus_one()) ? 1 : 1 + numeric_ops(c));
+                } else {
+                    // rest^c: one power and its exponent
+                    f.ops = plus(f.ops, 1 + numeric_ops(c));
+                    if (c.is_negative()) f.denominator = true;
+                }
+            }
+            const numeric& oc = ex_to<numeric>(Pairs::coefficient(s));
+            const bool has_coefficient = sum ? !oc.is_zero() : !oc.is_equal(one());
+            if (has_coefficient) {
+                ++operands;
+                f.ops = plus(f.ops, numeric_ops(oc));
+            }
             // -x is one negation, not a product by -1 plus a negative number
-            const ex& last = e.op(e.nops() - 1);
-            if (is_a<mul>(e) && is_a<numeric>(last) && last.is_equal(-1)) n = plus(n, e.nops() - 2);
-            else n = plus(n, e.nops() - 1);
+            if (!sum && has_coefficient && oc.is_equal(minus_one())) f.ops = plus(f.ops, operands - 2);
+            else f.ops = plus(f.ops, operands - 1);
         } else {
-            n = plus(n, 1);  // power, function, other
+            for (std::size_t i = 0; i < e.nops(); ++i) take(facts(e.op(i)));
+            f.ops = plus(f.ops, 1);  // power, function, other
+            if (is_a<function>(e)) {
+                const std::string& name = ex_to<function>(e).get_name();
+                f.trig = f.trig || name == "sin" || name == "cos";
+            }
+            if (is_a<power>(e) && is_a<numeric>(e.op(1)) && ex_to<numeric>(e.op(1)).is_real() &&
+                ex_to<numeric>(e.op(1)).is_negative())
+                f.denominator = true;
         }
         alive_.push_back(e);  // the address stays this node's while it is remembered
-        memo_.emplace(key, n);
-        return n;
+        memo_.emplace(key, f);
+        return f;
     }
 
 private:
     static std::size_t plus(std::size_t a, std::size_t b) {
         return a > std::numeric_limits<std::size_t>::max() - b ? std::numeric_limits<std::size_t>::max() : a + b;
     }
-    std::unordered_map<const basic*, std::size_t> memo_;
+    std::unordered_map<const basic*, Facts> memo_;
     std::vector<ex> alive_;
 };
 
-}  // namespace
+}  // namespace simplify_detail
 
-std::size_t count_ops(const ex& e) { return OpCounter().ops(e); }
+using simplify_detail::Facts;
+using simplify_detail::NodeIndex;
+
+std::size_t count_ops(const ex& e) { return NodeIndex().ops(e); }
 
 namespace {
 
@@ -173,7 +239,7 @@ std::vector<ex> terms_of(const ex& e) {
 }
 
 // one pass of angle-sum folding over an expanded sum; returns true if anything folded
-bool fold_angle_sums(std::vector<Term>& terms) {
+bool fold_angle_sums(std::vector<Term>& terms, NodeIndex& n) {
     std::map<ex, std::size_t, ex_is_less> index;
     for (std::size_t i = 0; i < terms.size(); ++i) index.emplace(terms[i].rest, i);
     std::vector<bool> used(terms.size(), false);
@@ -202,8 +268,9 @@ bool fold_angle_sums(std::vector<Term>& terms) {
                 // a difference of angles is written the shorter (then alphabetically first) way
                 ex diff = a - b;
                 numeric flip = 1;
-                if (count_ops(b - a) < count_ops(diff) ||
-                    (count_ops(b - a) == count_ops(diff) && to_string(b - a) < to_string(diff)))
+                const ex ba = b - a;
+                if (n.ops(ba) < n.ops(diff) ||
+                    (n.ops(ba) == n.ops(diff) && to_string(ba) < to_string(diff)))
                     diff = b - a, flip = -1;
                 ex folded;
                 if (sin_cos) {
@@ -241,25 +308,45 @@ std::vector<ex> squared_angles(const ex& e) {
     return out;
 }
 
-ex pythagorean(const ex& e) {
+// `terms` (an expanded sum's) with sin^2 x + cos^2 x = 1 substituted by `rule` and each
+// changed term expanded: the same sum as expand(sum.subs(rule)), but only the terms that hold
+// a square of sin x or cos x are rewritten and expanded
+ex substituted_in_terms(const std::vector<ex>& terms, const std::vector<bool>& holds,
+                        const ex& rule) {
+    exvector out;
+    out.reserve(terms.size());
+    for (std::size_t i = 0; i < terms.size(); ++i)
+        out.push_back(holds[i] ? expand(terms[i].subs(rule, subs_options::algebraic)) : terms[i]);
+    return expand(add(out));
+}
+
+ex pythagorean(const ex& e, NodeIndex& n) {
     ex best = e;
     for (const ex& x : squared_angles(e)) {
-        ex c1 = expand(best.subs(pow(cos(x), 2) == 1 - pow(sin(x), 2), subs_options::algebraic));
-        ex c2 = expand(best.subs(pow(sin(x), 2) == 1 - pow(cos(x), 2), subs_options::algebraic));
-        std::size_t nb = count_ops(best), n1 = count_ops(c1), n2 = count_ops(c2);
+        const std::vector<ex> terms = terms_of(best);
+        std::vector<bool> holds(terms.size());
+        bool any = false;
+        for (std::size_t i = 0; i < terms.size(); ++i) {
+            for (const ex& y : squared_angles(terms[i]))
+                if (y.is_equal(x)) holds[i] = any = true;
+        }
+        if (!any) continue;
+        ex c1 = substituted_in_terms(terms, holds, pow(cos(x), 2) == 1 - pow(sin(x), 2));
+        ex c2 = substituted_in_terms(terms, holds, pow(sin(x), 2) == 1 - pow(cos(x), 2));
+        std::size_t nb = n.ops(best), n1 = n.ops(c1), n2 = n.ops(c2);
         if (n1 < nb && n1 <= n2) best = c1;
         else if (n2 < nb) best = c2;
     }
     return best;
 }
 
-ex fold(const ex& expanded) {
+ex fold(const ex& expanded, NodeIndex& n) {
     ex cur = expanded;
     for (int iter = 0; iter < 8; ++iter) {
-        ex next = pythagorean(cur);
+        ex next = pythagorean(cur, n);
         std::vector<Term> terms;
         for (const ex& t : terms_of(next)) terms.push_back(split(t));
-        bool changed = fold_angle_sums(terms);
+        bool changed = fold_angle_sums(terms, n);
         ex sum = 0;
         for (const Term& t : terms) sum += t.c * t.rest;
         next = expand(sum);
@@ -269,72 +356,84 @@ ex fold(const ex& expanded) {
     return cur;
 }
 
-bool has_trig(const ex& e) {
-    for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it)
-        if (is_trig(*it, "sin") || is_trig(*it, "cos")) return true;
-    return false;
-}
-
-bool has_symbolic_denominator(const ex& e) {
-    for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it)
-        if (is_a<power>(*it) && is_a<numeric>(it->op(1)) && ex_to<numeric>(it->op(1)) < 0)
-            return true;
-    return false;
-}
-
 }  // namespace
 
 ex trig_simplify(const ex& e) {
-    if (!has_trig(e)) return e;
-    ex r = fold(expand(e));
-    return count_ops(r) < count_ops(e) ? r : e;
+    NodeIndex n;
+    if (!n.facts(e).trig) return e;
+    ex r = fold(expand(e), n);
+    return n.ops(r) < n.ops(e) ? r : e;
 }
 
 namespace {
 // one node, its children already simplified: the shortest of as-is, expanded and folded,
 // and (with symbolic denominators) normalised
-ex simplify_node(const ex& e) {
+ex simplify_node(const ex& e, NodeIndex& index) {
     ex best = e;
     if (!is_a<add>(e) && !is_a<mul>(e) && !is_a<power>(e)) return best;
+    const Facts facts = index.facts(e);
     ex x = expand(e);
-    if (count_ops(x) < count_ops(best)) best = x;
-    if (has_trig(e)) {
-        ex t = fold(x);
-        if (count_ops(t) < count_ops(best)) best = t;
+    if (index.ops(x) < index.ops(best)) best = x;
+    if (facts.trig) {
+        ex t = fold(x, index);
+        if (index.ops(t) < index.ops(best)) best = t;
     }
-    if (has_symbolic_denominator(e)) {
+    if (facts.denominator) {
         ex n = normal(best);
-        if (has_trig(n)) {
+        if (index.facts(n).trig) {
             // numerator and denominator from one call: numer() and denom() each normalise
             // anew, and GiNaC may return (a, b) from one and (-a, -b) from the other, which
             // flipped the sign of the result
             const ex nd = n.numer_denom();
-            n = fold(expand(nd.op(0))) / fold(expand(nd.op(1)));
+            n = fold(expand(nd.op(0)), index) / fold(expand(nd.op(1)), index);
         }
-        if (count_ops(n) < count_ops(best)) best = n;
+        if (index.ops(n) < index.ops(best)) best = n;
     }
     return best;
 }
 
+}  // namespace
+
 // each distinct node simplified once: a node shared in the expression's DAG (a mass-matrix
 // entry in several rows, a sine in many terms) is looked up, not simplified again
-struct BottomUp : map_function {
+struct Simplifier::Memo : map_function {
     std::unordered_map<ex, ex, std::hash<ex>, GiNaC::ex_is_equal> done;
+    NodeIndex index;
     ex operator()(const ex& e) override {
         if (is_a<symbol>(e) || is_a<numeric>(e)) return e;
         auto it = done.find(e);
         if (it != done.end()) return it->second;
-        ex r = simplify_node(e.map(*this));
+        ex r = simplify_node(e.map(*this), index);
         done.emplace(e, r);
         return r;
     }
 };
-}  // namespace
 
-ex simplify(const ex& e) {
-    BottomUp f;
-    return f(fold_angle_shifts(e));
+
+Simplifier::Simplifier() : memo_(std::make_unique<Memo>()) {}
+Simplifier::~Simplifier() = default;
+Simplifier::Simplifier(Simplifier&&) noexcept = default;
+Simplifier& Simplifier::operator=(Simplifier&&) noexcept = default;
+
+ex Simplifier::operator()(const ex& e) { return (*memo_)(fold_angle_shifts(e)); }
+
+ex Simplifier::collected(const ex& e, const std::vector<ex>& syms) {
+    lst l;
+    for (const ex& s : syms) l.append(s);
+    ex c = collect(expand(e), l);
+    // simplify each coefficient of the collected form
+    if (!is_a<add>(c)) return c;
+    struct Coefficients : map_function {
+        Simplifier& s;
+        explicit Coefficients(Simplifier& simplifier) : s(simplifier) {}
+        ex operator()(const ex& f) override { return is_a<add>(f) ? s(f) : f; }
+    } coefficients(*this);
+    ex out = 0;
+    for (std::size_t i = 0; i < c.nops(); ++i) out += c.op(i).map(coefficients);
+    return out;
 }
+
+ex simplify(const ex& e) { return Simplifier()(e); }
 
 namespace {
 
@@ -611,18 +710,7 @@ std::vector<std::pair<ex, ex>> calc_used_intermediates(const SymbolTable& table,
     return out;
 }
 
-ex collect_in(const ex& e, const std::vector<ex>& syms) {
-    lst l;
-    for (const ex& s : syms) l.append(s);
-    ex c = collect(expand(e), l);
-    // simplify each coefficient of the collected form
-    if (!is_a<add>(c)) return c;
-    ex out = 0;
-    for (std::size_t i = 0; i < c.nops(); ++i) out += c.op(i).map([](const ex& f) {
-        return is_a<add>(f) ? simplify(f) : f;
-    });
-    return out;
-}
+ex collect_in(const ex& e, const std::vector<ex>& syms) { return Simplifier().collected(e, syms); }
 
 double max_numeric_difference(const ex& a, const ex& b, int points) {
     // every symbol of a and of b gets a value, including those that cancel in a - b
@@ -651,8 +739,9 @@ double max_numeric_difference(const ex& a, const ex& b, int points) {
 bool equal(const ex& a, const ex& b, double tol) {
     ex d = expand(a - b);
     if (d.is_zero()) return true;
-    if (has_trig(d) && fold(d).is_zero()) return true;
-    if (has_symbolic_denominator(d) && normal(d).is_zero()) return true;
+    NodeIndex n;
+    if (n.facts(d).trig && fold(d, n).is_zero()) return true;
+    if (n.facts(d).denominator && normal(d).is_zero()) return true;
     return max_numeric_difference(a, b) <= tol;
 }
 

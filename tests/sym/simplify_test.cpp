@@ -3,7 +3,9 @@
 #include "alembert/sym/simplify.hpp"
 
 #include <cmath>
+#include <random>
 #include <string>
+#include <vector>
 
 #include "alembert/sym/symbol_table.hpp"
 #include "support/expect.hpp"
@@ -139,4 +141,74 @@ TEST(Simplify, AQuotientWithTrigonometryKeepsItsSignWhateverTheTermOrder) {
         const double got = GiNaC::ex_to<GiNaC::numeric>(GiNaC::evalf(s.subs(at))).to_double();
         ASSERT_NEAR(got, expected, 1e-14) << "round " << round << ": " << s;
     }
+}
+
+namespace {
+// the operation count of a tree as documented, walked through op(i) with no memory: the
+// reference for the DAG walk that reads sums' and products' pairs where GiNaC keeps them
+std::size_t tree_ops(const ex& e) {
+    using namespace GiNaC;
+    if (is_a<symbol>(e)) return 0;
+    if (is_a<numeric>(e)) {
+        const numeric& n = ex_to<numeric>(e);
+        return (n.is_negative() ? 1 : 0) + (n.is_rational() && !n.is_integer() ? 1 : 0);
+    }
+    std::size_t n = 0;
+    for (std::size_t i = 0; i < e.nops(); ++i) n += tree_ops(e.op(i));
+    if (is_a<add>(e) || is_a<mul>(e)) {
+        const ex& last = e.op(e.nops() - 1);
+        const bool negation = is_a<mul>(e) && is_a<numeric>(last) && last.is_equal(-1);
+        return n + e.nops() - (negation ? 2 : 1);
+    }
+    return n + 1;
+}
+}  // namespace
+
+TEST(CountOps, AgreesWithTheTreeWalkOnRandomExpressions) {
+    Symbols x;
+    std::mt19937 rng(7);
+    std::vector<ex> pool{x.a, x.b, x.k, ex(2), ex(-1), GiNaC::numeric(1, 2), ex(-3), ex(1.5)};
+    int compared = 0;
+    for (int i = 0; i < 3000; ++i) {
+        const ex p = pool[rng() % pool.size()], q = pool[rng() % pool.size()];
+        ex r;
+        try {
+            switch (rng() % 7) {
+                case 0: r = p + q; break;
+                case 1: r = p * q; break;
+                case 2: r = p - q; break;
+                case 3: r = pow(p, static_cast<int>(rng() % 5) - 2); break;
+                case 4: r = sin(p); break;
+                case 5: r = p / q; break;
+                default: r = -p * q + 3 * p; break;
+            }
+        } catch (const std::exception&) {
+            continue;  // 1/0
+        }
+        if (tree_ops(r) > 5000) continue;  // the reference walks the tree
+        ASSERT_EQ(count_ops(r), tree_ops(r)) << to_string(r);
+        ++compared;
+        if (pool.size() < 300) pool.push_back(r);
+        else pool[rng() % pool.size()] = r;
+    }
+    EXPECT_GT(compared, 2000);
+}
+
+TEST(Simplifier, RemembersAcrossExpressionsAndKeepsTheirMeaning) {
+    // rows sharing their kinematics, as a road-map's rows do: one simplifier for all of them
+    Symbols x;
+    const ex s2 = pow(sin(x.a), 2) + pow(cos(x.a), 2);
+    const ex fold = sin(x.a) * cos(x.b) + cos(x.a) * sin(x.b);
+    const std::vector<ex> rows{x.k * s2 * fold + x.m, (x.m + x.k) * fold * s2 - x.c * s2,
+                               x.m * s2 / (x.k + s2), fold * fold + x.k * s2};
+    Simplifier once;
+    for (const ex& e : rows) {
+        const ex shared = once(e), alone = simplify(e);
+        EXPECT_LT(max_numeric_difference(shared, e), 1e-12) << to_string(shared);
+        EXPECT_LE(count_ops(shared), count_ops(e));
+        EXPECT_LE(count_ops(shared), count_ops(alone) + 1) << to_string(shared);
+        const ex col = once.collected(shared, {x.c, x.m});
+        EXPECT_LT(max_numeric_difference(col, e), 1e-12) << to_string(col);
+    }
+    EXPECT_TRUE(alembert::equal(once(x.k * s2 * fold + x.m), x.k * sin(x.a + x.b) + x.m));
 }

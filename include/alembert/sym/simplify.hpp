@@ -6,6 +6,7 @@
 #include <ginac/ginac.h>
 
 #include <cstddef>
+#include <memory>
 #include <utility>
 #include <vector>
 
@@ -41,6 +42,27 @@ ex fold_angle_shifts(const ex& e);
 /// simplification, plus rational normalisation when `e` has symbolic denominators; returns
 /// whichever form has the fewest operations.
 ex simplify(const ex& e);
+
+/// simplify and collect_in with one memory across calls: a node met again (the same
+/// kinematics in every row of a road-map, a coefficient shared by two equations) is looked up,
+/// not simplified again. Keep one for a batch of related expressions; memory grows with the
+/// distinct nodes seen.
+class Simplifier {
+public:
+    Simplifier();
+    ~Simplifier();
+    Simplifier(Simplifier&&) noexcept;
+    Simplifier& operator=(Simplifier&&) noexcept;
+
+    /// simplify(e), remembering every node's result
+    ex operator()(const ex& e);
+    /// collect_in(e, symbols), its coefficients simplified through this memory
+    ex collected(const ex& e, const std::vector<ex>& symbols);
+
+private:
+    struct Memo;
+    std::unique_ptr<Memo> memo_;
+};
 
 /// `e` with the factors common to all its terms taken out: numeric content and every base
 /// (symbol, function, sum) that divides each term, to its lowest power, so that
