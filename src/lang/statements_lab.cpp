@@ -84,7 +84,7 @@ void run_plate(Interpreter::Impl& m, const Statement& s) {
                           "inverse for ... from \"" + file.text + "\"");
     ScriptPlate plate{label, {}, {}};
     plate.record = m.guard(file.location, [&] {
-        return force_plate_from_table(read_storage(path).table, prefix, threshold);
+        return force_plate_from_table(read_storage(path).table, prefix, threshold, path);
     });
     std::size_t on_samples = 0;
     for (std::size_t k = 0; k < plate.record.t.size(); ++k) on_samples += plate.record.in_contact(k) ? 1 : 0;
