@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "alembert/error.hpp"
+#include "alembert/sim/time_grid.hpp"
 
 namespace alembert {
 
@@ -56,22 +57,33 @@ std::string gap_name(const std::string& column) {
     return column;
 }
 
-std::string seconds(double t) {
+std::string six_digits(double v) {
     std::ostringstream s;
     s.precision(6);
-    s << t;
-    return s.str() + " s";
+    s << v;
+    return s.str();
 }
+
+std::string seconds(double t) { return six_digits(t) + " s"; }
 
 }  // namespace
 
 std::string TimeBaseReport::describe() const {
     std::ostringstream out;
-    if (gaps.empty() && !resampled) {
-        out << "time base: " << samples_in << " samples at " << rate_hz
-            << " Hz, uniform and without gaps; nothing filled or resampled\n";
-        return out.str();
-    }
+    const std::string rate = six_digits(rate_hz) + " Hz" +
+                             (rate_from_file ? " (the rate the file states)" : resampled ? " (the median step)" : "");
+    // the rate, and a stated rate the times contradict
+    if (file_rate_hz > 0 && !rate_from_file)
+        out << "time base: the file states " << six_digits(file_rate_hz) << " Hz, but its time column is "
+            << (resampled ? "not on that grid" : "uniform at " + six_digits(rate_hz) + " Hz") << "; the time column is used\n";
+    if (times_rounded)
+        out << "time base: " << samples_in << " samples at " << rate << "; the time column is printed to "
+            << seconds(time_resolution_s) << " and lies on that grid within its precision (largest offset "
+            << six_digits(std::abs(worst_offset_s) * 1000) << " ms: rounding, not jitter), so the times were read as "
+            << "t0 + k/" << six_digits(rate_hz) << " s and nothing was resampled\n";
+    else if (gaps.empty() && !resampled)
+        out << "time base: " << samples_in << " samples at " << rate
+            << ", uniform and without gaps; nothing filled or resampled\n";
     for (const Gap& g : gaps)
         out << "gap filled: '" << g.name << "' missing from t = " << seconds(g.t_first)
             << " to " << seconds(g.t_last) << " (" << g.samples
@@ -79,8 +91,11 @@ std::string TimeBaseReport::describe() const {
     if (resampled)
         out << "time base resampled: steps from " << seconds(min_step_s) << " to "
             << seconds(max_step_s) << " are not uniform; " << samples_in << " samples became "
-            << samples_out << " at " << rate_hz
-            << " Hz (the median step) by a natural cubic spline per column\n";
+            << samples_out << " at " << rate << " by a natural cubic spline per column (a time was "
+            << six_digits(std::abs(worst_offset_s) * 1000) << " ms off the uniform grid, more than the "
+            << (time_resolution_s > 0 ? "time column's printed precision of " + seconds(time_resolution_s)
+                                      : std::string("rounding of times written in full"))
+            << " explains)\n";
     return out.str();
 }
 
@@ -93,12 +108,22 @@ TimeBaseReport regularize_time_base(Table& table, std::size_t time_column,
     const double t_factor = parse_unit(table.units[time_column]).factor;
     std::vector<double> t = table.columns[time_column];
     for (double& v : t) v *= t_factor;
-    auto where = [&](std::size_t row) {
-        return source + (row < table.lines.size() ? ":" + std::to_string(table.lines[row]) : "") + ": ";
+    auto line = [&](std::size_t row) {
+        return row < table.lines.size() ? ":" + std::to_string(table.lines[row]) : std::string();
+    };
+    auto where = [&](std::size_t row) { return source + line(row) + ": "; };
+    // "frames 12 to 14, lines 17 to 19": the rows of a gap, counted from 1 as a lab's software
+    // numbers frames, and their lines in the file
+    auto samples = [&](std::size_t first, std::size_t last) {
+        std::string text = "frames " + std::to_string(first + 1) + " to " + std::to_string(last + 1);
+        if (last < table.lines.size())
+            text += ", lines " + std::to_string(table.lines[first]) + " to " + std::to_string(table.lines[last]);
+        return text;
     };
     // times present, increasing, at least two
     const std::size_t n = t.size();
     report.samples_in = n;
+    report.file_rate_hz = options.rate_hz;
     if (n < 2) throw ArgumentError(source + ": " + std::to_string(n) + " samples; a trial needs at least 2");
     for (std::size_t r = 0; r < n; ++r) {
         if (std::isnan(t[r])) throw ArgumentError(where(r) + "the time is missing; give every row a time");
@@ -113,10 +138,39 @@ TimeBaseReport regularize_time_base(Table& table, std::size_t time_column,
     report.max_step_s = *std::max_element(steps.begin(), steps.end());
     std::vector<double> sorted = steps;
     std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
-    const double h = sorted[sorted.size() / 2];
+    const double median = sorted[sorted.size() / 2];
+
+    // uniform as printed: the file's rate, or the mean step, within the printed precision
+    const UniformTimeBase base = calc_uniform_time_base(t, options.rate_hz);
+    report.time_resolution_s = base.resolution;
+    report.worst_offset_s = base.worst_offset;
+    const bool irregular = !base.uniform;
+    double h = base.step;
+    if (base.uniform) {
+        report.rate_from_file = base.step_from_rate;
+        // rounded times become the grid's: differences of rounded times are not the motion's
+        if (std::abs(base.worst_offset) > 1e-9 * h) {
+            report.times_rounded = true;
+            for (std::size_t r = 0; r < n; ++r)
+                table.columns[time_column][r] = (t.front() + static_cast<double>(r) * h) / t_factor;
+        }
+    } else {
+        // irregular: the file's rate if the steps are near it, else the median step
+        h = median;
+        if (options.rate_hz > 0 && std::abs(1 / options.rate_hz - median) <= median / 4) {
+            h = 1 / options.rate_hz;
+            report.rate_from_file = true;
+        }
+        // a long step is missing data, not jitter
+        for (std::size_t r = 1; r < n; ++r)
+            if (t[r] - t[r - 1] > options.max_gap_s)
+                throw ArgumentError(where(r) + "the time column jumps from t = " + seconds(t[r - 1]) + " to " +
+                                    seconds(t[r]) + " (" + samples(r - 1, r) + "), a step of " +
+                                    seconds(t[r] - t[r - 1]) + ", longer than the " + seconds(options.max_gap_s) +
+                                    " that may be bridged by resampling; the frames between are missing: export "
+                                    "them, or trim the trial");
+    }
     report.rate_hz = 1 / h;
-    const bool irregular = report.max_step_s - h > options.step_tolerance * h ||
-                           h - report.min_step_s > options.step_tolerance * h;
 
     // each column: find its gaps, check them, fill by a spline through the valid samples
     for (std::size_t c = 0; c < table.columns.size(); ++c) {
@@ -137,7 +191,8 @@ TimeBaseReport regularize_time_base(Table& table, std::size_t time_column,
             while (e < n && std::isnan(y[e])) ++e;
             const Gap gap{name, t[r], t[e - 1], e - r};
             const std::string range = "'" + name + "' is missing from t = " + seconds(gap.t_first) +
-                                      " to " + seconds(gap.t_last) + " (" + std::to_string(gap.samples) + " samples)";
+                                      " to " + seconds(gap.t_last) + " (" + std::to_string(gap.samples) +
+                                      " samples: " + samples(r, e - 1) + ")";
             if (r == 0 || e == n)
                 throw ArgumentError(where(r == 0 ? 0 : n - 1) + range + ", at the " +
                                     (r == 0 ? "start" : "end") +
@@ -159,7 +214,7 @@ TimeBaseReport regularize_time_base(Table& table, std::size_t time_column,
             if (std::isnan(y[r])) y[r] = spline(t[r]);
     }
 
-    // an irregular time base: resample every column at the median step
+    // an irregular time base: resample every column on the grid inside the first and last times
     report.samples_out = n;
     if (irregular) {
         report.resampled = true;

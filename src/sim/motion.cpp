@@ -7,6 +7,7 @@
 
 #include "alembert/error.hpp"
 #include "alembert/sim/filter.hpp"
+#include "alembert/sim/time_grid.hpp"
 
 namespace alembert {
 
@@ -43,6 +44,13 @@ Unit declared_unit(const MotionFilterOptions& options, std::size_t i) {
     } catch (const ArgumentError&) {
         return {};
     }
+}
+
+// a number as people write it: 6 significant digits, no trailing zeros
+std::string short_number(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.6g", v);
+    return buf;
 }
 
 // "an angle", "a length"
@@ -129,19 +137,31 @@ MotionSamples differentiate_motion(const Table& table, const std::string& source
     m.coordinates = coordinates;
     for (double v : table.columns[tc]) m.t.push_back(tu.factor * v);
 
-    // increasing, uniformly spaced times
-    const double h = (m.t.back() - m.t.front()) / static_cast<double>(rows - 1);
+    // increasing times on a uniform grid (rounding within the time column's printed precision
+    // is not jitter: calc_uniform_time_base)
     for (std::size_t r = 1; r < rows; ++r)
         if (!(m.t[r] > m.t[r - 1]))
             throw ArgumentError(where(table, source, r) + "time " + std::to_string(m.t[r]) +
                                 " s does not increase (previous row: " +
                                 std::to_string(m.t[r - 1]) + " s); sort the rows by time");
-    for (std::size_t r = 1; r < rows; ++r) {
-        const double step = m.t[r] - m.t[r - 1];
-        if (std::abs(step - h) > 1e-6 * h)
-            throw ArgumentError(where(table, source, r) + "time step " + std::to_string(step) +
-                                " s differs from the mean step " + std::to_string(h) +
-                                " s; filtering needs uniformly sampled data (resample it)");
+    const UniformTimeBase base = calc_uniform_time_base(m.t);
+    const double h = base.step;
+    if (!base.uniform) {
+        // the first sample off the grid, and the step that put it there
+        std::size_t r = 1;
+        while (r + 1 < rows &&
+               std::abs(m.t[r] - (m.t.front() + static_cast<double>(r) * h)) <= base.tolerance)
+            ++r;
+        const double off = m.t[r] - (m.t.front() + static_cast<double>(r) * h);
+        throw ArgumentError(
+            where(table, source, r) + "time step " + short_number(m.t[r] - m.t[r - 1]) +
+            " s (to t = " + short_number(m.t[r]) + " s) puts this sample " +
+            short_number(std::abs(off) * 1000) + " ms off the uniform grid of the time column (step " +
+            short_number(h) + " s, " + short_number(1 / h) + " Hz), more than " +
+            (base.resolution > 0 ? "the rounding of its printed times can explain (" + short_number(base.tolerance) + " s)"
+                                 : "1e-6 of the step (its times are written in full)") +
+            "; filtering needs uniformly sampled data: resample the motion at one rate, or "
+            "correct the time column");
     }
 
     // per coordinate: SI, filter, differentiate

@@ -7,6 +7,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <numbers>
@@ -134,6 +136,28 @@ TEST(ReadMotion, UnevenTimesAreReportedWithTheLine) {
     t.columns[0] = {0, 0.01, 0.01, 0.02, 0.03};
     EXPECT_THROW_MSG(differentiate_motion(t, "walk.csv", {"q"}), ArgumentError,
                      "walk.csv:4: time 0.010000 s does not increase");
+}
+
+TEST(ReadMotion, TimesPrintedTo8DecimalsAt150HzAreUniformAndDifferentiateExactly) {
+    // q = 0.5 sin(2 pi t) rad at 150 Hz, times and values as a .mot prints them (8 decimals):
+    // steps of 0.00666666 and 0.00666667 s are the rounding of 1/150 s, not jitter
+    Table t;
+    t.add_column("t", "s");
+    t.add_column("q", "rad");
+    char cell[64];
+    const double w = 2 * std::numbers::pi;
+    for (int k = 0; k <= 150; ++k) {
+        std::snprintf(cell, sizeof cell, "%.8f", k / 150.0);
+        t.columns[0].push_back(std::strtod(cell, nullptr));
+        t.columns[1].push_back(0.5 * std::sin(w * k / 150.0));
+    }
+    const MotionSamples m = differentiate_motion(t, "walk.mot", {"q"}, {.cutoff_hz = 0});
+    // central differences at h = 1/150 s err by (w h)^2/12 = 1.5e-4 of q' and q''
+    for (int k = 10; k <= 140; k += 10) {
+        const double tk = k / 150.0;
+        EXPECT_NEAR(m.qd[0][k], 0.5 * w * std::cos(w * tk), 2e-4 * 0.5 * w) << tk;
+        EXPECT_NEAR(m.qdd[0][k], -0.5 * w * w * std::sin(w * tk), 2e-4 * 0.5 * w * w) << tk;
+    }
 }
 
 }  // namespace
