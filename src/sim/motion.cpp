@@ -60,8 +60,8 @@ std::string with_article(const std::string& quantity) {
 
 // the unit a coordinate column is read in: its own, checked against the coordinate's
 // declared quantity; or, without one, the assumed unit or SI where that cannot mislead
-Unit checked_column_unit(const Unit& column, const Unit& declared, const Unit& assumed,
-                         const std::string& source, const std::string& name) {
+Unit checked_column_unit(const Unit& column, const Unit& declared, const std::string& why,
+                         const Unit& assumed, const std::string& source, const std::string& name) {
     if (!column.quantity.empty()) {
         const bool fits = declared.quantity.empty()
                               ? column.quantity == "angle" || column.quantity == "length"
@@ -72,7 +72,7 @@ Unit checked_column_unit(const Unit& column, const Unit& declared, const Unit& a
         throw ArgumentError(
             source + ": column '" + name + " [" + column.name + "]' is " +
             with_article(column.quantity) + ", but the coordinate '" + name + "' is " + expected +
-            (declared.quantity.empty() ? "" : " (declared in " + declared.name + ")") +
+            (why.empty() ? "" : " (" + why + ")") +
             "; give the column a unit of " + expected + " (" +
             (declared.quantity == "length" ? "m, mm" : declared.quantity == "angle" ? "deg, rad" : "deg, rad, m, mm") +
             ")");
@@ -179,10 +179,26 @@ MotionSamples differentiate_motion(const Table& table, const std::string& source
         } catch (const ArgumentError& e) {
             throw ArgumentError(source + ": column '" + name + "': " + e.what());
         }
-        const Unit declared = declared_unit(options, i);
-        u = checked_column_unit(u, declared, assumed, source, name);
+        // the coordinate's quantity: its declared unit's, or its kinematics'
+        Unit declared = declared_unit(options, i);
+        std::string why = declared.quantity.empty() ? "" : "declared in " + declared.name;
+        if (declared.quantity.empty() && i < options.kinematic_quantities.size() &&
+            !options.kinematic_quantities[i].empty()) {
+            const bool angle = options.kinematic_quantities[i] == "angle";
+            declared = parse_unit(angle ? "rad" : "m");
+            why = angle ? "it turns a frame of the model" : "it moves points of the model and turns no frame";
+        }
+        u = checked_column_unit(u, declared, why, assumed, source, name);
         std::vector<double> q;
-        for (double v : table.columns[c]) q.push_back(u.factor * v);
+        for (std::size_t r = 0; r < rows; ++r) {
+            // a missing value is not data: never filtered into its neighbours
+            if (std::isnan(table.columns[c][r]))
+                throw ArgumentError(where(table, source, r) + "column '" + name +
+                                    "' has no value (NaN) at t = " + short_number(m.t[r]) +
+                                    " s; a missing coordinate is not read as data: fill the gap "
+                                    "in the lab's software, or trim the motion to where it is known");
+            q.push_back(u.factor * table.columns[c][r]);
+        }
         if (options.cutoff_hz > 0) q = filter_lowpass(q, 1.0 / h, options.cutoff_hz);
         m.qd.push_back(differentiate(q, h));
         m.qdd.push_back(differentiate_twice(q, h));

@@ -160,5 +160,32 @@ TEST(ReadMotion, TimesPrintedTo8DecimalsAt150HzAreUniformAndDifferentiateExactly
     }
 }
 
+TEST(ReadMotion, AMissingSampleIsRefusedWithItsColumnAndTime) {
+    Table t;
+    t.add_column("t", "s");
+    t.add_column("q", "rad");
+    t.columns = {{0, 0.01, 0.02, 0.03, 0.04}, {0, 0.1, std::nan(""), 0.3, 0.4}};
+    t.lines = {8, 9, 10, 11, 12};
+    EXPECT_THROW_MSG(differentiate_motion(t, "walk.mot", {"q"}), ArgumentError,
+                     "walk.mot:10: column 'q' has no value (NaN) at t = 0.02 s; a missing coordinate is not "
+                     "read as data");
+}
+
+TEST(ReadMotion, AColumnInMetresForARotationIsRefusedNamingBoth) {
+    // the coordinate is declared without a unit, but turns a frame of the model: an angle
+    Table t = one_coordinate("qA", "m");
+    MotionFilterOptions o;
+    o.kinematic_quantities = {"angle"};
+    EXPECT_THROW_MSG(differentiate_motion(t, "m.csv", {"qA"}, o), ArgumentError,
+                     "m.csv: column 'qA [m]' is a length, but the coordinate 'qA' is an angle (it turns a "
+                     "frame of the model); give the column a unit of an angle (deg, rad)");
+    // and a translation read from degrees
+    Table x = one_coordinate("x", "deg");
+    o.kinematic_quantities = {"length"};
+    EXPECT_THROW_MSG(differentiate_motion(x, "m.csv", {"x"}, o), ArgumentError,
+                     "column 'x [deg]' is an angle, but the coordinate 'x' is a length (it moves points of "
+                     "the model and turns no frame)");
+}
+
 }  // namespace
 }  // namespace alembert
