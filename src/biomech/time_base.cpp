@@ -71,9 +71,9 @@ std::string seconds(double t) { return six_digits(t) + " s"; }
 std::string TimeBaseReport::describe() const {
     std::ostringstream out;
     const std::string rate = six_digits(rate_hz) + " Hz" +
-                             (rate_from_file ? " (the rate the file states)" : resampled ? " (the median step)" : "");
+                             (rate_from_file ? " (the rate the file states)" : resampled ? " (the time column's typical step)" : "");
     // the rate, and a stated rate the times contradict
-    if (file_rate_hz > 0 && !rate_from_file)
+    if (file_rate_hz > 0 && !rate_from_file && std::abs(file_rate_hz - rate_hz) > 1e-3 * rate_hz)
         out << "time base: the file states " << six_digits(file_rate_hz) << " Hz, but its time column is "
             << (resampled ? "not on that grid" : "uniform at " + six_digits(rate_hz) + " Hz") << "; the time column is used\n";
     if (times_rounded)
@@ -82,8 +82,8 @@ std::string TimeBaseReport::describe() const {
             << six_digits(std::abs(worst_offset_s) * 1000) << " ms: rounding, not jitter), so the times were read as "
             << "t0 + k/" << six_digits(rate_hz) << " s and nothing was resampled\n";
     else if (gaps.empty() && !resampled)
-        out << "time base: " << samples_in << " samples at " << rate
-            << ", uniform and without gaps; nothing filled or resampled\n";
+        out << "time base: " << samples_in << " samples at " << six_digits(rate_hz)
+            << " Hz, uniform and without gaps; nothing filled or resampled\n";
     for (const Gap& g : gaps)
         out << "gap filled: '" << g.name << "' missing from t = " << seconds(g.t_first)
             << " to " << seconds(g.t_last) << " (" << g.samples
@@ -149,17 +149,39 @@ TimeBaseReport regularize_time_base(Table& table, std::size_t time_column,
     if (base.uniform) {
         report.rate_from_file = base.step_from_rate;
         // rounded times become the grid's: differences of rounded times are not the motion's
-        if (std::abs(base.worst_offset) > 1e-9 * h) {
+        if (base.resolution > 0 && std::abs(base.worst_offset) > 1e-9 * h) {
             report.times_rounded = true;
             for (std::size_t r = 0; r < n; ++r)
                 table.columns[time_column][r] = (t.front() + static_cast<double>(r) * h) / t_factor;
         }
     } else {
-        // irregular: the file's rate if the steps are near it, else the median step
-        h = median;
-        if (options.rate_hz > 0 && std::abs(1 / options.rate_hz - median) <= median / 4) {
+        // irregular: the file's rate if the steps are near it, else the typical step: with
+        // every step within a quarter of the median (jitter), the least-squares slope of the
+        // times over their rows; else (dropped frames) the mean of the steps near the median
+        double sum = 0;
+        std::size_t count = 0;
+        for (double step : steps)
+            if (std::abs(step - median) <= median / 4) sum += step, ++count;
+        h = sum / static_cast<double>(count);
+        if (count == steps.size()) {
+            const double k_mean = static_cast<double>(n - 1) / 2;
+            double t_mean = 0, skk = 0, skt = 0;
+            for (double v : t) t_mean += v / static_cast<double>(n);
+            for (std::size_t k = 0; k < n; ++k) {
+                const double dk = static_cast<double>(k) - k_mean;
+                skk += dk * dk, skt += dk * (t[k] - t_mean);
+            }
+            h = skt / skk;
+        }
+        if (options.rate_hz > 0 && std::abs(1 / options.rate_hz - h) <= h / 4) {
             h = 1 / options.rate_hz;
             report.rate_from_file = true;
+        }
+        // the largest offset from the grid resampled on
+        report.worst_offset_s = 0;
+        for (std::size_t k = 0; k < n; ++k) {
+            const double d = t[k] - (t.front() + static_cast<double>(k) * h);
+            if (std::abs(d) > std::abs(report.worst_offset_s)) report.worst_offset_s = d;
         }
         // a long step is missing data, not jitter
         for (std::size_t r = 1; r < n; ++r)

@@ -61,28 +61,42 @@ UniformTimeBase calc_uniform_time_base(const std::vector<double>& t_s, double ra
     if (n < 2) return out;
     out.t0 = t_s.front();
     out.resolution = calc_printed_resolution(t_s);
-    const double largest = std::max(std::abs(t_s.front()), std::abs(t_s.back()));
-    // a time fits the grid of step h within the printed precision (and floating-point error)
-    auto fits = [&](double h) {
-        out.step = h;
-        // rounding explains an offset up to the resolution, but not one near the step itself:
-        // times printed coarser than a quarter step cannot tell rounding from jitter
-        out.tolerance = std::max(std::min(out.resolution, h / 4), 1e-6 * h);
-        worst_offset_from_grid(t_s, h, out);
-        return std::abs(out.worst_offset) <= out.tolerance + 16 * kEps * largest;
-    };
-    // the stated rate first, then the mean step; off both, the offsets are from the stated grid
+    const double slack = 16 * kEps * std::max(std::abs(t_s.front()), std::abs(t_s.back()));
     const bool stated = rate_hz > 0 && std::isfinite(rate_hz);
-    if (stated && fits(1 / rate_hz)) {
-        out.uniform = out.step_from_rate = true;
+    const double mean = (t_s.back() - t_s.front()) / static_cast<double>(n - 1);
+    // the largest offset from the grid of step h
+    auto offset = [&](double h) {
+        out.step = h;
+        worst_offset_from_grid(t_s, h, out);
+        return std::abs(out.worst_offset);
+    };
+    // rounding explains an offset up to the resolution, but not one near the step itself:
+    // times printed coarser than a quarter step cannot tell rounding from jitter
+    auto tolerance = [&](double h) { return std::max(std::min(out.resolution, h / 4), 1e-6 * h); };
+
+    // on the grid of their own mean step as written (to 1e-6 of it): nothing to round, and a
+    // stated rate that agrees is the same grid (a header's 69.93 Hz for steps of 0.0143 s)
+    if (offset(mean) <= 1e-6 * mean + slack) {
+        out.uniform = true;
+        out.tolerance = tolerance(mean);
+        out.step_from_rate = stated && std::abs(mean * rate_hz - 1) <= 1e-3;
         return out;
     }
-    const UniformTimeBase on_rate = out;
-    out.uniform = fits((t_s.back() - t_s.front()) / static_cast<double>(n - 1));
-    if (!out.uniform && stated) {
-        out = on_rate;
-        out.step_from_rate = true;
+    // rounded: on the stated rate's grid, else their mean step's, within the printed precision
+    if (stated && offset(1 / rate_hz) <= tolerance(1 / rate_hz) + slack) {
+        out.uniform = out.step_from_rate = true;
+        out.tolerance = tolerance(out.step);
+        return out;
     }
+    if (offset(mean) <= tolerance(mean) + slack) {
+        out.uniform = true;
+        out.tolerance = tolerance(mean);
+        return out;
+    }
+    // off both: the offsets are from the stated grid when there is one
+    offset(stated ? 1 / rate_hz : mean);
+    out.step_from_rate = stated;
+    out.tolerance = tolerance(out.step);
     return out;
 }
 

@@ -97,15 +97,17 @@ void cart_pendulum_loads(double t, double& F, double& T) {
 
 // a .mot of the motion at `rate` Hz for 2 s, times printed with `decimals`; th in degrees
 // (inDegrees=yes), x in metres, values to 10 decimals; `labels` the column labels; `cell(k, c,
-// text)` may replace the text of column c (0: x, 1: th) at sample k
+// text)` may replace the text of column c (0: x, 1: th) at sample k; `jitter` s is added to
+// every third sample's time and taken from the next's, the motion sampled at those times
 void write_cart_mot(const fs::path& p, double rate, int decimals, const std::string& labels = "time\tx\tth",
-                    const std::function<std::string(int, int, const std::string&)>& cell = nullptr) {
+                    const std::function<std::string(int, int, const std::string&)>& cell = nullptr,
+                    double jitter = 0) {
     const int n = static_cast<int>(std::lround(2 * rate)) + 1;
     std::ofstream out(p);
     out << "Coordinates\nversion=1\nnRows=" << n << "\nnColumns=3\ninDegrees=yes\nendheader\n" << labels << "\n";
     char text[64];
     for (int k = 0; k < n; ++k) {
-        const double t = k / rate;
+        const double t = k / rate + jitter * (k % 3 == 1 ? 1 : k % 3 == 2 ? -1 : 0);
         std::snprintf(text, sizeof text, "%.*f", decimals, t);
         out << text;
         const double values[2] = {x_of(t), th_of(t) * 180 / kPi};
@@ -157,6 +159,24 @@ TEST(LabMotion, AMotAt150HzWithTimesTo8DecimalsIsReadAsUniform) {
     EXPECT_NE(r.out.find("301 samples at 150 Hz; the time column is printed to 1e-08 s and lies on that grid"),
               std::string::npos)
         << r.out;
+}
+
+TEST(LabMotion, AMotWithJitterIsResampledAtItsTypicalStepAndSaysSo) {
+    // 0.3 ms of jitter at 100 Hz, times printed to 0.1 ms: not rounding; resampled at 100 Hz
+    // (the typical step, not the median 10.3 ms step), stated, and the loads are those of the
+    // motion at the grid's times
+    Scratch s("jitter");
+    write_cart_mot(s.dir / "cart.mot", 100, 4, "time\tx\tth", nullptr, 0.3e-3);
+    const InverseRun r = run_inverse(kCartPendulum, s.dir / "cart.mot", s.dir / "out");
+    ASSERT_EQ(r.status, RunStatus::ok) << r.err;
+    EXPECT_NE(r.out.find("are not uniform; 201 samples became 200 at 100 Hz (the time column's typical step) by a "
+                         "natural cubic spline per column (a time was 0.3"),
+              std::string::npos)
+        << r.out;
+    ASSERT_EQ(r.loads.row_count(), 200u);
+    // the least-squares step of the times is 10 ms to 3e-6 of it
+    EXPECT_NEAR(r.loads.columns[0][199], 1.99, 1e-5);
+    expect_cart_pendulum_loads(r.loads, 2e-3);
 }
 
 TEST(LabMotion, AMissingSampleInAMotIsFilledWhenShortAndStatedOrNamedWithItsTime) {

@@ -67,8 +67,10 @@ struct TimeBaseReport {
 ///    (de Boor, A Practical Guide to Splines, ch. IV), which reproduces straight-line motion;
 ///  - an irregular time base (jitter beyond the printed precision, a dropped frame) is
 ///    resampled from the first time at options.rate_hz when that is within a quarter of the
-///    median step, else at the median step, each column by a natural cubic spline through
-///    its samples, on the grid inside the trial's first and last times.
+///    typical step, else at the typical step (with every step within a quarter of the median,
+///    the least-squares slope of the times over their rows; else the mean of the steps within
+///    a quarter of the median), each column by a natural cubic spline through its samples, on
+///    the grid inside the trial's first and last times.
 /// `time_column` is the index of the time column (in s or ms); `source` names the data in
 /// messages (the file's path).
 /// @throws alembert::ArgumentError naming the column (or marker), its time range, its samples

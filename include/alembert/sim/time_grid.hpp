@@ -41,12 +41,13 @@ struct UniformTimeBase {
 double calc_printed_resolution(const std::vector<double>& t_s);
 
 /// Whether increasing times `t_s` (s, at least 2) are samples at a uniform rate, as a lab
-/// file prints them: with rate_hz > 0 (a header's rate), first on the grid t_0 + k / rate_hz;
-/// if the times do not fit it (or no rate is given), on the grid of their mean step
-/// (t_{n-1} - t_0) / (n - 1). A time fits if it lies within UniformTimeBase::tolerance of the
-/// grid: rounding to the printed precision moves each time by at most half a digit, so a 60 Hz
-/// column rounded to milliseconds (0, 0.017, 0.033, 0.05, ...) is uniform, and so is a 150 Hz
-/// column printed to 8 decimals, while 0.3 ms of jitter printed to 0.1 ms is not.
+/// file prints them. Times on the grid of their mean step (t_{n-1} - t_0) / (n - 1) to 1e-6
+/// of it are uniform as written. Otherwise, with rate_hz > 0 (a header's rate), the grid
+/// t_0 + k / rate_hz is tried first, then the mean step's: a time fits if it lies within
+/// UniformTimeBase::tolerance of the grid. Rounding to the printed precision moves each time
+/// by at most half a digit, so a 60 Hz column rounded to milliseconds (0, 0.017, 0.033, 0.05,
+/// ...) is uniform, and so is a 150 Hz column printed to 8 decimals, while 0.3 ms of jitter
+/// printed to 0.1 ms is not.
 UniformTimeBase calc_uniform_time_base(const std::vector<double>& t_s, double rate_hz = 0);
 
 }  // namespace alembert
