@@ -2,7 +2,7 @@
 // The motion `inverse` reads: the file's format by its extension, each coordinate's kind
 // (rotation or translation) from the model, and an OpenSim storage file's columns in SI.
 #include <algorithm>
-#include <cmath>
+#include <cctype>
 #include <filesystem>
 
 #include "alembert/biomech/lab_files.hpp"
@@ -61,8 +61,7 @@ std::vector<std::string> Interpreter::Impl::coordinate_quantities(const std::vec
 Table Interpreter::Impl::storage_motion_table(const std::string& path, const std::vector<TimeVariable>& q,
                                               Location where, std::string& note) {
     const StorageFile storage = read_storage(path);
-    // the time and the coordinates' columns (other columns are not read; a coordinate missing
-    // is named by differentiate_motion)
+    // the time and the coordinates' columns (other columns are not read)
     StorageFile coordinates;
     coordinates.in_degrees = storage.in_degrees;
     coordinates.header = storage.header;
@@ -70,19 +69,24 @@ Table Interpreter::Impl::storage_motion_table(const std::string& path, const std
     t.add_column(storage.table.names[0], storage.table.units[0]);
     t.columns[0] = storage.table.columns[0];
     t.lines = storage.table.lines;
-    for (const TimeVariable& v : q)
-        for (std::size_t c = 1; c < storage.table.names.size(); ++c)
-            if (storage.table.names[c] == v.name()) {
-                t.add_column(v.name(), storage.table.units[c]);
-                t.columns.back() = storage.table.columns[c];
-            }
+    std::string found;
+    for (const std::string& n : storage.table.names) found += (found.empty() ? "" : ", ") + n;
+    for (const TimeVariable& v : q) {
+        const auto& names_in_file = storage.table.names;
+        const auto it = std::find(names_in_file.begin() + 1, names_in_file.end(), v.name());
+        if (it == names_in_file.end())
+            throw ArgumentError(path + ": no column for the coordinate '" + v.name() + "'; name a column '" +
+                                v.name() + "' (columns found: " + found + ")");
+        const std::size_t c = static_cast<std::size_t>(it - names_in_file.begin());
+        t.add_column(v.name(), storage.table.units[c]);
+        t.columns.back() = storage.table.columns[c];
+    }
     // inDegrees applies to the rotational coordinates only (as in OpenSim): not to lengths
     std::vector<std::string> angles;
     const std::vector<std::string> kinds = coordinate_quantities(q, where);
     for (std::size_t i = 0; i < q.size(); ++i) {
         const bool length = kinds[i] == "length" || symbol_dimension(q[i].name()) == Dimension::length();
-        const bool present = std::find(t.names.begin(), t.names.end(), q[i].name()) != t.names.end();
-        if (!length && present) angles.push_back(q[i].name());
+        if (!length) angles.push_back(q[i].name());
     }
     Table motion = motion_table_from_storage(coordinates, angles);
     // short gaps filled and the time base checked, stated when anything was done
