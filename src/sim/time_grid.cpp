@@ -34,11 +34,13 @@ std::string grid_number(double v) {
 
 std::string UniformTimeBase::describe(std::size_t samples) const {
     if (!uniform) return "";
-    std::string text = std::to_string(samples) + " samples at " + grid_number(1 / step) + " Hz (" +
-                       (step_from_rate ? "the rate the file states" : "the mean step of its times") + ")";
+    std::string text =
+        std::to_string(samples) + " samples at " + grid_number(1 / step) + " Hz (" +
+        (step_from_rate ? "the rate the file states" : "the mean step of its times") + ")";
     if (resolution > 0 && std::abs(worst_offset) > 1e-6 * step)
         text += "; the times are printed to " + grid_number(resolution) +
-                " s and lie on this grid within that precision (rounding, not jitter: nothing resampled)";
+                " s and lie on this grid within that precision (rounding, not jitter: nothing "
+                "resampled)";
     return text;
 }
 

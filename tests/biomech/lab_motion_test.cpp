@@ -25,13 +25,14 @@ using namespace alembert::lang;
 
 constexpr double kPi = std::numbers::pi;
 constexpr double M = 1, m = 0.1, L = 0.5, g = 9.81;  // cart, pendulum, its centre, gravity
-constexpr double m_swing = 2;                          // the marker trial's pendulum
+constexpr double m_swing = 2;                        // the marker trial's pendulum
 
 // a scratch directory, removed at the end
 struct Scratch {
     fs::path dir;
     explicit Scratch(const std::string& name)
-        : dir(fs::temp_directory_path() / ("alembert_lab_motion_" + name + "_" + std::to_string(::getpid()))) {
+        : dir(fs::temp_directory_path() /
+              ("alembert_lab_motion_" + name + "_" + std::to_string(::getpid()))) {
         fs::create_directories(dir);
     }
     ~Scratch() { fs::remove_all(dir); }
@@ -52,7 +53,8 @@ InverseRun run_inverse(const std::string& model, const fs::path& motion, const f
     if (r.status == RunStatus::ok) r.status = interp.run_inverse(motion.string(), 0.0);
     r.out = out.str(), r.err = err.str();
     for (const char* name : {"loads.csv", "torques.csv", "forces.csv"})
-        if (r.status == RunStatus::ok && fs::exists(out_dir / name)) r.loads = alembert::read_csv((out_dir / name).string());
+        if (r.status == RunStatus::ok && fs::exists(out_dir / name))
+            r.loads = alembert::read_csv((out_dir / name).string());
     return r;
 }
 
@@ -87,9 +89,11 @@ double x_of(double t) { return 0.2 * std::sin(2 * t); }
 double th_of(double t) { return 0.6 * std::sin(3 * t); }
 
 // closed form (Kane's equations by hand, Acm = (x + L sin th, -L cos th)):
-// F = (M + m) x'' + m L (th'' cos th - th'^2 sin th), T_A = (I + m L^2) th'' + m L cos th x'' + m g L sin th
+// F = (M + m) x'' + m L (th'' cos th - th'^2 sin th), T_A = (I + m L^2) th'' + m L cos th x'' + m g
+// L sin th
 void cart_pendulum_loads(double t, double& F, double& T) {
-    const double x2 = -0.8 * std::sin(2 * t), th = th_of(t), th1 = 1.8 * std::cos(3 * t), th2 = -5.4 * std::sin(3 * t);
+    const double x2 = -0.8 * std::sin(2 * t), th = th_of(t), th1 = 1.8 * std::cos(3 * t),
+                 th2 = -5.4 * std::sin(3 * t);
     const double I = m * L * L / 12;
     F = (M + m) * x2 + m * L * (th2 * std::cos(th) - th1 * th1 * std::sin(th));
     T = (I + m * L * L) * th2 + m * L * std::cos(th) * x2 + m * g * L * std::sin(th);
@@ -99,12 +103,14 @@ void cart_pendulum_loads(double t, double& F, double& T) {
 // (inDegrees=yes), x in metres, values to 10 decimals; `labels` the column labels; `cell(k, c,
 // text)` may replace the text of column c (0: x, 1: th) at sample k; `jitter` s is added to
 // every third sample's time and taken from the next's, the motion sampled at those times
-void write_cart_mot(const fs::path& p, double rate, int decimals, const std::string& labels = "time\tx\tth",
+void write_cart_mot(const fs::path& p, double rate, int decimals,
+                    const std::string& labels = "time\tx\tth",
                     const std::function<std::string(int, int, const std::string&)>& cell = nullptr,
                     double jitter = 0) {
     const int n = static_cast<int>(std::lround(2 * rate)) + 1;
     std::ofstream out(p);
-    out << "Coordinates\nversion=1\nnRows=" << n << "\nnColumns=3\ninDegrees=yes\nendheader\n" << labels << "\n";
+    out << "Coordinates\nversion=1\nnRows=" << n << "\nnColumns=3\ninDegrees=yes\nendheader\n"
+        << labels << "\n";
     char text[64];
     for (int k = 0; k < n; ++k) {
         const double t = k / rate + jitter * (k % 3 == 1 ? 1 : k % 3 == 2 ? -1 : 0);
@@ -128,7 +134,8 @@ void expect_cart_pendulum_loads(const alembert::Table& loads, double rel) {
     for (std::size_t r = 2; r + 2 < n; ++r) {
         double F, T;
         cart_pendulum_loads(loads.columns[0][r], F, T);
-        worst = std::max({worst, std::abs(loads.columns[1][r] - F), std::abs(loads.columns[2][r] - T)});
+        worst =
+            std::max({worst, std::abs(loads.columns[1][r] - F), std::abs(loads.columns[2][r] - T)});
         scale = std::max({scale, std::abs(F), std::abs(T)});
     }
     EXPECT_GT(scale, 0.5);
@@ -156,8 +163,10 @@ TEST(LabMotion, AMotAt150HzWithTimesTo8DecimalsIsReadAsUniform) {
     EXPECT_EQ(r.loads.row_count(), 301u);
     EXPECT_NEAR(r.loads.columns[0][1], 1.0 / 150, 1e-12);
     expect_cart_pendulum_loads(r.loads, 1e-3);
-    EXPECT_NE(r.out.find("301 samples at 150 Hz; the time column is printed to 1e-08 s and lies on that grid"),
-              std::string::npos)
+    EXPECT_NE(
+        r.out.find(
+            "301 samples at 150 Hz; the time column is printed to 1e-08 s and lies on that grid"),
+        std::string::npos)
         << r.out;
 }
 
@@ -169,7 +178,8 @@ TEST(LabMotion, AMotWithJitterIsResampledAtItsTypicalStepAndSaysSo) {
     write_cart_mot(s.dir / "cart.mot", 100, 4, "time\tx\tth", nullptr, 0.3e-3);
     const InverseRun r = run_inverse(kCartPendulum, s.dir / "cart.mot", s.dir / "out");
     ASSERT_EQ(r.status, RunStatus::ok) << r.err;
-    EXPECT_NE(r.out.find("are not uniform; 201 samples became 200 at 100 Hz (the time column's typical step) by a "
+    EXPECT_NE(r.out.find("are not uniform; 201 samples became 200 at 100 Hz (the time column's "
+                         "typical step) by a "
                          "natural cubic spline per column (a time was 0.3"),
               std::string::npos)
         << r.out;
@@ -182,25 +192,30 @@ TEST(LabMotion, AMotWithJitterIsResampledAtItsTypicalStepAndSaysSo) {
 TEST(LabMotion, AMissingSampleInAMotIsFilledWhenShortAndStatedOrNamedWithItsTime) {
     Scratch s("nan");
     // th missing at 3 samples (30 ms): filled by the spline through its valid samples, stated
-    write_cart_mot(s.dir / "short.mot", 100, 2, "time\tx\tth", [](int k, int c, const std::string& v) {
-        return c == 1 && k >= 100 && k < 103 ? std::string("NaN") : v;
-    });
+    write_cart_mot(s.dir / "short.mot", 100, 2, "time\tx\tth",
+                   [](int k, int c, const std::string& v) {
+                       return c == 1 && k >= 100 && k < 103 ? std::string("NaN") : v;
+                   });
     const InverseRun a = run_inverse(kCartPendulum, s.dir / "short.mot", s.dir / "a");
     ASSERT_EQ(a.status, RunStatus::ok) << a.err;
-    EXPECT_NE(a.out.find("gap filled: 'th' missing from t = 1 s to 1.02 s (3 samples), filled by a natural cubic "
+    EXPECT_NE(a.out.find("gap filled: 'th' missing from t = 1 s to 1.02 s (3 samples), filled by a "
+                         "natural cubic "
                          "spline"),
               std::string::npos)
         << a.out;
     expect_cart_pendulum_loads(a.loads, 1e-2);
     // missing for 0.2 s: refused, naming the file, the column and the times
-    write_cart_mot(s.dir / "long.mot", 100, 2, "time\tx\tth", [](int k, int c, const std::string& v) {
-        return c == 1 && k >= 100 && k < 120 ? std::string("NaN") : v;
-    });
+    write_cart_mot(s.dir / "long.mot", 100, 2, "time\tx\tth",
+                   [](int k, int c, const std::string& v) {
+                       return c == 1 && k >= 100 && k < 120 ? std::string("NaN") : v;
+                   });
     const InverseRun b = run_inverse(kCartPendulum, s.dir / "long.mot", s.dir / "b");
     EXPECT_EQ(b.status, RunStatus::script_error);
-    EXPECT_NE(b.err.find("long.mot:108: 'th' is missing from t = 1 s to 1.19 s (20 samples: frames 101 to 120, "
-                         "lines 108 to 127), a gap of 0.21 s, longer than the 0.1 s that may be filled"),
-              std::string::npos)
+    EXPECT_NE(
+        b.err.find(
+            "long.mot:108: 'th' is missing from t = 1 s to 1.19 s (20 samples: frames 101 to 120, "
+            "lines 108 to 127), a gap of 0.21 s, longer than the 0.1 s that may be filled"),
+        std::string::npos)
         << b.err;
 }
 
@@ -210,20 +225,24 @@ TEST(LabMotion, AColumnInMetresForARotationIsRefusedOnEveryPath) {
     {
         std::ofstream csv(s.dir / "cart.csv");
         csv << "t [s],x [m],th [m]\n";
-        for (int k = 0; k <= 20; ++k) csv << 0.01 * k << "," << x_of(0.01 * k) << "," << th_of(0.01 * k) << "\n";
+        for (int k = 0; k <= 20; ++k)
+            csv << 0.01 * k << "," << x_of(0.01 * k) << "," << th_of(0.01 * k) << "\n";
     }
     write_cart_mot(s.dir / "cart.mot", 100, 2, "time\tx [m]\tth [m]");
     for (const char* file : {"cart.csv", "cart.mot"}) {
         const InverseRun r = run_inverse(kCartPendulum, s.dir / file, s.dir / "out");
         EXPECT_EQ(r.status, RunStatus::script_error) << file;
-        EXPECT_NE(r.err.find(std::string(file) + ": column 'th [m]' is a length, but the coordinate 'th' is an angle "
-                                                 "(it turns a frame of the model); give the column a unit of an angle"),
+        EXPECT_NE(r.err.find(std::string(file) +
+                             ": column 'th [m]' is a length, but the coordinate 'th' is an angle "
+                             "(it turns a frame of the model); give the column a unit of an angle"),
                   std::string::npos)
             << r.err;
     }
     // a unit of its own is kept whatever inDegrees says: th [rad] in an inDegrees=yes file
     write_cart_mot(s.dir / "rad.mot", 100, 2, "time\tx [m]\tth [rad]",
-                   [](int k, int c, const std::string& v) { return c == 1 ? ten_decimals(th_of(k / 100.0)) : v; });
+                   [](int k, int c, const std::string& v) {
+                       return c == 1 ? ten_decimals(th_of(k / 100.0)) : v;
+                   });
     const InverseRun r = run_inverse(kCartPendulum, s.dir / "rad.mot", s.dir / "rad");
     ASSERT_EQ(r.status, RunStatus::ok) << r.err;
     expect_cart_pendulum_loads(r.loads, 2e-3);
@@ -232,19 +251,25 @@ TEST(LabMotion, AColumnInMetresForARotationIsRefusedOnEveryPath) {
 TEST(LabMotion, AFileInAnotherFormatIsNamedWithTheFormatsReadAndNoBytesPrinted) {
     Scratch s("formats");
     using namespace std::string_literals;
-    const std::string zip = "PK\x03\x04\x14\x00\x06\x00\x08\x00\x00\x00!\x00\xb5U\x80\x01\n\x00\x00\x01"s;
+    const std::string zip =
+        "PK\x03\x04\x14\x00\x06\x00\x08\x00\x00\x00!\x00\xb5U\x80\x01\n\x00\x00\x01"s;
     std::ofstream(s.dir / "trial.xlsx", std::ios::binary) << zip;
     std::ofstream(s.dir / "trial.csv", std::ios::binary) << zip;
     std::ofstream(s.dir / "trial.mot", std::ios::binary) << zip;
     const InverseRun x = run_inverse(kCartPendulum, s.dir / "trial.xlsx", s.dir / "out");
     EXPECT_EQ(x.status, RunStatus::script_error);
-    EXPECT_NE(x.err.find("trial.xlsx' is a '.xlsx' file; inverse reads a motion from .csv"), std::string::npos) << x.err;
+    EXPECT_NE(x.err.find("trial.xlsx' is a '.xlsx' file; inverse reads a motion from .csv"),
+              std::string::npos)
+        << x.err;
     const InverseRun c = run_inverse(kCartPendulum, s.dir / "trial.csv", s.dir / "out");
-    EXPECT_NE(c.err.find("trial.csv:1: not a text file (byte 0x03); read_csv() reads CSV text"), std::string::npos)
+    EXPECT_NE(c.err.find("trial.csv:1: not a text file (byte 0x03); read_csv() reads CSV text"),
+              std::string::npos)
         << c.err;
     const InverseRun o = run_inverse(kCartPendulum, s.dir / "trial.mot", s.dir / "out");
-    EXPECT_NE(o.err.find("trial.mot:1: not a text file (byte 0x03); this reader reads OpenSim storage files"),
-              std::string::npos)
+    EXPECT_NE(
+        o.err.find(
+            "trial.mot:1: not a text file (byte 0x03); this reader reads OpenSim storage files"),
+        std::string::npos)
         << o.err;
     for (const std::string& e : {x.err, c.err, o.err})
         EXPECT_TRUE(std::none_of(e.begin(), e.end(), [](char ch) {
@@ -273,11 +298,13 @@ marker MID on A at Acm
 
 TEST(LabMotion, A60HzTrcRoundedToMillisecondsKeepsItsFramesDespiteAMarkerNeverSeen) {
     // 151 frames at 60 Hz (DataRate 60), times rounded to ms; the marker RASH, which the model
-    // does not use, is empty throughout. qA = 0.5 sin(pi t); T_A = (m L^2/12 + m L^2) qA'' + m g L sin qA
+    // does not use, is empty throughout. qA = 0.5 sin(pi t); T_A = (m L^2/12 + m L^2) qA'' + m g L
+    // sin qA
     Scratch s("trc60");
     {
         std::ofstream out(s.dir / "swing.trc");
-        out << "PathFileType\t4\t(X/Y/Z)\tswing.trc\nDataRate\tCameraRate\tNumFrames\tNumMarkers\tUnits\n"
+        out << "PathFileType\t4\t(X/Y/"
+               "Z)\tswing.trc\nDataRate\tCameraRate\tNumFrames\tNumMarkers\tUnits\n"
                "60\t60\t151\t3\tmm\nFrame#\tTime\tPIV\t\t\tMID\t\t\tRASH\t\t\n"
                "\t\tX1\tY1\tZ1\tX2\tY2\tZ2\tX3\tY3\tZ3\n\n";
         char row[256];
@@ -295,18 +322,22 @@ TEST(LabMotion, A60HzTrcRoundedToMillisecondsKeepsItsFramesDespiteAMarkerNeverSe
     EXPECT_NEAR(r.loads.columns[0][150], 2.5, 1e-12);
     double worst = 0, scale = 0;
     for (std::size_t k = 2; k + 2 < 151; ++k) {
-        const double t = r.loads.columns[0][k], q = 0.5 * std::sin(kPi * t), q2 = -0.5 * kPi * kPi * std::sin(kPi * t);
-        const double T = (m_swing * L * L / 12 + m_swing * L * L) * q2 + m_swing * g * L * std::sin(q);
+        const double t = r.loads.columns[0][k], q = 0.5 * std::sin(kPi * t),
+                     q2 = -0.5 * kPi * kPi * std::sin(kPi * t);
+        const double T =
+            (m_swing * L * L / 12 + m_swing * L * L) * q2 + m_swing * g * L * std::sin(q);
         worst = std::max(worst, std::abs(r.loads.columns[1][k] - T));
         scale = std::max(scale, std::abs(T));
     }
     // central differences at 1/60 s err by (pi h)^2/12 = 2.3e-4 of qA''
     EXPECT_GT(scale, 1.5);
     EXPECT_LT(worst, 1e-3 * scale) << worst;
-    EXPECT_NE(r.out.find("151 samples at 60 Hz (the rate the file states); the time column is printed to 0.001 s"),
+    EXPECT_NE(r.out.find("151 samples at 60 Hz (the rate the file states); the time column is "
+                         "printed to 0.001 s"),
               std::string::npos)
         << r.out;
-    EXPECT_NE(r.out.find("markers in the file that the model does not use, not read: RASH"), std::string::npos)
+    EXPECT_NE(r.out.find("markers in the file that the model does not use, not read: RASH"),
+              std::string::npos)
         << r.out;
 }
 

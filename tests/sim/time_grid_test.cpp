@@ -47,8 +47,9 @@ TEST(UniformTimeBase, SixtyHertzRoundedToMillisecondsIsUniformAtTheStatedRate) {
     const UniformTimeBase m = calc_uniform_time_base(t);
     EXPECT_TRUE(m.uniform);
     EXPECT_NEAR(1 / m.step, 60, 1e-9);
-    EXPECT_NE(b.describe(t.size()).find("151 samples at 60 Hz (the rate the file states); the times are printed "
-                                         "to 0.001 s"),
+    EXPECT_NE(b.describe(t.size()).find(
+                  "151 samples at 60 Hz (the rate the file states); the times are printed "
+                  "to 0.001 s"),
               std::string::npos)
         << b.describe(t.size());
 }

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// The uniform time base a printed time column stands for: rounding within its precision is not jitter.
+// The uniform time base a printed time column stands for: rounding within its precision is not
+// jitter.
 #pragma once
 
 #include <cstddef>
