@@ -87,7 +87,8 @@ std::string TimeBaseReport::describe() const {
     for (const Gap& g : gaps)
         out << "gap filled: '" << g.name << "' missing from t = " << seconds(g.t_first)
             << " to " << seconds(g.t_last) << " (" << g.samples
-            << " samples), filled by a natural cubic spline through its valid samples\n";
+            << " samples), filled by a natural cubic spline through its valid samples (gaps of up to "
+            << seconds(max_gap_s) << " are filled, longer ones refused)\n";
     if (resampled)
         out << "time base resampled: steps from " << seconds(min_step_s) << " to "
             << seconds(max_step_s) << " are not uniform; " << samples_in << " samples became "
@@ -124,6 +125,7 @@ TimeBaseReport regularize_time_base(Table& table, std::size_t time_column,
     const std::size_t n = t.size();
     report.samples_in = n;
     report.file_rate_hz = options.rate_hz;
+    report.max_gap_s = options.max_gap_s;
     if (n < 2) throw ArgumentError(source + ": " + std::to_string(n) + " samples; a trial needs at least 2");
     for (std::size_t r = 0; r < n; ++r) {
         if (std::isnan(t[r])) throw ArgumentError(where(r) + "the time is missing; give every row a time");

@@ -48,6 +48,8 @@ struct TimeBaseReport {
     bool times_rounded = false;
     /// The largest distance of an input time from the uniform grid, s.
     double worst_offset_s = 0;
+    /// The longest gap that is filled (TimeBaseOptions::max_gap_s), s.
+    double max_gap_s = 0;
     std::size_t samples_in = 0, samples_out = 0;
 
     /// The report as sentences, one a line: the rate and where it comes from, the rounding of
