@@ -56,6 +56,7 @@
 #include "alembert/sim/progress.hpp"
 #include "alembert/sim/simulation.hpp"
 #include "alembert/sim/table.hpp"
+#include "alembert/sim/time_grid.hpp"
 #include "alembert/report/report.hpp"
 #include "alembert/biomech/force_plate.hpp"
 #include "alembert/biomech/inverse_kinematics.hpp"

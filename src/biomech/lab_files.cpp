@@ -4,6 +4,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -36,6 +37,25 @@ std::string lower(std::string s) {
     return s;
 }
 
+// a line of a text file, not a spreadsheet's or another binary file's bytes (never printed)
+void not_binary(const std::string& path, std::size_t line_no, const std::string& line, const std::string& reads) {
+    const std::string byte = detail::binary_byte(line);
+    if (byte.empty()) return;
+    fail(path, static_cast<int>(line_no),
+         "not a text file (byte " + byte + "); this reader reads " + reads +
+             ": export the data from the lab's software in that format (a spreadsheet such as .xlsx "
+             "must be saved as text first)");
+}
+
+// "qA [m]": the label's name and unit (a label without "[...]" has no unit)
+void split_label(const std::string& label, std::string& name, std::string& unit) {
+    name = label, unit.clear();
+    const std::size_t open = label.find('['), close = label.rfind(']');
+    if (open == std::string::npos || close == std::string::npos || close < open) return;
+    name = trim_cell(label.substr(0, open));
+    unit = trim_cell(label.substr(open + 1, close - open - 1));
+}
+
 // the times of a table read from a file must increase, row by row
 void check_times_increase(const Table& table, const std::string& path) {
     const auto& t = table.columns.front();
@@ -58,11 +78,36 @@ std::size_t MarkerTable::column(const std::string& marker, int axis) const {
                         "' in the marker file; its markers are: " + list);
 }
 
+MarkerTable select_markers(const MarkerTable& trial, const std::vector<std::string>& names) {
+    MarkerTable out;
+    out.data_rate_hz = trial.data_rate_hz;
+    out.file_unit = trial.file_unit;
+    out.notes = trial.notes;
+    out.table.add_column(trial.table.names[0], trial.table.units[0]);
+    out.table.columns[0] = trial.table.columns[0];
+    out.table.lines = trial.table.lines;
+    // the named markers in the file's order, each once
+    for (const std::string& m : trial.markers) {
+        if (std::find(names.begin(), names.end(), m) == names.end()) continue;
+        out.markers.push_back(m);
+        for (int axis = 0; axis < 3; ++axis) {
+            const std::size_t c = trial.column(m, axis);
+            out.table.add_column(trial.table.names[c], trial.table.units[c]);
+            out.table.columns.back() = trial.table.columns[c];
+        }
+    }
+    for (const std::string& m : names) trial.column(m, 0);  // every name is in the file
+    return out;
+}
+
 MarkerTable read_trc(const std::string& path) {
     std::ifstream in(path);
     if (!in) throw ArgumentError("read_trc(): cannot open '" + path + "'; check the file name");
     std::vector<std::string> lines;
-    for (std::string line; std::getline(in, line);) lines.push_back(line);
+    for (std::string line; std::getline(in, line);) {
+        lines.push_back(line);
+        not_binary(path, lines.size(), line, "OpenSim marker files (.trc: tab-separated text)");
+    }
     auto line_at = [&](std::size_t i) { return i < lines.size() ? lines[i] : std::string(); };
 
     // line 1: PathFileType
@@ -193,8 +238,10 @@ StorageFile read_storage(const std::string& path) {
     int line_no = 0;
     bool ended = false;
     // header: a name, key=value lines and free text up to endheader
+    const std::string reads = "OpenSim storage files (.sto, .mot: a header to 'endheader', then columns of text)";
     while (std::getline(in, line)) {
         ++line_no;
+        not_binary(path, static_cast<std::size_t>(line_no), line, reads);
         std::string text = trim_cell(line);
         if (line_no == 1 && text.rfind("\xEF\xBB\xBF", 0) == 0) text.erase(0, 3);
         if (text == "endheader") {
@@ -220,11 +267,17 @@ StorageFile read_storage(const std::string& path) {
     std::vector<std::string> labels;
     while (labels.empty() && std::getline(in, line)) {
         ++line_no;
-        labels = split_blanks(line);
+        not_binary(path, static_cast<std::size_t>(line_no), line, reads);
+        // labels separated by tabs may hold a unit after a space ("qA [m]")
+        labels = line.find('\t') != std::string::npos ? split_tabs(line) : split_blanks(line);
+        while (!labels.empty() && labels.back().empty()) labels.pop_back();
+        if (std::all_of(labels.begin(), labels.end(), [](const std::string& l) { return l.empty(); })) labels.clear();
     }
     if (labels.empty()) fail(path, line_no, "no column labels after 'endheader'");
     const int labels_line = line_no;
-    if (lower(labels[0]) != "time")
+    std::string first_name, first_unit;
+    split_label(labels[0], first_name, first_unit);
+    if (lower(first_name) != "time")
         fail(path, line_no, "the first column is '" + labels[0] +
                                 "'; a storage file's first column is 'time'");
     if (auto it = result.header.find("nColumns"); it != result.header.end()) {
@@ -235,14 +288,28 @@ StorageFile read_storage(const std::string& path) {
     }
     Table& table = result.table;
     for (std::size_t c = 0; c < labels.size(); ++c) {
+        std::string name, unit;
+        split_label(labels[c], name, unit);
+        if (name.empty())
+            fail(path, labels_line, "column " + std::to_string(c + 1) + " has no label; name every column");
         for (std::size_t d = 0; d < c; ++d)
-            if (labels[d] == labels[c])
-                fail(path, labels_line, "the column '" + labels[c] + "' appears twice; rename one");
-        table.add_column(c == 0 ? "time" : labels[c], c == 0 ? "s" : "");
+            if (table.names[d] == name)
+                fail(path, labels_line, "the column '" + name + "' appears twice; rename one");
+        if (!unit.empty()) {
+            try {
+                parse_unit(unit);
+            } catch (const ArgumentError& e) {
+                fail(path, labels_line, "column '" + labels[c] + "': " + e.what());
+            }
+        }
+        if (c == 0 && !unit.empty() && parse_unit(unit).quantity != "time")
+            fail(path, labels_line, "the time column is labelled '" + labels[c] + "'; give it a time unit (s, ms) or none");
+        table.add_column(c == 0 ? "time" : name, c == 0 && unit.empty() ? "s" : unit);
     }
     // rows
     while (std::getline(in, line)) {
         ++line_no;
+        not_binary(path, static_cast<std::size_t>(line_no), line, reads);
         std::vector<std::string> cells = split_blanks(line);
         if (cells.empty()) continue;
         if (cells.size() != labels.size())
@@ -250,7 +317,7 @@ StorageFile read_storage(const std::string& path) {
                                     std::to_string(labels.size()) + " column labels; give every column a value");
         for (std::size_t c = 0; c < cells.size(); ++c) {
             double v = 0;
-            if (!parse_number(cells[c], v) || std::isinf(v))
+            if (!parse_number(cells[c], v) || std::isinf(v) || (c == 0 && std::isnan(v)))
                 fail(path, line_no, "column '" + labels[c] + "': '" + cells[c] + "' is not a finite number");
             table.columns[c].push_back(v);
         }
@@ -271,8 +338,11 @@ Table motion_table_from_storage(const StorageFile& storage,
                                 const std::vector<std::string>& angle_columns) {
     Table table = storage.table;
     table.names[0] = "t";
-    for (const auto& name : angle_columns)
-        table.units[table.column_index(name)] = storage.in_degrees ? "deg" : "rad";
+    // inDegrees applies to the listed (rotational) columns that state no unit of their own
+    for (const auto& name : angle_columns) {
+        std::string& unit = table.units[table.column_index(name)];
+        if (unit.empty()) unit = storage.in_degrees ? "deg" : "rad";
+    }
     return table;
 }
 

@@ -43,6 +43,18 @@ inline std::vector<std::string> split_blanks(const std::string& line) {
     return cells;
 }
 
+/// The first byte of `line` that no text file holds (a NUL or a control character other than
+/// tab, carriage return, form feed), as "0x03", or "" if there is none: a spreadsheet (.xlsx is
+/// a zip archive) or another binary file given where a lab's text file belongs.
+inline std::string binary_byte(const std::string& line) {
+    for (unsigned char c : line)
+        if (c == 0x7f || (c < 0x20 && c != '\t' && c != '\r' && c != '\f')) {
+            const char* hex = "0123456789abcdef";
+            return std::string("0x") + hex[c >> 4] + hex[c & 15];
+        }
+    return "";
+}
+
 /// The number a whole cell holds, "nan"/"NaN" as NaN; false if the cell is not a number.
 inline bool parse_number(const std::string& cell, double& value) {
     if (cell.empty()) return false;

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "alembert/error.hpp"
+#include "alembert/sim/time_grid.hpp"
 
 namespace alembert {
 
@@ -56,31 +57,46 @@ std::string gap_name(const std::string& column) {
     return column;
 }
 
-std::string seconds(double t) {
+std::string six_digits(double v) {
     std::ostringstream s;
     s.precision(6);
-    s << t;
-    return s.str() + " s";
+    s << v;
+    return s.str();
 }
+
+std::string seconds(double t) { return six_digits(t) + " s"; }
 
 }  // namespace
 
 std::string TimeBaseReport::describe() const {
     std::ostringstream out;
-    if (gaps.empty() && !resampled) {
-        out << "time base: " << samples_in << " samples at " << rate_hz
+    const std::string rate = six_digits(rate_hz) + " Hz" +
+                             (rate_from_file ? " (the rate the file states)" : resampled ? " (the time column's typical step)" : "");
+    // the rate, and a stated rate the times contradict
+    if (file_rate_hz > 0 && !rate_from_file && std::abs(file_rate_hz - rate_hz) > 1e-3 * rate_hz)
+        out << "time base: the file states " << six_digits(file_rate_hz) << " Hz, but its time column is "
+            << (resampled ? "not on that grid" : "uniform at " + six_digits(rate_hz) + " Hz") << "; the time column is used\n";
+    if (times_rounded)
+        out << "time base: " << samples_in << " samples at " << rate << "; the time column is printed to "
+            << seconds(time_resolution_s) << " and lies on that grid within its precision (largest offset "
+            << six_digits(std::abs(worst_offset_s) * 1000) << " ms: rounding, not jitter), so the times were read as "
+            << "t0 + k/" << six_digits(rate_hz) << " s and nothing was resampled\n";
+    else if (gaps.empty() && !resampled)
+        out << "time base: " << samples_in << " samples at " << six_digits(rate_hz)
             << " Hz, uniform and without gaps; nothing filled or resampled\n";
-        return out.str();
-    }
     for (const Gap& g : gaps)
         out << "gap filled: '" << g.name << "' missing from t = " << seconds(g.t_first)
             << " to " << seconds(g.t_last) << " (" << g.samples
-            << " samples), filled by a natural cubic spline through its valid samples\n";
+            << " samples), filled by a natural cubic spline through its valid samples (gaps of up to "
+            << seconds(max_gap_s) << " are filled, longer ones refused)\n";
     if (resampled)
         out << "time base resampled: steps from " << seconds(min_step_s) << " to "
             << seconds(max_step_s) << " are not uniform; " << samples_in << " samples became "
-            << samples_out << " at " << rate_hz
-            << " Hz (the median step) by a natural cubic spline per column\n";
+            << samples_out << " at " << rate << " by a natural cubic spline per column (a time was "
+            << six_digits(std::abs(worst_offset_s) * 1000) << " ms off the uniform grid, more than the "
+            << (time_resolution_s > 0 ? "time column's printed precision of " + seconds(time_resolution_s)
+                                      : std::string("rounding of times written in full"))
+            << " explains)\n";
     return out.str();
 }
 
@@ -93,12 +109,23 @@ TimeBaseReport regularize_time_base(Table& table, std::size_t time_column,
     const double t_factor = parse_unit(table.units[time_column]).factor;
     std::vector<double> t = table.columns[time_column];
     for (double& v : t) v *= t_factor;
-    auto where = [&](std::size_t row) {
-        return source + (row < table.lines.size() ? ":" + std::to_string(table.lines[row]) : "") + ": ";
+    auto line = [&](std::size_t row) {
+        return row < table.lines.size() ? ":" + std::to_string(table.lines[row]) : std::string();
+    };
+    auto where = [&](std::size_t row) { return source + line(row) + ": "; };
+    // "frames 12 to 14, lines 17 to 19": the rows of a gap, counted from 1 as a lab's software
+    // numbers frames, and their lines in the file
+    auto samples = [&](std::size_t first, std::size_t last) {
+        std::string text = "frames " + std::to_string(first + 1) + " to " + std::to_string(last + 1);
+        if (last < table.lines.size())
+            text += ", lines " + std::to_string(table.lines[first]) + " to " + std::to_string(table.lines[last]);
+        return text;
     };
     // times present, increasing, at least two
     const std::size_t n = t.size();
     report.samples_in = n;
+    report.file_rate_hz = options.rate_hz;
+    report.max_gap_s = options.max_gap_s;
     if (n < 2) throw ArgumentError(source + ": " + std::to_string(n) + " samples; a trial needs at least 2");
     for (std::size_t r = 0; r < n; ++r) {
         if (std::isnan(t[r])) throw ArgumentError(where(r) + "the time is missing; give every row a time");
@@ -113,10 +140,61 @@ TimeBaseReport regularize_time_base(Table& table, std::size_t time_column,
     report.max_step_s = *std::max_element(steps.begin(), steps.end());
     std::vector<double> sorted = steps;
     std::nth_element(sorted.begin(), sorted.begin() + sorted.size() / 2, sorted.end());
-    const double h = sorted[sorted.size() / 2];
+    const double median = sorted[sorted.size() / 2];
+
+    // uniform as printed: the file's rate, or the mean step, within the printed precision
+    const UniformTimeBase base = calc_uniform_time_base(t, options.rate_hz);
+    report.time_resolution_s = base.resolution;
+    report.worst_offset_s = base.worst_offset;
+    const bool irregular = !base.uniform;
+    double h = base.step;
+    if (base.uniform) {
+        report.rate_from_file = base.step_from_rate;
+        // rounded times become the grid's: differences of rounded times are not the motion's
+        if (base.resolution > 0 && std::abs(base.worst_offset) > 1e-9 * h) {
+            report.times_rounded = true;
+            for (std::size_t r = 0; r < n; ++r)
+                table.columns[time_column][r] = (t.front() + static_cast<double>(r) * h) / t_factor;
+        }
+    } else {
+        // irregular: the file's rate if the steps are near it, else the typical step: with
+        // every step within a quarter of the median (jitter), the least-squares slope of the
+        // times over their rows; else (dropped frames) the mean of the steps near the median
+        double sum = 0;
+        std::size_t count = 0;
+        for (double step : steps)
+            if (std::abs(step - median) <= median / 4) sum += step, ++count;
+        h = sum / static_cast<double>(count);
+        if (count == steps.size()) {
+            const double k_mean = static_cast<double>(n - 1) / 2;
+            double t_mean = 0, skk = 0, skt = 0;
+            for (double v : t) t_mean += v / static_cast<double>(n);
+            for (std::size_t k = 0; k < n; ++k) {
+                const double dk = static_cast<double>(k) - k_mean;
+                skk += dk * dk, skt += dk * (t[k] - t_mean);
+            }
+            h = skt / skk;
+        }
+        if (options.rate_hz > 0 && std::abs(1 / options.rate_hz - h) <= h / 4) {
+            h = 1 / options.rate_hz;
+            report.rate_from_file = true;
+        }
+        // the largest offset from the grid resampled on
+        report.worst_offset_s = 0;
+        for (std::size_t k = 0; k < n; ++k) {
+            const double d = t[k] - (t.front() + static_cast<double>(k) * h);
+            if (std::abs(d) > std::abs(report.worst_offset_s)) report.worst_offset_s = d;
+        }
+        // a long step is missing data, not jitter
+        for (std::size_t r = 1; r < n; ++r)
+            if (t[r] - t[r - 1] > options.max_gap_s)
+                throw ArgumentError(where(r) + "the time column jumps from t = " + seconds(t[r - 1]) + " to " +
+                                    seconds(t[r]) + " (" + samples(r - 1, r) + "), a step of " +
+                                    seconds(t[r] - t[r - 1]) + ", longer than the " + seconds(options.max_gap_s) +
+                                    " that may be bridged by resampling; the frames between are missing: export "
+                                    "them, or trim the trial");
+    }
     report.rate_hz = 1 / h;
-    const bool irregular = report.max_step_s - h > options.step_tolerance * h ||
-                           h - report.min_step_s > options.step_tolerance * h;
 
     // each column: find its gaps, check them, fill by a spline through the valid samples
     for (std::size_t c = 0; c < table.columns.size(); ++c) {
@@ -137,7 +215,8 @@ TimeBaseReport regularize_time_base(Table& table, std::size_t time_column,
             while (e < n && std::isnan(y[e])) ++e;
             const Gap gap{name, t[r], t[e - 1], e - r};
             const std::string range = "'" + name + "' is missing from t = " + seconds(gap.t_first) +
-                                      " to " + seconds(gap.t_last) + " (" + std::to_string(gap.samples) + " samples)";
+                                      " to " + seconds(gap.t_last) + " (" + std::to_string(gap.samples) +
+                                      " samples: " + samples(r, e - 1) + ")";
             if (r == 0 || e == n)
                 throw ArgumentError(where(r == 0 ? 0 : n - 1) + range + ", at the " +
                                     (r == 0 ? "start" : "end") +
@@ -159,7 +238,7 @@ TimeBaseReport regularize_time_base(Table& table, std::size_t time_column,
             if (std::isnan(y[r])) y[r] = spline(t[r]);
     }
 
-    // an irregular time base: resample every column at the median step
+    // an irregular time base: resample every column on the grid inside the first and last times
     report.samples_out = n;
     if (irregular) {
         report.resampled = true;

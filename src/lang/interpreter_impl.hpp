@@ -195,6 +195,19 @@ struct Interpreter::Impl {
     void codegen(const Statement& s);
     void run_inverse(const InverseRequest& r, Location where);
     void run_codegen(const CodegenRequest& r, Location where);
+    // inverse_motion.cpp
+    /// The extension of a motion file `inverse` reads (".csv", ".mot", ".sto", ".trc").
+    /// @throws alembert::ArgumentError naming the file and the formats it reads otherwise.
+    std::string motion_format(const std::string& path) const;
+    /// Per coordinate, the quantity its kinematics gives it where the script declares no unit:
+    /// "angle" if it turns a frame of the model (a rotation), "length" if it turns none (a
+    /// translation); "" where its declared unit says.
+    std::vector<std::string> coordinate_quantities(const std::vector<TimeVariable>& q, Location where);
+    /// The motion table of an OpenSim storage file (.mot, .sto) for the coordinates q: time and
+    /// the coordinates' columns, inDegrees applied to the rotational ones only, short gaps filled
+    /// and the time base checked (regularize_time_base); `note` says what was done, if anything.
+    Table storage_motion_table(const std::string& path, const std::vector<TimeVariable>& q, Location where,
+                               std::string& note);
     // statements_lab.cpp
     /// The coordinates over a marker trial (.trc) from the script's markers, and a note for
     /// the transcript (time base, fit to the model).

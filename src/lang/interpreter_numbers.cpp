@@ -592,6 +592,8 @@ void Interpreter::Impl::inverse(const Statement& s) {
 
 void Interpreter::Impl::run_inverse(const InverseRequest& r, Location where) {
     System& sys = model(where);
+    // the motion's format, by its extension, before any work
+    const std::string ext = r.motion_file.empty() ? "" : guard(where, [&] { return motion_format(r.motion_file); });
     const SymbolTable& table = sys.symbols();
     std::vector<TimeVariable> q = default_coordinates();
     std::string why_not;
@@ -621,11 +623,13 @@ void Interpreter::Impl::run_inverse(const InverseRequest& r, Location where) {
     }
     opts.filter.cutoff_hz = r.cutoff_hz;
     opts.filter.unitless_unit = r.unitless_unit;
-    // the units the coordinates are declared in, against which a motion table's columns are read
+    // the units the coordinates are declared in, against which a motion table's columns are read,
+    // or for those declared without one the quantity of their kinematics (rotation: an angle)
     for (const TimeVariable& v : q) {
         std::optional<Unit> u = display_unit(v.name());
         opts.filter.declared_units.push_back(u ? u->text : "");
     }
+    opts.filter.kinematic_quantities = guard(where, [&] { return coordinate_quantities(q, where); });
     for (const Constraint& c : sys.constraints()) {
         Dimension d = residual_dimension_of(table.expand_intermediates(c.residual),
                                             [&](const std::string& n) { return symbol_dimension(n); });
@@ -643,14 +647,12 @@ void Interpreter::Impl::run_inverse(const InverseRequest& r, Location where) {
     }
     InverseAnalysisReport rep;
     std::string span;
-    const std::string ext = std::filesystem::path(r.motion_file).extension().string();
     if (ext == ".mot" || ext == ".sto") {
-        // an OpenSim motion: inDegrees applies to the rotational coordinates (all but lengths)
+        // an OpenSim motion: inDegrees applies to the rotational coordinates only
+        std::string note;
+        const Table motion = guard(where, [&] { return storage_motion_table(r.motion_file, q, where, note); });
+        if (!note.empty()) transcript.result(note);
         rep = guard(where, [&] {
-            std::vector<std::string> angles;
-            for (const TimeVariable& v : q)
-                if (!(symbol_dimension(v.name()) == Dimension::length())) angles.push_back(v.name());
-            const Table motion = motion_table_from_storage(read_storage(r.motion_file), angles);
             return run_inverse_dynamics(
                 id, differentiate_motion(motion, r.motion_file, id.layout().coordinate_names, opts.filter), r.dir, opts);
         });

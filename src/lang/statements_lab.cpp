@@ -84,7 +84,7 @@ void run_plate(Interpreter::Impl& m, const Statement& s) {
                           "inverse for ... from \"" + file.text + "\"");
     ScriptPlate plate{label, {}, {}};
     plate.record = m.guard(file.location, [&] {
-        return force_plate_from_table(read_storage(path).table, prefix, threshold);
+        return force_plate_from_table(read_storage(path).table, prefix, threshold, path);
     });
     std::size_t on_samples = 0;
     for (std::size_t k = 0; k < plate.record.t.size(); ++k) on_samples += plate.record.in_contact(k) ? 1 : 0;
@@ -166,8 +166,22 @@ MarkerCoordinates Interpreter::Impl::coordinates_from_markers(const std::string&
                               "put the marker at a point of " + k.body + " (point P on " + k.body + "; translate P from " +
                                   k.body + "_o by ...), or declare it on the body " + k.point + " is fixed in");
     }
-    const TimeBaseReport base = regularize_time_base(trial.table, 0, path);
-    if (spatial) return spatial_coordinates_from_markers(trial, base, q, where, note);
+    // the markers the model uses: one it does not use (never seen, say) cannot block the trial
+    std::vector<std::string> used, unused;
+    for (const ScriptMarker& k : markers)
+        if (std::find(used.begin(), used.end(), k.name.text) == used.end()) used.push_back(k.name.text);
+    for (const std::string& name : trial.markers)
+        if (std::find(used.begin(), used.end(), name) == used.end()) unused.push_back(name);
+    trial = select_markers(trial, used);
+    // gaps filled and the time base checked, at the header's DataRate where the times fit it
+    const TimeBaseReport base = regularize_time_base(trial.table, 0, path, {.rate_hz = trial.data_rate_hz});
+    std::string unused_text;
+    for (const std::string& name : unused) unused_text += (unused_text.empty() ? "" : ", ") + name;
+    if (!unused.empty()) unused_text = "markers in the file that the model does not use, not read: " + unused_text + "\n";
+    if (spatial) {
+        note = unused_text;  // stated after the fit's report
+        return spatial_coordinates_from_markers(trial, base, q, where, note);
+    }
     const MarkerCoordinates mc = calc_coordinates_from_markers(sys.symbols(), q, model_markers, trial);
     // what was done, for the transcript
     std::ostringstream out;
@@ -188,6 +202,7 @@ MarkerCoordinates Interpreter::Impl::coordinates_from_markers(const std::string&
     out << "); largest distance from the model's marker " << transcript.number(*worst * 1000) << " mm ('"
         << model_markers[wi].name << "')";
     std::string base_text = base.describe();
+    base_text += unused_text;
     while (!base_text.empty() && base_text.back() == '\n') base_text.pop_back();
     if (!base_text.empty()) out << "\n" << base_text;
     note = out.str();
@@ -232,6 +247,7 @@ MarkerCoordinates Interpreter::Impl::spatial_coordinates_from_markers(const Mark
         << transcript.number(*worst * 1000) << " mm ('"
         << r.markers[static_cast<std::size_t>(worst - mc.marker_residual_m.begin())] << "')";
     std::string text = r.describe() + base.describe();
+    text += note;  // the caller's notes on the trial (markers not used)
     while (!text.empty() && text.back() == '\n') text.pop_back();
     if (!text.empty()) out << "\n" << text;
     note = out.str();

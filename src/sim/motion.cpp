@@ -7,6 +7,7 @@
 
 #include "alembert/error.hpp"
 #include "alembert/sim/filter.hpp"
+#include "alembert/sim/time_grid.hpp"
 
 namespace alembert {
 
@@ -45,6 +46,13 @@ Unit declared_unit(const MotionFilterOptions& options, std::size_t i) {
     }
 }
 
+// a number as people write it: 6 significant digits, no trailing zeros
+std::string short_number(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.6g", v);
+    return buf;
+}
+
 // "an angle", "a length"
 std::string with_article(const std::string& quantity) {
     return (quantity.front() == 'a' ? "an " : "a ") + quantity;
@@ -52,8 +60,8 @@ std::string with_article(const std::string& quantity) {
 
 // the unit a coordinate column is read in: its own, checked against the coordinate's
 // declared quantity; or, without one, the assumed unit or SI where that cannot mislead
-Unit checked_column_unit(const Unit& column, const Unit& declared, const Unit& assumed,
-                         const std::string& source, const std::string& name) {
+Unit checked_column_unit(const Unit& column, const Unit& declared, const std::string& why,
+                         const Unit& assumed, const std::string& source, const std::string& name) {
     if (!column.quantity.empty()) {
         const bool fits = declared.quantity.empty()
                               ? column.quantity == "angle" || column.quantity == "length"
@@ -64,7 +72,7 @@ Unit checked_column_unit(const Unit& column, const Unit& declared, const Unit& a
         throw ArgumentError(
             source + ": column '" + name + " [" + column.name + "]' is " +
             with_article(column.quantity) + ", but the coordinate '" + name + "' is " + expected +
-            (declared.quantity.empty() ? "" : " (declared in " + declared.name + ")") +
+            (why.empty() ? "" : " (" + why + ")") +
             "; give the column a unit of " + expected + " (" +
             (declared.quantity == "length" ? "m, mm" : declared.quantity == "angle" ? "deg, rad" : "deg, rad, m, mm") +
             ")");
@@ -129,19 +137,31 @@ MotionSamples differentiate_motion(const Table& table, const std::string& source
     m.coordinates = coordinates;
     for (double v : table.columns[tc]) m.t.push_back(tu.factor * v);
 
-    // increasing, uniformly spaced times
-    const double h = (m.t.back() - m.t.front()) / static_cast<double>(rows - 1);
+    // increasing times on a uniform grid (rounding within the time column's printed precision
+    // is not jitter: calc_uniform_time_base)
     for (std::size_t r = 1; r < rows; ++r)
         if (!(m.t[r] > m.t[r - 1]))
             throw ArgumentError(where(table, source, r) + "time " + std::to_string(m.t[r]) +
                                 " s does not increase (previous row: " +
                                 std::to_string(m.t[r - 1]) + " s); sort the rows by time");
-    for (std::size_t r = 1; r < rows; ++r) {
-        const double step = m.t[r] - m.t[r - 1];
-        if (std::abs(step - h) > 1e-6 * h)
-            throw ArgumentError(where(table, source, r) + "time step " + std::to_string(step) +
-                                " s differs from the mean step " + std::to_string(h) +
-                                " s; filtering needs uniformly sampled data (resample it)");
+    const UniformTimeBase base = calc_uniform_time_base(m.t);
+    const double h = base.step;
+    if (!base.uniform) {
+        // the first sample off the grid, and the step that put it there
+        std::size_t r = 1;
+        while (r + 1 < rows &&
+               std::abs(m.t[r] - (m.t.front() + static_cast<double>(r) * h)) <= base.tolerance)
+            ++r;
+        const double off = m.t[r] - (m.t.front() + static_cast<double>(r) * h);
+        throw ArgumentError(
+            where(table, source, r) + "time step " + short_number(m.t[r] - m.t[r - 1]) +
+            " s (to t = " + short_number(m.t[r]) + " s) puts this sample " +
+            short_number(std::abs(off) * 1000) + " ms off the uniform grid of the time column (step " +
+            short_number(h) + " s, " + short_number(1 / h) + " Hz), more than " +
+            (base.resolution > 0 ? "the rounding of its printed times can explain (" + short_number(base.tolerance) + " s)"
+                                 : "1e-6 of the step (its times are written in full)") +
+            "; filtering needs uniformly sampled data: resample the motion at one rate, or "
+            "correct the time column");
     }
 
     // per coordinate: SI, filter, differentiate
@@ -159,10 +179,26 @@ MotionSamples differentiate_motion(const Table& table, const std::string& source
         } catch (const ArgumentError& e) {
             throw ArgumentError(source + ": column '" + name + "': " + e.what());
         }
-        const Unit declared = declared_unit(options, i);
-        u = checked_column_unit(u, declared, assumed, source, name);
+        // the coordinate's quantity: its declared unit's, or its kinematics'
+        Unit declared = declared_unit(options, i);
+        std::string why = declared.quantity.empty() ? "" : "declared in " + declared.name;
+        if (declared.quantity.empty() && i < options.kinematic_quantities.size() &&
+            !options.kinematic_quantities[i].empty()) {
+            const bool angle = options.kinematic_quantities[i] == "angle";
+            declared = parse_unit(angle ? "rad" : "m");
+            why = angle ? "it turns a frame of the model" : "it moves points of the model and turns no frame";
+        }
+        u = checked_column_unit(u, declared, why, assumed, source, name);
         std::vector<double> q;
-        for (double v : table.columns[c]) q.push_back(u.factor * v);
+        for (std::size_t r = 0; r < rows; ++r) {
+            // a missing value is not data: never filtered into its neighbours
+            if (std::isnan(table.columns[c][r]))
+                throw ArgumentError(where(table, source, r) + "column '" + name +
+                                    "' has no value (NaN) at t = " + short_number(m.t[r]) +
+                                    " s; a missing coordinate is not read as data: fill the gap "
+                                    "in the lab's software, or trim the motion to where it is known");
+            q.push_back(u.factor * table.columns[c][r]);
+        }
         if (options.cutoff_hz > 0) q = filter_lowpass(q, 1.0 / h, options.cutoff_hz);
         m.qd.push_back(differentiate(q, h));
         m.qdd.push_back(differentiate_twice(q, h));

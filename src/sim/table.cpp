@@ -169,6 +169,15 @@ Table read_csv(const std::string& path) {
         ++line_no;
         // a UTF-8 byte-order mark (spreadsheets write one) is not part of the first cell
         if (line_no == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0) line.erase(0, 3);
+        // a binary file (a spreadsheet's .xlsx is a zip archive): its bytes are never printed
+        for (unsigned char c : line)
+            if (c == 0x7f || (c < 0x20 && c != '\t' && c != '\r' && c != '\f')) {
+                char byte[8];
+                std::snprintf(byte, sizeof byte, "0x%02x", c);
+                throw ArgumentError(path + ":" + std::to_string(line_no) + ": not a text file (byte " + byte +
+                                    "); read_csv() reads CSV text, a header row such as 't [s],qA [deg]' and "
+                                    "rows of numbers separated by commas: save a spreadsheet as CSV");
+            }
         // an OpenSim motion or storage file: its header ends with a line "endheader"
         if (table.lines.empty() && looks_like_opensim_header(trim(line)))
             throw ArgumentError(path + ":" + std::to_string(line_no) + ": '" + trim(line) +

@@ -133,6 +133,37 @@ TEST(ReadStorage, MalformedHeadersAndRowsAreRefused) {
                      "short_row.sto:5: 2 cells, but there are 3 column labels");
 }
 
+TEST(ReadStorage, ALabelMayStateItsUnitAndInDegreesLeavesItAlone) {
+    const fs::path p = lab_scratch("units.mot");
+    std::ofstream(p) << "Coordinates\nversion=1\nnRows=2\nnColumns=4\ninDegrees=yes\nendheader\n"
+                        "time\tpelvis_tx [m]\tknee [rad]\thip\n0\t0.5\t1\t10\n0.01\t0.6\t1.1\t20\n";
+    StorageFile s = read_storage(p.string());
+    ASSERT_EQ(s.table.names, (std::vector<std::string>{"time", "pelvis_tx", "knee", "hip"}));
+    EXPECT_EQ(s.table.units, (std::vector<std::string>{"s", "m", "rad", ""}));
+    // inDegrees=yes gives degrees to the listed rotations without a unit of their own
+    Table motion = motion_table_from_storage(s, {"knee", "hip"});
+    EXPECT_EQ(motion.units, (std::vector<std::string>{"s", "m", "rad", "deg"}));
+    const fs::path bad = lab_scratch("bad_unit.mot");
+    std::ofstream(bad) << "x\nendheader\ntime\tq [furlong]\n0\t1\n";
+    EXPECT_THROW_MSG(read_storage(bad.string()), ArgumentError,
+                     "bad_unit.mot:3: column 'q [furlong]': unknown unit 'furlong'");
+}
+
+TEST(ReadLabFiles, ABinaryFileIsRefusedByNameWithoutItsBytes) {
+    // an .xlsx is a zip archive: "PK\x03\x04..."
+    using namespace std::string_literals;
+    const std::string zip = "PK\x03\x04\x14\x00\x06\x00\x08\x00!\x00\n\x00\x01"s;
+    for (const char* name : {"sheet.trc", "sheet.sto", "sheet.csv"}) std::ofstream(lab_scratch(name), std::ios::binary) << zip;
+    EXPECT_THROW_MSG(read_trc(lab_scratch("sheet.trc").string()), ArgumentError,
+                     "sheet.trc:1: not a text file (byte 0x03); this reader reads OpenSim marker files");
+    EXPECT_THROW_MSG(read_storage(lab_scratch("sheet.sto").string()), ArgumentError,
+                     "sheet.sto:1: not a text file (byte 0x03); this reader reads OpenSim storage files");
+    EXPECT_THROW_MSG(read_lab_table(lab_scratch("sheet.csv").string()), ArgumentError,
+                     "sheet.csv:1: not a text file (byte 0x03); read_csv() reads CSV text");
+    EXPECT_THROW_MSG(read_lab_table("sheet.xlsx"), ArgumentError,
+                     "has the extension '.xlsx'; known lab files are .trc");
+}
+
 TEST(WriteStorage, WritesSIValuesThatReadBackExactly) {
     Table t;
     t.add_column("t", "s");

@@ -139,4 +139,29 @@ TEST(PlateStatement, MistakesNameTheFileAndTheColumns) {
         << rod.err.str();
 }
 
+TEST(PlateStatement, AMissingForceSampleIsAnErrorNotNoContact) {
+    // in contact throughout, but the vertical force of sample 6 (t = 0.05 s) is missing: read as
+    // no contact it would drop T_A from -33.8 to -1.7 N m there; it is refused with its time
+    StandingRod rod;
+    const PlateSample on{5, 100, 0.3, -0.02, 2}, none{0, 0, 0, 0, 0};
+    const double nan = std::nan("");
+    write_plates(rod.dir / "plate.mot",
+                 [&](int k) { return std::pair{k == 5 ? PlateSample{5, nan, 0.3, -0.02, 2} : on, none}; });
+    ASSERT_EQ(rod.run("plate floor on A from \"" + (rod.dir / "plate.mot").string() + "\"\n"),
+              RunStatus::script_error);
+    EXPECT_NE(rod.err.str().find("plate.mot:13: plate 'ground_force': column 'ground_force_vy' has no value (NaN) "
+                                 "at t = 0.05 s, where a missing force would be read as no contact; fill the gap"),
+              std::string::npos)
+        << rod.err.str();
+    // a centre of pressure left out (NaN) where the foot is off the plate is not used: accepted
+    StandingRod off;
+    const PlateSample lifted{0, 0, nan, nan, 0};
+    write_plates(off.dir / "plate.mot", [&](int k) { return std::pair{k <= 10 ? on : lifted, none}; });
+    ASSERT_EQ(off.run("plate floor on A from \"" + (off.dir / "plate.mot").string() + "\"\n"), RunStatus::ok)
+        << off.err.str();
+    const std::vector<double> T = off.T_A();
+    for (int k = 0; k <= 20; ++k)
+        EXPECT_NEAR(T[k], k <= 10 ? holding_torque({on}) : holding_torque({}), 1e-9) << "t = " << 0.01 * k;
+}
+
 }  // namespace plate_statement_test

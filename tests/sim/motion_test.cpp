@@ -7,6 +7,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <numbers>
@@ -134,6 +136,55 @@ TEST(ReadMotion, UnevenTimesAreReportedWithTheLine) {
     t.columns[0] = {0, 0.01, 0.01, 0.02, 0.03};
     EXPECT_THROW_MSG(differentiate_motion(t, "walk.csv", {"q"}), ArgumentError,
                      "walk.csv:4: time 0.010000 s does not increase");
+}
+
+TEST(ReadMotion, TimesPrintedTo8DecimalsAt150HzAreUniformAndDifferentiateExactly) {
+    // q = 0.5 sin(2 pi t) rad at 150 Hz, times and values as a .mot prints them (8 decimals):
+    // steps of 0.00666666 and 0.00666667 s are the rounding of 1/150 s, not jitter
+    Table t;
+    t.add_column("t", "s");
+    t.add_column("q", "rad");
+    char cell[64];
+    const double w = 2 * std::numbers::pi;
+    for (int k = 0; k <= 150; ++k) {
+        std::snprintf(cell, sizeof cell, "%.8f", k / 150.0);
+        t.columns[0].push_back(std::strtod(cell, nullptr));
+        t.columns[1].push_back(0.5 * std::sin(w * k / 150.0));
+    }
+    const MotionSamples m = differentiate_motion(t, "walk.mot", {"q"}, {.cutoff_hz = 0});
+    // central differences at h = 1/150 s err by (w h)^2/6 = 2.9e-4 of q' and (w h)^2/12 of q''
+    for (int k = 10; k <= 140; k += 10) {
+        const double tk = k / 150.0;
+        EXPECT_NEAR(m.qd[0][k], 0.5 * w * std::cos(w * tk), 3.5e-4 * 0.5 * w) << tk;
+        EXPECT_NEAR(m.qdd[0][k], -0.5 * w * w * std::sin(w * tk), 2e-4 * 0.5 * w * w) << tk;
+    }
+}
+
+TEST(ReadMotion, AMissingSampleIsRefusedWithItsColumnAndTime) {
+    Table t;
+    t.add_column("t", "s");
+    t.add_column("q", "rad");
+    t.columns = {{0, 0.01, 0.02, 0.03, 0.04}, {0, 0.1, std::nan(""), 0.3, 0.4}};
+    t.lines = {8, 9, 10, 11, 12};
+    EXPECT_THROW_MSG(differentiate_motion(t, "walk.mot", {"q"}), ArgumentError,
+                     "walk.mot:10: column 'q' has no value (NaN) at t = 0.02 s; a missing coordinate is not "
+                     "read as data");
+}
+
+TEST(ReadMotion, AColumnInMetresForARotationIsRefusedNamingBoth) {
+    // the coordinate is declared without a unit, but turns a frame of the model: an angle
+    Table t = one_coordinate("qA", "m");
+    MotionFilterOptions o;
+    o.kinematic_quantities = {"angle"};
+    EXPECT_THROW_MSG(differentiate_motion(t, "m.csv", {"qA"}, o), ArgumentError,
+                     "m.csv: column 'qA [m]' is a length, but the coordinate 'qA' is an angle (it turns a "
+                     "frame of the model); give the column a unit of an angle (deg, rad)");
+    // and a translation read from degrees
+    Table x = one_coordinate("x", "deg");
+    o.kinematic_quantities = {"length"};
+    EXPECT_THROW_MSG(differentiate_motion(x, "m.csv", {"x"}, o), ArgumentError,
+                     "column 'x [deg]' is an angle, but the coordinate 'x' is a length (it moves points of "
+                     "the model and turns no frame)");
 }
 
 }  // namespace

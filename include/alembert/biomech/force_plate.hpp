@@ -21,6 +21,8 @@ struct ForcePlate {
     double contact_threshold = 20;
 
     /// Whether the body touches the plate at sample k (|F| >= contact_threshold).
+    /// @throws alembert::ArgumentError naming the plate, the sample and its time if the force
+    ///         there is missing (NaN): a missing force is not "no contact".
     bool in_contact(std::size_t k) const;
 };
 
@@ -29,9 +31,13 @@ struct ForcePlate {
 /// with "force" replaced by "torque" in the prefix, TPREFIX_x, _y, _z (free moment); e.g.
 /// "ground_force" gives ground_force_vx ... ground_torque_z, and "1_ground_force" the second
 /// plate. Columns without units are read in SI (N, m, N m); with units they are converted.
-/// Time is the first column.
-/// @throws alembert::ArgumentError naming the plate's missing columns.
+/// Time is the first column. A missing sample (NaN) of a force column is refused, since it
+/// would read as no contact; of a centre-of-pressure or free-moment column it is refused in
+/// contact and left alone out of contact (where exporters write NaN and the value is not used).
+/// `source` names the table in messages (the file's path; with table.lines, its line).
+/// @throws alembert::ArgumentError naming the plate's missing columns; or "source:line: plate
+///         'P': column 'C' has no value (NaN) at t = ... s" for a missing sample as above.
 ForcePlate force_plate_from_table(const Table& table, const std::string& prefix,
-                                  double contact_threshold = 20);
+                                  double contact_threshold = 20, const std::string& source = "");
 
 }  // namespace alembert

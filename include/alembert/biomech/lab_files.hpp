@@ -29,13 +29,20 @@ struct MarkerTable {
     std::size_t column(const std::string& marker, int axis) const;
 };
 
+/// The markers `names` of a trial (in the file's order, each once), with the time column and
+/// the header's rate, unit and notes: the markers a model uses, so a marker it does not use
+/// (one the cameras never saw) cannot block its trial.
+/// @throws alembert::ArgumentError naming a marker the trial does not have and listing its
+///         markers.
+MarkerTable select_markers(const MarkerTable& trial, const std::vector<std::string>& names);
+
 /// Reads an OpenSim marker file (.trc, "PathFileType 4 (X/Y/Z)"): the header keys DataRate,
 /// NumFrames, NumMarkers and Units on lines 2-3, the marker names on line 4 (each above its X
 /// column), the X1 Y1 Z1 ... line, then rows "frame time x1 y1 z1 ...", separated by tabs.
 /// Empty cells (or fewer cells than markers at the end of a row, or "NaN") are a marker
 /// missing at that frame and read as NaN.
 /// @throws alembert::ArgumentError "path:line: what is wrong; how to fix it" for a file that
-///         is not a .trc, a header key missing or not a number, a unit that is not a length,
+///         is not a .trc (or not text: a binary byte is named, never printed), a header key missing or not a number, a unit that is not a length,
 ///         NumMarkers disagreeing with the names on line 4, a cell that is not a number, a row
 ///         with more cells than markers, times not increasing, or no rows.
 MarkerTable read_trc(const std::string& path);
@@ -52,16 +59,22 @@ struct StorageFile {
 
 /// Reads an OpenSim storage file: a first line naming the data, key=value lines (version=,
 /// nRows=, nColumns=, inDegrees=yes/no) and free text up to the line "endheader", then a line
-/// of column labels and rows of numbers separated by tabs or spaces.
-/// @throws alembert::ArgumentError "path:line: ..." if there is no endheader, inDegrees is
+/// of column labels and rows of numbers separated by tabs or spaces. A label may state its
+/// column's unit, "qA [m]", when the labels are separated by tabs; the table's unit is then
+/// that unit. A cell "NaN" is kept as NaN (a missing sample: force_plate_from_table and
+/// differentiate_motion refuse it where it would be read as data), except in the time column.
+/// @throws alembert::ArgumentError "path:line: ..." if the file is not text (a binary byte is
+///         named, never printed), there is no endheader, inDegrees is
 ///         neither yes nor no, nColumns disagrees with the labels, a row has the wrong number
 ///         of cells or a cell is not a number, the first column is not time, times do not
 ///         increase, or there are no rows.
 StorageFile read_storage(const std::string& path);
 
 /// The storage file's table with units set for a motion: "time" becomes "t [s]", each column
-/// named in `angle_columns` gets "deg" (inDegrees=yes) or "rad" (no), so read_motion's
-/// differentiate_motion reads it in SI.
+/// named in `angle_columns` gets "deg" (inDegrees=yes) or "rad" (no) unless its label states a
+/// unit, so read_motion's differentiate_motion reads it in SI. As in OpenSim, inDegrees applies
+/// to rotational coordinates only: list only those; the others (translations, in m) keep the
+/// unit their label states, or none (SI).
 /// @throws alembert::ArgumentError naming a listed column the file does not have.
 Table motion_table_from_storage(const StorageFile& storage,
                                 const std::vector<std::string>& angle_columns);

@@ -31,6 +31,11 @@ struct MotionFilterOptions {
     /// for a coordinate declared in a unit other than SI (deg, mm). Empty, or "" for a
     /// coordinate: not stated, any angle or length unit is accepted and no unit means SI.
     std::vector<std::string> declared_units{};
+    /// For coordinates declared without a unit: the quantity the model's kinematics gives each
+    /// ("angle": it turns a frame, a rotation; "length": it turns none, a translation), in the
+    /// order of the coordinates, "" where not known. A column is checked against it as against
+    /// a declared SI unit (rad, m), so a column 'qA [m]' for a rotation qA is refused.
+    std::vector<std::string> kinematic_quantities{};
     /// How to read coordinate columns whose header gives no unit ("deg", "rad", "m", ...):
     /// the columns of the quantity this unit measures are read in it. Empty: such a column is
     /// read in SI (rad, m) unless its coordinate is declared in another unit (then refused).
@@ -43,11 +48,15 @@ struct MotionFilterOptions {
 /// (options.cutoff_hz), then differentiated once and twice by central differences
 /// (alembert::differentiate, differentiate_twice). Columns that are not coordinates are
 /// ignored. `source` names the data in messages (the file's path).
+/// The times must be uniform as printed: each on the grid of the mean step within the time
+/// column's printed precision (calc_uniform_time_base), so times rounded to milliseconds or to
+/// 8 decimals are accepted and the step is the mean step.
 /// @throws alembert::ArgumentError "source:line: ..." if the times are not increasing or not
-///         uniformly spaced (to 1e-6 of the step), naming the row; if there are two time
-///         columns; if a coordinate column is missing (listing those found), has an unknown
-///         unit or one of another quantity than its coordinate's (a length for an angle), or
-///         has no unit while its coordinate is declared in a unit other than SI and
+///         uniform (a sample off the grid by more than the printed precision), naming the row;
+///         if there are two time columns; if a coordinate column is missing (listing those
+///         found), has an unknown unit or one of another quantity than its coordinate's (a
+///         length for an angle), has no value (NaN) at a sample (naming its time), or has no
+///         unit while its coordinate is declared in a unit other than SI and
 ///         options.unitless_unit does not say how to read it; if fewer than 4 samples.
 MotionSamples differentiate_motion(const Table& table, const std::string& source,
                                    const std::vector<std::string>& coordinates,

@@ -69,7 +69,8 @@ std::string format_csv_number(double v, int digits = 0);
 /// optional), then rows of numbers, separated by commas; blank lines and lines starting with
 /// '#' are skipped.
 /// @throws alembert::ArgumentError with "path:line: " and what is wrong (a cell that is not a
-///         number, a row with the wrong number of cells, a duplicate column, no rows).
+///         number, a row with the wrong number of cells, a duplicate column, no rows, a file
+///         that is not text: its first binary byte is named in hex, never printed).
 Table read_csv(const std::string& path);
 
 }  // namespace alembert
