@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <map>
 #include <optional>
+#include <set>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -63,6 +64,14 @@ struct ConstantDecl {
     std::string name{};
     std::string value{};  // empty: symbolic
     std::string unit{};
+    bool positive = false;  // CONSTANTS L+
+};
+
+// A name declared with a definition (SPECIFIED F = -K*X, VARIABLES Z = 2*X): a scalar of the
+// script, assigned where the declaration stands.
+struct Definition {
+    std::string name{};
+    Expr value{};
 };
 
 struct KinematicEquation {
@@ -94,6 +103,15 @@ public:
                 pending_.push_back({Severity::error, file_, e.where(), e.what(), e.hint()});
             }
         }
+        // MASS A = MA and INERTIA B, I1, I2, I3 declare their undeclared names as constants
+        for (const Statement& st : parsed.statements)
+            if (st.kind == Statement::Kind::list && (st.keyword == "MASS" || st.keyword == "INERTIA")) {
+                try {
+                    implicit_constants(st);
+                } catch (const ScriptError& e) {
+                    pending_.push_back({Severity::error, file_, e.where(), e.what(), e.hint()});
+                }
+            }
         std::vector<Diagnostic> declaration_problems = std::move(pending_);
         pending_.clear();
         std::size_t next_declaration_problem = 0;
@@ -102,7 +120,6 @@ public:
             while (next_declaration_problem < declaration_problems.size() &&
                    declaration_problems[next_declaration_problem].location.line <= st.where.line)
                 out_.diagnostics.push_back(declaration_problems[next_declaration_problem++]);
-            if (st.kind == Statement::Kind::declaration) continue;
             try {
                 translate(st);
             } catch (const ScriptError& e) {
@@ -152,12 +169,19 @@ private:
     const Entry& add(const std::string& name, Kind kind, Location where) {
         std::string key = upper(name);
         auto it = names_.find(key);
-        if (it != names_.end())
-            fail(where,
-                 "'" + name + "' is already declared as " + kind_word(it->second.kind) + " at line " +
-                     std::to_string(it->second.where.line),
-                 "Autolev names do not depend on case: '" + name + "' and '" + it->second.name +
-                     "' are the same name; rename one");
+        if (it != names_.end()) {
+            const Entry& old = it->second;
+            std::string both = "'" + name + "' is declared as " + kind_word(kind) + " at line " +
+                               std::to_string(where.line) + ", and '" + old.name + "' as " + kind_word(old.kind) +
+                               " at line " + std::to_string(old.where.line);
+            if (upper(old.name) == key && old.name != name && old.name != name + "_")
+                fail(where, both + ": '" + name + "' is already declared",
+                     "Autolev names do not depend on case: '" + name + "' and '" + old.name +
+                         "' are the same name; rename one");
+            fail(where, both + ": '" + name + "' is already declared",
+                 "an Alembert script has one name for one thing, whatever its kind; rename one of the two "
+                 "in the Autolev file");
+        }
         Entry e{kind, alembert_spelling(name, where), where};
         return names_.emplace(key, std::move(e)).first->second;
     }
@@ -190,6 +214,24 @@ private:
             if (d.primes > 0)
                 fail(d.where, "'" + d.name + "' is declared with primes in " + w,
                      "only VARIABLES, MOTIONVARIABLES and SPECIFIED take primes");
+            // frames, bodies, particles and points take neither a value nor a sign
+            if (w != "CONSTANTS" && w != "CONSTANT" && d.has_value)
+                fail(d.value.where, "'" + d.name + "' is declared in " + w + " with a value",
+                     "frames, bodies, particles and points have no value; give it with POINTS, SIMPROT, ...");
+            if (w != "CONSTANTS" && w != "CONSTANT" && d.sign)
+                fail(d.sign_where, "'" + d.name + "' is declared in " + w + " with the sign qualifier '" +
+                                       std::string(1, d.sign) + "'",
+                     "sign qualifiers belong to CONSTANTS (L+ is a positive constant)");
+        };
+        // a sign qualifier that Alembert cannot state is said, not dropped
+        auto sign_warning = [&](const Declarator& d, const char* what) {
+            if (!d.sign) return;
+            std::string q(1, d.sign);
+            std::string meaning = d.sign == '+' ? "positive" : d.sign == '-' ? "negative" : "nonzero";
+            report(Severity::warning, d.sign_where,
+                   "the qualifier '" + q + "' (" + meaning + ") of '" + d.name + "' is not translated: " + what,
+                   "'" + d.name + "' is declared without it; expressions that rely on its sign (sqrt(" + d.name +
+                       "^2), abs(" + d.name + ")) keep both signs");
         };
         if (w == "NEWTONIAN") {
             if (st.declarators.size() != 1 || st.declarators[0].last >= st.declarators[0].first)
@@ -236,9 +278,11 @@ private:
             const std::size_t g = constants_.size() - 1;
             for (const Declarator& d : st.declarators) {
                 no_primes(d);
+                if (d.sign != '+') sign_warning(d, "Alembert's constants are real or positive ('positive L')");
                 for (const std::string& n : expand(d)) {
-                    ConstantDecl c{"", "", ""};
+                    ConstantDecl c{"", "", "", d.sign == '+'};
                     if (d.has_value) c.value = number_text(d.value, "the value of constant '" + d.name + "'");
+                    if (d.has_value && !d.unit.empty()) c.unit = " " + unit(d.unit, d.unit_where);
                     c.name = add(n, Kind::constant, d.where).name;
                     constant_index_[upper(n)] = {g, constants_[g].size()};
                     constants_[g].push_back(std::move(c));
@@ -246,20 +290,58 @@ private:
             }
             return;
         }
-        if (w == "VARIABLES" || w == "VARIABLE" || w == "MOTIONVARIABLES" || w == "MOTIONVARIABLE") {
-            each(Kind::variable, [&](const Declarator& d, const Entry& e) {
-                variables_.push_back(e.name);
-                primes_[e.name] = std::max(d.primes, st.keyword_primes);
-            });
-            return;
-        }
-        if (w == "SPECIFIED" || w == "SPECIFIEDS") {
-            each(Kind::specified, [&](const Declarator& d, const Entry& e) {
-                specified_.push_back(e.name + std::string(static_cast<std::size_t>(std::max(d.primes, st.keyword_primes)), '\''));
-            });
+        bool is_variables = w == "VARIABLES" || w == "VARIABLE" || w == "MOTIONVARIABLES" || w == "MOTIONVARIABLE";
+        if (is_variables || w == "SPECIFIED" || w == "SPECIFIEDS") {
+            for (const Declarator& d : st.declarators) {
+                sign_warning(d, "Alembert's variables and specified quantities are real");
+                if (d.has_value && !d.unit.empty())
+                    fail(d.unit_where, "a unit after the definition of '" + d.name + "' is not translated",
+                         "Autolev values have no units; drop '" + d.unit + "'");
+                for (const std::string& n : expand(d)) {
+                    if (d.has_value) {
+                        // a definition: the name stands for the expression (Autolev does the same)
+                        const Entry& e = add(n, Kind::scalar, d.where);
+                        definitions_[{st.where.line, st.where.column}].push_back({e.name, d.value});
+                        continue;
+                    }
+                    const Entry& e = add(n, is_variables ? Kind::variable : Kind::specified, d.where);
+                    int primes = std::max(d.primes, st.keyword_primes);
+                    if (is_variables) {
+                        variables_.push_back(e.name);
+                        primes_[e.name] = primes;
+                    } else {
+                        specified_.push_back(e.name + std::string(static_cast<std::size_t>(primes), '\''));
+                    }
+                }
+            }
             return;
         }
         not_translated(st.where, w, "Alembert has no imaginary numbers");
+    }
+
+    // Autolev declares a name that MASS or INERTIA gives alone (MASS A = MA, INERTIA B, I1,
+    // I2, I3) and that no declaration names as a constant; so does the translation.
+    void implicit_constants(const Statement& st) {
+        std::vector<const Expr*> values;
+        for (std::size_t i = 0; i < st.items.size(); ++i) {
+            const Item& it = st.items[i];
+            if (st.keyword == "MASS" && it.has_value) values.push_back(&it.value);
+            if (st.keyword == "INERTIA" && i > 0 && !it.has_value) values.push_back(&it.lhs);
+        }
+        for (const Expr* v : values) {
+            if (v->kind != Expr::Kind::name || v->vector || v->primes || find(v->text)) continue;
+            std::string key = upper(v->text);
+            if (key == "T" || key == "PI") continue;
+            if (!implicit_group_) {
+                constants_.emplace_back();
+                implicit_group_ = constants_.size() - 1;
+            }
+            const Entry& e = add(v->text, Kind::constant, v->where);
+            constant_index_[key] = {*implicit_group_, constants_[*implicit_group_].size()};
+            constants_[*implicit_group_].push_back({e.name, "", "", false});
+            report(Severity::note, v->where,
+                   "'" + v->text + "' is not declared; " + st.keyword + " declares it as a constant, as in Autolev");
+        }
     }
 
     static std::string join(const std::vector<std::string>& v, const char* sep = ", ") {
@@ -440,6 +522,13 @@ private:
             case Kind::constant:
             case Kind::scalar:
                 resolved_numeric_ = en->numeric;
+                if (e.primes && en->kind == Kind::scalar) {
+                    // Z' of a named expression is its time derivative
+                    std::string d = en->name;
+                    for (int k = 0; k < e.primes; ++k) d = "dt(" + d + ")";
+                    resolved_numeric_ = false;
+                    return d;
+                }
                 if (e.primes) fail(e.where, "'" + e.text + "' is " + kind_word(en->kind) + "; it has no derivative",
                                    "declare it with VARIABLES to give it derivatives");
                 return en->name;
@@ -551,11 +640,23 @@ private:
     void translate(const Statement& st) {
         statement_where_ = st.where;
         switch (st.kind) {
-            case Statement::Kind::declaration: return;
+            case Statement::Kind::declaration: return definitions(st);
             case Statement::Kind::list: return list(st);
             case Statement::Kind::command: return command(st);
             case Statement::Kind::assignment: return assignment(st);
             case Statement::Kind::expression: return expression_statement(st);
+        }
+    }
+
+    // SPECIFIED F = -K*X: F is assigned where it is declared, so the statements before it
+    // that use it are reported by the script, not given another meaning
+    void definitions(const Statement& st) {
+        auto it = definitions_.find({st.where.line, st.where.column});
+        if (it == definitions_.end()) return;
+        for (const Definition& d : it->second) {
+            Text r = scalar(d.value);
+            names_[upper(d.name)].numeric = r.numeric;
+            emit(d.name + " = " + r.s);
         }
     }
 
@@ -771,6 +872,7 @@ private:
             return;
         }
         if (en) {
+            if (en->kind == Kind::variable) return kinematical_assignment(st, *en);
             if (en->kind == Kind::scalar) {
                 Text r = scalar(st.rhs);
                 names_[upper(lhs.text)].numeric = r.numeric;
@@ -795,6 +897,22 @@ private:
         const Entry& ne = add(lhs.text, Kind::scalar, lhs.where);
         names_[upper(lhs.text)].numeric = r.numeric;
         emit(ne.name + " = " + r.s);
+    }
+
+    // OMEGA = THETA': a kinematical equation written as an assignment, THETA' - OMEGA = 0
+    void kinematical_assignment(const Statement& st, const Entry& speed) {
+        const Expr& r = st.rhs;
+        const Entry* q = r.kind == Expr::Kind::name && !r.vector && r.primes == 1 ? find(r.text) : nullptr;
+        if (!q || q->kind != Kind::variable)
+            fail(st.lhs.where,
+                 "'" + st.lhs.text + "' is a variable; it is assigned only as a coordinate's rate (" + st.lhs.text +
+                     " = Q')",
+                 "write the kinematical equation Q' = " + st.lhs.text +
+                     ", or give the expression another name (Autolev's VARIABLES Z = ... defines one)");
+        for (const KinematicEquation& k : kinematics_)
+            if (k.coordinate == q->name)
+                fail(st.lhs.where, "a second kinematical equation for '" + r.text + "'", "give one for each coordinate");
+        kinematics_.push_back({q->name, q->name + "' - " + speed.name});
     }
 
     std::string matrix(const Expr& m) {
@@ -1062,8 +1180,10 @@ private:
         if (coordinates.empty()) {
             for (const std::string& v : variables_) coordinates.push_back(v);
         } else {
+            // the speeds are the variables the kinematical equations give the rates with
             for (const std::string& v : variables_)
-                if (std::find(coordinates.begin(), coordinates.end(), v) == coordinates.end()) speeds.push_back(v);
+                if (std::find(coordinates.begin(), coordinates.end(), v) == coordinates.end() && !given_.count(v))
+                    speeds.push_back(v);
         }
         std::string name = "K";
         for (int k = 2; find(name) || labels_.count(name); ++k) name = "K" + std::to_string(k);
@@ -1080,7 +1200,41 @@ private:
         return s;
     }
 
+    // true if the text `s` holds the name `n` as a whole word
+    static bool mentions(const std::string& s, const std::string& n) {
+        for (std::size_t at = s.find(n); at != std::string::npos; at = s.find(n, at + 1)) {
+            auto word = [](char c) { return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_'; };
+            bool starts = at == 0 || !word(s[at - 1]);
+            bool ends = at + n.size() == s.size() || !word(s[at + n.size()]);
+            if (starts && ends) return true;
+        }
+        return false;
+    }
+
+    // In a model with kinematical equations, a variable that is neither a coordinate nor in
+    // any kinematical or constraint equation is no speed: Autolev takes it as a given function
+    // of time, and so does the translation (a specified quantity; INPUT gives its value).
+    void find_given_variables() {
+        if (!kane_at_ || kinematics_.empty()) return;
+        for (const std::string& v : variables_) {
+            bool coordinate = false, named = false;
+            for (const KinematicEquation& k : kinematics_) {
+                coordinate = coordinate || k.coordinate == v;
+                named = named || mentions(k.residual, v);
+            }
+            for (const std::string& c : constraints_) named = named || mentions(c, v);
+            if (coordinate || named) continue;
+            given_.insert(v);
+            const Entry* en = find(v);
+            report(Severity::note, en ? en->where : kane_where_,
+                   "'" + v + "' is neither a coordinate nor a speed (no kinematical equation names it); it is "
+                   "declared as a specified quantity, a given function of time",
+                   "give its value with INPUT " + v + " = ..., or a kinematical equation if it is a speed");
+        }
+    }
+
     void assemble() {
+        find_given_variables();
         for (const auto& [p, where] : forced_points_) {
             auto it = point_body_.find(p);
             const Entry* body = it == point_body_.end() ? nullptr : find(it->second);
@@ -1120,11 +1274,18 @@ private:
             }
             if (!free.empty()) s += "point " + join(free) + "\n";
         }
-        for (const auto& group : constants_) {
-            if (group.empty()) continue;
-            std::vector<std::string> parts;
-            for (const ConstantDecl& c : group) parts.push_back(c.name + (c.value.empty() ? "" : " = " + c.value + c.unit));
-            s += "constant " + join(parts) + "\n";
+        for (std::size_t g = 0; g < constants_.size(); ++g) {
+            const auto& group = constants_[g];
+            if (implicit_group_ && g == *implicit_group_ && !group.empty())
+                s += "# declared by MASS and INERTIA, as in Autolev\n";
+            // CONSTANTS L+, M: positive L, then constant M
+            for (bool positive : {true, false}) {
+                std::vector<std::string> parts;
+                for (const ConstantDecl& c : group)
+                    if (c.positive == positive)
+                        parts.push_back(c.name + (c.value.empty() ? "" : " = " + c.value + c.unit));
+                if (!parts.empty()) s += (positive ? "positive " : "constant ") + join(parts) + "\n";
+            }
         }
         if (!extra_constants_.empty())
             s += "# numbers where Alembert needs a dimension, as constants without a unit\n"
@@ -1132,25 +1293,32 @@ private:
         if (!variables_.empty()) {
             std::vector<std::string> parts;
             for (const std::string& v : variables_) {
+                if (given_.count(v)) continue;
                 // Kane's equations, their linearization and generated code take the second
                 // derivatives of coordinates and the first of speeds: two primes serve both
                 int p = std::max({primes_[v], used_primes_[v], 2});
                 parts.push_back(v + std::string(static_cast<std::size_t>(p), '\''));
             }
-            s += "variable " + join(parts) + "\n";
+            if (!parts.empty()) s += "variable " + join(parts) + "\n";
         }
+        for (const std::string& v : variables_)
+            if (given_.count(v)) specified_.push_back(v + std::string(static_cast<std::size_t>(std::max(primes_[v], used_primes_[v])), '\''));
         if (!specified_.empty()) s += "specified " + join(specified_) + "\n";
         for (const std::string& l : model_)
             if (!l.empty()) s += l + "\n";
+        for (const std::string& n : initial_order_)
+            if (given_.count(n) && std::find(tail_inputs_.begin(), tail_inputs_.end(), n + " = " + initial_[n]) == tail_inputs_.end())
+                tail_inputs_.push_back(n + " = " + initial_[n]);
         if (!tail_inputs_.empty()) s += "input " + join(tail_inputs_) + "\n";
         if (!initial_order_.empty()) {
             std::vector<std::string> parts, seen;
             for (const std::string& n : initial_order_) {
                 if (std::find(seen.begin(), seen.end(), n) != seen.end()) continue;
                 seen.push_back(n);
+                if (given_.count(n)) continue;  // given above with `input`
                 parts.push_back(n + " = " + initial_[n]);
             }
-            s += "initial " + join(parts) + "\n";
+            if (!parts.empty()) s += "initial " + join(parts) + "\n";
         }
         for (const auto& [k, l] : tail_settings_) s += l + "\n";
         if (!abs_tol_.empty() || !rel_tol_.empty())
@@ -1189,9 +1357,12 @@ private:
     std::vector<std::string> frames_lines_{};
     std::vector<std::vector<ConstantDecl>> constants_{};
     std::map<std::string, std::pair<std::size_t, std::size_t>> constant_index_{};
+    std::optional<std::size_t> implicit_group_{};  // the constants MASS and INERTIA declare
     std::vector<std::string> variables_{};
+    std::set<std::string> given_{};  // variables that are no coordinate and no speed: specified
     std::map<std::string, int> primes_{}, used_primes_{};
     std::vector<std::string> specified_{};
+    std::map<std::pair<int, int>, std::vector<Definition>> definitions_{};  // by the declaration's line, column
     std::vector<std::string> model_{};
     std::optional<std::size_t> kane_at_{};
     Location kane_where_{};
