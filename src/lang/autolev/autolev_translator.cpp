@@ -112,6 +112,7 @@ public:
                     pending_.push_back({Severity::error, file_, e.where(), e.what(), e.hint()});
                 }
             }
+        find_rate_speeds(parsed);
         std::vector<Diagnostic> declaration_problems = std::move(pending_);
         pending_.clear();
         std::size_t next_declaration_problem = 0;
@@ -344,6 +345,49 @@ private:
         }
     }
 
+    // Speeds that are a coordinate's rate (Q1' = U1, or OMEGA = THETA') are written as that rate
+    // (U1 as Q1', U1' as Q1''), so that Kane's equations are in the coordinates' rates, as
+    // Alembert's simulate and codegen take them. Only when every kinematical equation has this
+    // form and the model has no constraints; otherwise the speeds stay speeds.
+    void find_rate_speeds(const ParsedFile& parsed) {
+        std::map<std::string, std::string> rate_of;  // speed -> coordinate
+        std::set<std::string> coordinates;
+        auto variable = [this](const Expr& e, int primes) -> const Entry* {
+            if (e.kind != Expr::Kind::name || e.vector || e.primes != primes) return nullptr;
+            const Entry* en = find(e.text);
+            return en && en->kind == Kind::variable ? en : nullptr;
+        };
+        for (const Statement& st : parsed.statements) {
+            if (st.kind == Statement::Kind::expression && st.expr.kind == Expr::Kind::call &&
+                upper(st.expr.text) == "CONSTRAIN")
+                return;
+            if (st.kind != Statement::Kind::assignment) continue;
+            if (st.lhs.kind == Expr::Kind::index) {
+                std::string a = upper(st.lhs.text);
+                if (a == "DEPENDENT" || a == "AUXILIARY") return;
+                continue;
+            }
+            const Entry *q = nullptr, *u = nullptr;
+            if (variable(st.lhs, 1)) {  // Q' = U
+                q = variable(st.lhs, 1);
+                u = variable(st.rhs, 0);
+                if (!u) return;  // a kinematical equation of another form
+            } else if (variable(st.lhs, 0) && variable(st.rhs, 1)) {  // U = Q'
+                u = variable(st.lhs, 0);
+                q = variable(st.rhs, 1);
+            } else {
+                continue;
+            }
+            if (q == u || rate_of.count(u->name) || coordinates.count(q->name)) return;
+            rate_of[u->name] = q->name;
+            coordinates.insert(q->name);
+        }
+        for (const auto& [u, q] : rate_of)
+            if (coordinates.count(u) || rate_of.count(q)) return;  // chains such as Q' = U, U' = W
+        rate_of_ = std::move(rate_of);
+        aliased_coordinates_ = std::move(coordinates);
+    }
+
     static std::string join(const std::vector<std::string>& v, const char* sep = ", ") {
         std::string s;
         for (std::size_t i = 0; i < v.size(); ++i) s += (i ? sep : "") + v[i];
@@ -372,6 +416,17 @@ private:
         switch (e.kind) {
             case Expr::Kind::number: return {number_text(e, "a number"), false, 5, true};
             case Expr::Kind::name: {
+                if (!e.vector && e.primes == 0 && upper(e.text) == "T" && !find(e.text)) {
+                    // Autolev's time is a number (of seconds): t/t_unit with t_unit = 1 s, so that
+                    // SIN(T) is the sine of a number, as in Autolev
+                    if (time_unit_.empty()) {
+                        time_unit_ = "t_unit";
+                        for (int k = 2; find(time_unit_) || extra_names_.count(time_unit_); ++k)
+                            time_unit_ = "t_unit" + std::to_string(k);
+                        extra_names_.insert({time_unit_, 0});
+                    }
+                    return {"t/" + time_unit_, false, 2, false};
+                }
                 resolved_numeric_ = false;
                 Text t = e.vector ? Text{vector_name(e), true, 5} : Text{scalar_name(e), false, 5};
                 t.numeric = resolved_numeric_;
@@ -534,6 +589,11 @@ private:
                 return en->name;
             case Kind::variable:
             case Kind::specified: {
+                if (auto r = rate_of_.find(en->name); r != rate_of_.end()) {
+                    int& p = used_primes_[r->second];
+                    p = std::max(p, e.primes + 1);
+                    return r->second + primes + "'";
+                }
                 if (en->kind == Kind::variable) {
                     int& p = used_primes_[en->name];
                     p = std::max(p, e.primes);
@@ -739,8 +799,11 @@ private:
             return;
         }
         if (en->kind == Kind::variable) {
-            initial_[en->name + std::string(static_cast<std::size_t>(it.lhs.primes), '\'')] = value + u;
-            initial_order_.push_back(en->name + std::string(static_cast<std::size_t>(it.lhs.primes), '\''));
+            std::string n = en->name + std::string(static_cast<std::size_t>(it.lhs.primes), '\'');
+            if (auto r = rate_of_.find(en->name); r != rate_of_.end())  // U1 = 0 is Q1' = 0
+                n = r->second + std::string(static_cast<std::size_t>(it.lhs.primes + 1), '\'');
+            initial_[n] = value + u;
+            initial_order_.push_back(n);
             return;
         }
         if (en->kind == Kind::specified) {
@@ -856,6 +919,7 @@ private:
             if (lhs.primes != 1)
                 fail(lhs.where, "an equation for '" + lhs.text + std::string(static_cast<std::size_t>(lhs.primes), '\'') +
                                     "' is not translated", "kinematical equations give first derivatives: Q1' = U1");
+            if (aliased_coordinates_.count(en->name)) return;  // Q1' = U1: U1 is written Q1'
             Text r = scalar(st.rhs);
             for (const KinematicEquation& k : kinematics_)
                 if (k.coordinate == en->name)
@@ -901,6 +965,7 @@ private:
 
     // OMEGA = THETA': a kinematical equation written as an assignment, THETA' - OMEGA = 0
     void kinematical_assignment(const Statement& st, const Entry& speed) {
+        if (rate_of_.count(speed.name)) return;  // OMEGA = THETA': OMEGA is written THETA'
         const Expr& r = st.rhs;
         const Entry* q = r.kind == Expr::Kind::name && !r.vector && r.primes == 1 ? find(r.text) : nullptr;
         if (!q || q->kind != Kind::variable)
@@ -1178,7 +1243,8 @@ private:
             residuals.push_back(k.residual);
         }
         if (coordinates.empty()) {
-            for (const std::string& v : variables_) coordinates.push_back(v);
+            for (const std::string& v : variables_)
+                if (!rate_of_.count(v) && !given_.count(v)) coordinates.push_back(v);
         } else {
             // the speeds are the variables the kinematical equations give the rates with
             for (const std::string& v : variables_)
@@ -1215,9 +1281,10 @@ private:
     // any kinematical or constraint equation is no speed: Autolev takes it as a given function
     // of time, and so does the translation (a specified quantity; INPUT gives its value).
     void find_given_variables() {
-        if (!kane_at_ || kinematics_.empty()) return;
+        if (!kane_at_ || (kinematics_.empty() && rate_of_.empty())) return;
         for (const std::string& v : variables_) {
-            bool coordinate = false, named = false;
+            if (rate_of_.count(v)) continue;
+            bool coordinate = aliased_coordinates_.count(v) > 0, named = false;
             for (const KinematicEquation& k : kinematics_) {
                 coordinate = coordinate || k.coordinate == v;
                 named = named || mentions(k.residual, v);
@@ -1287,13 +1354,22 @@ private:
                 if (!parts.empty()) s += (positive ? "positive " : "constant ") + join(parts) + "\n";
             }
         }
+        if (!time_unit_.empty())
+            s += "# Autolev's time T is a number of seconds: t/" + time_unit_ + "\nconstant " + time_unit_ + " = 1 s\n";
         if (!extra_constants_.empty())
             s += "# numbers where Alembert needs a dimension, as constants without a unit\n"
                  "constant " + join(extra_constants_) + "\n";
+        if (!rate_of_.empty()) {
+            std::vector<std::string> said;
+            for (const std::string& v : variables_)
+                if (auto r = rate_of_.find(v); r != rate_of_.end()) said.push_back(v + " is " + r->second + "'");
+            s += "# " + join(said) + " (kinematical equations " + rate_of_.begin()->second + "' = " +
+                 rate_of_.begin()->first + ", ...): written as the rates, which simulate and codegen take as speeds\n";
+        }
         if (!variables_.empty()) {
             std::vector<std::string> parts;
             for (const std::string& v : variables_) {
-                if (given_.count(v)) continue;
+                if (given_.count(v) || rate_of_.count(v)) continue;
                 // Kane's equations, their linearization and generated code take the second
                 // derivatives of coordinates and the first of speeds: two primes serve both
                 int p = std::max({primes_[v], used_primes_[v], 2});
@@ -1350,7 +1426,8 @@ private:
     std::vector<std::pair<std::string, Location>> forced_points_{};
     Location statement_where_{};
     std::map<std::string, int> extra_names_{};
-    std::vector<std::string> extra_constants_{};  // numbers given a place with a dimension
+    std::vector<std::string> extra_constants_{};
+    std::string time_unit_{};  // the constant 1 s that Autolev's time T is divided by  // numbers given a place with a dimension
     bool resolved_numeric_ = false, last_operands_numeric_ = false;
     std::map<std::string, std::string> parent_{};  // frame -> the frame it is oriented from
     std::string newtonian_{};
@@ -1359,7 +1436,9 @@ private:
     std::map<std::string, std::pair<std::size_t, std::size_t>> constant_index_{};
     std::optional<std::size_t> implicit_group_{};  // the constants MASS and INERTIA declare
     std::vector<std::string> variables_{};
-    std::set<std::string> given_{};  // variables that are no coordinate and no speed: specified
+    std::set<std::string> given_{};
+    std::map<std::string, std::string> rate_of_{};  // a speed that is a coordinate's rate -> the coordinate
+    std::set<std::string> aliased_coordinates_{};  // variables that are no coordinate and no speed: specified
     std::map<std::string, int> primes_{}, used_primes_{};
     std::vector<std::string> specified_{};
     std::map<std::pair<int, int>, std::vector<Definition>> definitions_{};  // by the declaration's line, column
