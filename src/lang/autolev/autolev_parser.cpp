@@ -517,6 +517,7 @@ Statement parse_statement(Parser& p, const Lexer& lex, const std::vector<Token>&
         p.take();
         st.kind = Statement::Kind::assignment;
         Expr rhs = p.expression();
+        if (op.text != ":") st.compound = op.text[0];
         st.rhs = op.text == ":" ? std::move(rhs) : p.binary(op, lhs, std::move(rhs));
         st.lhs = std::move(lhs);
         if (!p.at_end())

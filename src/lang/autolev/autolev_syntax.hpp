@@ -81,6 +81,7 @@ struct Statement {
     std::vector<Item> items{};
     std::string text{};  ///< command: the rest of the line as written
     Expr lhs{}, rhs{};
+    char compound = 0;  ///< '+', '-', '*' or '/' for `lhs += rhs` ... (rhs is then `lhs op (rhs)`)
     Expr expr{};
 };
 

@@ -450,37 +450,56 @@ private:
         fail(e.where, "an expression that is not translated");
     }
 
+    // A chain of operators (a + b + c ..., read as ((a + b) + c) ...) is translated along its
+    // left operands by iteration, so that a chain of any length needs no deeper stack.
     Text binary(const Expr& e) {
-        Text t = binary_text(e);
-        t.numeric = last_operands_numeric_;
-        return t;
+        std::vector<const Expr*> chain;
+        const Expr* x = &e;
+        while (x->kind == Expr::Kind::binary) {
+            chain.push_back(x);
+            x = &x->args[0];
+        }
+        Text acc = expr(*x);
+        for (auto it = chain.rbegin(); it != chain.rend(); ++it) {
+            Text b = expr((*it)->args[1]);
+            bool numeric = acc.numeric && b.numeric;
+            acc = combine(**it, std::move(acc), std::move(b));
+            acc.numeric = numeric;
+        }
+        return acc;
     }
-    Text binary_text(const Expr& e) {
-        Text a = expr(e.args[0]);
-        Text b = expr(e.args[1]);
-        last_operands_numeric_ = a.numeric && b.numeric;
+    // `a op b` from the translations of a and b (a's text is moved, not copied, so that a
+    // long chain costs time in proportion to its length)
+    Text combine(const Expr& e, Text a, Text b) {
         const std::string& op = e.text;
+        auto wrapped = [](Text& t, bool wrap) { return wrap ? "(" + std::move(t.s) + ")" : std::move(t.s); };
         if (op == "+" || op == "-") {
             if (a.vector != b.vector)
                 fail(e.where, std::string("'") + op + "' between a vector and a scalar",
                      "both sides must be vectors (with '>') or both scalars");
             // a sign on the right needs brackets (a + (-b)), and so does a sum after '-'
             bool wrap = b.prec == 3 || (op == "-" && b.prec <= 1);
-            std::string rhs = wrap ? "(" + b.s + ")" : b.s;
-            return {a.s + " " + op + " " + rhs, a.vector, 1};
+            std::string s = std::move(a.s);
+            s += " " + op + " ";
+            s += wrapped(b, wrap);
+            return {std::move(s), a.vector, 1};
         }
-        if (op == "*") {
-            if (a.vector && b.vector)
+        if (op == "*" || op == "/") {
+            if (op == "*" && a.vector && b.vector)
                 fail(e.where, "'*' between two vectors", "use DOT(a>, b>) or CROSS(a>, b>)");
-            return {paren(a, 2) + "*" + (b.prec <= 3 ? "(" + b.s + ")" : b.s), a.vector || b.vector, 2};
-        }
-        if (op == "/") {
-            if (b.vector) fail(e.where, "division by a vector", "divide by a scalar such as MAG(v>)");
-            return {paren(a, 2) + "/" + (b.prec <= 3 ? "(" + b.s + ")" : b.s), a.vector, 2};
+            if (op == "/" && b.vector) fail(e.where, "division by a vector", "divide by a scalar such as MAG(v>)");
+            bool vector = a.vector || b.vector;
+            std::string s = wrapped(a, a.prec < 2);
+            s += op;
+            s += wrapped(b, b.prec <= 3);
+            return {std::move(s), vector, 2};
         }
         // ^
         if (a.vector || b.vector) fail(e.where, "a power of a vector", "use DOT(v>, v>) for the square of a magnitude");
-        return {(a.prec <= 4 ? "(" + a.s + ")" : a.s) + "^" + (b.prec < 5 ? "(" + b.s + ")" : b.s), false, 4};
+        std::string s = wrapped(a, a.prec <= 4);
+        s += "^";
+        s += wrapped(b, b.prec < 5);
+        return {std::move(s), false, 4};
     }
 
     Text call(const Expr& e) {
@@ -869,7 +888,13 @@ private:
         std::string kind = upper(text.substr(0, text.find_first_of("( \t")));
         if (kind != "DYNAMICS")
             return not_translated(st.where, "CODE " + kind, "only CODE DYNAMICS() has a counterpart (codegen)");
-        std::size_t close = text.find(')');
+        std::size_t open = text.find('('), close = text.find(')');
+        if (open != std::string::npos && close != std::string::npos && close > open &&
+            text.find_first_not_of(" \t", open + 1) != close)
+            report(Severity::warning, st.where,
+                   "the arguments of CODE DYNAMICS(" + text.substr(open + 1, close - open - 1) + ") are not translated",
+                   "Alembert's codegen writes the dynamics of every coordinate and speed; the code is generated "
+                   "without them");
         std::string file = close == std::string::npos ? "" : text.substr(close + 1);
         file.erase(0, file.find_first_not_of(" \t"));
         std::string lang = "c";
@@ -1052,10 +1077,10 @@ private:
                                 dimensioned(vec(st.rhs), "alf_" + s->first));
             if (key.rfind("FORCE_", 0) == 0)
                 if (auto p = point_of(name.substr(6)))
-                    return force(*p, std::nullopt, dimensioned(vec(st.rhs), "f_" + *p));
+                    return force(*p, std::nullopt, dimensioned(load_value(st, key), "f_" + *p));
             if (key.rfind("TORQUE_", 0) == 0)
                 if (auto b = bd(name.substr(7)))
-                    return torque(*b, std::nullopt, dimensioned(vec(st.rhs), "tau_" + *b));
+                    return torque(*b, std::nullopt, dimensioned(load_value(st, key), "tau_" + *b));
             // a name of Autolev's own form whose points or frames are not declared is a mistake,
             // not a new vector
             static const std::pair<const char*, const char*> forms[] = {
@@ -1081,6 +1106,24 @@ private:
         Text r = vec(st.rhs);
         names_[key].numeric = r.numeric;
         emit(existing->name + "> = " + r.s);
+    }
+
+    // FORCE_P> = v> gives the force on P, FORCE_P> += v> adds v> to it (another load of the
+    // script); a second FORCE_P> = would replace the first, which the script cannot say
+    Text load_value(const Statement& st, const std::string& key) {
+        if (st.compound == 0) {
+            if (!assigned_loads_.insert(key).second)
+                fail(st.lhs.where, "'" + st.lhs.text + ">' is assigned a second time, which replaces its first value",
+                     "add to it with " + st.lhs.text + "> += v> (or FORCE(...), TORQUE(...)), or remove the first");
+            return vec(st.rhs);
+        }
+        if (st.compound != '+' && st.compound != '-')
+            fail(st.lhs.where, std::string("'") + st.compound + "=' on a force or torque is not translated",
+                 "write the whole load: " + st.lhs.text + "> = ...");
+        assigned_loads_.insert(key);
+        Text v = vec(st.rhs.args[1]);
+        if (st.compound == '-') v = {"-" + paren(v, 4), true, 3, v.numeric};
+        return v;
     }
 
     std::string label(const std::string& base) {
@@ -1422,13 +1465,14 @@ private:
     std::map<std::string, Entry> names_{};                  // key: upper case
     std::map<std::string, std::string> implicit_points_{};  // NO, BO (upper case) -> N_o, Bcm
     std::map<std::string, int> labels_{};
+    std::set<std::string> assigned_loads_{};  // FORCE_P>, TORQUE_B> (upper case) assigned with '='
     std::map<std::string, std::string> point_body_{};  // point -> the body V2PTS fixes it on
     std::vector<std::pair<std::string, Location>> forced_points_{};
     Location statement_where_{};
     std::map<std::string, int> extra_names_{};
     std::vector<std::string> extra_constants_{};
     std::string time_unit_{};  // the constant 1 s that Autolev's time T is divided by  // numbers given a place with a dimension
-    bool resolved_numeric_ = false, last_operands_numeric_ = false;
+    bool resolved_numeric_ = false;
     std::map<std::string, std::string> parent_{};  // frame -> the frame it is oriented from
     std::string newtonian_{};
     std::vector<std::string> frames_lines_{};

@@ -462,4 +462,66 @@ INPUT TFINAL = 2
     ASSERT_EQ(r.status, RunStatus::ok) << r.err << t.script;
 }
 
+// ---- loads assigned more than once; long chains -----------------------------------------
+
+// FORCE_P> = v> then FORCE_P> += w>: the force on P is v> + w>; a second '=' is an error.
+TEST(AutolevMeaning, ForceAssignedThenAddedTo) {
+    std::string model = R"(NEWTONIAN N
+PARTICLES P
+CONSTANTS M, K, C
+VARIABLES X''
+P_NO_P> = X*N1>
+V_P_N> = X'*N1>
+MASS P = M
+FORCE_P> = -K*X*N1>
+%MORE%
+ZERO = FR() + FRSTAR()
+KANE()
+INPUT M = 2, K = 50, C = 3
+)";
+    auto with = [&](const std::string& more) {
+        std::string s = model;
+        s.replace(s.find("%MORE%"), 6, more);
+        return translate_autolev(s, "loads.al");
+    };
+    AutolevTranslation t = with("FORCE_P> += -C*X'*N1>\nFORCE_P> -= 5*N1>");
+    ASSERT_TRUE(t.ok()) << messages(t);
+    const std::string k = kane_name(t.script);
+    for (double x : {-0.4, 0.9}) {
+        ScriptRun r = run(t.script, "solve " + k + " for X'' at X = " + num(x) + ", X' = 1.5");
+        ASSERT_EQ(r.status, RunStatus::ok) << r.err << t.script;
+        EXPECT_NEAR(r.values["X''"], (-50 * x - 3 * 1.5 - 5) / 2, 1e-12) << t.script;
+    }
+    AutolevTranslation twice = with("FORCE_P> = -C*X'*N1>");
+    ASSERT_FALSE(twice.ok());
+    ASSERT_EQ(twice.diagnostics.size(), 1u) << messages(twice);
+    EXPECT_EQ(twice.diagnostics[0].location.line, 9);
+    EXPECT_TRUE(contains(twice.diagnostics[0].message, "assigned a second time")) << messages(twice);
+}
+
+TEST(AutolevMeaning, CodeDynamicsArgumentsAreReported) {
+    AutolevTranslation t = translate_autolev(std::string(kSpecifiedSpring) + "CODE DYNAMICS(X) spring.c\n", "code.al");
+    ASSERT_TRUE(t.ok()) << messages(t);
+    ASSERT_EQ(t.diagnostics.size(), 1u) << messages(t);
+    EXPECT_EQ(t.diagnostics[0].severity, Severity::warning);
+    EXPECT_TRUE(contains(t.diagnostics[0].message, "arguments of CODE DYNAMICS(X) are not translated"));
+    EXPECT_TRUE(contains(t.script, "codegen c name spring\n")) << t.script;
+}
+
+// Long chains of operators (10,000 terms, 20,000 factors, a 20,000-term vector sum) are
+// translated without a deep stack, in time proportional to their length.
+TEST(AutolevMeaning, LongOperatorChainsTranslate) {
+    std::string sum = "M", product = "M", vector = "N1>";
+    for (int i = 0; i < 10000; ++i) sum += " + 0*M";
+    for (int i = 0; i < 20000; ++i) product += "*M";
+    for (int i = 0; i < 20000; ++i) vector += " + N2>";
+    AutolevTranslation t = translate_autolev("NEWTONIAN N\nBODIES A\nCONSTANTS M\nMASS A = " + sum + "\nX = " + product +
+                                                 "\nR> = " + vector + "\n",
+                                             "chains.al");
+    ASSERT_TRUE(t.ok()) << messages(t);
+    EXPECT_TRUE(contains(t.script, "mass A = M + 0*M + 0*M")) << t.script.substr(0, 200);
+    EXPECT_TRUE(contains(t.script, "X = M*M*M*M")) << t.script.substr(0, 200);
+    EXPECT_TRUE(contains(t.script, "R> = Nx> + Ny> + Ny>")) << t.script.substr(0, 200);
+}
+
 }  // namespace
