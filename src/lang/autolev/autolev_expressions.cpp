@@ -240,7 +240,7 @@ std::string Translator::point_name(const Expr& e) {
         if (auto p = point_of(e.text)) return *p;
     std::string hint = "name a point declared with POINTS or PARTICLES";
     if (e.kind == Expr::Kind::name) {
-        const Entry* en = find(e.text);
+        const Entry* en = find_object(e.text);
         if (en && en->kind == Kind::body)
             hint = "a body is not a point: its mass centre is " + e.text + "O";
     }
@@ -249,7 +249,7 @@ std::string Translator::point_name(const Expr& e) {
 
 std::string Translator::body_name(const Expr& e) {
     if (e.kind == Expr::Kind::name && !e.vector && e.primes == 0) {
-        const Entry* en = find(e.text);
+        const Entry* en = find_object(e.text);
         if (en && en->kind == Kind::body) return en->name;
     }
     fail(e.where, "expected a body here", "name a body declared with BODIES");

@@ -69,7 +69,7 @@ void Translator::assemble() {
     find_given_variables();
     for (const auto& [p, where] : forced_points_) {
         auto it = point_body_.find(p);
-        const Entry* body = it == point_body_.end() ? nullptr : find(it->second);
+        const Entry* body = it == point_body_.end() ? nullptr : object_spelt(it->second);
         if (!body || body->kind != Kind::body)
             report(Severity::error, where, "the force at point '" + p + "' acts on no body",
                    "Alembert applies forces at points fixed on a body: say which body '" + p +
@@ -85,6 +85,7 @@ void Translator::assemble() {
     }
     std::string& s = out_.script;
     s = "# " + file_ + ", translated from Autolev by alembert import\n";
+    for (const std::string& r : renames_) s += "# renamed: " + r + "\n";
     if (!newtonian_.empty()) s += "newtonian " + newtonian_ + "\n";
     for (const std::string& l : frames_lines_) {
         if (l.empty() || l[0] != '\x01') {
@@ -100,7 +101,7 @@ void Translator::assemble() {
             std::string p = l.substr(b, e - b);
             b = e + 1;
             auto it = point_body_.find(p);
-            const Entry* body = it == point_body_.end() ? nullptr : find(it->second);
+            const Entry* body = it == point_body_.end() ? nullptr : object_spelt(it->second);
             if (body && body->kind == Kind::body) s += "point " + p + " on " + body->name + "\n";
             else free.push_back(p);
         }

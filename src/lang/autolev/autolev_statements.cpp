@@ -31,7 +31,7 @@ void Translator::list(const Statement& st) {
     if (w == "MASS") {
         if (st.items.empty()) fail(st.where, "MASS names no body or particle", "write MASS A = MA, P = MP");
         for (const Item& it : st.items) {
-            const Entry* en = it.lhs.kind == Expr::Kind::name && !it.lhs.vector ? find(it.lhs.text) : nullptr;
+            const Entry* en = it.lhs.kind == Expr::Kind::name && !it.lhs.vector ? find_object(it.lhs.text) : nullptr;
             if (!en || (en->kind != Kind::body && en->kind != Kind::particle))
                 fail(it.where, "MASS takes a body or a particle before '='", "write MASS A = MA");
             if (!it.has_value) fail(it.where, "the mass of '" + it.lhs.text + "' is missing", "write MASS " + it.lhs.text + " = M");
@@ -315,7 +315,7 @@ void Translator::vector_assignment(const Statement& st) {
     auto pt = [this](std::string_view n) { return point_of(n); };
     auto fr = [this](std::string_view n) { return frame_of(n); };
     auto bd = [this](std::string_view n) -> std::optional<std::string> {
-        const Entry* en = find(n);
+        const Entry* en = find_object(n);
         if (en && (en->kind == Kind::body || en->kind == Kind::frame || en->kind == Kind::newtonian)) return en->name;
         return std::nullopt;
     };
@@ -401,7 +401,7 @@ void Translator::force(const std::string& on, const std::optional<std::string>& 
     std::vector<std::string> at{on};
     if (from) at.push_back(*from);
     for (const std::string& x : at)
-        if (find(x) && find(x)->kind == Kind::point) forced_points_.emplace_back(x, statement_where_);
+        if (object_spelt(x) && object_spelt(x)->kind == Kind::point) forced_points_.emplace_back(x, statement_where_);
     std::string l = label("F_" + on);
     emit("force " + l + " on " + on + (from ? " from " + *from : "") + " = " + v);
 }
@@ -434,7 +434,7 @@ void Translator::expression_statement(const Statement& st) {
         std::string what = f == "A2PTS" ? "acceleration " : "velocity ";
         if (f == "V2PTS") {  // both points are fixed on B: forces there act on B
             for (const std::string& x : {p, q})
-                if (find(x) && find(x)->kind == Kind::point && !point_body_.count(x)) point_body_[x] = b;
+                if (object_spelt(x) && object_spelt(x)->kind == Kind::point && !point_body_.count(x)) point_body_[x] = b;
         }
         return emit(what + q + " in " + n + " from " + p + (f == "V1PT" ? " moving on " : " fixed on ") + b);
     }

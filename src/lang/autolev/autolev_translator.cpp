@@ -79,10 +79,18 @@ std::string Translator::alembert_spelling(const std::string& name, Location wher
     return name;
 }
 
+// "a frame" -> "frame", "the Newtonian frame" -> "Newtonian frame"
+static std::string noun(Kind k) {
+    std::string w = kind_word(k);
+    return w.substr(w.find(' ') + 1);
+}
+
 const Entry& Translator::add(const std::string& name, Kind kind, Location where) {
     std::string key = upper(name);
-    auto it = names_.find(key);
-    if (it != names_.end()) {
+    std::map<std::string, Entry>& same = is_object(kind) ? objects_ : names_;
+    std::map<std::string, Entry>& other = is_object(kind) ? names_ : objects_;
+    auto it = same.find(key);
+    if (it != same.end()) {
         const Entry& old = it->second;
         std::string both = "'" + name + "' is declared as " + kind_word(kind) + " at line " +
                            std::to_string(where.line) + ", and '" + old.name + "' as " + kind_word(old.kind) +
@@ -95,8 +103,26 @@ const Entry& Translator::add(const std::string& name, Kind kind, Location where)
              "an Alembert script has one name for one thing, whatever its kind; rename one of the two "
              "in the Autolev file");
     }
-    Entry e{kind, alembert_spelling(name, where), where};
-    return names_.emplace(key, std::move(e)).first->second;
+    Entry e{kind, alembert_spelling(name, where), where, false, key};
+    if (auto o = other.find(key); o != other.end()) {
+        // a frame A beside a variable A: the later one is renamed (A_var), as the script has
+        // one name for one thing
+        static const std::map<Kind, std::string> suffix{
+            {Kind::newtonian, "frame"}, {Kind::frame, "frame"},  {Kind::body, "body"},
+            {Kind::particle, "particle"}, {Kind::point, "point"}, {Kind::constant, "const"},
+            {Kind::variable, "var"},     {Kind::specified, "spec"}, {Kind::scalar, "val"},
+            {Kind::vector, "vec"}};
+        std::string base = name + "_" + suffix.at(kind), renamed = base;
+        for (int k = 2; find(renamed) || object_spelt(renamed); ++k) renamed = base + std::to_string(k);
+        e.name = renamed;
+        std::string says = "'" + name + "' is declared as " + std::string(kind_word(kind)) + " at line " +
+                           std::to_string(where.line) + " and as " + kind_word(o->second.kind) + " at line " +
+                           std::to_string(o->second.where.line) + "; the " + noun(kind) + " is called '" + renamed +
+                           "' in the script";
+        report(Severity::note, where, says);
+        renames_.push_back(says);
+    }
+    return same.emplace(key, std::move(e)).first->second;
 }
 
 void Translator::declare(const Statement& st) {
@@ -142,7 +168,7 @@ void Translator::declare(const Statement& st) {
         no_primes(d);
         const Entry& e = add(d.name, Kind::newtonian, d.where);
         newtonian_ = e.name;
-        implicit_points_[upper(d.name) + "O"] = e.name + "_o";
+        implicit_points_[e.key + "O"] = e.name + "_o";
         return;
     }
     if (w == "FRAMES" || w == "FRAME") {
@@ -153,10 +179,10 @@ void Translator::declare(const Statement& st) {
     if (w == "BODIES" || w == "BODY") {
         each(Kind::body, [&](const Declarator& d, const Entry& e) {
             no_primes(d);
-            implicit_points_[upper(e.name) + "O"] = e.name + "cm";
+            implicit_points_[e.key + "O"] = e.name + "cm";
             // Alembert's own names for the body's points are accepted too
-            implicit_points_[upper(e.name) + "CM"] = e.name + "cm";
-            implicit_points_[upper(e.name) + "_O"] = e.name + "_o";
+            implicit_points_[e.key + "CM"] = e.name + "cm";
+            implicit_points_[e.key + "_O"] = e.name + "_o";
         });
         frames_lines_.push_back("body " + join(line));
         return;

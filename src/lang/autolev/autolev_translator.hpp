@@ -44,7 +44,14 @@ struct Entry {
     std::string name{};  // the Alembert spelling
     Location where{};
     bool numeric = false;  // a scalar or vector the file assigned from numbers alone
+    std::string key{};     // the Autolev name in upper case
 };
+
+// Frames, bodies, particles and points are named apart from values (constants, variables,
+// scalars, vectors): Autolev lets a frame A and a variable A stand side by side.
+inline bool is_object(Kind k) {
+    return k == Kind::newtonian || k == Kind::frame || k == Kind::body || k == Kind::particle || k == Kind::point;
+}
 
 // A translated expression: its Alembert text, whether it is a vector, its precedence
 // (1 sum, 2 product, 3 sign, 4 power, 5 atom).
@@ -103,9 +110,21 @@ private:
 
     const Entry& add(const std::string& name, Kind kind, Location where);
 
+    // the value named `name` (Autolev's spelling, any case), else the frame, body, particle
+    // or point
     const Entry* find(std::string_view name) const {
         auto it = names_.find(upper(name));
-        return it == names_.end() ? nullptr : &it->second;
+        return it == names_.end() ? find_object(name) : &it->second;
+    }
+    const Entry* find_object(std::string_view name) const {
+        auto it = objects_.find(upper(name));
+        return it == objects_.end() ? nullptr : &it->second;
+    }
+    // the frame, body, particle or point spelt `name` in the script
+    const Entry* object_spelt(const std::string& name) const {
+        for (const auto& [k, e] : objects_)
+            if (e.name == name) return &e;
+        return nullptr;
     }
 
     // the expanded names of a declarator: Q{3} -> Q1, Q2, Q3
@@ -158,12 +177,12 @@ private:
     // ---- frames, points and vectors -------------------------------------------------------
 
     std::optional<std::string> frame_of(std::string_view name) const {
-        const Entry* en = find(name);
+        const Entry* en = find_object(name);
         if (en && (en->kind == Kind::newtonian || en->kind == Kind::frame || en->kind == Kind::body)) return en->name;
         return std::nullopt;
     }
     std::optional<std::string> point_of(std::string_view name) const {
-        const Entry* en = find(name);
+        const Entry* en = find_object(name);
         if (en && (en->kind == Kind::point || en->kind == Kind::particle)) return en->name;
         auto it = implicit_points_.find(upper(name));
         if (!en && it != implicit_points_.end()) return it->second;
@@ -284,6 +303,8 @@ private:
     AutolevTranslation out_{};
     std::vector<Diagnostic> pending_{};
     std::map<std::string, Entry> names_{};                  // key: upper case
+    std::map<std::string, Entry> objects_{};               // frames, bodies, particles, points
+    std::vector<std::string> renames_{};  // the script's comments on names renamed
     std::map<std::string, std::string> implicit_points_{};  // NO, BO (upper case) -> N_o, Bcm
     std::map<std::string, int> labels_{};
     std::set<std::string> assigned_loads_{};  // FORCE_P>, TORQUE_B> (upper case) assigned with '='

@@ -271,22 +271,66 @@ INPUT L = 0.8, G = 9.81, MA = 1.5, I3 = 0.1
     }
 }
 
-TEST(AutolevMeaning, NamesThatDifferOnlyByKindNameBothDeclarations) {
-    AutolevTranslation a = translate_autolev("NEWTONIAN N\nCONSTANTS L\nPARTICLES L\n", "kinds.al");
+// A frame A beside a variable A, a constant L beside a particle L: Autolev tells them apart by
+// use, the script by name, so the later declaration is renamed, with a note and a comment. A rod
+// A of mass MA turned by the angle A, with a particle L of mass M at its tip at distance L:
+// A'' = -g sin(A) (MA L/2 + M L) / (MA L^2/3 + M L^2).
+TEST(AutolevMeaning, NamesThatDifferOnlyByKindAreRenamed) {
+    AutolevTranslation t = translate_autolev(R"(NEWTONIAN N
+BODIES A
+CONSTANTS L, MA, M, G
+PARTICLES L
+VARIABLES A''
+SIMPROT(N, A, 3, A)
+P_NO_AO> = -L/2*A2>
+P_NO_L> = -L*A2>
+V_AO_N> = DT(P_NO_AO>, N)
+V_L_N> = DT(P_NO_L>, N)
+MASS A = MA, L = M
+INERTIA A, 0, 0, MA*L^2/12
+GRAVITY(-G*N2>)
+ZERO = FR() + FRSTAR()
+KANE()
+INPUT L = 0.9, MA = 1.5, M = 0.7, G = 9.81
+)",
+                                             "kinds.al");
+    ASSERT_TRUE(t.ok()) << messages(t);
+    ASSERT_EQ(t.diagnostics.size(), 2u) << messages(t);
+    EXPECT_EQ(t.diagnostics[0].severity, Severity::note);
+    EXPECT_EQ(t.diagnostics[0].location.line, 4);
+    EXPECT_TRUE(contains(t.diagnostics[0].message, "'L' is declared as a particle at line 4 and as a constant at line 3; "
+                                                   "the particle is called 'L_particle' in the script"))
+        << messages(t);
+    EXPECT_TRUE(contains(t.diagnostics[1].message, "the variable is called 'A_var'")) << messages(t);
+    EXPECT_TRUE(contains(t.script, "# renamed: 'A' is declared as a variable at line 5 and as a body at line 2"))
+        << t.script;
+    EXPECT_TRUE(contains(t.script, "rotate A from N about z by A_var\n")) << t.script;
+    EXPECT_TRUE(contains(t.script, "mass L_particle = M\n")) << t.script;
+    const double L = 0.9, MA = 1.5, M = 0.7, g = 9.81;
+    for (double a : {-2.1, 0.4, 1.3}) {
+        ScriptRun r = run(t.script, "solve K for A_var'' at A_var = " + num(a) + ", A_var' = 0.8");
+        ASSERT_EQ(r.status, RunStatus::ok) << r.err << t.script;
+        EXPECT_NEAR(r.values["A_var''"], -g * std::sin(a) * (MA * L / 2 + M * L) / (MA * L * L / 3 + M * L * L), 1e-12);
+    }
+}
+
+// Two values (or two frames, bodies, particles, points) of one name are an error that names
+// both declarations and their lines.
+TEST(AutolevMeaning, NamesDeclaredTwiceNameBothDeclarations) {
+    AutolevTranslation a = translate_autolev("NEWTONIAN N\nCONSTANTS L\nVARIABLES L'\n", "twice.al");
     ASSERT_FALSE(a.ok());
     ASSERT_EQ(a.diagnostics.size(), 1u) << messages(a);
     EXPECT_EQ(a.diagnostics[0].location.line, 3);
     EXPECT_EQ(a.diagnostics[0].location.column, 11);
     EXPECT_TRUE(contains(a.diagnostics[0].message,
-                         "'L' is declared as a particle at line 3, and 'L' as a constant at line 2"))
+                         "'L' is declared as a variable at line 3, and 'L' as a constant at line 2"))
         << messages(a);
     EXPECT_FALSE(contains(a.diagnostics[0].hint, "'L' and 'L'")) << a.diagnostics[0].hint;
-    AutolevTranslation b = translate_autolev("NEWTONIAN N\nFRAMES A\nVARIABLES U, A\n", "kinds2.al");
+    AutolevTranslation b = translate_autolev("NEWTONIAN N\nFRAMES A\nPOINTS B, A\n", "twice2.al");
     ASSERT_FALSE(b.ok());
     ASSERT_EQ(b.diagnostics.size(), 1u) << messages(b);
-    EXPECT_EQ(b.diagnostics[0].location.line, 3);
-    EXPECT_EQ(b.diagnostics[0].location.column, 14);
-    EXPECT_TRUE(contains(b.diagnostics[0].message, "'A' is declared as a variable at line 3, and 'A' as a frame at line 2"))
+    EXPECT_EQ(b.diagnostics[0].location.column, 11);
+    EXPECT_TRUE(contains(b.diagnostics[0].message, "'A' is declared as a point at line 3, and 'A' as a frame at line 2"))
         << messages(b);
 }
 
