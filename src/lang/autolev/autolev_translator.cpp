@@ -159,6 +159,11 @@ void Translator::declare(const Statement& st) {
                "'" + d.name + "' is declared without it; expressions that rely on its sign (sqrt(" + d.name +
                    "^2), abs(" + d.name + ")) keep both signs");
     };
+    bool takes_primes = w == "VARIABLES" || w == "VARIABLE" || w == "MOTIONVARIABLES" || w == "MOTIONVARIABLE" ||
+                        w == "SPECIFIED" || w == "SPECIFIEDS";
+    if (st.keyword_primes > 0 && !takes_primes)
+        fail(st.where, w + " is written with primes",
+             "only VARIABLES, MOTIONVARIABLES and SPECIFIED take primes (MOTIONVARIABLES' Q{2}')");
     if (w == "NEWTONIAN") {
         if (st.declarators.size() != 1 || st.declarators[0].last >= st.declarators[0].first)
             fail(st.where, "NEWTONIAN declares one frame", "write NEWTONIAN N");

@@ -347,7 +347,9 @@ TEST(AutolevMeaning, PartsThatCannotBeTranslatedAreErrors) {
                          Bad{head + "POINTS P+\n", 3, 9, "with the sign qualifier '+'"},
                          Bad{head + "SPECIFIED F = 2*X M\n", 3, 19, "a unit after the definition of 'F'"},
                          Bad{head + "CONSTANTS K+-\n", 3, 13, "two sign qualifiers"},
-                         Bad{head + "VARIABLES U\nU = 2*X\n", 4, 1, "is assigned only as a coordinate's rate"}}) {
+                         Bad{head + "VARIABLES U\nU = 2*X\n", 4, 1, "is assigned only as a coordinate's rate"},
+                         Bad{head + "CONSTANTS' K\n", 3, 1, "CONSTANTS is written with primes"},
+                         Bad{head + "X'' = -X\n", 3, 1, "an equation for 'X''' is not translated"}}) {
         AutolevTranslation t = translate_autolev(b.source, "bad.al");
         EXPECT_FALSE(t.ok()) << b.source;
         bool found = false;
