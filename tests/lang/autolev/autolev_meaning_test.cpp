@@ -469,6 +469,14 @@ TEST(AutolevMeaning, ImportedDoublePendulumSimulates) {
     ASSERT_TRUE(std::regex_search(h.out, b, last)) << h.out;
     EXPECT_NEAR(std::stod(a[1]), std::stod(b[1]), 1e-4) << r.out << h.out;
     EXPECT_NEAR(std::stod(a[2]), std::stod(b[2]), 1e-4) << r.out << h.out;
+    // and CODE DYNAMICS() of it translates (it was left out: the speeds were not the rates)
+    AutolevTranslation c =
+        translate_autolev(read_model("double_pendulum.al") + "CODE DYNAMICS() pendulum2.c\n", "double_pendulum.al");
+    ASSERT_TRUE(c.ok()) << messages(c);
+    EXPECT_TRUE(c.diagnostics.empty()) << messages(c);
+    EXPECT_TRUE(contains(c.script, "codegen c name pendulum2\n")) << c.script;
+    ScriptRun g = run(c.script);
+    ASSERT_EQ(g.status, RunStatus::ok) << g.err << c.script;
 }
 
 // A mass-spring-damper forced by O*SIN(T): T is a number of seconds, O (no coordinate, no
