@@ -75,6 +75,15 @@ void Translator::assemble() {
                    "Alembert applies forces at points fixed on a body: say which body '" + p +
                        "' is fixed on with V2PTS(N, B, O, " + p + "), or apply the force at a particle");
     }
+    // kinematical and constraint equations are part of Kane's equations; without KANE() they
+    // have no place in the script, which is said, not left to silence
+    if (!kane_at_ && !kinematics_.empty())
+        not_translated(kinematics_.front().where, "the kinematical equation " + kinematics_.front().residual + " = 0" +
+                           (kinematics_.size() > 1 ? " (and " + std::to_string(kinematics_.size() - 1) + " more)" : ""),
+                       "kinematical equations are part of Kane's equations, and the file has no KANE()");
+    if (!kane_at_ && constraints_where_)
+        not_translated(*constraints_where_, "DEPENDENT[...]",
+                       "constraint equations are part of Kane's equations, and the file has no KANE()");
     if (kane_at_) {
         if (!kinematics_.empty() && dependent_.size() != constraints_.size())
             report(Severity::error, kane_where_,

@@ -225,7 +225,7 @@ void Translator::assignment(const Statement& st) {
         for (const KinematicEquation& k : kinematics_)
             if (k.coordinate == en->name)
                 fail(lhs.where, "a second kinematical equation for '" + lhs.text + "'", "give one for each coordinate");
-        kinematics_.push_back({en->name, en->name + "' - " + (r.prec <= 1 ? "(" + r.s + ")" : r.s)});
+        kinematics_.push_back({en->name, en->name + "' - " + (r.prec <= 1 ? "(" + r.s + ")" : r.s), st.where});
         return;
     }
     if (key == "ZERO") {
@@ -277,7 +277,7 @@ void Translator::kinematical_assignment(const Statement& st, const Entry& speed)
     for (const KinematicEquation& k : kinematics_)
         if (k.coordinate == q->name)
             fail(st.lhs.where, "a second kinematical equation for '" + r.text + "'", "give one for each coordinate");
-    kinematics_.push_back({q->name, q->name + "' - " + speed.name});
+    kinematics_.push_back({q->name, q->name + "' - " + speed.name, st.where});
 }
 
 std::string Translator::matrix(const Expr& m) {
@@ -299,6 +299,7 @@ void Translator::array_assignment(const Statement& st) {
         if (lhs.args.size() != 1 || lhs.args[0].kind != Expr::Kind::number)
             fail(lhs.where, "DEPENDENT takes one index: DEPENDENT[1] = ...");
         constraints_.push_back(scalar(st.rhs).s);
+        if (!constraints_where_) constraints_where_ = st.where;
         return;
     }
     if (key == "AUXILIARY")

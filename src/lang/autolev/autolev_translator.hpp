@@ -80,6 +80,7 @@ struct Definition {
 struct KinematicEquation {
     std::string coordinate{};
     std::string residual{};
+    Location where{};
 };
 
 // Translates one Autolev file: declarations first (they may come in any order), then each
@@ -334,6 +335,7 @@ private:
     std::string kane_name_{};
     std::vector<KinematicEquation> kinematics_{};
     std::vector<std::string> constraints_{}, dependent_{};
+    std::optional<Location> constraints_where_{};  // the first DEPENDENT[i] = ...
     std::map<std::string, std::string> initial_{};
     std::vector<std::string> initial_order_{};
     std::vector<std::string> tail_inputs_{}, tail_outputs_{};

@@ -436,6 +436,38 @@ INPUT L = 0.8, M = 1.5, G = 9.81
     }
 }
 
+// Without KANE(): speeds that are rates are still written as the rates; kinematical equations
+// of another form, and constraints, which only Kane's equations take, are reported.
+TEST(AutolevMeaning, KinematicalEquationsWithoutKaneAreReported) {
+    AutolevTranslation a = translate_autolev(R"(NEWTONIAN N
+PARTICLES P
+VARIABLES Q', U'
+Q' = U
+V_P_N> = U*N1>
+)",
+                                             "kinematics.al");
+    ASSERT_TRUE(a.ok()) << messages(a);
+    EXPECT_TRUE(a.diagnostics.empty()) << messages(a);
+    EXPECT_TRUE(contains(a.script, "velocity P in N = Q'*Nx>\n")) << a.script;
+    AutolevTranslation b = translate_autolev(R"(NEWTONIAN N
+PARTICLES P
+VARIABLES Q', U'
+Q' = 2*U
+DEPENDENT[1] = U - Q
+V_P_N> = U*N1>
+)",
+                                             "kinematics2.al");
+    ASSERT_TRUE(b.ok()) << messages(b);
+    ASSERT_EQ(b.diagnostics.size(), 2u) << messages(b);
+    EXPECT_EQ(b.diagnostics[0].severity, Severity::warning);
+    EXPECT_EQ(b.diagnostics[0].location.line, 4);
+    EXPECT_TRUE(contains(b.diagnostics[0].message, "the kinematical equation Q' - 2*U = 0 is not translated"))
+        << messages(b);
+    EXPECT_EQ(b.diagnostics[1].location.line, 5);
+    EXPECT_TRUE(contains(b.diagnostics[1].message, "DEPENDENT[...] is not translated")) << messages(b);
+    EXPECT_EQ(run(b.script).status, RunStatus::ok);
+}
+
 // ---- what is imported runs --------------------------------------------------------------
 
 std::string read_model(const std::string& name) {
