@@ -72,6 +72,8 @@ void Translator::list(const Statement& st) {
         std::string col = v.s;
         if (it.lhs.kind != Expr::Kind::name) {
             col = "output_" + std::to_string(++outputs_) + " = " + v.s;
+        } else if (const Entry* en = find(it.lhs.text); en && rate_of_.count(en->name) && it.lhs.primes == 0) {
+            col = en->name + " = " + v.s;  // the column keeps the speed's name: U1 = Q1'
         }
         if (!it.unit.empty()) col += " in " + unit(it.unit, it.where);
         cols.push_back(col);

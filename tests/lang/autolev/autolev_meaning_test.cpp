@@ -484,6 +484,7 @@ TEST(AutolevMeaning, ImportedDoublePendulumSimulates) {
     AutolevTranslation t = translate_autolev(read_model("double_pendulum.al"), "double_pendulum.al");
     ASSERT_TRUE(t.ok()) << messages(t);
     EXPECT_TRUE(contains(t.script, "kane K for Q1, Q2\n")) << t.script;
+    EXPECT_TRUE(contains(t.script, "initial Q1 = 30 deg, Q2 = 10 deg, Q1' = 0, Q2' = 0\n")) << t.script;
     ScriptRun r = run(t.script, "simulate plot none");
     ASSERT_EQ(r.status, RunStatus::ok) << r.err << t.script;
     std::smatch m;
@@ -509,6 +510,15 @@ TEST(AutolevMeaning, ImportedDoublePendulumSimulates) {
     EXPECT_TRUE(contains(c.script, "codegen c name pendulum2\n")) << c.script;
     ScriptRun g = run(c.script);
     ASSERT_EQ(g.status, RunStatus::ok) << g.err << c.script;
+    // OUTPUT of a speed keeps its name for the column: U1 = Q1'
+    std::string model = read_model("double_pendulum.al");
+    model.replace(model.find("OUTPUT T, Q1 DEG, Q2 DEG"), 24, "OUTPUT T, Q1 DEG, U1, U2 DEG/S");
+    AutolevTranslation o = translate_autolev(model, "double_pendulum.al");
+    ASSERT_TRUE(o.ok()) << messages(o);
+    EXPECT_TRUE(contains(o.script, "output Q1 in deg, U1 = Q1', U2 = Q2' in deg/s\n")) << o.script;
+    ScriptRun s = run(o.script, "final time 0.5\nsimulate plot none");
+    ASSERT_EQ(s.status, RunStatus::ok) << s.err << o.script;
+    EXPECT_TRUE(contains(s.out, "U2 [deg/s]")) << s.out;
 }
 
 // A mass-spring-damper forced by O*SIN(T): T is a number of seconds, O (no coordinate, no
