@@ -143,7 +143,8 @@ void Translator::declare(const Statement& st) {
         // frames, bodies, particles and points take neither a value nor a sign
         if (w != "CONSTANTS" && w != "CONSTANT" && d.has_value)
             fail(d.value.where, "'" + d.name + "' is declared in " + w + " with a value",
-                 "frames, bodies, particles and points have no value; give it with POINTS, SIMPROT, ...");
+                 "frames, bodies, particles and points have no value: declare the name alone and orient "
+                 "or locate it (SIMPROT(N, A, 3, Q), P_O_P> = ...)");
         if (w != "CONSTANTS" && w != "CONSTANT" && d.sign)
             fail(d.sign_where, "'" + d.name + "' is declared in " + w + " with the sign qualifier '" +
                                    std::string(1, d.sign) + "'",
