@@ -216,6 +216,9 @@ void Translator::assignment(const Statement& st) {
     std::string key = upper(lhs.text);
     const Entry* en = find(lhs.text);
     if (lhs.primes > 0) {
+        if (st.compound)
+            fail(lhs.where, std::string("'") + st.compound + "=' on a derivative is not translated",
+                 "write the kinematical equation whole: " + lhs.text + "' = ...");
         if (!en || en->kind != Kind::variable)
             fail(lhs.where, "'" + lhs.text + "' is not a variable, so '" + lhs.text + "'' cannot be assigned",
                  "declare it with VARIABLES or MOTIONVARIABLES");

@@ -349,6 +349,7 @@ TEST(AutolevMeaning, PartsThatCannotBeTranslatedAreErrors) {
                          Bad{head + "CONSTANTS K+-\n", 3, 13, "two sign qualifiers"},
                          Bad{head + "VARIABLES U\nU = 2*X\n", 4, 1, "is assigned only as a coordinate's rate"},
                          Bad{head + "CONSTANTS' K\n", 3, 1, "CONSTANTS is written with primes"},
+                         Bad{head + "VARIABLES U\nX' += U\n", 4, 1, "'+=' on a derivative is not translated"},
                          Bad{head + "X'' = -X\n", 3, 1, "an equation for 'X''' is not translated"}}) {
         AutolevTranslation t = translate_autolev(b.source, "bad.al");
         EXPECT_FALSE(t.ok()) << b.source;
