@@ -55,7 +55,8 @@ void Translator::find_given_variables() {
             named = named || mentions(k.residual, v);
         }
         for (const std::string& c : constraints_) named = named || mentions(c, v);
-        if (coordinate || named) continue;
+        // a variable declared and used with derivatives (X'' in V_P_N> = X'*N1>) is a coordinate
+        if (coordinate || named || primes_[v] > 0 || used_primes_[v] > 0) continue;
         given_.insert(v);
         const Entry* en = find(v);
         report(Severity::note, en ? en->where : kane_where_,

@@ -293,9 +293,10 @@ private:
     // true if the text `s` holds the name `n` as a whole word
     static bool mentions(const std::string& s, const std::string& n);
 
-    // In a model with kinematical equations, a variable that is neither a coordinate nor in
-    // any kinematical or constraint equation is no speed: Autolev takes it as a given function
-    // of time, and so does the translation (a specified quantity; INPUT gives its value).
+    // In a model with kinematical equations, a variable declared and used without derivatives
+    // that is neither a coordinate nor in any kinematical or constraint equation is no speed:
+    // Autolev takes it as a given function of time, and so does the translation (a specified
+    // quantity; INPUT gives its value).
     void find_given_variables();
 
     void assemble();

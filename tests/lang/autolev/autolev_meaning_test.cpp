@@ -469,6 +469,36 @@ V_P_N> = U*N1>
     EXPECT_EQ(run(b.script).status, RunStatus::ok);
 }
 
+// Beside Q' = U, a variable used with its derivatives (X'' in V_P2_N> = X'*N1>) is a coordinate
+// with its rate as speed, not a given quantity: two free particles on springs, Q'' = -k Q / m1,
+// X'' = -k X / m2.
+TEST(AutolevMeaning, VariableUsedWithItsRateBesideSpeedsIsACoordinate) {
+    AutolevTranslation t = translate_autolev(R"(NEWTONIAN N
+PARTICLES P1, P2
+CONSTANTS KS, M1, M2
+VARIABLES Q', U', X''
+Q' = U
+P_NO_P1> = Q*N1>
+V_P1_N> = U*N1>
+P_NO_P2> = X*N2>
+V_P2_N> = X'*N2>
+MASS P1 = M1, P2 = M2
+FORCE_P1> = -KS*Q*N1>
+FORCE_P2> = -KS*X*N2>
+ZERO = FR() + FRSTAR()
+KANE()
+INPUT KS = 40, M1 = 2, M2 = 5
+)",
+                                             "mixed.al");
+    ASSERT_TRUE(t.ok()) << messages(t);
+    EXPECT_TRUE(t.diagnostics.empty()) << messages(t);
+    EXPECT_TRUE(contains(t.script, "kane K for Q, X\n")) << t.script;
+    ScriptRun r = run(t.script, "solve K for Q'', X'' at Q = 0.3, X = -0.7, Q' = 1, X' = 2");
+    ASSERT_EQ(r.status, RunStatus::ok) << r.err << t.script;
+    EXPECT_NEAR(r.values["Q''"], -40 * 0.3 / 2, 1e-12);
+    EXPECT_NEAR(r.values["X''"], 40 * 0.7 / 5, 1e-12);
+}
+
 // ---- what is imported runs --------------------------------------------------------------
 
 std::string read_model(const std::string& name) {
