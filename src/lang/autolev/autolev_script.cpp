@@ -15,10 +15,25 @@ std::string Translator::kane_statement() {
         for (const std::string& v : variables_)
             if (!rate_of_.count(v) && !given_.count(v)) coordinates.push_back(v);
     } else {
-        // the speeds are the variables the kinematical equations give the rates with
-        for (const std::string& v : variables_)
-            if (std::find(coordinates.begin(), coordinates.end(), v) == coordinates.end() && !given_.count(v))
+        // the speeds are the variables the kinematical (or constraint) equations name
+        for (const std::string& v : variables_) {
+            if (std::find(coordinates.begin(), coordinates.end(), v) != coordinates.end() || given_.count(v)) continue;
+            bool named = false;
+            for (const std::string& r : residuals) named = named || mentions(r, v);
+            for (const std::string& c : constraints_) named = named || mentions(c, v);
+            if (named) {
                 speeds.push_back(v);
+                continue;
+            }
+            // a coordinate used with its own rate among coordinates with speeds: Kane's
+            // statement takes one kinematical equation for each coordinate
+            const Entry* en = find(v);
+            report(Severity::error, en ? en->where : kane_where_,
+                   "'" + v + "' has no kinematical equation, while " + kinematics_.front().coordinate + " has one (" +
+                       kinematics_.front().coordinate + "' = ...)",
+                   "give '" + v + "' a speed and its equation (" + v + "' = U" + v + ") or write the other "
+                   "speeds as rates (" + kinematics_.front().coordinate + "' = U with U a speed)");
+        }
     }
     std::string name = "K";
     for (int k = 2; find(name) || labels_.count(name); ++k) name = "K" + std::to_string(k);

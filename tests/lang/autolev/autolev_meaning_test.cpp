@@ -497,6 +497,23 @@ INPUT KS = 40, M1 = 2, M2 = 5
     ASSERT_EQ(r.status, RunStatus::ok) << r.err << t.script;
     EXPECT_NEAR(r.values["Q''"], -40 * 0.3 / 2, 1e-12);
     EXPECT_NEAR(r.values["X''"], 40 * 0.7 / 5, 1e-12);
+    // beside a kinematical equation of another form it cannot be told apart: an error
+    std::string other = R"(NEWTONIAN N
+PARTICLES P1, P2
+VARIABLES Q', U', X''
+Q' = 2*U
+V_P1_N> = 2*U*N1>
+V_P2_N> = X'*N2>
+MASS P1 = 1, P2 = 1
+ZERO = FR() + FRSTAR()
+KANE()
+)";
+    AutolevTranslation e = translate_autolev(other, "mixed2.al");
+    ASSERT_FALSE(e.ok());
+    ASSERT_EQ(e.diagnostics.size(), 1u) << messages(e);
+    EXPECT_EQ(e.diagnostics[0].location.line, 3);
+    EXPECT_EQ(e.diagnostics[0].location.column, 19);
+    EXPECT_TRUE(contains(e.diagnostics[0].message, "'X' has no kinematical equation, while Q has one")) << messages(e);
 }
 
 // ---- what is imported runs --------------------------------------------------------------
