@@ -52,6 +52,12 @@ public:
                 while (i_ < s_.size() && s_[i_] != '\n') advance();
                 continue;
             }
+            if (c == '&' && continues_line()) {
+                // `&` at the end of a line (before an optional comment) joins the next line
+                while (i_ < s_.size() && s_[i_] != '\n') advance();
+                if (i_ < s_.size()) advance();
+                continue;
+            }
             if (c == ';' && depth == 0) {
                 advance();
                 if (!out.empty()) break;
@@ -134,6 +140,15 @@ public:
     }
 
 private:
+    // true if only blanks or a comment follow the '&' at i_ on its line
+    bool continues_line() const {
+        for (std::size_t k = i_ + 1; k < s_.size(); ++k) {
+            char c = s_[k];
+            if (c == '\n' || c == '%') return true;
+            if (c != ' ' && c != '\t' && c != '\r') return false;
+        }
+        return true;
+    }
     Location here() const { return {line_, col_}; }
     void advance() {
         char c = s_[i_++];
@@ -412,13 +427,20 @@ void parse_declarators(Parser& p, Statement& st) {
                 ++d.primes;
             }
         }
-        while (p.is_symbol("+") || p.is_symbol("-") || p.is_symbol("~")) p.take();  // sign qualifiers
+        // a sign qualifier (L+ positive, L- negative, L~ nonzero): kept for the translator
+        while (p.is_symbol("+") || p.is_symbol("-") || p.is_symbol("~")) {
+            const Token& s = p.take();
+            if (d.sign && d.sign != s.text[0])
+                p.fail(s, "two sign qualifiers on '" + d.name + "'", "write one of '+', '-' or '~' after the name");
+            d.sign = s.text[0];
+            d.sign_where = s.where;
+        }
         if (p.is_symbol("=")) {
             p.take();
             d.has_value = true;
             d.value = p.expression();
-            std::string u = p.unit_words();
-            (void)u;
+            d.unit_where = p.peek().where;
+            d.unit = p.unit_words();
         }
         st.declarators.push_back(std::move(d));
         if (p.at_end()) break;
@@ -478,6 +500,29 @@ Statement parse_statement(Parser& p, const Lexer& lex, const std::vector<Token>&
         st.text = std::string(rest);
         while (!p.at_end()) p.take();
         (void)toks;
+        return st;
+    }
+    // `X := e` is `X = e`; `X += e` is `X = X + (e)` (also -=, *=, /=)
+    if (first.kind == Token::Kind::name && p.is_symbol("=", 2) &&
+        (p.is_symbol(":", 1) || p.is_symbol("+", 1) || p.is_symbol("-", 1) || p.is_symbol("*", 1) ||
+         p.is_symbol("/", 1))) {
+        Expr lhs;
+        lhs.kind = Expr::Kind::name;
+        lhs.text = first.text;
+        lhs.primes = first.primes;
+        lhs.vector = first.vector;
+        lhs.where = first.where;
+        p.take();
+        const Token& op = p.take();
+        p.take();
+        st.kind = Statement::Kind::assignment;
+        Expr rhs = p.expression();
+        if (op.text != ":") st.compound = op.text[0];
+        st.rhs = op.text == ":" ? std::move(rhs) : p.binary(op, lhs, std::move(rhs));
+        st.lhs = std::move(lhs);
+        if (!p.at_end())
+            p.fail(p.peek(), "unexpected " + p.describe(p.peek()) + " after the statement",
+                   "one statement a line; separate statements with ';'");
         return st;
     }
     Expr e = p.expression();

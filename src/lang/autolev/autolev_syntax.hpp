@@ -46,8 +46,12 @@ struct Declarator {
     std::string name{};
     int first = 0, last = -1;  ///< an index range when last >= first (`Q{3}`: 1..3)
     int primes = 0;
-    bool has_value = false;    ///< `CONSTANTS G = 9.81`
+    char sign = 0;             ///< a qualifier after the name: '+', '-' or '~' (`CONSTANTS L+`)
+    Location sign_where{};
+    bool has_value = false;    ///< `CONSTANTS G = 9.81`, `SPECIFIED F = -K*X`
     Expr value{};
+    std::string unit{};        ///< words after the value, as written (`M/S^2`)
+    Location unit_where{};
     Location where{};
 };
 
@@ -66,7 +70,7 @@ struct Statement {
         declaration,  ///< keyword (upper case), keyword_primes, declarators
         list,         ///< keyword MASS, INERTIA, INPUT, OUTPUT; items
         command,      ///< any other leading word that is not an expression (CODE, PAUSE, ...); text
-        assignment,   ///< lhs = rhs
+        assignment,   ///< lhs = rhs (also `lhs := rhs`; `lhs += rhs` has rhs `lhs + (rhs)`)
         expression,   ///< expr (SIMPROT(...), KANE(), EXPRESS(...), ...)
     };
     Kind kind = Kind::expression;
@@ -77,6 +81,7 @@ struct Statement {
     std::vector<Item> items{};
     std::string text{};  ///< command: the rest of the line as written
     Expr lhs{}, rhs{};
+    char compound = 0;  ///< '+', '-', '*' or '/' for `lhs += rhs` ... (rhs is then `lhs op (rhs)`)
     Expr expr{};
 };
 
@@ -95,7 +100,8 @@ struct ParsedFile {
 };
 
 /// Reads an Autolev file: `%` comments, one statement a line (or several separated by `;`),
-/// a statement continuing onto the next lines while a bracket is open.
+/// a statement continuing onto the next lines while a bracket is open or after a line that
+/// ends with `&`.
 ParsedFile parse_autolev(std::string_view source);
 
 /// `name` in upper case (Autolev's names do not depend on case).

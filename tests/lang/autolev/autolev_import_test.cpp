@@ -128,13 +128,13 @@ INPUT TFINAL = 2, INTEGSTP = 0.05, ABSERR = 1e-9, RELERR = 1e-10
     std::getline(lines, second);
     EXPECT_EQ(second, "newtonian N");
     EXPECT_TRUE(contains(t.script, "constant M = 3, G = 10\n")) << t.script;
-    EXPECT_TRUE(contains(t.script, "initial Q = 0.25, U = -1\n")) << t.script;
+    EXPECT_TRUE(contains(t.script, "initial Q = 0.25, Q' = -1\n")) << t.script;
     EXPECT_TRUE(contains(t.script, "final time 2\n")) << t.script;
     EXPECT_TRUE(contains(t.script, "output step 0.05\n")) << t.script;
     EXPECT_TRUE(contains(t.script, "tolerance abs 1e-9 rel 1e-10\n")) << t.script;
-    // free fall along -N1>: U' = -G
-    auto v = run(t.script, "solve K for U' at Q = 0, U = 0");
-    EXPECT_NEAR(v["U'"], -10, 1e-12);
+    // free fall along -N1>: U' = Q'' = -G (U, the rate of Q, is written Q')
+    auto v = run(t.script, "solve K for Q'' at Q = 0, Q' = 0");
+    EXPECT_NEAR(v["Q''"], -10, 1e-12);
 }
 
 TEST(AutolevImport, DirectionCosineMatrixEqualsSimpleRotation) {
@@ -224,10 +224,10 @@ TEST(AutolevImport, CodeDynamicsNeedsTheCoordinatesRatesAsSpeeds) {
 PARTICLES P
 MOTIONVARIABLES' Q', U'
 P_NO_P> = Q*N1>
-V_P_N> = U*N1>
+V_P_N> = 2*U*N1>
 MASS P = 1
 FORCE_P> = -Q*N1>
-Q' = U
+Q' = 2*U
 ZERO = FR() + FRSTAR()
 KANE()
 CODE DYNAMICS() spring.c

@@ -1,0 +1,293 @@
+// SPDX-License-Identifier: MIT
+// Autolev expressions to Alembert expressions: numbers, operators, functions, and the names of
+// scalars, frames, points and vectors.
+#include "autolev_translator.hpp"
+
+namespace alembert::lang::autolev {
+
+std::string Translator::number_text(const Expr& e, const std::string& what) {
+    if (e.kind == Expr::Kind::unary && e.args[0].kind == Expr::Kind::number)
+        return (e.text == "-" ? "-" : "") + number_text(e.args[0], what);
+    if (e.kind != Expr::Kind::number)
+        fail(e.where, what + " must be a number", "give the number itself, such as 9.81");
+    std::string s = e.text;
+    if (s.front() == '.') s = "0" + s;
+    std::size_t dot = s.find('.');
+    if (dot != std::string::npos && (dot + 1 == s.size() || !std::isdigit(static_cast<unsigned char>(s[dot + 1]))))
+        s.insert(dot + 1, "0");
+    return s;
+}
+
+Text Translator::expr(const Expr& e) {
+    switch (e.kind) {
+        case Expr::Kind::number: return {number_text(e, "a number"), false, 5, true};
+        case Expr::Kind::name: {
+            if (!e.vector && e.primes == 0 && upper(e.text) == "T" && !find(e.text)) {
+                // Autolev's time is a number (of seconds): t/t_unit with t_unit = 1 s, so that
+                // SIN(T) is the sine of a number, as in Autolev
+                if (time_unit_.empty()) {
+                    time_unit_ = "t_unit";
+                    for (int k = 2; find(time_unit_) || extra_names_.count(time_unit_); ++k)
+                        time_unit_ = "t_unit" + std::to_string(k);
+                    extra_names_.insert({time_unit_, 0});
+                }
+                return {"t/" + time_unit_, false, 2, false};
+            }
+            resolved_numeric_ = false;
+            Text t = e.vector ? Text{vector_name(e), true, 5} : Text{scalar_name(e), false, 5};
+            t.numeric = resolved_numeric_;
+            return t;
+        }
+        case Expr::Kind::call: return call(e);
+        case Expr::Kind::index:
+            fail(e.where, "the array element '" + e.text + "[...]' is not translated",
+                 "Alembert arrays hold equations; name the value as a scalar instead");
+        case Expr::Kind::unary: {
+            Text a = expr(e.args[0]);
+            if (e.text == "+") return a;
+            return {"-" + paren(a, 4), a.vector, 3, a.numeric};
+        }
+        case Expr::Kind::binary: return binary(e);
+        case Expr::Kind::matrix:
+        case Expr::Kind::row:
+            fail(e.where, "a matrix is translated only as a direction cosine matrix (N_A = [...])",
+                 "write the matrix as N_A = [...] or with SIMPROT");
+    }
+    fail(e.where, "an expression that is not translated");
+}
+
+Text Translator::binary(const Expr& e) {
+    std::vector<const Expr*> chain;
+    const Expr* x = &e;
+    while (x->kind == Expr::Kind::binary) {
+        chain.push_back(x);
+        x = &x->args[0];
+    }
+    Text acc = expr(*x);
+    for (auto it = chain.rbegin(); it != chain.rend(); ++it) {
+        Text b = expr((*it)->args[1]);
+        bool numeric = acc.numeric && b.numeric;
+        acc = combine(**it, std::move(acc), std::move(b));
+        acc.numeric = numeric;
+    }
+    return acc;
+}
+
+Text Translator::combine(const Expr& e, Text a, Text b) {
+    const std::string& op = e.text;
+    auto wrapped = [](Text& t, bool wrap) { return wrap ? "(" + std::move(t.s) + ")" : std::move(t.s); };
+    if (op == "+" || op == "-") {
+        if (a.vector != b.vector)
+            fail(e.where, std::string("'") + op + "' between a vector and a scalar",
+                 "both sides must be vectors (with '>') or both scalars");
+        // a sign on the right needs brackets (a + (-b)), and so does a sum after '-'
+        bool wrap = b.prec == 3 || (op == "-" && b.prec <= 1);
+        std::string s = std::move(a.s);
+        s += " " + op + " ";
+        s += wrapped(b, wrap);
+        return {std::move(s), a.vector, 1};
+    }
+    if (op == "*" || op == "/") {
+        if (op == "*" && a.vector && b.vector)
+            fail(e.where, "'*' between two vectors", "use DOT(a>, b>) or CROSS(a>, b>)");
+        if (op == "/" && b.vector) fail(e.where, "division by a vector", "divide by a scalar such as MAG(v>)");
+        bool vector = a.vector || b.vector;
+        std::string s = wrapped(a, a.prec < 2);
+        s += op;
+        s += wrapped(b, b.prec <= 3);
+        return {std::move(s), vector, 2};
+    }
+    // ^
+    if (a.vector || b.vector) fail(e.where, "a power of a vector", "use DOT(v>, v>) for the square of a magnitude");
+    std::string s = wrapped(a, a.prec <= 4);
+    s += "^";
+    s += wrapped(b, b.prec < 5);
+    return {std::move(s), false, 4};
+}
+
+Text Translator::call(const Expr& e) {
+    bool numeric = true;  // every argument numeric (each translated once)
+    Text t = call_text(e, numeric);
+    t.numeric = numeric;
+    return t;
+}
+
+Text Translator::call_text(const Expr& e, bool& numeric) {
+    std::string f = upper(e.text);
+    auto args = [&](std::size_t lo, std::size_t hi) {
+        if (e.args.size() < lo || e.args.size() > hi)
+            fail(e.where,
+                 e.text + "() takes " +
+                     (lo == hi ? std::to_string(lo) : std::to_string(lo) + " to " + std::to_string(hi)) +
+                     " arguments, not " + std::to_string(e.args.size()));
+    };
+    auto scalar_arg = [&](std::size_t i) {
+        Text t = expr(e.args[i]);
+        numeric = numeric && t.numeric;
+        if (t.vector) fail(e.args[i].where, e.text + "() takes a scalar here, not a vector");
+        return t;
+    };
+    auto vector_arg = [&](std::size_t i) {
+        Text t = expr(e.args[i]);
+        numeric = numeric && t.numeric;
+        if (!t.vector) fail(e.args[i].where, e.text + "() takes a vector here (a name ending in '>')");
+        return t;
+    };
+    static const std::map<std::string, std::string> elementary{
+        {"SIN", "sin"},   {"COS", "cos"},   {"TAN", "tan"}, {"ASIN", "asin"}, {"ACOS", "acos"},
+        {"ATAN", "atan"}, {"SQRT", "sqrt"}, {"EXP", "exp"}, {"LOG", "log"},   {"ABS", "abs"},
+        {"LN", "log"}};
+    if (auto it = elementary.find(f); it != elementary.end()) {
+        args(1, 1);
+        return {it->second + "(" + scalar_arg(0).s + ")", false, 5};
+    }
+    if (f == "DOT") {
+        args(2, 2);
+        return {"dot(" + vector_arg(0).s + ", " + vector_arg(1).s + ")", false, 5};
+    }
+    if (f == "CROSS") {
+        args(2, 2);
+        return {"cross(" + vector_arg(0).s + ", " + vector_arg(1).s + ")", true, 5};
+    }
+    if (f == "MAG") {
+        args(1, 1);
+        return {"mag(" + vector_arg(0).s + ")", false, 5};
+    }
+    if (f == "UNITVEC") {
+        args(1, 1);
+        return {"unit(" + vector_arg(0).s + ")", true, 5};
+    }
+    if (f == "EXPRESS") {
+        args(2, 2);
+        Text v = expr(e.args[0]);
+        numeric = v.numeric;
+        if (!v.vector) return v;  // a scalar is the same in every frame
+        return {"express(" + v.s + ", " + frame_name(e.args[1]) + ")", true, 5};
+    }
+    if (f == "DT") {
+        args(1, 2);
+        Text v = expr(e.args[0]);
+        numeric = v.numeric;
+        if (v.vector) {
+            if (e.args.size() != 2) fail(e.where, "DT of a vector needs the frame: DT(v>, N)");
+            return {"dt(" + v.s + ", " + frame_name(e.args[1]) + ")", true, 5};
+        }
+        if (e.args.size() == 2) fail(e.args[1].where, "DT of a scalar takes no frame", "write DT(s)");
+        return {"dt(" + v.s + ")", false, 5};
+    }
+    if (f == "FR" || f == "FRSTAR")
+        fail(e.where, e.text + "() is translated only in ZERO = FR() + FRSTAR()",
+             "write ZERO = FR() + FRSTAR() and then KANE()");
+    fail(e.where, "the Autolev function '" + e.text + "' is not translated",
+         "the translator knows SIN, COS, TAN, ASIN, ACOS, ATAN, SQRT, EXP, LOG, ABS, DOT, CROSS, MAG, "
+         "UNITVEC, EXPRESS and DT");
+}
+
+std::string Translator::scalar_name(const Expr& e) {
+    const Entry* en = find(e.text);
+    std::string primes(static_cast<std::size_t>(e.primes), '\'');
+    if (!en) {
+        std::string key = upper(e.text);
+        if (key == "T") return "t" + primes;
+        if (key == "PI" && e.primes == 0) {
+            resolved_numeric_ = true;
+            return "pi";
+        }
+        fail(e.where, "'" + e.text + "' is not declared",
+             "declare it (CONSTANTS, VARIABLES, ...) or assign it before this line");
+    }
+    switch (en->kind) {
+        case Kind::constant:
+        case Kind::scalar:
+            resolved_numeric_ = en->numeric;
+            if (e.primes && en->kind == Kind::scalar) {
+                // Z' of a named expression is its time derivative
+                std::string d = en->name;
+                for (int k = 0; k < e.primes; ++k) d = "dt(" + d + ")";
+                resolved_numeric_ = false;
+                return d;
+            }
+            if (e.primes) fail(e.where, "'" + e.text + "' is " + kind_word(en->kind) + "; it has no derivative",
+                               "declare it with VARIABLES to give it derivatives");
+            return en->name;
+        case Kind::variable:
+        case Kind::specified: {
+            if (auto r = rate_of_.find(en->name); r != rate_of_.end()) {
+                int& p = used_primes_[r->second];
+                p = std::max(p, e.primes + 1);
+                return r->second + primes + "'";
+            }
+            if (en->kind == Kind::variable) {
+                int& p = used_primes_[en->name];
+                p = std::max(p, e.primes);
+            }
+            return en->name + primes;
+        }
+        default:
+            fail(e.where, "'" + e.text + "' is " + kind_word(en->kind) + ", not a value",
+                 "a vector needs '>' (A1>, V_P_N>); points and frames are arguments of V2PTS, SIMPROT, ...");
+    }
+}
+
+std::string Translator::frame_name(const Expr& e) {
+    if (e.kind == Expr::Kind::name && !e.vector && e.primes == 0)
+        if (auto f = frame_of(e.text)) return *f;
+    fail(e.where, "expected a frame or body here", "name a frame declared with NEWTONIAN, FRAMES or BODIES");
+}
+
+std::string Translator::point_name(const Expr& e) {
+    if (e.kind == Expr::Kind::name && !e.vector && e.primes == 0)
+        if (auto p = point_of(e.text)) return *p;
+    std::string hint = "name a point declared with POINTS or PARTICLES";
+    if (e.kind == Expr::Kind::name) {
+        const Entry* en = find_object(e.text);
+        if (en && en->kind == Kind::body)
+            hint = "a body is not a point: its mass centre is " + e.text + "O";
+    }
+    fail(e.where, "expected a point here", hint);
+}
+
+std::string Translator::body_name(const Expr& e) {
+    if (e.kind == Expr::Kind::name && !e.vector && e.primes == 0) {
+        const Entry* en = find_object(e.text);
+        if (en && en->kind == Kind::body) return en->name;
+    }
+    fail(e.where, "expected a body here", "name a body declared with BODIES");
+}
+
+std::string Translator::vector_name(const Expr& e) {
+    if (e.primes) fail(e.where, "a prime on a vector name", "write DT(v>, N) for the derivative of a vector");
+    if (e.text == "0") {
+        resolved_numeric_ = true;
+        return "0>";
+    }
+    if (const Entry* en = find(e.text); en && en->kind == Kind::vector) {
+        resolved_numeric_ = en->numeric;
+        return en->name + ">";
+    }
+    std::string key = upper(e.text);
+    char last = key.back();
+    if (last >= '1' && last <= '3')
+        if (auto f = frame_of(std::string_view(e.text).substr(0, e.text.size() - 1))) {
+            resolved_numeric_ = true;
+            return *f + std::string(1, "xyz"[last - '1']) + ">";
+        }
+    auto pt = [this](std::string_view n) { return point_of(n); };
+    auto fr = [this](std::string_view n) { return frame_of(n); };
+    std::string_view rest(e.text);
+    if (key.rfind("P_", 0) == 0)
+        if (auto s = split(rest.substr(2), pt, pt)) return "pos(" + s->second + ", " + s->first + ")";
+    if (key.rfind("V_", 0) == 0)
+        if (auto s = split(rest.substr(2), pt, fr)) return "vel(" + s->first + ", " + s->second + ")";
+    if (key.rfind("A_", 0) == 0)
+        if (auto s = split(rest.substr(2), pt, fr)) return "acc(" + s->first + ", " + s->second + ")";
+    if (key.rfind("W_", 0) == 0)
+        if (auto s = split(rest.substr(2), fr, fr)) return "angvel(" + s->first + ", " + s->second + ")";
+    if (key.rfind("ALF_", 0) == 0)
+        if (auto s = split(rest.substr(4), fr, fr)) return "angacc(" + s->first + ", " + s->second + ")";
+    fail(e.where, "the vector '" + e.text + ">' is not defined",
+         "unit vectors are a frame's name and 1, 2 or 3 (N1>); P_O_P>, V_P_N>, W_B_N> need declared "
+         "points and frames; other vectors must be assigned before they are used");
+}
+
+}  // namespace alembert::lang::autolev

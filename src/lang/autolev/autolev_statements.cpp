@@ -1,0 +1,542 @@
+// SPDX-License-Identifier: MIT
+// Autolev statements to Alembert statements: lists (MASS, INERTIA, INPUT, OUTPUT), commands,
+// assignments, kinematics and loads.
+#include "autolev_translator.hpp"
+
+namespace alembert::lang::autolev {
+
+void Translator::translate(const Statement& st) {
+    statement_where_ = st.where;
+    switch (st.kind) {
+        case Statement::Kind::declaration: return definitions(st);
+        case Statement::Kind::list: return list(st);
+        case Statement::Kind::command: return command(st);
+        case Statement::Kind::assignment: return assignment(st);
+        case Statement::Kind::expression: return expression_statement(st);
+    }
+}
+
+void Translator::definitions(const Statement& st) {
+    auto it = definitions_.find({st.where.line, st.where.column});
+    if (it == definitions_.end()) return;
+    for (const Definition& d : it->second) {
+        Text r = scalar(d.value);
+        names_[upper(d.name)].numeric = r.numeric;
+        emit(d.name + " = " + r.s);
+    }
+}
+
+void Translator::list(const Statement& st) {
+    const std::string& w = st.keyword;
+    if (w == "MASS") {
+        if (st.items.empty()) fail(st.where, "MASS names no body or particle", "write MASS A = MA, P = MP");
+        for (const Item& it : st.items) {
+            const Entry* en = it.lhs.kind == Expr::Kind::name && !it.lhs.vector ? find_object(it.lhs.text) : nullptr;
+            if (!en || (en->kind != Kind::body && en->kind != Kind::particle))
+                fail(it.where, "MASS takes a body or a particle before '='", "write MASS A = MA");
+            if (!it.has_value) fail(it.where, "the mass of '" + it.lhs.text + "' is missing", "write MASS " + it.lhs.text + " = M");
+            if (!it.unit.empty()) fail(it.where, "a unit in MASS", "give units in INPUT");
+            emit("mass " + en->name + " = " + dimensioned(scalar(it.value), "m_" + en->name));
+        }
+        return;
+    }
+    if (w == "INERTIA") {
+        if (st.items.size() != 4 && st.items.size() != 7)
+            fail(st.where, "INERTIA takes a body and 3 or 6 measures, not " + std::to_string(st.items.empty() ? 0 : st.items.size() - 1),
+                 "write INERTIA B, I11, I22, I33 [, I12, I23, I31]");
+        const Item& b = st.items[0];
+        if (b.lhs.kind == Expr::Kind::call)
+            fail(b.where, "INERTIA about a point other than the mass centre ('" + b.lhs.text + "(...)') is not translated",
+                 "give the central inertia: INERTIA " + b.lhs.text + ", I11, I22, I33");
+        std::string body = body_name(b.lhs);
+        std::vector<std::string> m;
+        for (std::size_t i = 1; i < st.items.size(); ++i) {
+            if (st.items[i].has_value || !st.items[i].unit.empty())
+                fail(st.items[i].where, "an inertia measure must be a scalar expression");
+            m.push_back(dimensioned(scalar(st.items[i].lhs), "I" + std::to_string(i) + "_" + body));
+        }
+        emit("inertia " + body + " = " + join(m));
+        return;
+    }
+    if (w == "INPUT") {
+        for (const Item& it : st.items) input(it);
+        return;
+    }
+    // OUTPUT
+    std::vector<std::string> cols;
+    for (const Item& it : st.items) {
+        if (it.lhs.kind == Expr::Kind::name && !it.lhs.vector && upper(it.lhs.text) == "T" && !find(it.lhs.text))
+            continue;  // time is always the first column
+        if (it.has_value) fail(it.where, "'=' in OUTPUT", "list the quantities: OUTPUT Q1, U1");
+        Text v = scalar(it.lhs);
+        std::string col = v.s;
+        if (it.lhs.kind != Expr::Kind::name) {
+            col = "output_" + std::to_string(++outputs_) + " = " + v.s;
+        } else if (const Entry* en = find(it.lhs.text); en && rate_of_.count(en->name) && it.lhs.primes == 0) {
+            col = en->name + " = " + v.s;  // the column keeps the speed's name: U1 = Q1'
+        }
+        if (!it.unit.empty()) col += " in " + unit(it.unit, it.where);
+        cols.push_back(col);
+    }
+    if (!cols.empty()) tail_outputs_.push_back("output " + join(cols));
+}
+
+void Translator::input(const Item& it) {
+    if (it.lhs.kind != Expr::Kind::name || it.lhs.vector || !it.has_value)
+        fail(it.where, "INPUT takes name = value", "write INPUT L = 0.5, Q1 = 30 DEG");
+    std::string key = upper(it.lhs.text);
+    std::string value = number_text(it.value, "the value of '" + it.lhs.text + "' in INPUT");
+    std::string u = it.unit.empty() ? "" : " " + unit(it.unit, it.where);
+    const Entry* en = find(it.lhs.text);
+    if (!en) {
+        if (key == "TFINAL") { tail_settings_["final time"] = "final time " + value + (u.empty() ? "" : u); return; }
+        if (key == "INTEGSTP") { tail_settings_["output step"] = "output step " + value + (u.empty() ? "" : u); return; }
+        if (key == "ABSERR") { abs_tol_ = value; return; }
+        if (key == "RELERR") { rel_tol_ = value; return; }
+        if (key == "PRINTINT") {
+            not_translated(it.where, "INPUT PRINTINT", "Alembert writes a row every output step");
+            return;
+        }
+        fail(it.where, "'" + it.lhs.text + "' in INPUT is not declared",
+             "INPUT gives values of constants, initial values of variables, and TFINAL, INTEGSTP, ABSERR, RELERR");
+    }
+    if (en->kind == Kind::constant && it.lhs.primes == 0) {
+        auto [g, i] = constant_index_.at(key);
+        constants_[g][i].value = value;
+        constants_[g][i].unit = u;
+        return;
+    }
+    if (en->kind == Kind::variable) {
+        std::string n = en->name + std::string(static_cast<std::size_t>(it.lhs.primes), '\'');
+        if (auto r = rate_of_.find(en->name); r != rate_of_.end())  // U1 = 0 is Q1' = 0
+            n = r->second + std::string(static_cast<std::size_t>(it.lhs.primes + 1), '\'');
+        initial_[n] = value + u;
+        initial_order_.push_back(n);
+        return;
+    }
+    if (en->kind == Kind::specified) {
+        tail_inputs_.push_back(en->name + " = " + value + u);
+        return;
+    }
+    fail(it.where, "INPUT gives a value to '" + it.lhs.text + "', " + kind_word(en->kind),
+         "INPUT gives values of constants and initial values of variables");
+}
+
+std::string Translator::unit(const std::string& words, Location where) {
+    static const std::map<std::string, std::string> units{
+        {"DEG", "deg"}, {"DEGREES", "deg"}, {"DEGREE", "deg"}, {"RAD", "rad"}, {"RADIANS", "rad"},
+        {"REV", "rev"}, {"M", "m"}, {"METER", "m"}, {"METERS", "m"}, {"CM", "cm"}, {"MM", "mm"},
+        {"KM", "km"}, {"KG", "kg"}, {"S", "s"}, {"SEC", "s"}, {"SECOND", "s"}, {"SECONDS", "s"},
+        {"MS", "ms"}, {"MIN", "min"}, {"N", "N"}, {"NEWTON", "N"}, {"KN", "kN"}, {"J", "J"},
+        {"W", "W"}, {"HZ", "Hz"}, {"RPM", "rpm"}};
+    std::string out, word;
+    auto flush = [&] {
+        if (word.empty()) return;
+        auto it = units.find(upper(word));
+        if (it == units.end())
+            fail(where, "the unit '" + word + "' is not translated",
+                 "use SI units or deg, rad, rev, cm, mm, km, ms, min, kN, Hz, rpm");
+        out += it->second;
+        word.clear();
+    };
+    for (char c : words) {
+        if (c == '*' || c == '/' || c == '^' || c == '-' || std::isdigit(static_cast<unsigned char>(c))) {
+            flush();
+            out += c;
+        } else {
+            word += c;
+        }
+    }
+    flush();
+    return out;
+}
+
+void Translator::command(const Statement& st) {
+    const std::string& w = st.keyword;
+    if (w == "CODE") return code(st);
+    static const char* const ignored[] = {"PAUSE", "SAVE", "AUTOZ", "AUTORHS", "AUTOEPS", "AUTOLEV", "OVERWRITE",
+                                          "UNITSYSTEM", "UNITS", "DISPLAY", "ANIMATE", "ENCODE", "EXPLICIT",
+                                          "PRINT", "RUN", "SHOW", "CLEAR", "DIGITS", "WRITE"};
+    for (const char* x : ignored)
+        if (w == x) return not_translated(st.where, w, "it changes how Autolev works or prints, not the model");
+    if (const Entry* en = find(w); en && st.text.empty()) {  // a name alone: print it
+        Expr e;
+        e.kind = Expr::Kind::name;
+        e.text = w;
+        e.where = st.where;
+        emit(expr(e).s);
+        return;
+    }
+    fail(st.where, "'" + w + "' is not an Autolev statement the translator knows",
+         "docs/autolev.md lists the statements it translates");
+}
+
+void Translator::code(const Statement& st) {
+    // CODE DYNAMICS() file.c
+    std::string text = st.text;
+    std::string kind = upper(text.substr(0, text.find_first_of("( \t")));
+    if (kind != "DYNAMICS")
+        return not_translated(st.where, "CODE " + kind, "only CODE DYNAMICS() has a counterpart (codegen)");
+    std::size_t open = text.find('('), close = text.find(')');
+    if (open != std::string::npos && close != std::string::npos && close > open &&
+        text.find_first_not_of(" \t", open + 1) != close)
+        report(Severity::warning, st.where,
+               "the arguments of CODE DYNAMICS(" + text.substr(open + 1, close - open - 1) + ") are not translated",
+               "Alembert's codegen writes the dynamics of every coordinate and speed; the code is generated "
+               "without them");
+    std::string file = close == std::string::npos ? "" : text.substr(close + 1);
+    file.erase(0, file.find_first_not_of(" \t"));
+    std::string lang = "c";
+    std::string stem = file;
+    std::size_t dot = file.rfind('.');
+    if (dot != std::string::npos) {
+        std::string ext = upper(file.substr(dot + 1));
+        stem = file.substr(0, dot);
+        if (ext == "C") lang = "c";
+        else if (ext == "CPP" || ext == "CC" || ext == "CXX") lang = "cpp";
+        else if (ext == "M") lang = "matlab";
+        else if (ext == "PY") lang = "python";
+        else
+            fail(st.where, "CODE DYNAMICS() to a '." + file.substr(dot + 1) + "' file is not translated",
+                 "Alembert writes C (.c), C++ (.cpp), MATLAB (.m) and Python (.py)");
+    }
+    std::string name;
+    for (char c : stem)
+        if (std::isalnum(static_cast<unsigned char>(c)) || c == '_') name += c;
+    if (name.empty() || std::isdigit(static_cast<unsigned char>(name.front()))) name = "dynamics";
+    tail_codegen_.push_back({st.where, "codegen " + lang + " name " + name});
+}
+
+void Translator::assignment(const Statement& st) {
+    const Expr& lhs = st.lhs;
+    if (lhs.kind == Expr::Kind::index) return array_assignment(st);
+    if (lhs.kind != Expr::Kind::name)
+        fail(lhs.where, "the left side of '=' must be a name", "write NAME = ..., NAME> = ... or Q1' = ...");
+    if (lhs.vector) return vector_assignment(st);
+    std::string key = upper(lhs.text);
+    const Entry* en = find(lhs.text);
+    if (lhs.primes > 0) {
+        if (st.compound)
+            fail(lhs.where, std::string("'") + st.compound + "=' on a derivative is not translated",
+                 "write the kinematical equation whole: " + lhs.text + "' = ...");
+        if (!en || en->kind != Kind::variable)
+            fail(lhs.where, "'" + lhs.text + "' is not a variable, so '" + lhs.text + "'' cannot be assigned",
+                 "declare it with VARIABLES or MOTIONVARIABLES");
+        if (lhs.primes != 1)
+            fail(lhs.where, "an equation for '" + lhs.text + std::string(static_cast<std::size_t>(lhs.primes), '\'') +
+                                "' is not translated", "kinematical equations give first derivatives: Q1' = U1");
+        if (aliased_coordinates_.count(en->name)) return;  // Q1' = U1: U1 is written Q1'
+        Text r = scalar(st.rhs);
+        for (const KinematicEquation& k : kinematics_)
+            if (k.coordinate == en->name)
+                fail(lhs.where, "a second kinematical equation for '" + lhs.text + "'", "give one for each coordinate");
+        kinematics_.push_back({en->name, en->name + "' - " + (r.prec <= 1 ? "(" + r.s + ")" : r.s), st.where});
+        return;
+    }
+    if (key == "ZERO") {
+        if (!is_fr_plus_frstar(st.rhs))
+            fail(st.rhs.where, "ZERO is translated only as ZERO = FR() + FRSTAR()",
+                 "Kane's equations are formed by ZERO = FR() + FRSTAR() and KANE()");
+        if (!kane_at_) kane_at_ = model_.size(), emit("");
+        kane_where_ = st.where;
+        return;
+    }
+    if (en) {
+        if (en->kind == Kind::variable) return kinematical_assignment(st, *en);
+        if (en->kind == Kind::scalar) {
+            Text r = scalar(st.rhs);
+            names_[upper(lhs.text)].numeric = r.numeric;
+            emit(en->name + " = " + r.s);
+            return;
+        }
+        if (en->kind == Kind::newtonian || en->kind == Kind::frame || en->kind == Kind::body)
+            fail(lhs.where, "'" + lhs.text + "' is " + kind_word(en->kind) + " and cannot be assigned");
+        fail(lhs.where, "'" + lhs.text + "' is " + kind_word(en->kind) + " and cannot be assigned",
+             "INPUT gives constants their values; use another name for the expression");
+    }
+    // a direction cosine matrix N_A = [...]
+    if (st.rhs.kind == Expr::Kind::matrix) {
+        auto fr = [this](std::string_view n) { return frame_of(n); };
+        auto s = split(std::string_view(lhs.text), fr, fr);
+        if (!s) fail(lhs.where, "'" + lhs.text + "' is not a direction cosine matrix name",
+                     "write N_A = [...] with two declared frames, or use SIMPROT");
+        parent_[s->second] = s->first;
+        return emit("rotate " + s->second + " from " + s->first + " dcm " + matrix(st.rhs));
+    }
+    Text r = scalar(st.rhs);
+    const Entry& ne = add(lhs.text, Kind::scalar, lhs.where);
+    names_[upper(lhs.text)].numeric = r.numeric;
+    emit(ne.name + " = " + r.s);
+}
+
+void Translator::kinematical_assignment(const Statement& st, const Entry& speed) {
+    if (rate_of_.count(speed.name)) return;  // OMEGA = THETA': OMEGA is written THETA'
+    const Expr& r = st.rhs;
+    const Entry* q = r.kind == Expr::Kind::name && !r.vector && r.primes == 1 ? find(r.text) : nullptr;
+    if (!q || q->kind != Kind::variable)
+        fail(st.lhs.where,
+             "'" + st.lhs.text + "' is a variable; it is assigned only as a coordinate's rate (" + st.lhs.text +
+                 " = Q')",
+             "write the kinematical equation Q' = " + st.lhs.text +
+                 ", or give the expression another name (Autolev's VARIABLES Z = ... defines one)");
+    for (const KinematicEquation& k : kinematics_)
+        if (k.coordinate == q->name)
+            fail(st.lhs.where, "a second kinematical equation for '" + r.text + "'", "give one for each coordinate");
+    kinematics_.push_back({q->name, q->name + "' - " + speed.name, st.where});
+}
+
+std::string Translator::matrix(const Expr& m) {
+    if (m.args.size() != 3) fail(m.where, "a direction cosine matrix has 3 rows", "write [a, b, c; d, e, f; g, h, i]");
+    std::vector<std::string> rows;
+    for (const Expr& row : m.args) {
+        if (row.args.size() != 3) fail(row.where, "a direction cosine matrix has 3 columns");
+        std::vector<std::string> cells;
+        for (const Expr& c : row.args) cells.push_back(scalar(c).s);
+        rows.push_back(join(cells));
+    }
+    return "[" + join(rows, "; ") + "]";
+}
+
+void Translator::array_assignment(const Statement& st) {
+    const Expr& lhs = st.lhs;
+    std::string key = upper(lhs.text);
+    if (key == "DEPENDENT") {
+        if (lhs.args.size() != 1 || lhs.args[0].kind != Expr::Kind::number)
+            fail(lhs.where, "DEPENDENT takes one index: DEPENDENT[1] = ...");
+        constraints_.push_back(scalar(st.rhs).s);
+        if (!constraints_where_) constraints_where_ = st.where;
+        return;
+    }
+    if (key == "AUXILIARY")
+        fail(lhs.where, "auxiliary speeds (AUXILIARY[...]) are not translated",
+             "Alembert's kane statement takes them as 'auxiliary u...'; add them by hand");
+    fail(lhs.where, "the array '" + lhs.text + "[...]' is not translated",
+         "name each element as a scalar of its own");
+}
+
+void Translator::vector_assignment(const Statement& st) {
+    const Expr& lhs = st.lhs;
+    std::string key = upper(lhs.text);
+    if (lhs.primes) fail(lhs.where, "a prime on a vector name", "assign the vector itself");
+    auto pt = [this](std::string_view n) { return point_of(n); };
+    auto fr = [this](std::string_view n) { return frame_of(n); };
+    auto bd = [this](std::string_view n) -> std::optional<std::string> {
+        const Entry* en = find_object(n);
+        if (en && (en->kind == Kind::body || en->kind == Kind::frame || en->kind == Kind::newtonian)) return en->name;
+        return std::nullopt;
+    };
+    std::string_view name(lhs.text);
+    const Entry* existing = find(lhs.text);
+    if (!existing) {
+        if (key.rfind("P_", 0) == 0)
+            if (auto s = split(name.substr(2), pt, pt))
+                return emit("translate " + s->second + " from " + s->first + " by " +
+                            dimensioned(vec(st.rhs), "r_" + s->second));
+        if (key.rfind("V_", 0) == 0)
+            if (auto s = split(name.substr(2), pt, fr))
+                return emit("velocity " + s->first + " in " + s->second + " = " +
+                            dimensioned(vec(st.rhs), "v_" + s->first));
+        if (key.rfind("A_", 0) == 0)
+            if (auto s = split(name.substr(2), pt, fr))
+                return emit("acceleration " + s->first + " in " + s->second + " = " +
+                            dimensioned(vec(st.rhs), "a_" + s->first));
+        if (key.rfind("W_", 0) == 0)
+            if (auto s = split(name.substr(2), fr, fr))
+                return angular_velocity(s->first, s->second, dimensioned_text(vec(st.rhs), "w_" + s->first));
+        if (key.rfind("ALF_", 0) == 0)
+            if (auto s = split(name.substr(4), fr, fr))
+                return emit("angacc " + s->first + " in " + s->second + " = " +
+                            dimensioned(vec(st.rhs), "alf_" + s->first));
+        if (key.rfind("FORCE_", 0) == 0)
+            if (auto p = point_of(name.substr(6)))
+                return force(*p, std::nullopt, dimensioned(load_value(st, key), "f_" + *p));
+        if (key.rfind("TORQUE_", 0) == 0)
+            if (auto b = bd(name.substr(7)))
+                return torque(*b, std::nullopt, dimensioned(load_value(st, key), "tau_" + *b));
+        // a name of Autolev's own form whose points or frames are not declared is a mistake,
+        // not a new vector
+        static const std::pair<const char*, const char*> forms[] = {
+            {"P_", "a position: P_O_P> needs two declared points"},
+            {"V_", "a velocity: V_P_N> needs a declared point and frame"},
+            {"A_", "an acceleration: A_P_N> needs a declared point and frame"},
+            {"W_", "an angular velocity: W_B_N> needs two declared frames or bodies"},
+            {"ALF_", "an angular acceleration: ALF_B_N> needs two declared frames or bodies"},
+            {"FORCE_", "a force: FORCE_P> needs a declared point or particle"},
+            {"TORQUE_", "a torque: TORQUE_B> needs a declared frame or body"}};
+        for (const auto& [prefix, meaning] : forms)
+            if (key.rfind(prefix, 0) == 0)
+                fail(lhs.where, "'" + lhs.text + ">' has the form of " + meaning,
+                     "declare the points and frames it names (POINTS, FRAMES, BODIES), or give the vector "
+                     "another name");
+        Text r = vec(st.rhs);
+        const Entry& ne = add(lhs.text, Kind::vector, lhs.where);
+        names_[key].numeric = r.numeric;
+        return emit(ne.name + "> = " + r.s);
+    }
+    if (existing->kind != Kind::vector)
+        fail(lhs.where, "'" + lhs.text + "' is " + kind_word(existing->kind) + ", not a vector");
+    Text r = vec(st.rhs);
+    names_[key].numeric = r.numeric;
+    emit(existing->name + "> = " + r.s);
+}
+
+Text Translator::load_value(const Statement& st, const std::string& key) {
+    if (st.compound == 0) {
+        if (!assigned_loads_.insert(key).second)
+            fail(st.lhs.where, "'" + st.lhs.text + ">' is assigned a second time, which replaces its first value",
+                 "add to it with " + st.lhs.text + "> += v> (or FORCE(...), TORQUE(...)), or remove the first");
+        return vec(st.rhs);
+    }
+    if (st.compound != '+' && st.compound != '-')
+        fail(st.lhs.where, std::string("'") + st.compound + "=' on a force or torque is not translated",
+             "write the whole load: " + st.lhs.text + "> = ...");
+    assigned_loads_.insert(key);
+    Text v = vec(st.rhs.args[1]);
+    if (st.compound == '-') v = {"-" + paren(v, 4), true, 3, v.numeric};
+    return v;
+}
+
+std::string Translator::label(const std::string& base) {
+    std::string l = base;
+    for (int k = 2; labels_.count(l) || find(l); ++k) l = base + "_" + std::to_string(k);
+    labels_.insert({l, 0});
+    return l;
+}
+
+void Translator::force(const std::string& on, const std::optional<std::string>& from, const std::string& v) {
+    std::vector<std::string> at{on};
+    if (from) at.push_back(*from);
+    for (const std::string& x : at)
+        if (object_spelt(x) && object_spelt(x)->kind == Kind::point) forced_points_.emplace_back(x, statement_where_);
+    std::string l = label("F_" + on);
+    emit("force " + l + " on " + on + (from ? " from " + *from : "") + " = " + v);
+}
+
+void Translator::torque(const std::string& on, const std::optional<std::string>& from, const std::string& v) {
+    std::string l = label("T_" + on);
+    emit("torque " + l + " on " + on + (from ? " from " + *from : "") + " = " + v);
+}
+
+void Translator::expression_statement(const Statement& st) {
+    const Expr& e = st.expr;
+    if (e.kind != Expr::Kind::call) return emit(expr(e).s);
+    std::string f = upper(e.text);
+    auto nargs = [&](std::size_t n, const char* form) {
+        if (e.args.size() != n)
+            fail(e.where, e.text + "() takes " + std::to_string(n) + " arguments, not " + std::to_string(e.args.size()),
+                 std::string("write ") + form);
+    };
+    if (f == "SIMPROT") {
+        nargs(4, "SIMPROT(A, B, 3, Q1)");
+        std::string a = frame_name(e.args[0]), b = frame_name(e.args[1]);
+        std::string axis = simprot_axis(e.args[2], a, b);
+        parent_[b] = a;
+        return emit("rotate " + b + " from " + a + " about " + axis + " by " + scalar(e.args[3]).s);
+    }
+    if (f == "V2PTS" || f == "V1PT" || f == "A2PTS") {
+        nargs(4, (e.text + "(N, B, P, Q)").c_str());
+        std::string n = frame_name(e.args[0]), b = frame_name(e.args[1]);
+        std::string p = point_name(e.args[2]), q = point_name(e.args[3]);
+        std::string what = f == "A2PTS" ? "acceleration " : "velocity ";
+        if (f == "V2PTS") {  // both points are fixed on B: forces there act on B
+            for (const std::string& x : {p, q})
+                if (object_spelt(x) && object_spelt(x)->kind == Kind::point && !point_body_.count(x)) point_body_[x] = b;
+        }
+        return emit(what + q + " in " + n + " from " + p + (f == "V1PT" ? " moving on " : " fixed on ") + b);
+    }
+    if (f == "A1PT")
+        fail(e.where, "A1PT() is not translated",
+             "Alembert forms accelerations from velocities; give V1PT() and leave the acceleration to it");
+    if (f == "GRAVITY") {
+        if (e.args.empty()) fail(e.where, "GRAVITY() needs the vector", "write GRAVITY(-G*N2>)");
+        if (e.args.size() > 1)
+            fail(e.args[1].where, "GRAVITY on some bodies only is not translated",
+                 "Alembert's gravity acts on every body and particle; apply FORCE() to these instead");
+        return emit("gravity " + dimensioned(vec(e.args[0]), "g_" + newtonian_));
+    }
+    if (f == "FORCE" || f == "TORQUE") {
+        nargs(2, f == "FORCE" ? "FORCE(P, v>) or FORCE(P/Q, v>)" : "TORQUE(B, v>) or TORQUE(A/B, v>)");
+        const Expr& at = e.args[0];
+        std::optional<std::string> from;
+        std::string on;
+        auto object = [&](const Expr& x) { return f == "FORCE" ? point_name(x) : frame_or_body(x); };
+        if (at.kind == Expr::Kind::binary && at.text == "/") {
+            from = object(at.args[0]);
+            on = object(at.args[1]);
+        } else {
+            on = object(at);
+        }
+        std::string v = dimensioned(vec(e.args[1]), (f == "FORCE" ? "f_" : "tau_") + on);
+        return f == "FORCE" ? force(on, from, v) : torque(on, from, v);
+    }
+    if (f == "KANE") {
+        if (!e.args.empty())
+            fail(e.args[0].where, "KANE() with arguments is not translated",
+                 "declare the dependent speeds with CONSTRAIN(DEPENDENT[...]) and write KANE()");
+        if (!kane_at_) kane_at_ = model_.size(), emit("");
+        kane_where_ = st.where;
+        return;
+    }
+    if (f == "CONSTRAIN") {
+        for (const Expr& a : e.args) {
+            if (a.kind != Expr::Kind::index || upper(a.text) != "DEPENDENT")
+                fail(a.where, "CONSTRAIN() is translated only as CONSTRAIN(DEPENDENT[U3, ...])",
+                     "auxiliary speeds are not translated");
+            for (const Expr& u : a.args) {
+                const Entry* en = u.kind == Expr::Kind::name && !u.vector && u.primes == 0 ? find(u.text) : nullptr;
+                if (!en || en->kind != Kind::variable)
+                    fail(u.where, "DEPENDENT[...] lists speeds, declared with VARIABLES or MOTIONVARIABLES");
+                dependent_.push_back(en->name);
+            }
+        }
+        if (constraints_.size() != dependent_.size())
+            fail(e.where,
+                 std::to_string(dependent_.size()) + " dependent speeds for " + std::to_string(constraints_.size()) +
+                     " constraints (DEPENDENT[...] = ...)",
+                 "give one DEPENDENT[i] = ... for each dependent speed, before CONSTRAIN");
+        return;
+    }
+    emit(expr(e).s);
+}
+
+Text Translator::dimensioned_text(const Text& t, const std::string& base) {
+    if (!t.numeric || t.s == "0" || t.s == "0>") return t;
+    std::string name = base;
+    for (int k = 2; find(name) || extra_names_.count(name); ++k) name = base + "_" + std::to_string(k);
+    extra_names_.insert({name, 0});
+    bool plain_number = !t.vector && t.s.find_first_not_of("0123456789.e-+") == std::string::npos;
+    if (plain_number) {
+        extra_constants_.push_back(name + " = " + t.s);
+        return {name, false, 5, false};
+    }
+    extra_constants_.push_back(name + " = 1");
+    return {name + "*" + (t.prec <= 3 ? "(" + t.s + ")" : t.s), t.vector, 2, false};
+}
+
+void Translator::angular_velocity(const std::string& b, const std::string& a, const Text& w) {
+    auto it = parent_.find(b);
+    if (it == parent_.end() || it->second == a) return emit("angvel " + b + " in " + a + " = " + w.s);
+    const std::string& p = it->second;
+    emit("angvel " + b + " in " + p + " = " + w.s + " - angvel(" + p + ", " + a + ")");
+}
+
+std::string Translator::simprot_axis(const Expr& ax, const std::string& a, const std::string& b) {
+    std::string sign;
+    const Expr* x = &ax;
+    if (x->kind == Expr::Kind::unary && x->text == "-") {
+        sign = "-";
+        x = &x->args[0];
+    }
+    if (x->kind == Expr::Kind::number && (x->text == "1" || x->text == "2" || x->text == "3"))
+        return sign + std::string(1, "xyz"[x->text[0] - '1']);
+    if (x->kind == Expr::Kind::name && x->vector) {
+        std::string v = vector_name(*x);
+        for (const std::string& f : {a, b})
+            for (char c : std::string("xyz"))
+                if (v == f + std::string(1, c) + ">") return sign + std::string(1, c);
+    }
+    fail(ax.where, "SIMPROT about this axis is not translated",
+         "give the axis as 1, 2 or 3 (or -1, -2, -3), or as a unit vector of either frame");
+}
+
+}  // namespace alembert::lang::autolev

@@ -1,0 +1,349 @@
+// SPDX-License-Identifier: MIT
+// The translator of Autolev statements into Alembert statements, private to src/lang/autolev:
+// names and declarations (autolev_translator.cpp), expressions and vector names
+// (autolev_expressions.cpp), statements (autolev_statements.cpp), the script (autolev_script.cpp).
+#pragma once
+#include <algorithm>
+#include <cctype>
+#include <cstddef>
+#include <map>
+#include <optional>
+#include <set>
+#include <string>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "alembert/lang/autolev_import.hpp"
+#include "alembert/lang/parser.hpp"
+#include "autolev_syntax.hpp"
+
+namespace alembert::lang::autolev {
+
+// What an Autolev name stands for.
+enum class Kind { newtonian, frame, body, particle, point, constant, variable, specified, scalar, vector };
+
+inline const char* kind_word(Kind k) {
+    switch (k) {
+        case Kind::newtonian: return "the Newtonian frame";
+        case Kind::frame: return "a frame";
+        case Kind::body: return "a body";
+        case Kind::particle: return "a particle";
+        case Kind::point: return "a point";
+        case Kind::constant: return "a constant";
+        case Kind::variable: return "a variable";
+        case Kind::specified: return "a specified quantity";
+        case Kind::scalar: return "a scalar";
+        case Kind::vector: return "a vector";
+    }
+    return "a name";
+}
+
+struct Entry {
+    Kind kind = Kind::scalar;
+    std::string name{};  // the Alembert spelling
+    Location where{};
+    bool numeric = false;  // a scalar or vector the file assigned from numbers alone
+    std::string key{};     // the Autolev name in upper case
+};
+
+// Frames, bodies, particles and points are named apart from values (constants, variables,
+// scalars, vectors): Autolev lets a frame A and a variable A stand side by side.
+inline bool is_object(Kind k) {
+    return k == Kind::newtonian || k == Kind::frame || k == Kind::body || k == Kind::particle || k == Kind::point;
+}
+
+// A translated expression: its Alembert text, whether it is a vector, its precedence
+// (1 sum, 2 product, 3 sign, 4 power, 5 atom).
+struct Text {
+    std::string s{};
+    bool vector = false;
+    int prec = 5;
+    bool numeric = false;  // numbers and unit vectors only: no quantity with a dimension
+};
+
+// A declared constant: its declaration group (one `constant` line each) and its value.
+struct ConstantDecl {
+    std::string name{};
+    std::string value{};  // empty: symbolic
+    std::string unit{};
+    bool positive = false;  // CONSTANTS L+
+};
+
+// A name declared with a definition (SPECIFIED F = -K*X, VARIABLES Z = 2*X): a scalar of the
+// script, assigned where the declaration stands.
+struct Definition {
+    std::string name{};
+    Expr value{};
+};
+
+struct KinematicEquation {
+    std::string coordinate{};
+    std::string residual{};
+    Location where{};
+};
+
+// Translates one Autolev file: declarations first (they may come in any order), then each
+// statement in the file's order, then the script assembled from the parts.
+class Translator {
+public:
+    explicit Translator(std::string file) : file_(std::move(file)) {}
+
+    AutolevTranslation run(std::string_view source);
+
+private:
+    // ---- diagnostics ----------------------------------------------------------------------
+
+    void report(Severity s, Location where, std::string message, std::string hint = "") {
+        out_.diagnostics.push_back({s, file_, where, std::move(message), std::move(hint)});
+    }
+    [[noreturn]] static void fail(Location where, const std::string& message, const std::string& hint = "") {
+        throw ScriptError(where, message, hint);
+    }
+    void not_translated(Location where, const std::string& what, const std::string& why) {
+        report(Severity::warning, where, what + " is not translated: " + why,
+               "the statement is left out of the Alembert script; write its counterpart by hand if needed");
+    }
+
+    // ---- names ----------------------------------------------------------------------------
+
+    std::string alembert_spelling(const std::string& name, Location where);
+
+    const Entry& add(const std::string& name, Kind kind, Location where);
+
+    // the value named `name` (Autolev's spelling, any case), else the frame, body, particle
+    // or point
+    const Entry* find(std::string_view name) const {
+        auto it = names_.find(upper(name));
+        return it == names_.end() ? find_object(name) : &it->second;
+    }
+    const Entry* find_object(std::string_view name) const {
+        auto it = objects_.find(upper(name));
+        return it == objects_.end() ? nullptr : &it->second;
+    }
+    // the frame, body, particle or point spelt `name` in the script
+    const Entry* object_spelt(const std::string& name) const {
+        for (const auto& [k, e] : objects_)
+            if (e.name == name) return &e;
+        return nullptr;
+    }
+
+    // the expanded names of a declarator: Q{3} -> Q1, Q2, Q3
+    static std::vector<std::string> expand(const Declarator& d) {
+        if (d.last < d.first) return {d.name};
+        std::vector<std::string> v;
+        for (int i = d.first; i <= d.last; ++i) v.push_back(d.name + std::to_string(i));
+        return v;
+    }
+
+    void declare(const Statement& st);
+
+    // Autolev declares a name that MASS or INERTIA gives alone (MASS A = MA, INERTIA B, I1,
+    // I2, I3) and that no declaration names as a constant; so does the translation.
+    void implicit_constants(const Statement& st);
+
+    // Speeds that are a coordinate's rate (Q1' = U1, or OMEGA = THETA') are written as that rate
+    // (U1 as Q1', U1' as Q1''), so that Kane's equations are in the coordinates' rates, as
+    // Alembert's simulate and codegen take them. Only when every kinematical equation has this
+    // form and the model has no constraints; otherwise the speeds stay speeds.
+    void find_rate_speeds(const ParsedFile& parsed);
+
+    static std::string join(const std::vector<std::string>& v, const char* sep = ", ") {
+        std::string s;
+        for (std::size_t i = 0; i < v.size(); ++i) s += (i ? sep : "") + v[i];
+        return s;
+    }
+
+    // ---- expressions ----------------------------------------------------------------------
+
+    // a plain number (with its sign), as Alembert reads it
+    std::string number_text(const Expr& e, const std::string& what);
+
+    static std::string paren(const Text& t, int need) { return t.prec < need ? "(" + t.s + ")" : t.s; }
+
+    Text expr(const Expr& e);
+
+    // A chain of operators (a + b + c ..., read as ((a + b) + c) ...) is translated along its
+    // left operands by iteration, so that a chain of any length needs no deeper stack.
+    Text binary(const Expr& e);
+    // `a op b` from the translations of a and b (a's text is moved, not copied, so that a
+    // long chain costs time in proportion to its length)
+    Text combine(const Expr& e, Text a, Text b);
+
+    Text call(const Expr& e);
+    Text call_text(const Expr& e, bool& numeric);
+
+    std::string scalar_name(const Expr& e);
+
+    // ---- frames, points and vectors -------------------------------------------------------
+
+    std::optional<std::string> frame_of(std::string_view name) const {
+        const Entry* en = find_object(name);
+        if (en && (en->kind == Kind::newtonian || en->kind == Kind::frame || en->kind == Kind::body)) return en->name;
+        return std::nullopt;
+    }
+    std::optional<std::string> point_of(std::string_view name) const {
+        const Entry* en = find_object(name);
+        if (en && (en->kind == Kind::point || en->kind == Kind::particle)) return en->name;
+        auto it = implicit_points_.find(upper(name));
+        if (!en && it != implicit_points_.end()) return it->second;
+        return std::nullopt;
+    }
+    std::string frame_name(const Expr& e);
+    std::string point_name(const Expr& e);
+    std::string body_name(const Expr& e);
+
+    // "X_Y" split into two names that satisfy `a` and `b`
+    template <class A, class B>
+    static std::optional<std::pair<std::string, std::string>> split(std::string_view rest, A a, B b) {
+        for (std::size_t i = 1; i + 1 < rest.size(); ++i) {
+            if (rest[i] != '_') continue;
+            auto x = a(rest.substr(0, i));
+            auto y = b(rest.substr(i + 1));
+            if (x && y) return std::make_pair(*x, *y);
+        }
+        return std::nullopt;
+    }
+
+    // A vector name: 0>, a unit vector A1>, P_O_P>, V_P_N>, A_P_N>, W_B_N>, ALF_B_N>, or one
+    // the file assigned.
+    std::string vector_name(const Expr& e);
+
+    // ---- statements -----------------------------------------------------------------------
+
+    void emit(std::string line) { model_.push_back(std::move(line)); }
+
+    void translate(const Statement& st);
+
+    // SPECIFIED F = -K*X: F is assigned where it is declared, so the statements before it
+    // that use it are reported by the script, not given another meaning
+    void definitions(const Statement& st);
+
+    void list(const Statement& st);
+
+    void input(const Item& it);
+
+    std::string unit(const std::string& words, Location where);
+
+    void command(const Statement& st);
+
+    void code(const Statement& st);
+
+    Text scalar(const Expr& e) {
+        Text t = expr(e);
+        if (t.vector) fail(e.where, "a vector where a scalar is expected", "take a measure: DOT(v>, N1>)");
+        return t;
+    }
+    Text vec(const Expr& e) {
+        Text t = expr(e);
+        if (!t.vector) fail(e.where, "a scalar where a vector is expected", "multiply by a unit vector such as N1>");
+        return t;
+    }
+
+    void assignment(const Statement& st);
+
+    // OMEGA = THETA': a kinematical equation written as an assignment, THETA' - OMEGA = 0
+    void kinematical_assignment(const Statement& st, const Entry& speed);
+
+    std::string matrix(const Expr& m);
+
+    static bool is_call(const Expr& e, const char* f) {
+        return e.kind == Expr::Kind::call && e.args.empty() && upper(e.text) == f;
+    }
+    static bool is_fr_plus_frstar(const Expr& e) {
+        return e.kind == Expr::Kind::binary && e.text == "+" &&
+               ((is_call(e.args[0], "FR") && is_call(e.args[1], "FRSTAR")) ||
+                (is_call(e.args[0], "FRSTAR") && is_call(e.args[1], "FR")));
+    }
+
+    void array_assignment(const Statement& st);
+
+    void vector_assignment(const Statement& st);
+
+    // FORCE_P> = v> gives the force on P, FORCE_P> += v> adds v> to it (another load of the
+    // script); a second FORCE_P> = would replace the first, which the script cannot say
+    Text load_value(const Statement& st, const std::string& key);
+
+    std::string label(const std::string& base);
+    void force(const std::string& on, const std::optional<std::string>& from, const std::string& v);
+    void torque(const std::string& on, const std::optional<std::string>& from, const std::string& v);
+
+    void expression_statement(const Statement& st);
+
+    // Unit-less values: Autolev's numbers have no units, while Alembert checks that a mass is
+    // a mass, a position a length, and so on. An expression of numbers alone (no constant or
+    // variable, whose dimension is open) in such a place becomes a constant without a unit: a
+    // number is the constant's value (MASS P = 2: m_P = 2), anything else is scaled by a
+    // constant equal to 1 (P_O_P> = N1>: r_P*(Nx>) with r_P = 1).
+    std::string dimensioned(const Text& t, const std::string& base) { return dimensioned_text(t, base).s; }
+    Text dimensioned_text(const Text& t, const std::string& base);
+
+    // W_B_A> = w>: Alembert sets a frame's angular velocity in the frame it is oriented from
+    // (its parent P), so in another frame A it becomes w> - W_P_A>
+    void angular_velocity(const std::string& b, const std::string& a, const Text& w);
+
+    std::string frame_or_body(const Expr& e) { return frame_name(e); }
+
+    std::string simprot_axis(const Expr& ax, const std::string& a, const std::string& b);
+
+    // ---- the script -----------------------------------------------------------------------
+
+    std::string kane_statement();
+
+    // true if the text `s` holds the name `n` as a whole word
+    static bool mentions(const std::string& s, const std::string& n);
+
+    // In a model with kinematical equations, a variable declared and used without derivatives
+    // that is neither a coordinate nor in any kinematical or constraint equation is no speed:
+    // Autolev takes it as a given function of time, and so does the translation (a specified
+    // quantity; INPUT gives its value).
+    void find_given_variables();
+
+    void assemble();
+
+    std::string file_;
+    AutolevTranslation out_{};
+    std::vector<Diagnostic> pending_{};
+    std::map<std::string, Entry> names_{};                  // key: upper case
+    std::map<std::string, Entry> objects_{};               // frames, bodies, particles, points
+    std::vector<std::string> renames_{};  // the script's comments on names renamed
+    std::map<std::string, std::string> implicit_points_{};  // NO, BO (upper case) -> N_o, Bcm
+    std::map<std::string, int> labels_{};
+    std::set<std::string> assigned_loads_{};  // FORCE_P>, TORQUE_B> (upper case) assigned with '='
+    std::map<std::string, std::string> point_body_{};  // point -> the body V2PTS fixes it on
+    std::vector<std::pair<std::string, Location>> forced_points_{};
+    Location statement_where_{};
+    std::map<std::string, int> extra_names_{};
+    std::vector<std::string> extra_constants_{};
+    std::string time_unit_{};  // the constant 1 s that Autolev's time T is divided by  // numbers given a place with a dimension
+    bool resolved_numeric_ = false;
+    std::map<std::string, std::string> parent_{};  // frame -> the frame it is oriented from
+    std::string newtonian_{};
+    std::vector<std::string> frames_lines_{};
+    std::vector<std::vector<ConstantDecl>> constants_{};
+    std::map<std::string, std::pair<std::size_t, std::size_t>> constant_index_{};
+    std::optional<std::size_t> implicit_group_{};  // the constants MASS and INERTIA declare
+    std::vector<std::string> variables_{};
+    std::set<std::string> given_{};
+    std::map<std::string, std::string> rate_of_{};  // a speed that is a coordinate's rate -> the coordinate
+    std::set<std::string> aliased_coordinates_{};  // variables that are no coordinate and no speed: specified
+    std::map<std::string, int> primes_{}, used_primes_{};
+    std::vector<std::string> specified_{};
+    std::map<std::pair<int, int>, std::vector<Definition>> definitions_{};  // by the declaration's line, column
+    std::vector<std::string> model_{};
+    std::optional<std::size_t> kane_at_{};
+    Location kane_where_{};
+    std::string kane_name_{};
+    std::vector<KinematicEquation> kinematics_{};
+    std::vector<std::string> constraints_{}, dependent_{};
+    std::optional<Location> constraints_where_{};  // the first DEPENDENT[i] = ...
+    std::map<std::string, std::string> initial_{};
+    std::vector<std::string> initial_order_{};
+    std::vector<std::string> tail_inputs_{}, tail_outputs_{};
+    std::vector<std::pair<Location, std::string>> tail_codegen_{};
+    std::map<std::string, std::string> tail_settings_{};
+    std::string abs_tol_{}, rel_tol_{};
+    int outputs_ = 0;
+};
+
+}  // namespace alembert::lang::autolev
