@@ -65,25 +65,46 @@ std::vector<std::string> describe_free_body_diagram(const System& sys, const Bod
 std::vector<std::string> describe_free_body_diagram(const System& sys, const BodySet& S,
                                                     const ex& equation) {
     std::vector<std::string> out;
+    const SymbolTable& st = sys.symbols();
     const GiNaC::exset in_equation = symbols_of(equation);  // once, not a scan per measure
+    // the unknown measures of each load external to S, then which of them the equation keeps,
+    // decided for all of them by one evaluation of the equation
+    std::vector<const Load*> external;
+    std::vector<std::vector<ex>> measures;
+    std::vector<ex> held;
     for (const Load& l : sys.loads()) {
         if (!member(S, l.on) || member(S, l.from)) continue;
+        external.push_back(&l);
+        measures.emplace_back();
+        for (const auto& part : l.vector.components())
+            for (int i = 0; i < 3; ++i)
+                for (const ex& s : symbols_of(part.second[i]))
+                    if (st.owns(s) && st.kind(s) == SymbolKind::unknown) {
+                        measures.back().push_back(s);
+                        if (in_equation.count(s)) held.push_back(s);
+                    }
+    }
+    std::sort(held.begin(), held.end(), GiNaC::ex_is_less());
+    held.erase(std::unique(held.begin(), held.end(),
+                           [](const ex& a, const ex& b) { return a.is_equal(b); }),
+               held.end());
+    const std::vector<bool> changes =
+        equation.is_zero() ? std::vector<bool>(held.size(), false)
+                           : calc_changes_with_at_random_states(st, equation, held);
+    auto kept_by_equation = [&](const ex& s) {
+        if (equation.is_zero()) return true;
+        for (std::size_t k = 0; k < held.size(); ++k)
+            if (held[k].is_equal(s)) return static_cast<bool>(changes[k]);
+        return false;
+    };
+    for (std::size_t n = 0; n < external.size(); ++n) {
+        const Load& l = *external[n];
         std::string what = l.label.empty() ? (l.kind == LoadKind::force ? "force" : "torque")
                                            : l.label;
         // a load whose measures are unknowns is marked, like the joints' forces
         // (and, given the row's equation, those whose measures it does not keep)
-        bool unknown = false, kept = false;
-        for (const auto& part : l.vector.components())
-            for (int i = 0; i < 3; ++i)
-                for (const ex& s : symbols_of(part.second[i]))
-                    if (sys.symbols().owns(s) && sys.symbols().kind(s) == SymbolKind::unknown) {
-                        unknown = true;
-                        if (equation.is_zero() ||
-                            (in_equation.count(s) &&
-                             !is_zero_at_random_states(
-                                 sys.symbols(), equation.diff(GiNaC::ex_to<GiNaC::symbol>(s)))))
-                            kept = true;
-                    }
+        const bool unknown = !measures[n].empty();
+        const bool kept = std::any_of(measures[n].begin(), measures[n].end(), kept_by_equation);
         const char* mark = !unknown ? "" : kept ? " (unknown)" : " (unknown, drops out)";
         if (l.kind == LoadKind::force)
             out.push_back(what + " at " + l.point->name() + " from " +
@@ -120,10 +141,17 @@ void list_additional_unknowns(const System& sys, RoadmapRow& row, const std::vec
     const SymbolTable& st = sys.symbols();
     row.additional_unknowns.clear();
     const GiNaC::exset in_equation = symbols_of(row.equation);
+    std::vector<ex> held, measures;  // the unknowns the equation holds; the load measures among them
     for (const ex& x : unknowns) {
         if (x.is_equal(row.variable) || !in_equation.count(x)) continue;
-        if (st.owns(x) && st.kind(x) == SymbolKind::unknown &&
-            is_zero_at_random_states(st, row.equation.diff(GiNaC::ex_to<GiNaC::symbol>(x))))
+        held.push_back(x);
+        if (st.owns(x) && st.kind(x) == SymbolKind::unknown) measures.push_back(x);
+    }
+    const std::vector<bool> changes = calc_changes_with_at_random_states(st, row.equation, measures);
+    for (const ex& x : held) {
+        auto it = std::find_if(measures.begin(), measures.end(),
+                               [&](const ex& m) { return m.is_equal(x); });
+        if (it != measures.end() && !changes[static_cast<std::size_t>(it - measures.begin())])
             continue;
         row.additional_unknowns.push_back(x);
     }

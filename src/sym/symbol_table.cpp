@@ -467,19 +467,15 @@ std::string SymbolTable::unique_name(const std::string& name) const {
 }
 
 GiNaC::exset SymbolTable::calc_leaf_symbols(const ex& e) const {
-    GiNaC::exset out, seen;
-    std::vector<ex> todo{e};
-    while (!todo.empty()) {
-        ex cur = todo.back();
-        todo.pop_back();
-        for (const ex& s : symbols_of(cur)) {
-            auto it = info_.find(s);
-            if (it != info_.end() && it->second.kind == SymbolKind::intermediate) {
-                if (seen.insert(s).second) todo.push_back(it->second.definition);
-            } else {
-                out.insert(s);
-            }
-        }
+    // an intermediate's leaves were gathered when it was made: read, not walked again through
+    // its definitions (a chain's kinematics nest n intermediates deep)
+    GiNaC::exset out;
+    for (const ex& s : symbols_of(e)) {
+        auto it = info_.find(s);
+        if (it != info_.end() && it->second.kind == SymbolKind::intermediate)
+            out.insert(it->second.leaves.begin(), it->second.leaves.end());
+        else
+            out.insert(s);
     }
     return out;
 }

@@ -3,6 +3,8 @@
 // by expanding it (the positions of a long chain expand exponentially).
 #pragma once
 
+#include <vector>
+
 #include "alembert/sym/symbol_table.hpp"
 #include "alembert/vec/vector.hpp"
 
@@ -17,6 +19,15 @@ namespace alembert {
 /// back to a symbolic test, simplify(e) == 0, when e with its intermediates is small (at most
 /// 2000 operations); larger ones count as not zero.
 bool is_zero_at_random_states(const SymbolTable& st, const ex& e);
+
+/// For each of `symbols`, whether `e` changes with it: e at two random states (as above), then
+/// with that symbol alone moved by 1, compared at 1e-11 times the size of e's terms. One
+/// compilation of e for all of them, instead of a derivative and a zero test for each (a long
+/// chain's row is a deep tree, and differentiating it walks the tree). For a symbol e holds
+/// linearly (a load's measure) this is "its coefficient is not zero". Where e cannot be
+/// evaluated, each symbol's derivative is tested by is_zero_at_random_states.
+std::vector<bool> calc_changes_with_at_random_states(const SymbolTable& st, const ex& e,
+                                                     const std::vector<ex>& symbols);
 
 /// The same for every measure of v in frame F.
 bool is_zero_at_random_states(const SymbolTable& st, const Vector& v, const Frame& F);

@@ -164,7 +164,8 @@ public:
     bool depends_on(const ex& e, const ex& s) const;
     /// The symbols `e` depends on, looking through intermediates to their definitions: every
     /// constant, variable, specified, unknown and t it holds, but no intermediate. Each
-    /// intermediate's definition is visited once, so the cost is linear in their total size.
+    /// intermediate's leaves are read from what was gathered when it was made: linear in the
+    /// size of `e` and of the leaf sets.
     GiNaC::exset calc_leaf_symbols(const ex& e) const;
     /// `e` with every intermediate replaced by its definition (recursively).
     ex expand_intermediates(const ex& e) const;

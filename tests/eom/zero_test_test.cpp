@@ -1,0 +1,62 @@
+// SPDX-License-Identifier: MIT
+// Zero tests at random states: identities that do not look zero, and which symbols an
+// expression changes with.
+#include "alembert/eom/zero_test.hpp"
+
+#include <gtest/gtest.h>
+
+using namespace alembert;
+using GiNaC::cos;
+using GiNaC::pow;
+using GiNaC::sin;
+
+namespace {
+struct Table {
+    SymbolTable st;
+    ex q = st.add_variable("q"), L = st.add_constant("L", 0.7), m = st.add_constant("m");
+    ex T1 = st.add_unknown("T1"), T2 = st.add_unknown("T2"), T3 = st.add_unknown("T3");
+};
+}  // namespace
+
+TEST(ZeroTest, SeesIdentitiesThatDoNotLookZero) {
+    Table x;
+    EXPECT_TRUE(is_zero_at_random_states(x.st, pow(sin(x.q), 2) + pow(cos(x.q), 2) - 1));
+    EXPECT_TRUE(is_zero_at_random_states(x.st, sin(2 * x.q) - 2 * sin(x.q) * cos(x.q)));
+    EXPECT_FALSE(is_zero_at_random_states(x.st, sin(x.q) - cos(x.q)));
+    // through an intermediate, never written out
+    const ex z = x.st.add_intermediate(x.L * sin(x.q), "z");
+    EXPECT_TRUE(is_zero_at_random_states(x.st, z * cos(x.q) - x.L * sin(2 * x.q) / 2));
+}
+
+TEST(ZeroTest, ChangesWithTheSymbolsWhoseCoefficientIsNotZero) {
+    Table x;
+    const ex z = x.st.add_intermediate(x.m * x.L * cos(x.q), "z");
+    // T1's coefficient is not zero; T2's is zero though it does not look it; T3's is the
+    // intermediate z; m is held only inside z
+    const ex e = x.L * x.T1 + (pow(sin(x.q), 2) + pow(cos(x.q), 2) - 1) * x.T2 + z * x.T3;
+    const std::vector<bool> c =
+        calc_changes_with_at_random_states(x.st, e, {x.T1, x.T2, x.T3, x.m, x.q});
+    ASSERT_EQ(c.size(), 5u);
+    EXPECT_TRUE(c[0]);
+    EXPECT_FALSE(c[1]);
+    EXPECT_TRUE(c[2]);
+    EXPECT_TRUE(c[3]);  // through z
+    EXPECT_TRUE(c[4]);
+    // a symbol e does not hold
+    const ex absent = x.st.add_unknown("T4");
+    EXPECT_FALSE(calc_changes_with_at_random_states(x.st, e, {absent}).at(0));
+    // agreement with the derivative's zero test, symbol by symbol
+    for (const ex& s : {x.T1, x.T2, x.T3})
+        EXPECT_EQ(calc_changes_with_at_random_states(x.st, e, {s}).at(0),
+                  !is_zero_at_random_states(x.st, e.diff(GiNaC::ex_to<GiNaC::symbol>(s))));
+}
+
+TEST(ZeroTest, WhereTheExpressionCannotBeEvaluatedEachSymbolIsTestedByItsDerivative) {
+    Table x;
+    // log of a negative number at every state: not evaluable, so the derivative decides
+    const ex bad = GiNaC::log(-pow(x.q, 2) - 1);
+    const ex e = bad + x.T1 * x.L + 0 * x.T2;
+    const std::vector<bool> c = calc_changes_with_at_random_states(x.st, e, {x.T1, x.T2});
+    EXPECT_TRUE(c[0]);
+    EXPECT_FALSE(c[1]);
+}
