@@ -3,6 +3,14 @@
 #include "alembert/eom/zero_test.hpp"
 
 #include <algorithm>
+#include <array>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <memory>
+#include <optional>
+#include <string>
+#include <unordered_map>
 #include <cmath>
 #include <map>
 #include <random>
@@ -23,7 +31,200 @@ std::vector<ex> zero_test_leaves(const SymbolTable& st, const ex& e) {
     return out;
 }
 
+// ---- values at the random states, intermediates remembered across tests ---------------------
+//
+// Every zero test of one model reaches the same kinematics (a chain's rows all hold the
+// rotations of its links); compiling each tested expression with the intermediates it reaches
+// made a road-map's zero tests grow as n^3. Here each intermediate's values at the two states
+// are computed once and remembered (by its symbol, unique in the process), and a test walks
+// only its own expression. A leaf's value depends on its name and the state alone; a constant
+// with a value keeps it (the remembered values are dropped when the table's constant values
+// change).
+
+constexpr int kStates = 2;
+
+long double leaf_value(const std::string& name, int state) {
+    std::uint64_t h = 1469598103934665603ULL ^ static_cast<std::uint64_t>(state + 1);
+    for (unsigned char c : name) h = (h ^ c) * 1099511628211ULL;
+    h ^= h >> 29;
+    h *= 0xbf58476d1ce4e5b9ULL;
+    h ^= h >> 32;
+    const long double u = static_cast<long double>(h >> 11) / static_cast<long double>(1ULL << 53);
+    const long double mag = 0.3L + 1.4L * u;
+    return (h & 1) ? -mag : mag;
+}
+
+struct RememberedValues {
+    std::uint64_t constants = 0;  // fingerprint of the constant values they were computed with
+    std::unordered_map<ex, std::array<long double, kStates>, std::hash<ex>, GiNaC::ex_is_equal>
+        intermediates;
+};
+
+RememberedValues& remembered() {
+    static thread_local RememberedValues r;
+    return r;
+}
+
+std::uint64_t constants_fingerprint(const SymbolTable& st) {
+    std::uint64_t h = 1469598103934665603ULL;
+    for (const ex& c : st.symbols(SymbolKind::constant)) {
+        const std::optional<double> v = st.value(c);
+        std::uint64_t bits = 0;
+        if (v) std::memcpy(&bits, &*v, sizeof bits);
+        h = (h ^ (std::hash<ex>()(c) + (v ? bits : 0x9e3779b97f4a7c15ULL))) * 1099511628211ULL;
+    }
+    return h;
+}
+
+class StateValues {
+public:
+    StateValues(const SymbolTable& st, int state) : st_(st), state_(state) {}
+
+    /// The value with `moved` (a symbol) moved by 1; intermediates that depend on it are
+    /// computed afresh, not remembered
+    void move(const ex& moved) { moved_ = moved; }
+
+    long double at(const ex& e) {
+        using namespace GiNaC;
+        if (is_a<numeric>(e)) {
+            const numeric& n = ex_to<numeric>(e);
+            if (!n.is_real()) throw std::domain_error("complex");
+            return n.to_double();
+        }
+        if (is_a<symbol>(e)) return symbol_value(e);
+        const basic* key = &ex_to<basic>(e);
+        auto it = memo_.find(key);
+        if (it != memo_.end()) return it->second;
+        long double v = 0;
+        if (is_a<add>(e)) {
+            for (std::size_t i = 0; i < e.nops(); ++i) v += at(e.op(i));
+        } else if (is_a<mul>(e)) {
+            v = 1;
+            for (std::size_t i = 0; i < e.nops(); ++i) v *= at(e.op(i));
+        } else if (is_a<power>(e)) {
+            const long double b = at(e.op(0)), x = at(e.op(1));
+            v = x == 0.5L ? std::sqrt(b) : std::pow(b, x);
+        } else if (is_a<function>(e)) {
+            v = function_value(ex_to<function>(e).get_name(), e);
+        } else {
+            throw std::domain_error("not arithmetic");
+        }
+        keep_.push_back(e);  // the address stays this node's while it is remembered
+        memo_.emplace(key, v);
+        return v;
+    }
+
+private:
+    long double symbol_value(const ex& s) {
+        if (!moved_.is_zero() && s.is_equal(moved_)) return base_value(s) + 1;
+        return base_value(s);
+    }
+
+    long double base_value(const ex& s) {
+        if (!st_.owns(s)) return leaf_value(GiNaC::ex_to<GiNaC::symbol>(s).get_name(), state_);
+        switch (st_.kind(s)) {
+            case SymbolKind::intermediate: return intermediate_value(s);
+            case SymbolKind::constant:
+                if (std::optional<double> v = st_.value(s)) return *v;
+                break;
+            default: break;
+        }
+        return leaf_value(GiNaC::ex_to<GiNaC::symbol>(s).get_name(), state_);
+    }
+
+    long double intermediate_value(const ex& z) {
+        const bool fresh = !moved_.is_zero() && st_.depends_on(z, moved_);
+        RememberedValues& r = remembered();
+        if (fresh) {
+            auto it = fresh_->find(z);
+            if (it != fresh_->end()) return it->second;
+        } else {
+            auto it = r.intermediates.find(z);
+            if (it != r.intermediates.end() && !std::isnan(it->second[state_]))
+                return it->second[state_];
+        }
+        // a definition is evaluated with a memory of its own nodes (they are not this
+        // expression's); its intermediates are remembered in turn, those that move with the
+        // moved symbol for this evaluation only
+        StateValues inner(st_, state_);
+        inner.moved_ = fresh ? moved_ : ex(0);
+        inner.fresh_ = fresh_;
+        const long double v = inner.at(st_.definition(z));
+        if (fresh) {
+            fresh_->emplace(z, v);
+        } else {
+            auto [it, added] = r.intermediates.try_emplace(z);
+            if (added) it->second.fill(std::numeric_limits<long double>::quiet_NaN());
+            it->second[state_] = v;
+        }
+        return v;
+    }
+
+    long double function_value(const std::string& f, const ex& e) {
+        const long double a = at(e.op(0));
+        if (f == "sin") return std::sin(a);
+        if (f == "cos") return std::cos(a);
+        if (f == "tan") return std::tan(a);
+        if (f == "exp") return std::exp(a);
+        if (f == "log") return std::log(a);
+        if (f == "abs") return std::fabs(a);
+        if (f == "asin") return std::asin(a);
+        if (f == "acos") return std::acos(a);
+        if (f == "atan") return std::atan(a);
+        if (f == "atan2") return std::atan2(a, at(e.op(1)));
+        if (f == "sinh") return std::sinh(a);
+        if (f == "cosh") return std::cosh(a);
+        if (f == "tanh") return std::tanh(a);
+        throw std::domain_error("function " + f);
+    }
+
+    const SymbolTable& st_;
+    int state_;
+    ex moved_ = 0;
+    // the values of intermediates that move with moved_, shared with the inner evaluations
+    std::shared_ptr<std::unordered_map<ex, long double, std::hash<ex>, GiNaC::ex_is_equal>>
+        fresh_ = std::make_shared<
+            std::unordered_map<ex, long double, std::hash<ex>, GiNaC::ex_is_equal>>();
+    std::unordered_map<const GiNaC::basic*, long double> memo_;
+    std::vector<ex> keep_;
+};
+
+// the values of each expression's terms and of itself at each state, or nullopt where the
+// fast path cannot evaluate them (the compiled path, with its own fallback, decides then)
+bool all_zero_compiled(const SymbolTable& st, const std::vector<ex>& es);
+
 bool all_zero(const SymbolTable& st, const std::vector<ex>& es) {
+    RememberedValues& r = remembered();
+    const std::uint64_t fp = constants_fingerprint(st);
+    if (r.constants != fp) {
+        r.intermediates.clear();
+        r.constants = fp;
+    }
+    try {
+        for (int state = 0; state < kStates; ++state) {
+            StateValues values(st, state);
+            for (const ex& e : es) {
+                if (e.is_zero()) continue;
+                long double scale = 1;
+                if (GiNaC::is_a<GiNaC::add>(e))
+                    for (std::size_t i = 0; i < e.nops(); ++i)
+                        scale = std::max(scale, std::abs(values.at(e.op(i))));
+                else
+                    scale = std::max(scale, std::abs(values.at(e)));
+                const long double v = values.at(e);
+                if (!std::isfinite(static_cast<double>(v)) ||
+                    !std::isfinite(static_cast<double>(scale)))
+                    throw std::domain_error("not finite");
+                if (std::abs(v) > 1e-11L * scale) return false;
+            }
+        }
+        return true;
+    } catch (const std::exception&) {
+        return all_zero_compiled(st, es);
+    }
+}
+
+bool all_zero_compiled(const SymbolTable& st, const std::vector<ex>& es) {
     std::vector<ex> outputs;
     std::vector<ex> inputs;
     {
@@ -103,6 +304,41 @@ std::vector<bool> calc_changes_with_at_random_states(const SymbolTable& st, cons
     auto by_derivative = [&](std::size_t k) {
         return !is_zero_at_random_states(st, e.diff(GiNaC::ex_to<GiNaC::symbol>(symbols[k])));
     };
+    // the remembered intermediates' values first (all_zero's fast path); then compiled
+    try {
+        RememberedValues& r = remembered();
+        const std::uint64_t fp = constants_fingerprint(st);
+        if (r.constants != fp) {
+            r.intermediates.clear();
+            r.constants = fp;
+        }
+        std::vector<bool> fast(symbols.size(), false);
+        auto measured = [&](StateValues& v, long double* value) {
+            long double scale = 1;
+            for (const ex& o : outputs) scale = std::max(scale, std::abs(v.at(o)));
+            *value = v.at(e);
+            if (!std::isfinite(static_cast<double>(*value)) ||
+                !std::isfinite(static_cast<double>(scale)))
+                throw std::domain_error("not finite");
+            return scale;
+        };
+        for (int state = 0; state < kStates; ++state) {
+            StateValues base(st, state);
+            long double v0 = 0;
+            const long double s0 = measured(base, &v0);
+            for (std::size_t k = 0; k < symbols.size(); ++k) {
+                if (fast[k] || slot[k] == inputs.size()) continue;
+                StateValues moved(st, state);
+                moved.move(symbols[k]);
+                long double v1 = 0;
+                const long double s1 = measured(moved, &v1);
+                if (std::abs(v1 - v0) > 1e-11L * std::max(s0, s1)) fast[k] = true;
+            }
+        }
+        return fast;
+    } catch (const std::exception&) {
+        // the compiled path below
+    }
     try {
         CompiledExpressions f(st, inputs, outputs);
         std::mt19937 rng(20261127);

@@ -482,11 +482,16 @@ GiNaC::exset SymbolTable::calc_leaf_symbols(const ex& e) const {
 
 bool SymbolTable::depends_on(const ex& e, const ex& s) const {
     if (e.has(s)) return true;
+    // a leaf is found in the leaf sets gathered when each intermediate was made; only an
+    // intermediate is looked for inside definitions (walking them for a leaf visited each
+    // shared definition once per path, exponentially many in a long chain)
+    auto is = info_.find(s);
+    const bool s_is_z = is != info_.end() && is->second.kind == SymbolKind::intermediate;
     for (const ex& z : symbols_of(e)) {
         auto it = info_.find(z);
-        if (it != info_.end() && it->second.kind == SymbolKind::intermediate &&
-            (it->second.leaves.count(s) || depends_on(it->second.definition, s)))
-            return true;
+        if (it == info_.end() || it->second.kind != SymbolKind::intermediate) continue;
+        if (!s_is_z && it->second.leaves.count(s)) return true;
+        if (s_is_z && depends_on(it->second.definition, s)) return true;
     }
     return false;
 }

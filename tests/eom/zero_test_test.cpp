@@ -5,6 +5,9 @@
 
 #include <gtest/gtest.h>
 
+#include <string>
+#include <vector>
+
 using namespace alembert;
 using GiNaC::cos;
 using GiNaC::pow;
@@ -59,4 +62,21 @@ TEST(ZeroTest, WhereTheExpressionCannotBeEvaluatedEachSymbolIsTestedByItsDerivat
     const std::vector<bool> c = calc_changes_with_at_random_states(x.st, e, {x.T1, x.T2});
     EXPECT_TRUE(c[0]);
     EXPECT_FALSE(c[1]);
+}
+
+TEST(ZeroTest, ADeepChainOfSharedIntermediatesIsEvaluatedOncePerIntermediate) {
+    // z_k uses z_(k-1) twice: walked as a tree, 2^300 paths; each intermediate's value is
+    // computed once per state, and depends_on finds a leaf in the gathered leaf sets
+    Table x;
+    ex z = x.st.add_intermediate(cos(x.q), "z0");
+    for (int k = 1; k <= 300; ++k)
+        z = x.st.add_intermediate(z * x.L / 2 + z * x.L / 2 + sin(x.q) - sin(x.q), "z" + std::to_string(k));
+    EXPECT_TRUE(x.st.depends_on(z, x.q));
+    EXPECT_FALSE(x.st.depends_on(z, x.T1));
+    // z_300 = L^300 cos q, and 0.7^300 is far below the zero test's tolerance: scale by T1
+    EXPECT_FALSE(is_zero_at_random_states(x.st, z * x.T1 + x.T2));
+    EXPECT_TRUE(is_zero_at_random_states(x.st, z - z));
+    const std::vector<bool> c = calc_changes_with_at_random_states(x.st, z + x.T1, {x.T1, x.q, x.T2});
+    EXPECT_TRUE(c[0]);
+    EXPECT_FALSE(c[2]);
 }

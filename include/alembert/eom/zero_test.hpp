@@ -11,13 +11,14 @@
 namespace alembert {
 
 /// True if e is zero at two pseudo-random states: every symbol it depends on through named
-/// intermediates (constants with a value keep it) drawn from ±[0.3, 1.7] with a fixed seed,
-/// evaluated in extended precision through the intermediates (never expanded), and taken as
-/// zero below 1e-11 times the largest of 1 and the values of the terms of e. This sees the
-/// cancellations a symbolic test misses inside intermediates and trigonometric identities.
-/// When e cannot be evaluated there (a division by zero, a root of a negative number), it falls
-/// back to a symbolic test, simplify(e) == 0, when e with its intermediates is small (at most
-/// 2000 operations); larger ones count as not zero.
+/// intermediates (constants with a value keep it) takes a value in ±[0.3, 1.7] drawn from its
+/// name and the state, e is evaluated in extended precision through the intermediates (never
+/// expanded; each intermediate's values are computed once and remembered for later tests),
+/// and taken as zero below 1e-11 times the largest of 1 and the values of the terms of e. This
+/// sees the cancellations a symbolic test misses inside intermediates and trigonometric
+/// identities. When e cannot be evaluated there (a division by zero, a root of a negative
+/// number), it falls back to a symbolic test, simplify(e) == 0, when e with its intermediates
+/// is small (at most 2000 operations); larger ones count as not zero.
 bool is_zero_at_random_states(const SymbolTable& st, const ex& e);
 
 /// For each of `symbols`, whether `e` changes with it: e at two random states (as above), then
