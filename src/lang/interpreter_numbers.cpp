@@ -555,9 +555,29 @@ void Interpreter::Impl::simulate(const Statement& s) {
 // ---- inverse dynamics --------------------------------------------------------------------
 
 void Interpreter::Impl::inverse(const Statement& s) {
-    if (model_only) return;
     const SymbolTable& table = model(s.location).symbols();
     InverseRequest r;
+    // the clauses for results: body mass and cycles, kept for `alembert inverse` in a model-only run
+    if (s.quantities.count("mass")) {
+        const Quantity& q = s.quantities.at("mass");
+        const double kg = number_of(q, Dimension::mass(), "the body mass", q.value->location);
+        if (!(kg > 0) || !std::isfinite(kg))
+            throw ScriptError(q.value->location, "the body mass must be positive",
+                              "give the subject's mass: per kg mass 70 kg");
+        r.body_mass_kg = kg;
+    }
+    for (const Word& w : s.lists.count("cycles") ? s.lists.at("cycles") : std::vector<Word>{}) {
+        auto it = std::find_if(plates.begin(), plates.end(), [&](const ScriptPlate& p) { return p.name.text == w.text; });
+        if (it == plates.end())
+            throw ScriptError(w.location, "'" + w.text + "' is not a plate",
+                              "name plates declared with plate " + w.text + " on B from \"trial.mot\", those one foot steps on");
+        r.cycle_plates.push_back(it->record);
+        r.cycle_plates.back().name = w.text;  // named as the script names it
+    }
+    if (model_only) {
+        script_inverse = r;
+        return;
+    }
     for (const Word& w : s.lists.at("loads")) {
         ex x = symbol(w, "a load measure");
         if (table.kind(x) != SymbolKind::unknown)
@@ -645,16 +665,16 @@ void Interpreter::Impl::run_inverse(const InverseRequest& r, Location where) {
         }
         opts.units.push_back(text);
     }
-    InverseAnalysisReport rep;
+    // the motion as samples of q, q', q'' (SI)
+    MotionSamples samples;
     std::string span;
     if (ext == ".mot" || ext == ".sto") {
         // an OpenSim motion: inDegrees applies to the rotational coordinates only
         std::string note;
         const Table motion = guard(where, [&] { return storage_motion_table(r.motion_file, q, where, note); });
         if (!note.empty()) transcript.result(note);
-        rep = guard(where, [&] {
-            return run_inverse_dynamics(
-                id, differentiate_motion(motion, r.motion_file, id.layout().coordinate_names, opts.filter), r.dir, opts);
+        samples = guard(where, [&] {
+            return differentiate_motion(motion, r.motion_file, id.layout().coordinate_names, opts.filter);
         });
         span = "the motion table " + std::filesystem::path(r.motion_file).filename().string();
     } else if (ext == ".trc") {
@@ -664,13 +684,12 @@ void Interpreter::Impl::run_inverse(const InverseRequest& r, Location where) {
         const Table& motion = mc.motion;
         if (plate_data) plate_data->set_origin(mc.origin_h, mc.origin_v);  // the plates' centres of pressure from N_o
         transcript.result(note);
-        rep = guard(where, [&] {
-            return run_inverse_dynamics(
-                id, differentiate_motion(motion, r.motion_file, id.layout().coordinate_names, opts.filter), r.dir, opts);
+        samples = guard(where, [&] {
+            return differentiate_motion(motion, r.motion_file, id.layout().coordinate_names, opts.filter);
         });
         span = "the marker trial " + std::filesystem::path(r.motion_file).filename().string();
     } else if (!r.motion_file.empty()) {
-        rep = guard(where, [&] { return run_inverse_dynamics(id, r.motion_file, r.dir, opts); });
+        samples = guard(where, [&] { return read_motion(r.motion_file, id.layout().coordinate_names, opts.filter); });
         span = "the motion table " + std::filesystem::path(r.motion_file).filename().string();
     } else {
         std::vector<ex> formulas;
@@ -688,12 +707,12 @@ void Interpreter::Impl::run_inverse(const InverseRequest& r, Location where) {
         const auto steps = static_cast<std::size_t>(std::floor((o.t_final - o.t_initial) / o.output_step + 1e-9));
         for (std::size_t k = 0; k <= steps; ++k) times.push_back(o.t_initial + static_cast<double>(k) * o.output_step);
         if (times.back() < o.t_final - 1e-12) times.push_back(o.t_final);
-        MotionSamples samples = guard(where, [&] { return PrescribedMotion(table, q, formulas).sample(times); });
-        rep = guard(where, [&] { return run_inverse_dynamics(id, samples, r.dir, opts); });
+        samples = guard(where, [&] { return PrescribedMotion(table, q, formulas).sample(times); });
         span = "the prescribed motion";
-        record_history("inverse dynamics", rep.loads, &samples);
     }
-    if (!r.motion_file.empty()) record_history("inverse dynamics", rep.loads, nullptr);
+    const InverseOutputs results = write_inverse_results(id, samples, r, opts, q, where);
+    const InverseAnalysisReport& rep = results.report;
+    record_history("inverse dynamics", rep.loads, r.motion_file.empty() ? &samples : nullptr);
     const Table& t = rep.loads;
     std::ostringstream out;
     out << "inverse dynamics over " << span << ", t = " << transcript.number(t.columns[0].front()) << " to "
@@ -701,7 +720,12 @@ void Interpreter::Impl::run_inverse(const InverseRequest& r, Location where) {
     std::string note = evaluator_note(r.evaluation, why_not);
     if (!note.empty()) out << ", " << note;
     out << "\nwrote " << file_list(rep.plot, rep.csv);
+    for (const std::string& f : results.files) out << ", " << f;
     if (!rep.plot.drawn) out << " (no plot: " << rep.plot.message << ")";
+    if (!results.power_note.empty()) out << "\nno powers: " << results.power_note;
+    if (!r.cycle_plates.empty()) out << "\n" << write_gait_cycles(r, results.results, where);
+    if (r.body_mass_kg > 0)
+        out << "\nloads and powers per kg of body mass " << transcript.number(r.body_mass_kg) << " kg";
     for (std::size_t c = 1; c < t.names.size(); ++c) {
         const std::vector<double>& col = t.columns[c];
         auto hi = std::max_element(col.begin(), col.end()), lo = std::min_element(col.begin(), col.end());
@@ -815,6 +839,12 @@ void parse_run(StatementParser& p, Statement& s) {
         else if (k == "inverse" && p.accept_word("from")) {
             s.words["from"] = p.text("the motion table's path");
             if (p.accept_word("cutoff")) s.quantities["cutoff"] = p.quantity();
+        } else if (k == "inverse" && p.accept_word("per")) {
+            p.expect_word("kg", "(per kg mass 70 kg: loads and powers per kg of body mass)");
+            p.expect_word("mass", "and the body mass (per kg mass 70 kg)");
+            s.quantities["mass"] = p.quantity();
+        } else if (k == "inverse" && p.accept_word("cycles")) {
+            s.lists["cycles"] = p.name_list("a plate one foot steps on (cycles floor1, floor2)");
         } else if (k == "codegen" && p.accept_word("name")) s.words["name"] = p.name("an identifier for the files");
         else if (k != "codegen" && (p.at_word("compiled") || p.at_word("tape"))) {
             const Word w = p.take_word();
@@ -826,7 +856,7 @@ void parse_run(StatementParser& p, Statement& s) {
         else if (k != "codegen" && p.accept_word("plot")) s.lists["plot"] = p.name_list("a column to plot, or none");
         else if (p.accept_word("to")) s.words["to"] = p.text("the output directory");
         else p.fail_expected(k == "simulate" ? "'compiled', 'tape', 'plot' or 'to'"
-                             : k == "inverse" ? "'for', 'from', 'compiled', 'tape', 'plot' or 'to'"
+                             : k == "inverse" ? "'for', 'from', 'per kg', 'cycles', 'compiled', 'tape', 'plot' or 'to'"
                                               : "'for', 'name' or 'to'");
     }
     if (k == "inverse" && !s.lists.count("loads"))
@@ -924,9 +954,12 @@ std::vector<StatementSpec> number_statements() {
                     "`compile_inverse_dynamics` + `run_inverse_dynamics` over the prescribed motion, sampled every output step to the final time: `torques.csv`, `.png`, `.svg`"},
                    {"`inverse for` *loads* `from` *\"file.csv\"* [`cutoff` *f*] [`compiled` \\| `tape`] [`plot` ...] [`to` *\"dir\"*]",
                     "inverse for T_A, T_B, T_C from \"motion.csv\" cutoff 6 Hz",
-                    "the same over a motion table (columns `t [s]` and one per coordinate, units in the header), filtered at f in cycles per second (default 6 Hz; a bare number is Hz; 0: none) and differentiated"}},
-         .clauses = {"for", "from", "cutoff", "compiled", "tape", "plot", "to"}, .parse = parse_run,
-         .run = [](M& m, const Statement& s) { m.inverse(s); }},
+                    "the same over a motion table (columns `t [s]` and one per coordinate, units in the header), filtered at f in cycles per second (default 6 Hz; a bare number is Hz; 0: none) and differentiated"},
+                   {"`inverse for` *loads* ... [`per kg mass` *M*] [`cycles` *plates*]",
+                    "inverse for T_H, T_K from \"walk.trc\" per kg mass 56.7 kg cycles right",
+                    "besides the loads (and their `.sto`): `kinematics.csv`/`.sto` (q, q', q''), `powers.csv`/`.sto` (each load times the rate it works through, `LoadRates`); `per kg mass`: loads and powers per kg (`calc_per_kg`); `cycles`: gait events from the plates one foot steps on (`calc_gait_events`) and each cycle, strike to strike, resampled onto 0-100 % at 101 points (`calc_cycle_table`): `cycle_1.csv`, ..., `gait_events.csv`"}},
+         .clauses = {"for", "from", "cutoff", "per", "cycles", "compiled", "tape", "plot", "to"},
+         .parse = parse_run, .run = [](M& m, const Statement& s) { m.inverse(s); }},
         {.keyword = "report", .family = family,
          .help = "writes an HTML report: road-map with free-body diagrams, equations, plots, motion",
          .forms = {{"`report` [`at` *q = value, ...*] [`plot` *columns* \\| `plot none`] [`check`] [`matrices`] [`to` *\"dir\"*]",
