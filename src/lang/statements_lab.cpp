@@ -68,7 +68,18 @@ void run_plate(Interpreter::Impl& m, const Statement& s) {
     const Word& on = s.word("on");
     RigidBody& B = m.rigid_body(on);
     const Word& file = s.word("from");
-    const std::string path = m.input_path(file.text);
+    std::string path = m.input_path(file.text);
+    // "{trial}": the trial of `alembert inverse --motion TRIAL`, its path without extension
+    if (const std::size_t at = file.text.find("{trial}"); at != std::string::npos) {
+        if (m.trial.empty())
+            throw ScriptError(file.location, "'{trial}' stands for the trial that alembert inverse SCRIPT --motion TRIAL reads, and there is none",
+                              "run the script so (a batch gives each trial its own force record: trials/walk1.trc reads "
+                              "trials/walk1_grf.mot from \"{trial}_grf.mot\"), or name the plate's file");
+        std::filesystem::path stem(m.trial);
+        stem.replace_extension();
+        path = file.text;
+        path.replace(at, 7, stem.string());
+    }
     const std::string prefix = s.has_word("columns") ? s.word("columns").text : "ground_force";
     double threshold = 20;
     if (s.quantities.count("threshold")) {
