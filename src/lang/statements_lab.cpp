@@ -189,6 +189,11 @@ MarkerCoordinates Interpreter::Impl::coordinates_from_markers(const std::string&
     std::string unused_text;
     for (const std::string& name : unused) unused_text += (unused_text.empty() ? "" : ", ") + name;
     if (!unused.empty()) unused_text = "markers in the file that the model does not use, not read: " + unused_text + "\n";
+    // a moving root (a translation among the coordinates, as a walking subject's hip) cannot be
+    // read from segment angles: the coordinates are then fitted to the markers, as in 3D
+    const std::vector<std::string> kinds = coordinate_quantities(q, where);
+    for (std::size_t i = 0; i < q.size(); ++i)
+        spatial = spatial || kinds[i] == "length" || symbol_dimension(q[i].name()) == Dimension::length();
     if (spatial) {
         note = unused_text;  // stated after the fit's report
         return spatial_coordinates_from_markers(trial, base, q, where, note);
