@@ -336,6 +336,18 @@ struct Interpreter::Impl {
 /// statement to write ("inertia A = Ixx, Iyy, Izz"), option names as their statements.
 std::string in_script_words(const std::string& library_message);
 
+// ---- helpers of simulate and inverse (interpreter_numbers.cpp) ----------------------------
+/// A table as transcripts print it: at most `max_rows` rows spread evenly, the last included.
+std::string format_table(const Table& t, int digits, std::size_t max_rows = 11);
+/// The `plot` clause of simulate and inverse: `plot none`, or columns of the table (its first,
+/// the time, excepted).
+PlotOptions plot_options_of(const Statement& s, const std::vector<std::string>& columns);
+/// The files written, by name: the CSV, then the plot's.
+std::string file_list(const PlotResult& plot, const std::string& csv);
+/// The dimension of a constraint's residual from the dimensions of its symbols (open where a
+/// symbol has none or a power is not an integer).
+Dimension residual_dimension_of(const ex& e, const std::function<Dimension(const std::string&)>& of_symbol);
+
 /// The hint for a unit of the wrong dimension: the units that fit, "write it in m/s^2 ...".
 std::string unit_of_dimension_hint(const Dimension& expected);
 
