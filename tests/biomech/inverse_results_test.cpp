@@ -229,10 +229,28 @@ TEST(InverseResults, CyclesFromAPlateAreResampledFromStrikeToStrike) {
     }
     EXPECT_NE(rod.out.str().find("cycle 0.055 to 0.655 s, foot off at 73.3"), std::string::npos)
         << rod.out.str();
+    EXPECT_NE(rod.out.str().find(
+                  "gait events from floor (vertical force crossing 20 N): foot strikes at t = "
+                  "0.055, 0.655 s; foot offs at t = 0.495 s"),
+              std::string::npos)
+        << rod.out.str();
     // a name that is no plate is refused at its place
     SwingingRod bad;
     EXPECT_EQ(bad.run(kRod, "T_A cycles floor"), RunStatus::script_error);
     EXPECT_NE(bad.err.str().find("'floor' is not a plate"), std::string::npos) << bad.err.str();
+}
+
+TEST(InverseResults, APlateFileOfTheTrialNeedsATrial) {
+    // "{trial}_grf.mot" is each trial's record in `alembert inverse --motion`; run otherwise, it
+    // is refused with how to run it
+    SwingingRod rod;
+    EXPECT_EQ(rod.run(kRod + "plate floor on A from \"{trial}_grf.mot\"\n", "T_A"),
+              RunStatus::script_error);
+    EXPECT_NE(
+        rod.err.str().find(
+            "'{trial}' stands for the trial that alembert inverse SCRIPT --motion TRIAL reads"),
+        std::string::npos)
+        << rod.err.str();
 }
 
 TEST(InverseResults, PerKgRefusesAColumnThatIsNotALoad) {
