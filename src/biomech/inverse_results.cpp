@@ -51,7 +51,6 @@ LoadRates::LoadRates(const System& sys, const std::vector<TimeVariable>& q,
         const auto& s = GiNaC::ex_to<GiNaC::symbol>(T);
         ex rate = 0;
         for (std::size_t r = 0; r < q.size(); ++r) rate += F[r].diff(s) * q[r].d(1);
-        rate = GiNaC::expand(rate);
         ALEMBERT_CHECK_ARG(!rate.has(T),
                            "LoadRates(): the model's loads hold '" + name +
                                "' other than linearly, so it has no one rate it works "
