@@ -213,10 +213,12 @@ struct Interpreter::Impl {
     /// The loads of `samples` (calc_inverse_dynamics), each load's power (LoadRates), per kg
     /// when r.body_mass_kg is set, written to r.dir: the loads' CSV, plot and .sto, the
     /// coordinates with their rates and accelerations (kinematics.csv, .sto), the powers
-    /// (powers.csv, .sto).
+    /// (powers.csv, .sto), and for a marker trial each marker's distance from the model's per
+    /// frame (`marker_residuals`, not null: marker_residuals.csv, .sto).
     InverseOutputs write_inverse_results(const InverseDynamics& id, const MotionSamples& samples,
                                          const InverseRequest& r, const InverseAnalysisOptions& opts,
-                                         const std::vector<TimeVariable>& q, Location where);
+                                         const std::vector<TimeVariable>& q, Location where,
+                                         const Table* marker_residuals = nullptr);
     /// The gait events of r.cycle_plates, and each complete cycle inside the results resampled
     /// onto 0-100 % (calc_cycle_table) as r.dir/cycle_K.csv, the events as gait_events.csv; the
     /// transcript's lines saying so.

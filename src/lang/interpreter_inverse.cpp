@@ -138,6 +138,7 @@ void Interpreter::Impl::run_inverse(const InverseRequest& r, Location where) {
     }
     // the motion as samples of q, q', q'' (SI)
     MotionSamples samples;
+    Table marker_residuals;  // a marker trial's distances from the model's markers per frame
     std::string span;
     if (ext == ".mot" || ext == ".sto") {
         // an OpenSim motion: inDegrees applies to the rotational coordinates only
@@ -156,6 +157,7 @@ void Interpreter::Impl::run_inverse(const InverseRequest& r, Location where) {
         const MarkerCoordinates mc =
             guard(where, [&] { return coordinates_from_markers(r.motion_file, q, where, note); });
         const Table& motion = mc.motion;
+        marker_residuals = mc.residuals;
         if (plate_data)
             plate_data->set_origin(mc.origin_h,
                                    mc.origin_v);  // the plates' centres of pressure from N_o
@@ -194,7 +196,8 @@ void Interpreter::Impl::run_inverse(const InverseRequest& r, Location where) {
         samples = guard(where, [&] { return PrescribedMotion(table, q, formulas).sample(times); });
         span = "the prescribed motion";
     }
-    const InverseOutputs results = write_inverse_results(id, samples, r, opts, q, where);
+    const InverseOutputs results = write_inverse_results(id, samples, r, opts, q, where,
+                                                                 marker_residuals.names.empty() ? nullptr : &marker_residuals);
     const InverseAnalysisReport& rep = results.report;
     record_history("inverse dynamics", rep.loads, r.motion_file.empty() ? &samples : nullptr);
     const Table& t = rep.loads;

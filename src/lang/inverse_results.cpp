@@ -18,7 +18,8 @@ namespace alembert::lang {
 
 InverseOutputs Interpreter::Impl::write_inverse_results(
     const InverseDynamics& id, const MotionSamples& samples, const InverseRequest& r,
-    const InverseAnalysisOptions& opts, const std::vector<TimeVariable>& q, Location where) {
+    const InverseAnalysisOptions& opts, const std::vector<TimeVariable>& q, Location where,
+    const Table* marker_residuals) {
     InverseOutputs out;
     InverseAnalysisReport& rep = out.report;
     rep.loads = guard(where, [&] { return calc_inverse_dynamics(id, samples, opts); });
@@ -71,8 +72,9 @@ InverseOutputs Interpreter::Impl::write_inverse_results(
         out.files.push_back(stem + ".sto");
         for (const auto& [name, table] :
              {std::pair<std::string, const Table*>{"kinematics", &kinematics},
-              std::pair<std::string, const Table*>{"powers", &powers}}) {
-            if (table->names.empty()) continue;
+              std::pair<std::string, const Table*>{"powers", &powers},
+              std::pair<std::string, const Table*>{"marker_residuals", marker_residuals}}) {
+            if (!table || table->names.empty()) continue;
             write_csv(*table, r.dir + "/" + name + ".csv");
             write_storage(*table, r.dir + "/" + name + ".sto", name);
             out.files.push_back(name + ".csv");

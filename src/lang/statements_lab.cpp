@@ -250,6 +250,7 @@ MarkerCoordinates Interpreter::Impl::spatial_coordinates_from_markers(const Mark
     const InverseKinematicsResult r = ik.solve(trial);
     MarkerCoordinates mc;
     mc.motion = r.calc_coordinate_table();
+    mc.residuals = r.calc_residual_table();
     for (std::size_t i = 0; i < r.markers.size(); ++i) {
         double worst = 0;
         for (const InverseKinematicsFrame& f : r.frames)

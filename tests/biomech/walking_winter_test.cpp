@@ -117,7 +117,16 @@ TEST(WalkingWinter, TheScriptGivesTheSwingMomentsOfAnIndependentBottomUpCalculat
     ASSERT_EQ(interp.run(text.str(), example.string()), lang::RunStatus::ok) << e.str();
     const Table loads = read_csv((out / "loads.csv").string()), powers = read_csv((out / "powers.csv").string());
     const Table kin = read_csv((out / "kinematics.csv").string());
+    const Table residuals = read_csv((out / "marker_residuals.csv").string());
     fs::remove_all(out);
+    // each marker's distance from the fitted model per frame: a few mm (skin on bone, markers
+    // whose distances change by up to 1.5 cm against rigid segments)
+    ASSERT_EQ(residuals.names, (std::vector<std::string>{"time", "HIP", "KNEE", "ANKLE", "MT5", "rms", "max"}));
+    ASSERT_EQ(residuals.row_count(), 106u);
+    for (std::size_t k = 0; k < 106; ++k) {
+        EXPECT_LT(residuals.columns[6][k], 0.02);
+        EXPECT_LE(residuals.columns[5][k], residuals.columns[6][k]);
+    }
     const double mass = 55.7, g = 9.81;
     ASSERT_EQ(loads.units[loads.column_index("T_K")], "N m/kg");
 
