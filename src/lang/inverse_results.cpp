@@ -60,6 +60,11 @@ InverseOutputs Interpreter::Impl::write_inverse_results(
             out.results.add_column(t->names[c], t->units[c]);
             out.results.columns.back() = t->columns[c];
         }
+    // cycles an earlier run left in the directory are not this run's (a batch pools them)
+    for (int k = 1; std::filesystem::exists(r.dir + "/cycle_" + std::to_string(k) + ".csv"); ++k) {
+        std::error_code ec;
+        std::filesystem::remove(r.dir + "/cycle_" + std::to_string(k) + ".csv", ec);
+    }
     // the loads as CSV with their plot, then every table as CSV and as OpenSim storage
     PlotOptions plot;
     plot.title = "inverse dynamics of '" + id.model() + "'";

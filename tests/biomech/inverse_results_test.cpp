@@ -234,6 +234,9 @@ TEST(InverseResults, CyclesFromAPlateAreResampledFromStrikeToStrike) {
                   "0.055, 0.655 s; foot offs at t = 0.495 s"),
               std::string::npos)
         << rod.out.str();
+    // run again without cycles: the cycles of the earlier run are not left to be taken for its
+    ASSERT_EQ(rod.run(kRod + plate, "T_A"), RunStatus::ok) << rod.err.str();
+    EXPECT_FALSE(fs::exists(rod.dir / "out" / "cycle_1.csv"));
     // a name that is no plate is refused at its place
     SwingingRod bad;
     EXPECT_EQ(bad.run(kRod, "T_A cycles floor"), RunStatus::script_error);
