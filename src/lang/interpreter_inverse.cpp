@@ -196,8 +196,9 @@ void Interpreter::Impl::run_inverse(const InverseRequest& r, Location where) {
         samples = guard(where, [&] { return PrescribedMotion(table, q, formulas).sample(times); });
         span = "the prescribed motion";
     }
-    const InverseOutputs results = write_inverse_results(id, samples, r, opts, q, where,
-                                                                 marker_residuals.names.empty() ? nullptr : &marker_residuals);
+    const InverseOutputs results =
+        write_inverse_results(id, samples, r, opts, q, where,
+                              marker_residuals.names.empty() ? nullptr : &marker_residuals);
     const InverseAnalysisReport& rep = results.report;
     record_history("inverse dynamics", rep.loads, r.motion_file.empty() ? &samples : nullptr);
     const Table& t = rep.loads;
