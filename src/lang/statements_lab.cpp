@@ -291,7 +291,7 @@ std::vector<StatementSpec> lab_statements() {
          .help = "a force plate's record (force, centre of pressure, free moment) as a known load on a body",
          .forms = {{"`plate` *name* `on` *B* `from` *\"file.mot\"* [`columns` *\"prefix\"*] [`threshold` *F*]",
                     "plate chair on B from \"lab/rise.mot\" columns \"1_ground_force\"",
-                    "`force_plate_from_table` (OpenSim's ground-reaction columns, default `ground_force`) + `System::add_force` at the point of B at the centre of pressure, `System::add_torque` (free moment); known data symbols name_Fx, _Fy, _px, _py, _Tz, given their values by `with_plate_inputs` in `inverse`, zero out of contact (force below the threshold, default 20 N)"}},
+                    "`force_plate_from_table` (OpenSim's ground-reaction columns, default `ground_force`) + `System::add_force` at the point of B at the centre of pressure, `System::add_torque` (free moment); known data symbols name_Fx, _Fy, _px, _py, _Tz, given their values by `with_plate_inputs` in `inverse`, zero out of contact (force below the threshold, default 20 N); a file written `\"{trial}_grf.mot\"` is each trial's own record in `alembert inverse SCRIPT --motion TRIAL` (a batch)"}},
          .clauses = {"on", "from", "columns", "threshold"},
          .parse = parse_plate, .run = run_plate},
     };
