@@ -235,6 +235,23 @@ int run_inverse_batch(const BatchInverseOptions& o, const char* self) {
               << summary << "\n";
     for (const auto& out : outcomes)
         if (!out.ok) std::cout << "failed: " << out.trial << ": " << out.message << "\n";
+    // the trials' gait cycles (inverse ... cycles): mean and SD across them, plotted
+    std::vector<std::string> ok_dirs;
+    for (std::size_t i = 0; i < trials.size(); ++i)
+        if (outcomes[i].ok) ok_dirs.push_back((fs::path(o.out) / fs::path(trials[i]).stem()).string());
+    try {
+        const CycleStatisticsReport cycles = write_cycle_statistics(ok_dirs, o.out);
+        if (cycles.curves) {
+            std::cout << "cycles: " << cycles.curves << " from " << cycles.trials << " trials; mean and SD in";
+            for (const std::string& f : cycles.files) std::cout << " " << f;
+            for (const std::string& f : cycles.plot.files) std::cout << " " << f;
+            if (!cycles.plot.drawn) std::cout << " (no plot: " << cycles.plot.message << ")";
+            std::cout << "\n";
+        }
+    } catch (const Error& e) {
+        std::cout << "cycles: not pooled: " << e.what() << "\n";
+        return 1;
+    }
     return failed ? 1 : 0;
 }
 

@@ -241,6 +241,7 @@ int run_model_command(const ModelCommandOptions& o, bool inverse) {
     Interpreter interp(std::cout, std::cerr, false);
     interp.set_model_only(true);
     interp.set_output_dir(o.out);
+    if (inverse) interp.set_trial(o.motion);  // a plate's "{trial}_grf.mot"
     apply(o.limits, interp);
     RunStatus s = interp.run(text, display_name(o.file));
     if (s != RunStatus::ok) return exit_status(s);

@@ -3,6 +3,7 @@
 #include "alembert/biomech/model_markers.hpp"
 
 #include <Eigen/Dense>
+#include <algorithm>
 #include <cmath>
 #include <map>
 #include <numbers>
@@ -211,13 +212,31 @@ MarkerCoordinates calc_coordinates_from_markers(const SymbolTable& table,
     r.origin_v = sum_v / count;
     r.marker_residual_m.assign(n_markers, 0);
     std::vector<std::size_t> worst_at(n_markers, 0);
+    // the per-frame table: each marker name once (a joint's marker may serve two bodies)
+    std::vector<std::size_t> column(n_markers, 0);
+    r.residuals.add_column("time", "s");
+    for (std::size_t i = 0; i < n_markers; ++i) {
+        const auto& names = r.residuals.names;
+        const auto it = std::find(names.begin() + 1, names.end(), markers[i].name);
+        column[i] = it != names.end() ? static_cast<std::size_t>(it - names.begin())
+                                      : r.residuals.add_column(markers[i].name, "m");
+    }
+    const std::size_t rms = r.residuals.add_column("rms", "m"), max = r.residuals.add_column("max", "m");
     for (std::size_t k = 0; k < n_t; ++k) {
         const std::vector<double>& p = model.at(q_t[k]);
+        std::vector<double> row(r.residuals.names.size(), 0.0);
         for (std::size_t i = 0; i < n_markers; ++i) {
             const double d = std::hypot(measured(i, k, ah) - r.origin_h - p[2 * i],
                                         measured(i, k, av) - r.origin_v - p[2 * i + 1]);
             if (d > r.marker_residual_m[i]) r.marker_residual_m[i] = d, worst_at[i] = k;
+            row[column[i]] = d;
         }
+        double ss = 0, largest = 0;
+        for (std::size_t c = 1; c < rms; ++c) ss += row[c] * row[c], largest = std::max(largest, row[c]);
+        row[0] = trial.table.columns[0][k];
+        row[rms] = std::sqrt(ss / static_cast<double>(rms - 1));
+        row[max] = largest;
+        for (std::size_t c = 0; c < row.size(); ++c) r.residuals.columns[c].push_back(row[c]);
     }
     // the marker farthest from the model, if beyond the tolerance
     const std::size_t i = static_cast<std::size_t>(

@@ -12,6 +12,7 @@
 #include <cstring>
 #include <filesystem>
 
+#include "alembert/biomech/gait_cycles.hpp"
 #include "alembert/cleanup.hpp"
 #include "alembert/error.hpp"
 
@@ -92,6 +93,60 @@ void write_batch_summary(const std::vector<TrialOutcome>& outcomes, const std::s
                     format_csv_number(p.value) + "," + format_csv_number(p.t) + ",\n";
     }
     write_file_atomically(path, text, "write_batch_summary()");
+}
+
+CycleStatisticsReport write_cycle_statistics(const std::vector<std::string>& trial_dirs,
+                                             const std::string& out_dir) {
+    namespace fs = std::filesystem;
+    CycleStatisticsReport report;
+    // every trial's cycles, in the trials' order, then by cycle number
+    std::vector<Table> curves;
+    std::vector<std::string> names;
+    for (const std::string& dir : trial_dirs) {
+        std::size_t k = 1;
+        for (; fs::exists(fs::path(dir) / ("cycle_" + std::to_string(k) + ".csv")); ++k) {
+            const fs::path file = fs::path(dir) / ("cycle_" + std::to_string(k) + ".csv");
+            curves.push_back(read_csv(file.string()));
+            names.push_back(file.string());
+        }
+        report.trials += k > 1 ? 1 : 0;
+    }
+    report.curves = curves.size();
+    if (curves.empty()) return report;
+    // mean and SD, the summary, and the bands of the quantities a gait report plots
+    const Table stats = calc_cycle_statistics(curves, names);
+    const std::string base = (fs::path(out_dir) / "cycles").string();
+    write_csv(stats, base + ".csv");
+    write_cycle_summary(calc_cycle_summary(stats, curves.size()), base + "_summary.csv");
+    report.files = {base + ".csv", base + "_summary.csv"};
+    Table band;
+    band.add_column("cycle", "%");
+    band.columns[0] = stats.columns[0];
+    for (std::size_t c = 1; c + 1 < stats.names.size(); c += 2) {
+        std::string quantity;
+        try {
+            quantity = parse_unit(stats.units[c]).quantity;
+        } catch (const ArgumentError&) {
+            continue;  // a unit the plot does not know: left out of the bands
+        }
+        if (quantity != "angle" && quantity != "length" && quantity != "torque" && quantity != "force" &&
+            quantity != "power" && quantity.find("per mass") == std::string::npos)
+            continue;
+        const std::string q = stats.names[c].substr(0, stats.names[c].size() - 5);  // "_mean"
+        const std::vector<double>&mean = stats.columns[c], &sd = stats.columns[c + 1];
+        std::vector<double> lo(mean.size()), hi(mean.size());
+        for (std::size_t i = 0; i < mean.size(); ++i) lo[i] = mean[i] - sd[i], hi[i] = mean[i] + sd[i];
+        band.columns[band.add_column(q + "_minus_sd", stats.units[c])] = lo;
+        band.columns[band.add_column(q + "_mean", stats.units[c])] = mean;
+        band.columns[band.add_column(q + "_plus_sd", stats.units[c])] = hi;
+    }
+    write_csv(band, base + "_band.csv");
+    report.files.push_back(base + "_band.csv");
+    PlotOptions plot;
+    plot.title = "mean and SD over " + std::to_string(curves.size()) + " cycles of " +
+                 std::to_string(report.trials) + " trials";
+    report.plot = plot_csv(band, base + "_band.csv", base, plot);
+    return report;
 }
 
 }  // namespace alembert

@@ -52,6 +52,7 @@ const System* Interpreter::system() const { return impl_->sys.get(); }
 void Interpreter::set_output_dir(const std::string& dir) { impl_->output_dir = dir.empty() ? "." : dir; }
 
 void Interpreter::set_model_only(bool model_only) { impl_->model_only = model_only; }
+void Interpreter::set_trial(const std::string& motion_path) { impl_->trial = motion_path; }
 void Interpreter::set_evaluation(Evaluation evaluation) { impl_->evaluation = evaluation; }
 void Interpreter::set_compile_limit(std::size_t operations) { impl_->compile_limit = operations; }
 void Interpreter::set_session(bool session) { impl_->session = session; }
@@ -102,6 +103,8 @@ RunStatus Interpreter::run_inverse(const std::string& motion_csv, double cutoff_
         r.unitless_unit = unitless_unit;
         r.evaluation = evaluation;
         r.dir = m.output_dir;
+        r.body_mass_kg = m.script_inverse.body_mass_kg;
+        r.cycle_plates = m.script_inverse.cycle_plates;
         m.run_inverse(r, {1, 1});
     });
 }

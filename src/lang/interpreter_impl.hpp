@@ -95,6 +95,16 @@ struct InverseRequest {
     Evaluation evaluation = Evaluation::automatic;
     std::string dir{};
     std::vector<Word> plotted{};  ///< `plot` names; `plot none` is the single word none
+    double body_mass_kg = 0;      ///< `per kg mass M`: loads and powers per kg of M (0: not asked)
+    std::vector<ForcePlate> cycle_plates{};  ///< `cycles P, ...`: one foot's plates (none: no cycles)
+};
+
+/// What `inverse` wrote: the loads (per kg when asked) and the files, by name.
+struct InverseOutputs {
+    InverseAnalysisReport report{};
+    std::vector<std::string> files{};  ///< beyond report's CSV and plot: .sto, kinematics, powers
+    std::string power_note{};          ///< why powers were not written, if they were not
+    Table results{};                   ///< every result column over time: loads, kinematics, powers
 };
 
 /// A model marker declared by `marker NAME on B at P`: its name in marker files, its body and
@@ -154,6 +164,10 @@ struct Interpreter::Impl {
     std::string script_name = "model";  ///< the script's stem, naming the model in messages and files
     std::vector<std::string> including{};  ///< the files `include` is running, outermost first
     bool model_only = false;          ///< skip simulate, inverse and codegen
+    std::string trial{};              ///< the trial of `alembert inverse --motion`, for "{trial}"
+    /// The clauses of the script's `inverse` statement a model-only run keeps for run_inverse:
+    /// per kg and cycles.
+    InverseRequest script_inverse{};
     Evaluation evaluation = Evaluation::automatic;  ///< simulate's and inverse's without a clause
     std::size_t compile_limit = kCompileByDefaultLimit;  ///< the largest function compiled by default
     bool session = false;             ///< an interactive session: a constant may be given a new value
@@ -195,6 +209,20 @@ struct Interpreter::Impl {
     void codegen(const Statement& s);
     void run_inverse(const InverseRequest& r, Location where);
     void run_codegen(const CodegenRequest& r, Location where);
+    // inverse_results.cpp
+    /// The loads of `samples` (calc_inverse_dynamics), each load's power (LoadRates), per kg
+    /// when r.body_mass_kg is set, written to r.dir: the loads' CSV, plot and .sto, the
+    /// coordinates with their rates and accelerations (kinematics.csv, .sto), the powers
+    /// (powers.csv, .sto), and for a marker trial each marker's distance from the model's per
+    /// frame (`marker_residuals`, not null: marker_residuals.csv, .sto).
+    InverseOutputs write_inverse_results(const InverseDynamics& id, const MotionSamples& samples,
+                                         const InverseRequest& r, const InverseAnalysisOptions& opts,
+                                         const std::vector<TimeVariable>& q, Location where,
+                                         const Table* marker_residuals = nullptr);
+    /// The gait events of r.cycle_plates, and each complete cycle inside the results resampled
+    /// onto 0-100 % (calc_cycle_table) as r.dir/cycle_K.csv, the events as gait_events.csv; the
+    /// transcript's lines saying so.
+    std::string write_gait_cycles(const InverseRequest& r, const Table& results, Location where);
     // inverse_motion.cpp
     /// The extension of a motion file `inverse` reads (".csv", ".mot", ".sto", ".trc").
     /// @throws alembert::ArgumentError naming the file and the formats it reads otherwise.
@@ -309,6 +337,18 @@ struct Interpreter::Impl {
 /// ("Frame::orient_axis(): ") dropped, API advice ("call A.set_inertia(...)") written as the
 /// statement to write ("inertia A = Ixx, Iyy, Izz"), option names as their statements.
 std::string in_script_words(const std::string& library_message);
+
+// ---- helpers of simulate and inverse (interpreter_numbers.cpp) ----------------------------
+/// A table as transcripts print it: at most `max_rows` rows spread evenly, the last included.
+std::string format_table(const Table& t, int digits, std::size_t max_rows = 11);
+/// The `plot` clause of simulate and inverse: `plot none`, or columns of the table (its first,
+/// the time, excepted).
+PlotOptions plot_options_of(const Statement& s, const std::vector<std::string>& columns);
+/// The files written, by name: the CSV, then the plot's.
+std::string file_list(const PlotResult& plot, const std::string& csv);
+/// The dimension of a constraint's residual from the dimensions of its symbols (open where a
+/// symbol has none or a power is not an integer).
+Dimension residual_dimension_of(const ex& e, const std::function<Dimension(const std::string&)>& of_symbol);
 
 /// The hint for a unit of the wrong dimension: the units that fit, "write it in m/s^2 ...".
 std::string unit_of_dimension_hint(const Dimension& expected);

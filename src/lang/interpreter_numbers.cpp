@@ -34,8 +34,9 @@ std::string bound_of(double x) {
     return "1e" + std::to_string(e);
 }
 
-// a table as transcripts print it: at most `max_rows` rows spread evenly, the last included
-std::string format_table(const Table& t, int digits, std::size_t max_rows = 11) {
+}  // namespace
+
+std::string format_table(const Table& t, int digits, std::size_t max_rows) {
     const std::size_t rows = t.row_count(), cols = t.names.size();
     std::vector<std::size_t> picked;
     if (rows <= max_rows) {
@@ -61,8 +62,6 @@ std::string format_table(const Table& t, int digits, std::size_t max_rows = 11) 
     return out.str();
 }
 
-// the `plot` clause of simulate and inverse: `plot none`, or columns of the table (its first,
-// the time, excepted)
 PlotOptions plot_options_of(const Statement& s, const std::vector<std::string>& columns) {
     PlotOptions o;
     if (!s.lists.count("plot")) return o;
@@ -90,8 +89,6 @@ std::string file_list(const PlotResult& plot, const std::string& csv) {
     return out;
 }
 
-// the dimension of a constraint's residual from the dimensions of its symbols (open where a
-// symbol has none or a power is not an integer)
 Dimension residual_dimension_of(const ex& e, const std::function<Dimension(const std::string&)>& of_symbol) {
     if (GiNaC::is_a<GiNaC::numeric>(e)) return Dimension::none();
     if (GiNaC::is_a<GiNaC::symbol>(e)) return of_symbol(GiNaC::ex_to<GiNaC::symbol>(e).get_name());
@@ -113,8 +110,6 @@ Dimension residual_dimension_of(const ex& e, const std::function<Dimension(const
         return pow(residual_dimension_of(e.op(0), of_symbol), GiNaC::ex_to<GiNaC::numeric>(e.op(1)).to_int());
     return Dimension::open();
 }
-
-}  // namespace
 
 // ---- evaluation through compiled code ----------------------------------------------------
 
@@ -552,169 +547,6 @@ void Interpreter::Impl::simulate(const Statement& s) {
     transcript.result(out.str());
 }
 
-// ---- inverse dynamics --------------------------------------------------------------------
-
-void Interpreter::Impl::inverse(const Statement& s) {
-    if (model_only) return;
-    const SymbolTable& table = model(s.location).symbols();
-    InverseRequest r;
-    for (const Word& w : s.lists.at("loads")) {
-        ex x = symbol(w, "a load measure");
-        if (table.kind(x) != SymbolKind::unknown)
-            throw ScriptError(w.location, "'" + w.text + "' is not a load measure",
-                              "list unknowns declared with 'unknown' and used in loads");
-        if (std::find(r.loads.begin(), r.loads.end(), x) != r.loads.end())
-            throw ScriptError(w.location, "'" + w.text + "' is listed twice", "list each load once");
-        r.loads.push_back(x);
-    }
-    if (s.has_word("from")) {
-        r.motion_file = input_path(s.word("from").text);
-        std::error_code ec;
-        if (!std::filesystem::is_regular_file(r.motion_file, ec))
-            throw ScriptError(s.word("from").location, "the motion table '" + s.word("from").text + "' is not a file",
-                              "paths a script reads are relative to the script's directory");
-    }
-    if (s.quantities.count("cutoff")) {
-        const Quantity& q = s.quantities.at("cutoff");
-        // a filter's cutoff counts cycles per second: 6 Hz (= 6 rev/s, 12*pi rad/s in SI) is 6
-        // cycles per second, and a bare number is read in Hz
-        double hz = number_of(q, pow(Dimension::time(), -1), "the cutoff frequency", q.value->location);
-        if (!q.unit.empty() || carries_unit(*q.value)) hz /= 2 * std::numbers::pi;
-        if (!(hz >= 0) || !std::isfinite(hz))
-            throw ScriptError(q.value->location, "the cutoff frequency must be 0 (no filter) or positive", "");
-        r.cutoff_hz = hz;
-    }
-    r.evaluation = evaluation_of(s);
-    r.dir = output_path(s);
-    if (s.lists.count("plot")) r.plotted = s.lists.at("plot");
-    run_inverse(r, s.location);
-}
-
-void Interpreter::Impl::run_inverse(const InverseRequest& r, Location where) {
-    System& sys = model(where);
-    // the motion's format, by its extension, before any work
-    const std::string ext = r.motion_file.empty() ? "" : guard(where, [&] { return motion_format(r.motion_file); });
-    const SymbolTable& table = sys.symbols();
-    std::vector<TimeVariable> q = default_coordinates();
-    std::string why_not;
-    FunctionMaker make = function_maker(r.evaluation, &why_not);
-    // force plates: their records give the plate symbols' values at each time
-    std::shared_ptr<PlateInputs> plate_data = plate_inputs();
-    if (plate_data) make = with_plate_inputs(make, plate_data);
-    // the hint is for a count of load measures that does not match the equations
-    InverseDynamics id = guard(where, [&] {
-        try {
-            return compile_inverse_dynamics(sys, q, r.loads, script_name, make);
-        } catch (const ArgumentError& e) {
-            if (std::string(e.what()).find(" equations for ") == std::string::npos) throw;
-            throw ScriptError(where, in_script_words(e.what()),
-                              "list as many load measures as the model has coordinates, one acting at each joint");
-        }
-    });
-    InverseAnalysisOptions opts;
-    {
-        Statement plot;  // the `plot` clause against the load measures' columns
-        if (!r.plotted.empty()) plot.lists["plot"] = r.plotted;
-        std::vector<std::string> columns{"t"};
-        for (const ex& x : r.loads) columns.push_back(table.name(x));
-        PlotOptions p = plot_options_of(plot, columns);
-        opts.plotted = p.y;
-        opts.plot = !p.skip;
-    }
-    opts.filter.cutoff_hz = r.cutoff_hz;
-    opts.filter.unitless_unit = r.unitless_unit;
-    // the units the coordinates are declared in, against which a motion table's columns are read,
-    // or for those declared without one the quantity of their kinematics (rotation: an angle)
-    for (const TimeVariable& v : q) {
-        std::optional<Unit> u = display_unit(v.name());
-        opts.filter.declared_units.push_back(u ? u->text : "");
-    }
-    opts.filter.kinematic_quantities = guard(where, [&] { return coordinate_quantities(q, where); });
-    for (const Constraint& c : sys.constraints()) {
-        Dimension d = residual_dimension_of(table.expand_intermediates(c.residual),
-                                            [&](const std::string& n) { return symbol_dimension(n); });
-        if (d.known && !d.is_none()) opts.constraint_units[c.name] = si_unit(d);
-    }
-    for (const ex& x : r.loads) {
-        std::optional<Unit> u = display_unit(table.name(x));
-        std::string text = u ? u->text : "";
-        try {
-            alembert::parse_unit(text);
-        } catch (const ArgumentError&) {
-            text = "";  // a unit the CSV reader does not know: the column is in SI, unnamed
-        }
-        opts.units.push_back(text);
-    }
-    InverseAnalysisReport rep;
-    std::string span;
-    if (ext == ".mot" || ext == ".sto") {
-        // an OpenSim motion: inDegrees applies to the rotational coordinates only
-        std::string note;
-        const Table motion = guard(where, [&] { return storage_motion_table(r.motion_file, q, where, note); });
-        if (!note.empty()) transcript.result(note);
-        rep = guard(where, [&] {
-            return run_inverse_dynamics(
-                id, differentiate_motion(motion, r.motion_file, id.layout().coordinate_names, opts.filter), r.dir, opts);
-        });
-        span = "the motion table " + std::filesystem::path(r.motion_file).filename().string();
-    } else if (ext == ".trc") {
-        // a marker trial: the coordinates from the script's markers, then as a motion table
-        std::string note;
-        const MarkerCoordinates mc = guard(where, [&] { return coordinates_from_markers(r.motion_file, q, where, note); });
-        const Table& motion = mc.motion;
-        if (plate_data) plate_data->set_origin(mc.origin_h, mc.origin_v);  // the plates' centres of pressure from N_o
-        transcript.result(note);
-        rep = guard(where, [&] {
-            return run_inverse_dynamics(
-                id, differentiate_motion(motion, r.motion_file, id.layout().coordinate_names, opts.filter), r.dir, opts);
-        });
-        span = "the marker trial " + std::filesystem::path(r.motion_file).filename().string();
-    } else if (!r.motion_file.empty()) {
-        rep = guard(where, [&] { return run_inverse_dynamics(id, r.motion_file, r.dir, opts); });
-        span = "the motion table " + std::filesystem::path(r.motion_file).filename().string();
-    } else {
-        std::vector<ex> formulas;
-        for (const TimeVariable& v : q) {
-            auto it = numbers.motion.find(v.name());
-            if (it == numbers.motion.end())
-                throw ScriptError(where, "no motion is prescribed for " + v.name(),
-                                  "prescribe every coordinate (motion " + v.name() +
-                                      " = ...), or read a table: inverse for ... from \"motion.csv\"");
-            formulas.push_back(it->second);
-        }
-        const SimulationOptions& o = numbers.options;
-        guard(where, [&] { return calc_output_row_count(o, "inverse dynamics of '" + script_name + "': "); });
-        std::vector<double> times;
-        const auto steps = static_cast<std::size_t>(std::floor((o.t_final - o.t_initial) / o.output_step + 1e-9));
-        for (std::size_t k = 0; k <= steps; ++k) times.push_back(o.t_initial + static_cast<double>(k) * o.output_step);
-        if (times.back() < o.t_final - 1e-12) times.push_back(o.t_final);
-        MotionSamples samples = guard(where, [&] { return PrescribedMotion(table, q, formulas).sample(times); });
-        rep = guard(where, [&] { return run_inverse_dynamics(id, samples, r.dir, opts); });
-        span = "the prescribed motion";
-        record_history("inverse dynamics", rep.loads, &samples);
-    }
-    if (!r.motion_file.empty()) record_history("inverse dynamics", rep.loads, nullptr);
-    const Table& t = rep.loads;
-    std::ostringstream out;
-    out << "inverse dynamics over " << span << ", t = " << transcript.number(t.columns[0].front()) << " to "
-        << transcript.number(t.columns[0].back()) << " s: " << t.row_count() << " samples";
-    std::string note = evaluator_note(r.evaluation, why_not);
-    if (!note.empty()) out << ", " << note;
-    out << "\nwrote " << file_list(rep.plot, rep.csv);
-    if (!rep.plot.drawn) out << " (no plot: " << rep.plot.message << ")";
-    for (std::size_t c = 1; c < t.names.size(); ++c) {
-        const std::vector<double>& col = t.columns[c];
-        auto hi = std::max_element(col.begin(), col.end()), lo = std::min_element(col.begin(), col.end());
-        const std::string unit = t.units[c].empty() ? "" : " " + t.units[c];
-        out << "\n" << t.names[c] << ": largest " << transcript.number(*hi) << unit << " at t = "
-            << transcript.number(t.columns[0][static_cast<std::size_t>(hi - col.begin())]) << " s, smallest "
-            << transcript.number(*lo) << unit << " at t = "
-            << transcript.number(t.columns[0][static_cast<std::size_t>(lo - col.begin())]) << " s";
-    }
-    out << "\n" << format_table(t, transcript.digits());
-    transcript.result(out.str());
-}
-
 // ---- code generation ---------------------------------------------------------------------
 
 namespace {
@@ -815,6 +647,12 @@ void parse_run(StatementParser& p, Statement& s) {
         else if (k == "inverse" && p.accept_word("from")) {
             s.words["from"] = p.text("the motion table's path");
             if (p.accept_word("cutoff")) s.quantities["cutoff"] = p.quantity();
+        } else if (k == "inverse" && p.accept_word("per")) {
+            p.expect_word("kg", "(per kg mass 70 kg: loads and powers per kg of body mass)");
+            p.expect_word("mass", "and the body mass (per kg mass 70 kg)");
+            s.quantities["mass"] = p.quantity();
+        } else if (k == "inverse" && p.accept_word("cycles")) {
+            s.lists["cycles"] = p.name_list("a plate one foot steps on (cycles floor1, floor2)");
         } else if (k == "codegen" && p.accept_word("name")) s.words["name"] = p.name("an identifier for the files");
         else if (k != "codegen" && (p.at_word("compiled") || p.at_word("tape"))) {
             const Word w = p.take_word();
@@ -826,7 +664,7 @@ void parse_run(StatementParser& p, Statement& s) {
         else if (k != "codegen" && p.accept_word("plot")) s.lists["plot"] = p.name_list("a column to plot, or none");
         else if (p.accept_word("to")) s.words["to"] = p.text("the output directory");
         else p.fail_expected(k == "simulate" ? "'compiled', 'tape', 'plot' or 'to'"
-                             : k == "inverse" ? "'for', 'from', 'compiled', 'tape', 'plot' or 'to'"
+                             : k == "inverse" ? "'for', 'from', 'per kg', 'cycles', 'compiled', 'tape', 'plot' or 'to'"
                                               : "'for', 'name' or 'to'");
     }
     if (k == "inverse" && !s.lists.count("loads"))
@@ -924,9 +762,12 @@ std::vector<StatementSpec> number_statements() {
                     "`compile_inverse_dynamics` + `run_inverse_dynamics` over the prescribed motion, sampled every output step to the final time: `torques.csv`, `.png`, `.svg`"},
                    {"`inverse for` *loads* `from` *\"file.csv\"* [`cutoff` *f*] [`compiled` \\| `tape`] [`plot` ...] [`to` *\"dir\"*]",
                     "inverse for T_A, T_B, T_C from \"motion.csv\" cutoff 6 Hz",
-                    "the same over a motion table (columns `t [s]` and one per coordinate, units in the header), filtered at f in cycles per second (default 6 Hz; a bare number is Hz; 0: none) and differentiated"}},
-         .clauses = {"for", "from", "cutoff", "compiled", "tape", "plot", "to"}, .parse = parse_run,
-         .run = [](M& m, const Statement& s) { m.inverse(s); }},
+                    "the same over a motion table (columns `t [s]` and one per coordinate, units in the header), filtered at f in cycles per second (default 6 Hz; a bare number is Hz; 0: none) and differentiated"},
+                   {"`inverse for` *loads* ... [`per kg mass` *M*] [`cycles` *plates*]",
+                    "inverse for T_H, T_K from \"walk.trc\" per kg mass 56.7 kg cycles right",
+                    "besides the loads (and their `.sto`): `kinematics.csv`/`.sto` (q, q', q''), `powers.csv`/`.sto` (each load times the rate it works through, `LoadRates`); `per kg mass`: loads and powers per kg (`calc_per_kg`); `cycles`: gait events from the plates one foot steps on (`calc_gait_events`) and each cycle, strike to strike, resampled onto 0-100 % at 101 points (`calc_cycle_table`): `cycle_1.csv`, ..., `gait_events.csv`"}},
+         .clauses = {"for", "from", "cutoff", "per", "cycles", "compiled", "tape", "plot", "to"},
+         .parse = parse_run, .run = [](M& m, const Statement& s) { m.inverse(s); }},
         {.keyword = "report", .family = family,
          .help = "writes an HTML report: road-map with free-body diagrams, equations, plots, motion",
          .forms = {{"`report` [`at` *q = value, ...*] [`plot` *columns* \\| `plot none`] [`check`] [`matrices`] [`to` *\"dir\"*]",

@@ -68,7 +68,18 @@ void run_plate(Interpreter::Impl& m, const Statement& s) {
     const Word& on = s.word("on");
     RigidBody& B = m.rigid_body(on);
     const Word& file = s.word("from");
-    const std::string path = m.input_path(file.text);
+    std::string path = m.input_path(file.text);
+    // "{trial}": the trial of `alembert inverse --motion TRIAL`, its path without extension
+    if (const std::size_t at = file.text.find("{trial}"); at != std::string::npos) {
+        if (m.trial.empty())
+            throw ScriptError(file.location, "'{trial}' stands for the trial that alembert inverse SCRIPT --motion TRIAL reads, and there is none",
+                              "run the script so (a batch gives each trial its own force record: trials/walk1.trc reads "
+                              "trials/walk1_grf.mot from \"{trial}_grf.mot\"), or name the plate's file");
+        std::filesystem::path stem(m.trial);
+        stem.replace_extension();
+        path = file.text;
+        path.replace(at, 7, stem.string());
+    }
     const std::string prefix = s.has_word("columns") ? s.word("columns").text : "ground_force";
     double threshold = 20;
     if (s.quantities.count("threshold")) {
@@ -178,6 +189,11 @@ MarkerCoordinates Interpreter::Impl::coordinates_from_markers(const std::string&
     std::string unused_text;
     for (const std::string& name : unused) unused_text += (unused_text.empty() ? "" : ", ") + name;
     if (!unused.empty()) unused_text = "markers in the file that the model does not use, not read: " + unused_text + "\n";
+    // a moving root (a translation among the coordinates, as a walking subject's hip) cannot be
+    // read from segment angles: the coordinates are then fitted to the markers, as in 3D
+    const std::vector<std::string> kinds = coordinate_quantities(q, where);
+    for (std::size_t i = 0; i < q.size(); ++i)
+        spatial = spatial || kinds[i] == "length" || symbol_dimension(q[i].name()) == Dimension::length();
     if (spatial) {
         note = unused_text;  // stated after the fit's report
         return spatial_coordinates_from_markers(trial, base, q, where, note);
@@ -234,6 +250,7 @@ MarkerCoordinates Interpreter::Impl::spatial_coordinates_from_markers(const Mark
     const InverseKinematicsResult r = ik.solve(trial);
     MarkerCoordinates mc;
     mc.motion = r.calc_coordinate_table();
+    mc.residuals = r.calc_residual_table();
     for (std::size_t i = 0; i < r.markers.size(); ++i) {
         double worst = 0;
         for (const InverseKinematicsFrame& f : r.frames)
@@ -274,7 +291,7 @@ std::vector<StatementSpec> lab_statements() {
          .help = "a force plate's record (force, centre of pressure, free moment) as a known load on a body",
          .forms = {{"`plate` *name* `on` *B* `from` *\"file.mot\"* [`columns` *\"prefix\"*] [`threshold` *F*]",
                     "plate chair on B from \"lab/rise.mot\" columns \"1_ground_force\"",
-                    "`force_plate_from_table` (OpenSim's ground-reaction columns, default `ground_force`) + `System::add_force` at the point of B at the centre of pressure, `System::add_torque` (free moment); known data symbols name_Fx, _Fy, _px, _py, _Tz, given their values by `with_plate_inputs` in `inverse`, zero out of contact (force below the threshold, default 20 N)"}},
+                    "`force_plate_from_table` (OpenSim's ground-reaction columns, default `ground_force`) + `System::add_force` at the point of B at the centre of pressure, `System::add_torque` (free moment); known data symbols name_Fx, _Fy, _px, _py, _Tz, given their values by `with_plate_inputs` in `inverse`, zero out of contact (force below the threshold, default 20 N); a file written `\"{trial}_grf.mot\"` is each trial's own record in `alembert inverse SCRIPT --motion TRIAL` (a batch)"}},
          .clauses = {"on", "from", "columns", "threshold"},
          .parse = parse_plate, .run = run_plate},
     };

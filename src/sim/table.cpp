@@ -67,6 +67,7 @@ const std::vector<KnownUnit>& unit_table() {
         {"m/s^2", 1, "acceleration"},
         {"N m/kg", 1, "torque per mass"},
         {"N/kg", 1, "force per mass"},
+        {"W/kg", 1, "power per mass"},
         {"kg m^2", 1, "moment of inertia"}};
     return units;
 }

@@ -47,6 +47,10 @@ struct MarkerCoordinates {
     std::vector<double> marker_residual_m{};
     /// Where the model's origin N_o is in the lab (horizontal, vertical), m.
     double origin_h = 0, origin_v = 0;
+    /// Per frame, each marker's distance from the model's (a marker declared on two bodies at
+    /// one point once), their RMS and the largest: "time [s]", one column per marker, "rms",
+    /// "max", in m (as InverseKinematicsResult::calc_residual_table).
+    Table residuals{};
 };
 
 /// The coordinates q(t) of a planar model from marker trajectories: each body B with two or

@@ -5,6 +5,7 @@
 #include <string>
 #include <vector>
 
+#include "alembert/sim/plot.hpp"
 #include "alembert/sim/table.hpp"
 
 namespace alembert {
@@ -53,5 +54,26 @@ struct TrialOutcome {
 /// cells with commas or quotes are quoted). Written to a temporary and renamed.
 /// @throws alembert::ArgumentError if the path cannot be written.
 void write_batch_summary(const std::vector<TrialOutcome>& outcomes, const std::string& path);
+
+/// What write_cycle_statistics wrote.
+struct CycleStatisticsReport {
+    std::size_t curves = 0;            ///< normalised cycles read
+    std::size_t trials = 0;            ///< trials they came from
+    std::vector<std::string> files{};  ///< the files written (paths)
+    PlotResult plot{};                 ///< the plot of the bands, or why not
+};
+
+/// The normalised cycles of a batch's trials, as `inverse ... cycles` writes them (each trial
+/// directory's cycle_1.csv, cycle_2.csv, ...), pooled: their mean and sample SD at each
+/// percentage (calc_cycle_statistics) in `out_dir`/cycles.csv, the summary per quantity
+/// (calc_cycle_summary) in cycles_summary.csv, and the bands mean - SD, mean, mean + SD of the
+/// loads, angles and powers (not rates and accelerations) in cycles_band.csv, plotted into
+/// cycles.png and cycles.svg (one panel per unit; a missing gnuplot costs only the plot).
+/// Directories without cycles (a failed trial, or one with no complete cycle) are passed over.
+/// Returns with `curves` 0 and writes nothing when no trial has cycles.
+/// @throws alembert::ArgumentError if the trials' cycles differ in columns (naming two), or a
+///         file cannot be read or written.
+CycleStatisticsReport write_cycle_statistics(const std::vector<std::string>& trial_dirs,
+                                             const std::string& out_dir);
 
 }  // namespace alembert

@@ -125,13 +125,19 @@ public:
     /// With `model_only`, run() builds the model and skips `simulate`, `inverse` and `codegen`
     /// (the `alembert inverse` and `alembert codegen` commands run the script this way).
     void set_model_only(bool model_only);
+    /// The trial `alembert inverse SCRIPT --motion TRIAL` reads: a plate's file written
+    /// "{trial}_grf.mot" is TRIAL's path without its extension, then "_grf.mot", so each trial of
+    /// a batch reads its own force record. Set before run().
+    void set_trial(const std::string& motion_path);
     /// With `session` (the interactive session), declaring a constant again gives it a new
     /// value: symbolic results keep the symbol and stand, numbers computed from now on use the
     /// new value, and the session says so. In a script a second declaration is an error.
     void set_session(bool session);
     /// Inverse dynamics of the model over the motion table `motion_csv` (relative to the
     /// current directory) for every load measure the script declares, written to the output
-    /// directory as torques.csv and its plot: `alembert inverse`. `cutoff_hz` 0 turns the
+    /// directory as torques.csv and its plot: `alembert inverse`; the script's own `inverse`
+    /// statement (skipped in model-only runs) gives its `per kg mass` and `cycles` clauses.
+    /// `cutoff_hz` 0 turns the
     /// filter off; `evaluation` is how the equations are evaluated; `unitless_unit` (deg,
     /// rad, m, mm; empty: none) is how to read coordinate columns without a unit in the header
     /// (MotionFilterOptions::unitless_unit). Errors go to `err`.

@@ -18,7 +18,7 @@ struct Unit {
 
 /// The unit of this name. Known: "" and "1" (no unit), s, ms, min, rad, deg, rev, m, cm, mm,
 /// km, kg, g, N, kN, N m (also N*m, N.m, Nm, N·m), J, kJ, W, Hz, rad/s, deg/s, rpm, rad/s^2,
-/// deg/s^2, m/s, km/h, m/s^2, N m/kg, N/kg, kg m^2.
+/// deg/s^2, m/s, km/h, m/s^2, N m/kg, N/kg, W/kg, kg m^2.
 /// @throws alembert::ArgumentError naming the unit and listing the known ones.
 Unit parse_unit(const std::string& name);
 
