@@ -20,6 +20,16 @@ void parse_mass(StatementParser& p, Statement& s) {
 void run_mass(Interpreter::Impl& m, const Statement& s) {
     Body& B = m.body(s.word("target"));
     ex mass = m.scalar(*s.exprs.at("value"), Dimension::mass(), "the mass of " + s.word("target").text);
+    // a second `mass A = ...` used to replace the first in silence
+    if (B.has_mass())
+        throw ScriptError(s.word("target").location,
+                          "'" + s.word("target").text + "' already has a mass (" +
+                              to_string(B.mass()) + ")",
+                          "a body has one mass: remove one of the two `mass " +
+                              s.word("target").text +
+                              " = ...` statements (to vary it, give it a constant: constant m" +
+                              s.word("target").text + " = 2 kg, then mass " +
+                              s.word("target").text + " = m" + s.word("target").text + ")");
     m.guard(s.word("target").location, [&] {
         check_mass(m.model(s.location).symbols(), mass, s.word("target").text);
         B.set_mass(mass);
