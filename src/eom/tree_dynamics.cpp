@@ -552,11 +552,70 @@ TreeEquations form_on_tree(const System& sys, const Speeds& sp, Tree& tree) {
         }
     }
 
+    // ---- bias forces: the rows' recursion at u' = 0, no loads -----------------------------------
+    std::vector<ex> bias_forces(sp.u.size(), 0);
+    {
+        std::vector<Spatial> A(nb);  // (alpha, a^O) at u' = 0, -g of the base folded in
+        for (std::size_t k = 0; k < nb; ++k) {
+            const Node& n = nodes[k];
+            Spatial AP = n.parent >= 0 ? A[static_cast<std::size_t>(n.parent)] : base;
+            A[k] = name(X[k] * AP + c[k]);
+        }
+        std::vector<Spatial> f(nb);
+        for (std::size_t k = nb; k-- > 0;) {
+            Spatial fk = I[k] * A[k] + b[k];
+            for (int ch : nodes[k].children)
+                fk = fk + transpose(X[static_cast<std::size_t>(ch)]) * f[static_cast<std::size_t>(ch)];
+            f[k] = name(fk);
+        }
+        for (std::size_t k = 0; k < nb; ++k)
+            for (std::size_t i = 0; i < nodes[k].joint.coordinates.size(); ++i)
+                bias_forces[nodes[k].joint.coordinates[i]] = dot(S[k][i], f[k]);
+    }
+
+    // ---- mass matrix: the composite-rigid-body recursion ---------------------------------------
+    const std::size_t nu = sp.u.size();
+    std::vector<ex> mass_matrix(nu * nu, 0);
+    {
+        // composite inertias of the subtrees about their origins, from the tip inward
+        std::vector<Spatial6> Ic = I;
+        for (std::size_t k = nb; k-- > 0;) {
+            Ic[k] = name.symmetric(Ic[k]);
+            if (nodes[k].parent >= 0) {
+                const auto p = static_cast<std::size_t>(nodes[k].parent);
+                Ic[p] = Ic[p] + transpose(X[k]) * Ic[k] * X[k];
+            }
+        }
+        // per partial motion: its subtree's inertia force, carried towards the root
+        for (std::size_t k = 0; k < nb; ++k) {
+            const std::vector<std::size_t>& cols = nodes[k].joint.coordinates;
+            for (std::size_t i = 0; i < cols.size(); ++i) {
+                Spatial F = name(Ic[k] * S[k][i]);
+                for (std::size_t l = i; l < cols.size(); ++l) {
+                    ex m = name(dot(S[k][l], F));
+                    mass_matrix[cols[l] * nu + cols[i]] = mass_matrix[cols[i] * nu + cols[l]] = m;
+                }
+                for (std::size_t j = k; nodes[j].parent >= 0;) {
+                    const auto p = static_cast<std::size_t>(nodes[j].parent);
+                    F = name(transpose(X[j]) * F);
+                    j = p;
+                    const std::vector<std::size_t>& rows = nodes[j].joint.coordinates;
+                    for (std::size_t l = 0; l < rows.size(); ++l) {
+                        ex m = name(dot(S[j][l], F));
+                        mass_matrix[rows[l] * nu + cols[i]] = mass_matrix[cols[i] * nu + rows[l]] = m;
+                    }
+                }
+            }
+        }
+    }
+
     TreeEquations out;
     for (const Node& n : nodes) out.joints.push_back(n.joint);
     out.speeds = sp.u;
     out.residuals = std::move(residuals);
     out.accelerations = std::move(accelerations);
+    out.mass_matrix = std::move(mass_matrix);
+    out.bias_forces = std::move(bias_forces);
     return out;
 }
 

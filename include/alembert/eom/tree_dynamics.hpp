@@ -52,6 +52,18 @@ struct TreeEquations {
     /// (articulated inertias and bias forces inward, accelerations outward), every step a named
     /// intermediate; it needs no mass matrix and no linear solve.
     std::vector<ex> accelerations{};
+    /// The mass matrix M(q) alone, row by row (speeds x speeds, symmetric): Featherstone's
+    /// composite-rigid-body recursion (2008, sec. 6.2) done symbolically. Composite inertias
+    /// I^c_B = I_B + sum over children C of X_C^T I^c_C X_C are accumulated from the tip
+    /// inward; for each partial motion S_r of joint B, F = I^c_B S_r is carried towards the
+    /// root, M_sr = S_s . F for every joint on the way (zero for joints on other branches).
+    /// Every step is a named intermediate; M does not depend on q', the loads or gravity.
+    std::vector<ex> mass_matrix{};
+    /// The bias forces alone, one per speed: h(q, u) = C(q, u) u + g(q), the generalized
+    /// inertia forces at u' = 0 (the rows' recursion with no accelerations of the speeds,
+    /// gravity through the base acceleration -g), so that residuals = F - (M u' + h) with F
+    /// the generalized active forces of the loads.
+    std::vector<ex> bias_forces{};
 };
 
 /// Why the recursive formation does not apply to `sys` in the coordinates `q`, or "" when it
