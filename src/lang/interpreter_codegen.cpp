@@ -178,6 +178,8 @@ void Interpreter::Impl::run_codegen(const CodegenRequest& r, Location where) {
             tree = true;
             DynamicsEquations eqs{
                 q, t->residuals, loads, std::nullopt, t->accelerations, inverse_residuals};
+            eqs.mass_matrix = t->mass_matrix;
+            eqs.bias_forces = t->bias_forces;
             return generate_code(table, eqs, language, r.dir, opts);
         }
         KaneEquations k = form_kane_equations(sys, KaneOptions{.coordinates = q});

@@ -94,6 +94,14 @@ struct DynamicsEquations {
     /// and inverse dynamics are not used).
     std::vector<CodegenConstraint> constraints{};
     std::vector<ex> constraint_forces{};
+    /// The mass matrix alone, M(q, t), row by row (coordinates x coordinates), as functions
+    /// of t, q and the constants (`TreeEquations::mass_matrix`, the composite-rigid-body
+    /// recursion); when given, a `mass_matrix` function is generated (no forcing, no q').
+    std::vector<ex> mass_matrix{};
+    /// The bias forces alone, h(q, q', t) = C(q, q') q' + g(q), one per coordinate
+    /// (`TreeEquations::bias_forces`), so that M q'' + h are the generalized inertia forces
+    /// with gravity; when given, a `bias_forces` function is generated (no loads, no q'').
+    std::vector<ex> bias_forces{};
 };
 
 /// A quantity the generated code computes on request (an output column of a simulation):
@@ -154,6 +162,8 @@ struct GeneratedCode {
     /// and the operations done once per parameter set (all preludes together).
     std::size_t mass_forcing_operations = 0;
     std::size_t accelerations_operations = 0;  ///< explicit q'' (0 when not given)
+    std::size_t mass_matrix_operations = 0;    ///< M alone (0 when not given)
+    std::size_t bias_forces_operations = 0;    ///< h alone (0 when not given)
     std::size_t inverse_dynamics_operations = 0;
     std::size_t outputs_operations = 0;
     std::size_t prelude_operations = 0;
