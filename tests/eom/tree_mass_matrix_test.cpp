@@ -42,7 +42,8 @@ void expect_mass_matrix_and_bias_match_rows(SampleModel& m, const TreeEquations&
         std::vector<double> x(inputs.size(), 0.0);
         for (std::size_t i = 0; i < nq + n; ++i) x[i] = d(rng);
         const std::vector<double> M = mass.evaluate(std::vector<double>(x.begin(), x.begin() + nq));
-        const std::vector<double> h = bias.evaluate(std::vector<double>(x.begin(), x.begin() + nq + n));
+        const std::vector<double> h =
+            bias.evaluate(std::vector<double>(x.begin(), x.begin() + nq + n));
         const std::vector<double> E0 = rows.evaluate(x);
         double scale = 1;
         for (double v : M) scale = std::max(scale, std::abs(v));
