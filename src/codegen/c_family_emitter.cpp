@@ -333,6 +333,10 @@ std::string declarations(const CodePlan& plan, const Dialect& d) {
         os << ind << "/* The bias forces C(q, qp) qp + g(q) alone (with no loads, f = -bias). */\n"
            << ind << "void " << d.function("bias_forces") << "(" << ctx
            << arguments(plan.bias_forces) << ")" << cnst << ";\n";
+    for (const CodeFunction& f : plan.jacobian_functions)
+        os << ind << "/* The " << f.summary << ". */\n"
+           << ind << "void " << d.function(f.name) << "(" << ctx << arguments(f) << ")" << cnst
+           << ";\n";
     if (!plan.inverse_dynamics.empty())
         os << ind << "/* Inverse dynamics: the loads u that give the accelerations qpp. */\n"
            << ind << "void " << d.function("inverse_dynamics") << "(" << ctx

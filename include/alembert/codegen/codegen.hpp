@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "alembert/eom/equations.hpp"
+#include "alembert/eom/jacobians.hpp"
 #include "alembert/eom/kane.hpp"
 #include "alembert/mech/constraint.hpp"
 #include "alembert/sym/symbol_table.hpp"
@@ -112,6 +113,14 @@ struct CodegenOutput {
     std::string unit{};  ///< printed in comments and CSV headers, e.g. "J"
 };
 
+/// A point's or a frame's Jacobian to generate (form_point_jacobian, form_frame_jacobian):
+/// functions NAME_<name>_position (t, q), NAME_<name>_jacobian (t, q; rows x nq, row by row)
+/// and NAME_<name>_jacobian_dot_rates (t, q, qp; J' q', one per row).
+struct CodegenJacobian {
+    std::string name;  ///< an identifier, e.g. "flange"
+    KinematicJacobian jacobian;
+};
+
 /// What the generated simulation program does (Language::c and cpp write a main program with
 /// an adaptive Dormand-Prince RK45 integrator; Python and MATLAB a `simulate` function on
 /// solve_ivp / ode45). Its CSV has a header row naming each column with its unit.
@@ -149,6 +158,8 @@ struct CodegenOptions {
     bool expand_angle_sums = true;
     /// Extra outputs computed by an `outputs` function (and written by the simulation).
     std::vector<CodegenOutput> outputs{};
+    /// Point and frame Jacobians, three functions each (CodegenJacobian); C, C++ and Python.
+    std::vector<CodegenJacobian> jacobians{};
     /// Also write a complete simulation program (see SimulationSpec).
     bool simulation = false;
     SimulationSpec simulation_spec{};
