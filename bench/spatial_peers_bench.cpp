@@ -9,6 +9,7 @@
 
 #include <alembert/codegen/code_plan.hpp>
 #include <alembert/codegen/codegen.hpp>
+#include <alembert/eom/jacobians.hpp>
 #include <alembert/eom/tree_dynamics.hpp>
 #include <alembert/mech/sample_models.hpp>
 
@@ -66,6 +67,7 @@ struct Generated {
                                  const double*, double*, double*);
     using MassMatrix = void (*)(const void*, double, const double*, double*);
     using Bias = void (*)(const void*, double, const double*, const double*, double*);
+    using Jacobian = void (*)(const void*, double, const double*, double*);
     Generated() : model(make_kuka_iiwa14()) {
         TreeEquations t = form_tree_equations(model.system, model.q);
         DynamicsEquations eq{model.q, t.residuals, model.unknowns, std::nullopt, t.accelerations};
@@ -75,6 +77,10 @@ struct Generated {
         options.name = "arm";
         options.source = "make_kuka_iiwa14(), recursive formation";
         options.parameters = std::vector<ex>{};
+        // the last link's frame Jacobian at its origin (MuJoCo's body Jacobian of link 7)
+        options.jacobians = {{"link7", form_frame_jacobian(model.system, model.q,
+                                                           model.links.back()->body_frame(),
+                                                           model.system.point("B7_o"))}};
         CodePlan plan = plan_code(model.system.symbols(), eq, options);
         const StraightLineProgram& id = plan.inverse_dynamics.program;
         const StraightLineProgram& mf = plan.mass_forcing.program;
@@ -86,6 +92,10 @@ struct Generated {
         const StraightLineProgram& bf = plan.bias_forces.program;
         ops_mm = mm.operation_count(mm.body), calls_mm = mm.call_count(mm.body);
         ops_bf = bf.operation_count(bf.body), calls_bf = bf.call_count(bf.body);
+        const StraightLineProgram& jp = plan.jacobian_functions[1].program;
+        const StraightLineProgram& jd = plan.jacobian_functions[2].program;
+        ops_j = jp.operation_count(jp.body), calls_j = jp.call_count(jp.body);
+        ops_jd = jd.operation_count(jd.body), calls_jd = jd.call_count(jd.body);
         dir = fs::temp_directory_path() / ("alembert-spatial-bench-" + std::to_string(::getpid()));
         fs::create_directories(dir);
         generate_code(model.system.symbols(), eq, Language::c, dir, options);
@@ -105,6 +115,8 @@ struct Generated {
         mass_forcing = reinterpret_cast<MassForcing>(::dlsym(handle, "arm_mass_forcing"));
         mass_matrix = reinterpret_cast<MassMatrix>(::dlsym(handle, "arm_mass_matrix"));
         bias = reinterpret_cast<Bias>(::dlsym(handle, "arm_bias_forces"));
+        jacobian = reinterpret_cast<Jacobian>(::dlsym(handle, "arm_link7_jacobian"));
+        jacobian_dot = reinterpret_cast<Bias>(::dlsym(handle, "arm_link7_jacobian_dot_rates"));
         context.resize(size() / sizeof(double) + 1);
         init(context.data(), nullptr);
         std::mt19937 rng(42);
@@ -128,6 +140,7 @@ struct Generated {
             d_b = std::max(d_b, std::abs(bias_out[i] + f[i])), scale = std::max(scale, std::abs(f[i]));
         if (d_M > 1e-12 * scale || d_b > 1e-12 * scale)
             throw std::runtime_error("generated M alone or bias forces disagree with M and f");
+        jacobian(context.data(), 0, q.data(), J.data());
     }
     ~Generated() {
         if (handle) ::dlclose(handle);
@@ -137,6 +150,7 @@ struct Generated {
     SampleModel model;
     std::size_t ops_id = 0, calls_id = 0, ops_mf = 0, calls_mf = 0, ops_fd = 0, calls_fd = 0;
     std::size_t ops_mm = 0, calls_mm = 0, ops_bf = 0, calls_bf = 0;
+    std::size_t ops_j = 0, calls_j = 0, ops_jd = 0, calls_jd = 0;
     fs::path dir;
     void* handle = nullptr;
     Inverse inverse = nullptr;
@@ -144,9 +158,12 @@ struct Generated {
     MassForcing mass_forcing = nullptr;
     MassMatrix mass_matrix = nullptr;
     Bias bias = nullptr;
+    Jacobian jacobian = nullptr;
+    Bias jacobian_dot = nullptr;
     std::vector<double> context;
     std::array<double, kJoints> q{}, qd{}, qdd{}, tau{}, id_out{}, fd_out{}, bias_out{};
     std::array<double, kJoints * kJoints> M{};  // row by row
+    std::array<double, 6 * kJoints> J{};        // link 7: angular rows, then linear, in N
 };
 
 Generated& generated() {
@@ -245,11 +262,36 @@ void GeneratedBiasForces(benchmark::State& state) {
     counters(state, g.ops_bf, g.calls_bf);
 }
 
+// the last link's frame Jacobian (6 x 7) at its origin, and J' q'
+void GeneratedJacobian(benchmark::State& state) {
+    Generated& g = generated();
+    std::array<double, 6 * kJoints> J{};
+    for (auto _ : state) {
+        g.jacobian(g.context.data(), 0, g.q.data(), J.data());
+        benchmark::DoNotOptimize(J.data());
+        benchmark::ClobberMemory();
+    }
+    counters(state, g.ops_j, g.calls_j);
+}
+
+void GeneratedJacobianDotRates(benchmark::State& state) {
+    Generated& g = generated();
+    std::array<double, 6> out{};
+    for (auto _ : state) {
+        g.jacobian_dot(g.context.data(), 0, g.q.data(), g.qd.data(), out.data());
+        benchmark::DoNotOptimize(out.data());
+        benchmark::ClobberMemory();
+    }
+    counters(state, g.ops_jd, g.calls_jd);
+}
+
 BENCHMARK(GeneratedInverse);
 BENCHMARK(GeneratedForward);
 BENCHMARK(GeneratedMassMatrix);
 BENCHMARK(GeneratedMassMatrixAlone);
 BENCHMARK(GeneratedBiasForces);
+BENCHMARK(GeneratedJacobian);
+BENCHMARK(GeneratedJacobianDotRates);
 
 #ifdef ALEMBERT_BENCH_MUJOCO
 // ---- MuJoCo: nested bodies at the joint origins (quat from the URDF rpy), a hinge about z,
@@ -405,11 +447,36 @@ void MujocoBiasForces(benchmark::State& state) {
     }
 }
 
+// the body Jacobian of link 7 at its frame's origin: kinematics, com positions (cdof), then
+// mj_jacBody (MuJoCo 2.2 has no J' q')
+void MujocoJacobian(benchmark::State& state) {
+    Generated& g = generated();
+    MujocoArm& a = mujoco();
+    a.set(g);
+    mjtNum jacp[3 * kJoints], jacr[3 * kJoints], J[6 * kJoints];
+    auto run = [&] {
+        mj_kinematics(a.m, a.d);
+        mj_comPos(a.m, a.d);
+        mj_jacBody(a.m, a.d, jacp, jacr, kJoints);
+    };
+    run();
+    std::copy(jacr, jacr + 3 * kJoints, J);
+    std::copy(jacp, jacp + 3 * kJoints, J + 3 * kJoints);
+    if (!agrees(state, max_diff(J, g.J, 6 * kJoints), g.J, 6 * kJoints)) return;
+    for (auto _ : state) {
+        run();
+        benchmark::DoNotOptimize(jacp);
+        benchmark::DoNotOptimize(jacr);
+        benchmark::ClobberMemory();
+    }
+}
+
 BENCHMARK(MujocoInverse);
 BENCHMARK(MujocoForward);
 BENCHMARK(MujocoMassMatrix);
 BENCHMARK(MujocoMassMatrixDense);
 BENCHMARK(MujocoBiasForces);
+BENCHMARK(MujocoJacobian);
 #endif
 
 #ifdef ALEMBERT_BENCH_DART
