@@ -73,6 +73,27 @@ Spatial6 motion_transform(const Mat3& R, const Col3& r) {
     return {Rt, Mat3{}, ex(-1) * (Rt * skew(r)), Rt};
 }
 
+// X^T I X for a rigid-body inertia I = [[J, [h x]], [[h x]^T, m 1]] about a child's origin in its
+// frame (J about the origin, h = m c its first moment): the same inertia about the parent's
+// origin in the parent's frame, by a rotation (R J R^T, R h) and the parallel-axis shift by
+// r = r^{O/O_P}: J' = R J R^T + m [r x][r x]^T + [r x][Rh x]^T + [Rh x][r x]^T, h' = R h + m r.
+// Cheaper than the 6 x 6 product: the zero and repeated blocks are never formed.
+Spatial6 inertia_to_parent(const Spatial6& I, const Mat3& R, const Col3& r) {
+    const ex m = I.d(0, 0);
+    const Col3 h = R * Col3{I.b(2, 1), I.b(0, 2), I.b(1, 0)};
+    const Mat3 RJ = R * I.a, sr = skew(r), sh = skew(h);
+    Mat3 J;
+    for (int i = 0; i < 3; ++i)
+        for (int j = i; j < 3; ++j) {
+            ex e = 0;
+            for (int l = 0; l < 3; ++l) e += RJ(i, l) * R(j, l);
+            J(i, j) = J(j, i) = e;
+        }
+    J = J + m * (sr * sr.transpose()) + sr * sh.transpose() + sh * sr.transpose();
+    const Mat3 shp = skew(h + m * r);
+    return {J, shp, shp.transpose(), m * Mat3::identity()};
+}
+
 // ---- the tree ------------------------------------------------------------------------------------
 struct Node {
     TreeJoint joint;
@@ -583,7 +604,7 @@ TreeEquations form_on_tree(const System& sys, const Speeds& sp, Tree& tree) {
             Ic[k] = name.symmetric(Ic[k]);
             if (nodes[k].parent >= 0) {
                 const auto p = static_cast<std::size_t>(nodes[k].parent);
-                Ic[p] = Ic[p] + transpose(X[k]) * Ic[k] * X[k];
+                Ic[p] = Ic[p] + inertia_to_parent(Ic[k], nodes[k].R, nodes[k].r);
             }
         }
         // per partial motion: its subtree's inertia force, carried towards the root

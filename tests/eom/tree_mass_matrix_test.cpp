@@ -41,6 +41,14 @@ void expect_mass_matrix_and_bias_match_rows(SampleModel& m, const TreeEquations&
     for (int trial = 0; trial < 3; ++trial) {
         std::vector<double> x(inputs.size(), 0.0);
         for (std::size_t i = 0; i < nq + n; ++i) x[i] = d(rng);
+        // Euler parameters (e0_<B>..e3_<B>) of unit length: the composite inertias are carried
+        // through rotations, which R_PB is only on the unit sphere
+        for (std::size_t i = 0; i < nq; ++i) {
+            if (m.q[i].name().rfind("e0_", 0) != 0) continue;
+            const double norm = std::sqrt(x[i] * x[i] + x[i + 1] * x[i + 1] +
+                                          x[i + 2] * x[i + 2] + x[i + 3] * x[i + 3]);
+            for (std::size_t l = i; l < i + 4; ++l) x[l] /= norm;
+        }
         const std::vector<double> M = mass.evaluate(std::vector<double>(x.begin(), x.begin() + nq));
         const std::vector<double> h =
             bias.evaluate(std::vector<double>(x.begin(), x.begin() + nq + n));
@@ -83,7 +91,7 @@ TEST(TreeMassMatrix, MassMatrixIsPositiveDefiniteOnTheHumanoid) {
     std::vector<ex> q;
     for (const TimeVariable& v : m.q) q.push_back(v.d(0));
     CompiledExpressions mass(m.system.symbols(), q, tree.mass_matrix);
-    std::vector<double> x(q.size(), 0.1);
+    std::vector<double> x(q.size(), 0.5);  // every quaternion (0.5, 0.5, 0.5, 0.5): unit
     const std::vector<double> M = mass.evaluate(x);
     // Cholesky without pivoting succeeds
     const std::size_t n = m.speeds.size();

@@ -57,7 +57,9 @@ struct TreeEquations {
     /// I^c_B = I_B + sum over children C of X_C^T I^c_C X_C are accumulated from the tip
     /// inward; for each partial motion S_r of joint B, F = I^c_B S_r is carried towards the
     /// root, M_sr = S_s . F for every joint on the way (zero for joints on other branches).
-    /// Every step is a named intermediate; M does not depend on q', the loads or gravity.
+    /// Every step is a named intermediate; M does not depend on q', the loads or gravity. Each
+    /// X^T I^c X is formed as a rotation and a parallel-axis shift, so M equals the rows' mass
+    /// matrix where every R_PB is a rotation (Euler parameters of unit length).
     std::vector<ex> mass_matrix{};
     /// The bias forces alone, one per speed: h(q, u) = C(q, u) u + g(q), the generalized
     /// inertia forces at u' = 0 (the rows' recursion with no accelerations of the speeds,
