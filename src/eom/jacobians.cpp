@@ -21,13 +21,16 @@ void check_coordinates(const std::vector<TimeVariable>& q, const char* who) {
 // rows x n entries d(x_i)/dq'_j, and per row sum_j d(x_i)/dq_j q'_j (x linear in q')
 void append_rows(SymbolTable& st, const std::vector<TimeVariable>& q, const Col3& x,
                  KinematicJacobian& out) {
+    GiNaC::exmap no_accelerations;
+    for (const TimeVariable& v : q) no_accelerations[v.d(2)] = 0;
     for (int i = 0; i < 3; ++i) {
-        ex dot_rates = 0;
-        for (const TimeVariable& v : q) {
-            out.jacobian.push_back(st.diff(x[i], v.d(1)));
-            dot_rates += st.diff(x[i], v.d(0)) * v.d(1);
-        }
-        out.jacobian_dot_rates.push_back(dot_rates);
+        for (const TimeVariable& v : q) out.jacobian.push_back(st.diff(x[i], v.d(1)));
+        // x' at q'' = 0 (the intermediates expanded where a q'' hides in one)
+        ex a = st.dt(x[i]).subs(no_accelerations);
+        for (const TimeVariable& v : q)
+            if (st.depends_on(a, v.d(2)))
+                a = st.expand_intermediates(st.dt(x[i])).subs(no_accelerations);
+        out.jacobian_dot_rates.push_back(a);
     }
 }
 

@@ -22,7 +22,7 @@ struct KinematicJacobian {
     /// rows first).
     std::vector<ex> jacobian{};
     /// J' q' (one per row): the acceleration at q'' = 0, sum_j (dJ/dq_j q'_j) q' (a point's
-    /// ^N a^P, a frame's ^N alpha^B then ^N a^O, each with q'' = 0).
+    /// ^N a^P, a frame's ^N alpha^B then ^N a^O, each formed by d/dt and q'' set to 0).
     std::vector<ex> jacobian_dot_rates{};
     std::size_t rows() const { return jacobian_dot_rates.size(); }
 };
