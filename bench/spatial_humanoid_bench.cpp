@@ -94,7 +94,7 @@ struct Generated {
             q.insert(q.end(), ev.begin(), ev.end());
             i += 3;
         }
-        TreeEquations t = form_tree_equations(sys, q);
+        TreeEquations t = form_tree_equations(sys, q, TreeOptions{.mass_matrix = true});
         joints = t.joints;
         DynamicsEquations eq{q, t.residuals, model.unknowns, std::nullopt, t.accelerations};
         eq.mass_matrix = t.mass_matrix;

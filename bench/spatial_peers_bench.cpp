@@ -69,7 +69,8 @@ struct Generated {
     using Bias = void (*)(const void*, double, const double*, const double*, double*);
     using Jacobian = void (*)(const void*, double, const double*, double*);
     Generated() : model(make_kuka_iiwa14()) {
-        TreeEquations t = form_tree_equations(model.system, model.q);
+        TreeEquations t =
+            form_tree_equations(model.system, model.q, TreeOptions{.mass_matrix = true});
         DynamicsEquations eq{model.q, t.residuals, model.unknowns, std::nullopt, t.accelerations};
         eq.mass_matrix = t.mass_matrix;
         eq.bias_forces = t.bias_forces;

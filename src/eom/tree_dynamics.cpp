@@ -405,7 +405,8 @@ std::vector<ex> tree_active_forces(const System& sys, const Speeds& sp,
 }
 
 // The rows and the accelerations of a tree extract_tree found.
-TreeEquations form_on_tree(const System& sys, const Speeds& sp, Tree& tree) {
+TreeEquations form_on_tree(const System& sys, const Speeds& sp, Tree& tree,
+                           const TreeOptions& options) {
     SymbolTable& st = sys.newtonian().symbols();
     const Namer name(st);
     std::vector<Node>& nodes = tree.nodes;
@@ -574,8 +575,9 @@ TreeEquations form_on_tree(const System& sys, const Speeds& sp, Tree& tree) {
     }
 
     // ---- bias forces: the rows' recursion at u' = 0, no loads -----------------------------------
-    std::vector<ex> bias_forces(sp.u.size(), 0);
-    {
+    std::vector<ex> bias_forces;
+    if (options.mass_matrix) {
+        bias_forces.assign(sp.u.size(), 0);
         std::vector<Spatial> A(nb);  // (alpha, a^O) at u' = 0, -g of the base folded in
         for (std::size_t k = 0; k < nb; ++k) {
             const Node& n = nodes[k];
@@ -596,8 +598,9 @@ TreeEquations form_on_tree(const System& sys, const Speeds& sp, Tree& tree) {
 
     // ---- mass matrix: the composite-rigid-body recursion ---------------------------------------
     const std::size_t nu = sp.u.size();
-    std::vector<ex> mass_matrix(nu * nu, 0);
-    {
+    std::vector<ex> mass_matrix;
+    if (options.mass_matrix) {
+        mass_matrix.assign(nu * nu, 0);
         // composite inertias of the subtrees about their origins, from the tip inward
         std::vector<Spatial6> Ic = I;
         for (std::size_t k = nb; k-- > 0;) {
@@ -646,16 +649,17 @@ std::string explain_not_tree(const System& sys, const std::vector<TimeVariable>&
     return extract_tree(sys, q, rates_of(q)).why_not;
 }
 
-TreeEquations form_tree_equations(const System& sys, const std::vector<TimeVariable>& q) {
+TreeEquations form_tree_equations(const System& sys, const std::vector<TimeVariable>& q,
+                                  const TreeOptions& options) {
     Tree tree = extract_tree(sys, q, rates_of(q));
     if (!tree.why_not.empty())
         throw ModelError(std::string(kWho) + ": not a tree the recursion handles: " + tree.why_not +
                          "; form Kane's, Lagrange's or the road-map's equations instead");
-    return form_on_tree(sys, rates_of(q), tree);
+    return form_on_tree(sys, rates_of(q), tree, options);
 }
 
 TreeEquations form_tree_equations(const System& sys, const std::vector<TimeVariable>& q,
-                                  const std::vector<ex>& speeds) {
+                                  const std::vector<ex>& speeds, const TreeOptions& options) {
     SymbolTable& st = sys.newtonian().symbols();
     Speeds sp;
     sp.rates = false;
@@ -672,14 +676,15 @@ TreeEquations form_tree_equations(const System& sys, const std::vector<TimeVaria
     if (!tree.why_not.empty())
         throw ModelError(std::string(kWho) + ": not a tree the recursion handles: " + tree.why_not +
                          "; form Kane's equations with these speeds instead");
-    return form_on_tree(sys, sp, tree);
+    return form_on_tree(sys, sp, tree, options);
 }
 
 std::optional<TreeEquations> form_tree_equations_if_tree(const System& sys,
-                                                         const std::vector<TimeVariable>& q) {
+                                                         const std::vector<TimeVariable>& q,
+                                                         const TreeOptions& options) {
     Tree tree = extract_tree(sys, q, rates_of(q));
     if (!tree.why_not.empty()) return std::nullopt;
-    return form_on_tree(sys, rates_of(q), tree);
+    return form_on_tree(sys, rates_of(q), tree, options);
 }
 
 }  // namespace alembert

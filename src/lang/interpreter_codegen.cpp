@@ -206,7 +206,8 @@ void Interpreter::Impl::run_codegen(const CodegenRequest& r, Location where) {
             eqs.constraint_forces = constraint_forces;
             return generate_code(table, eqs, language, r.dir, opts);
         }
-        if (std::optional<TreeEquations> t = form_tree_equations_if_tree(sys, q)) {
+        if (std::optional<TreeEquations> t =
+                form_tree_equations_if_tree(sys, q, TreeOptions{.mass_matrix = true})) {
             tree = true;
             DynamicsEquations eqs{
                 q, t->residuals, loads, std::nullopt, t->accelerations, inverse_residuals};

@@ -80,7 +80,7 @@ inline CodegenCase tree_chain_case(int n, ChainKind kind) {
     c.name = std::string(kind == ChainKind::planar ? "tree" : "spatial_tree") + std::to_string(n);
     c.model = std::make_unique<SampleModel>(make_n_link_pendulum(n, kind));
     System& sys = c.model->system;
-    TreeEquations tree = form_tree_equations(sys, c.model->q);
+    TreeEquations tree = form_tree_equations(sys, c.model->q, TreeOptions{.mass_matrix = true});
     c.equations = {c.model->q, tree.residuals, c.model->unknowns, std::nullopt, tree.accelerations};
     c.equations.mass_matrix = tree.mass_matrix;  // emitted in every language too
     c.equations.bias_forces = tree.bias_forces;

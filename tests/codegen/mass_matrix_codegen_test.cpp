@@ -30,7 +30,7 @@ std::string mass_matrix_driver(const std::string& name) {
 }
 
 DynamicsEquations arm_equations(const SampleModel& m) {
-    TreeEquations tree = form_tree_equations(m.system, m.q);
+    TreeEquations tree = form_tree_equations(m.system, m.q, TreeOptions{.mass_matrix = true});
     DynamicsEquations eq{m.q, tree.residuals, m.unknowns, std::nullopt, tree.accelerations};
     eq.mass_matrix = tree.mass_matrix;
     eq.bias_forces = tree.bias_forces;

@@ -75,19 +75,21 @@ void expect_mass_matrix_and_bias_match_rows(SampleModel& m, const TreeEquations&
 
 TEST(TreeMassMatrix, CompositeRigidBodyMassMatrixAndBiasMatchTheArmsRows) {
     SampleModel m = make_kuka_iiwa14();
-    TreeEquations tree = form_tree_equations(m.system, m.q);
+    TreeEquations tree = form_tree_equations(m.system, m.q, TreeOptions{.mass_matrix = true});
     expect_mass_matrix_and_bias_match_rows(m, tree, 29);
 }
 
 TEST(TreeMassMatrix, CompositeRigidBodyMassMatrixAndBiasMatchTheHumanoidsRows) {
     SampleModel m = make_humanoid();
-    TreeEquations tree = form_tree_equations(m.system, m.q, m.speeds);
+    TreeEquations tree =
+        form_tree_equations(m.system, m.q, m.speeds, TreeOptions{.mass_matrix = true});
     expect_mass_matrix_and_bias_match_rows(m, tree, 31);
 }
 
 TEST(TreeMassMatrix, MassMatrixIsPositiveDefiniteOnTheHumanoid) {
     SampleModel m = make_humanoid();
-    TreeEquations tree = form_tree_equations(m.system, m.q, m.speeds);
+    TreeEquations tree =
+        form_tree_equations(m.system, m.q, m.speeds, TreeOptions{.mass_matrix = true});
     std::vector<ex> q;
     for (const TimeVariable& v : m.q) q.push_back(v.d(0));
     CompiledExpressions mass(m.system.symbols(), q, tree.mass_matrix);
