@@ -110,3 +110,11 @@ TEST(TreeMassMatrix, MassMatrixIsPositiveDefiniteOnTheHumanoid) {
         }
     }
 }
+
+TEST(TreeMassMatrix, IsFormedOnlyOnRequest) {
+    SampleModel m = make_kuka_iiwa14();
+    TreeEquations tree = form_tree_equations(m.system, m.q);
+    EXPECT_TRUE(tree.mass_matrix.empty());
+    EXPECT_TRUE(tree.bias_forces.empty());
+    EXPECT_EQ(tree.residuals.size(), 7u);
+}
