@@ -72,6 +72,8 @@ struct Generated {
                             double*);
     using MassForcing = void (*)(const void*, double, const double*, const double*,
                                  const double*, double*, double*);
+    using MassMatrix = void (*)(const void*, double, const double*, double*);
+    using Bias = void (*)(const void*, double, const double*, const double*, double*);
     Generated() : model(make_humanoid()) {
         System& sys = model.system;
         SymbolTable& st = sys.symbols();
@@ -92,9 +94,11 @@ struct Generated {
             q.insert(q.end(), ev.begin(), ev.end());
             i += 3;
         }
-        TreeEquations t = form_tree_equations(sys, q);
+        TreeEquations t = form_tree_equations(sys, q, TreeOptions{.mass_matrix = true});
         joints = t.joints;
         DynamicsEquations eq{q, t.residuals, model.unknowns, std::nullopt, t.accelerations};
+        eq.mass_matrix = t.mass_matrix;
+        eq.bias_forces = t.bias_forces;
         CodegenOptions options;
         options.name = "humanoid";
         options.source = "make_humanoid(), recursive formation";
@@ -106,6 +110,10 @@ struct Generated {
         ops_id = id.operation_count(id.body), calls_id = id.call_count(id.body);
         ops_mf = mf.operation_count(mf.body), calls_mf = mf.call_count(mf.body);
         ops_fd = fd.operation_count(fd.body), calls_fd = fd.call_count(fd.body);
+        const StraightLineProgram& mm = plan.mass_matrix.program;
+        const StraightLineProgram& bf = plan.bias_forces.program;
+        ops_mm = mm.operation_count(mm.body), calls_mm = mm.call_count(mm.body);
+        ops_bf = bf.operation_count(bf.body), calls_bf = bf.call_count(bf.body);
         dir = fs::temp_directory_path() / ("alembert-humanoid-bench-" + std::to_string(::getpid()));
         fs::create_directories(dir);
         generate_code(st, eq, Language::c, dir, options);
@@ -123,6 +131,8 @@ struct Generated {
         inverse = reinterpret_cast<Inverse>(::dlsym(handle, "humanoid_inverse_dynamics"));
         forward = reinterpret_cast<Forward>(::dlsym(handle, "humanoid_forward_dynamics"));
         mass_forcing = reinterpret_cast<MassForcing>(::dlsym(handle, "humanoid_mass_forcing"));
+        mass_matrix = reinterpret_cast<MassMatrix>(::dlsym(handle, "humanoid_mass_matrix"));
+        bias = reinterpret_cast<Bias>(::dlsym(handle, "humanoid_bias_forces"));
         context.resize(size() / sizeof(double) + 1);
         init(context.data(), nullptr);
         // a random state: angles, speeds, rates, loads, and per free or ball joint a unit
@@ -147,8 +157,20 @@ struct Generated {
         inverse(context.data(), 0, qg.data(), u.data(), udot.data(), id_out.data());
         if (forward(context.data(), 0, qg.data(), u.data(), tau.data(), fd_out.data()) != 0)
             throw std::runtime_error("generated forward dynamics failed");
-        Vec f{};
+        Vec f{}, no_loads{};
         mass_forcing(context.data(), 0, qg.data(), u.data(), tau.data(), M.data(), f.data());
+        // M alone and the bias forces alone agree with M and f (no loads: f = -bias)
+        Mat M_alone{}, M0{};
+        mass_matrix(context.data(), 0, qg.data(), M_alone.data());
+        bias(context.data(), 0, qg.data(), u.data(), bias_out.data());
+        mass_forcing(context.data(), 0, qg.data(), u.data(), no_loads.data(), M0.data(), f.data());
+        double d_M = 0, d_b = 0, scale = 1;
+        for (int i = 0; i < kN * kN; ++i)
+            d_M = std::max(d_M, std::abs(M_alone[i] - M[i])), scale = std::max(scale, std::abs(M[i]));
+        for (int i = 0; i < kN; ++i)
+            d_b = std::max(d_b, std::abs(bias_out[i] + f[i])), scale = std::max(scale, std::abs(f[i]));
+        if (d_M > 1e-12 * scale || d_b > 1e-12 * scale)
+            throw std::runtime_error("generated M alone or bias forces disagree with M and f");
     }
     ~Generated() {
         if (handle) ::dlclose(handle);
@@ -197,18 +219,21 @@ struct Generated {
     std::vector<TimeVariable> q;
     std::vector<TreeJoint> joints;
     std::size_t ops_id = 0, calls_id = 0, ops_mf = 0, calls_mf = 0, ops_fd = 0, calls_fd = 0;
+    std::size_t ops_mm = 0, calls_mm = 0, ops_bf = 0, calls_bf = 0;
     fs::path dir;
     void* handle = nullptr;
     Inverse inverse = nullptr;
     Forward forward = nullptr;
     MassForcing mass_forcing = nullptr;
+    MassMatrix mass_matrix = nullptr;
+    Bias bias = nullptr;
     std::vector<double> context;
     std::vector<HumanoidSegment> segs;
     std::vector<std::array<double, 4>> quaternions;  // per segment: its joint's (1 0 0 0: a hinge)
     std::vector<Eigen::Matrix3d> rotations;          // per segment: R_PB of its joint's quaternion
     std::array<double, 4> e{};  // the pelvis's unit quaternion
     Eigen::Matrix3d R_NP;
-    Vec qg{}, u{}, udot{}, tau{}, id_out{}, fd_out{};
+    Vec qg{}, u{}, udot{}, tau{}, id_out{}, fd_out{}, bias_out{};
     Mat M{};
 };
 
@@ -289,9 +314,35 @@ void HumanoidGeneratedMassMatrix(benchmark::State& state) {
     counters(state, g.ops_mf, g.calls_mf);
 }
 
+// M alone (composite-rigid-body recursion)
+void HumanoidGeneratedMassMatrixAlone(benchmark::State& state) {
+    Generated& g = generated();
+    Mat M{};
+    for (auto _ : state) {
+        g.mass_matrix(g.context.data(), 0, g.qg.data(), M.data());
+        benchmark::DoNotOptimize(M.data());
+        benchmark::ClobberMemory();
+    }
+    counters(state, g.ops_mm, g.calls_mm);
+}
+
+// C(q, q') q' + g(q) alone
+void HumanoidGeneratedBiasForces(benchmark::State& state) {
+    Generated& g = generated();
+    Vec out{};
+    for (auto _ : state) {
+        g.bias(g.context.data(), 0, g.qg.data(), g.u.data(), out.data());
+        benchmark::DoNotOptimize(out.data());
+        benchmark::ClobberMemory();
+    }
+    counters(state, g.ops_bf, g.calls_bf);
+}
+
 BENCHMARK(HumanoidGeneratedInverse);
 BENCHMARK(HumanoidGeneratedForward);
 BENCHMARK(HumanoidGeneratedMassMatrix);
+BENCHMARK(HumanoidGeneratedMassMatrixAlone);
+BENCHMARK(HumanoidGeneratedBiasForces);
 
 #ifdef ALEMBERT_BENCH_MUJOCO
 // ---- MuJoCo: nested bodies at the joint centres, a free joint for the pelvis, a ball joint
@@ -375,6 +426,12 @@ struct MujocoHumanoid {
         mj_comPos(m, d);
         mj_crb(m, d);
     }
+    void bias_forces(mjtNum* out) {
+        mj_kinematics(m, d);
+        mj_comPos(m, d);
+        mj_comVel(m, d);
+        mj_rne(m, d, 0, out);
+    }
     mjModel* m = nullptr;
     mjData* d = nullptr;
     mjtNum bias[kN] = {}, rhs[kN] = {};
@@ -428,9 +485,43 @@ void HumanoidMujocoMassMatrix(benchmark::State& state) {
     }
 }
 
+// M alone as a dense matrix (mj_fullM after mj_crb), as the generated function gives it
+void HumanoidMujocoMassMatrixDense(benchmark::State& state) {
+    Generated& g = generated();
+    MujocoHumanoid& h = mujoco();
+    h.set(g);
+    mjtNum M[kN * kN];
+    h.mass_matrix();
+    mj_fullM(h.m, M, h.d->qM);
+    if (!agrees(state, max_diff(M, g.M, kN * kN), g.M, kN * kN)) return;
+    for (auto _ : state) {
+        h.mass_matrix();
+        mj_fullM(h.m, M, h.d->qM);
+        benchmark::DoNotOptimize(M);
+        benchmark::ClobberMemory();
+    }
+}
+
+// C(q, q') q' + g(q): mj_rne without accelerations
+void HumanoidMujocoBiasForces(benchmark::State& state) {
+    Generated& g = generated();
+    MujocoHumanoid& h = mujoco();
+    h.set(g);
+    mjtNum out[kN];
+    h.bias_forces(out);
+    if (!agrees(state, max_diff(out, g.bias_out, kN), g.bias_out, kN)) return;
+    for (auto _ : state) {
+        h.bias_forces(out);
+        benchmark::DoNotOptimize(out);
+        benchmark::ClobberMemory();
+    }
+}
+
 BENCHMARK(HumanoidMujocoInverse);
 BENCHMARK(HumanoidMujocoForward);
 BENCHMARK(HumanoidMujocoMassMatrix);
+BENCHMARK(HumanoidMujocoMassMatrixDense);
+BENCHMARK(HumanoidMujocoBiasForces);
 #endif
 
 #ifdef ALEMBERT_BENCH_DART

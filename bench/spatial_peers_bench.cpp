@@ -9,6 +9,7 @@
 
 #include <alembert/codegen/code_plan.hpp>
 #include <alembert/codegen/codegen.hpp>
+#include <alembert/eom/jacobians.hpp>
 #include <alembert/eom/tree_dynamics.hpp>
 #include <alembert/mech/sample_models.hpp>
 
@@ -64,13 +65,23 @@ struct Generated {
                             double*);
     using MassForcing = void (*)(const void*, double, const double*, const double*,
                                  const double*, double*, double*);
+    using MassMatrix = void (*)(const void*, double, const double*, double*);
+    using Bias = void (*)(const void*, double, const double*, const double*, double*);
+    using Jacobian = void (*)(const void*, double, const double*, double*);
     Generated() : model(make_kuka_iiwa14()) {
-        TreeEquations t = form_tree_equations(model.system, model.q);
+        TreeEquations t =
+            form_tree_equations(model.system, model.q, TreeOptions{.mass_matrix = true});
         DynamicsEquations eq{model.q, t.residuals, model.unknowns, std::nullopt, t.accelerations};
+        eq.mass_matrix = t.mass_matrix;
+        eq.bias_forces = t.bias_forces;
         CodegenOptions options;
         options.name = "arm";
         options.source = "make_kuka_iiwa14(), recursive formation";
         options.parameters = std::vector<ex>{};
+        // the last link's frame Jacobian at its origin (MuJoCo's body Jacobian of link 7)
+        options.jacobians = {{"link7", form_frame_jacobian(model.system, model.q,
+                                                           model.links.back()->body_frame(),
+                                                           model.system.point("B7_o"))}};
         CodePlan plan = plan_code(model.system.symbols(), eq, options);
         const StraightLineProgram& id = plan.inverse_dynamics.program;
         const StraightLineProgram& mf = plan.mass_forcing.program;
@@ -78,6 +89,14 @@ struct Generated {
         ops_id = id.operation_count(id.body), calls_id = id.call_count(id.body);
         ops_mf = mf.operation_count(mf.body), calls_mf = mf.call_count(mf.body);
         ops_fd = fd.operation_count(fd.body), calls_fd = fd.call_count(fd.body);
+        const StraightLineProgram& mm = plan.mass_matrix.program;
+        const StraightLineProgram& bf = plan.bias_forces.program;
+        ops_mm = mm.operation_count(mm.body), calls_mm = mm.call_count(mm.body);
+        ops_bf = bf.operation_count(bf.body), calls_bf = bf.call_count(bf.body);
+        const StraightLineProgram& jp = plan.jacobian_functions[1].program;
+        const StraightLineProgram& jd = plan.jacobian_functions[2].program;
+        ops_j = jp.operation_count(jp.body), calls_j = jp.call_count(jp.body);
+        ops_jd = jd.operation_count(jd.body), calls_jd = jd.call_count(jd.body);
         dir = fs::temp_directory_path() / ("alembert-spatial-bench-" + std::to_string(::getpid()));
         fs::create_directories(dir);
         generate_code(model.system.symbols(), eq, Language::c, dir, options);
@@ -95,6 +114,10 @@ struct Generated {
         inverse = reinterpret_cast<Inverse>(::dlsym(handle, "arm_inverse_dynamics"));
         forward = reinterpret_cast<Forward>(::dlsym(handle, "arm_forward_dynamics"));
         mass_forcing = reinterpret_cast<MassForcing>(::dlsym(handle, "arm_mass_forcing"));
+        mass_matrix = reinterpret_cast<MassMatrix>(::dlsym(handle, "arm_mass_matrix"));
+        bias = reinterpret_cast<Bias>(::dlsym(handle, "arm_bias_forces"));
+        jacobian = reinterpret_cast<Jacobian>(::dlsym(handle, "arm_link7_jacobian"));
+        jacobian_dot = reinterpret_cast<Bias>(::dlsym(handle, "arm_link7_jacobian_dot_rates"));
         context.resize(size() / sizeof(double) + 1);
         init(context.data(), nullptr);
         std::mt19937 rng(42);
@@ -104,8 +127,21 @@ struct Generated {
         inverse(context.data(), 0, q.data(), qd.data(), qdd.data(), id_out.data());
         if (forward(context.data(), 0, q.data(), qd.data(), tau.data(), fd_out.data()) != 0)
             throw std::runtime_error("generated forward dynamics failed");
-        std::array<double, kJoints> f{};
+        std::array<double, kJoints> f{}, no_loads{};
         mass_forcing(context.data(), 0, q.data(), qd.data(), tau.data(), M.data(), f.data());
+        // M alone and the bias forces alone agree with M and f (no loads: f = -bias)
+        std::array<double, kJoints * kJoints> M_alone{}, M0{};
+        mass_matrix(context.data(), 0, q.data(), M_alone.data());
+        bias(context.data(), 0, q.data(), qd.data(), bias_out.data());
+        mass_forcing(context.data(), 0, q.data(), qd.data(), no_loads.data(), M0.data(), f.data());
+        double d_M = 0, d_b = 0, scale = 1;
+        for (int i = 0; i < kJoints * kJoints; ++i)
+            d_M = std::max(d_M, std::abs(M_alone[i] - M[i])), scale = std::max(scale, std::abs(M[i]));
+        for (int i = 0; i < kJoints; ++i)
+            d_b = std::max(d_b, std::abs(bias_out[i] + f[i])), scale = std::max(scale, std::abs(f[i]));
+        if (d_M > 1e-12 * scale || d_b > 1e-12 * scale)
+            throw std::runtime_error("generated M alone or bias forces disagree with M and f");
+        jacobian(context.data(), 0, q.data(), J.data());
     }
     ~Generated() {
         if (handle) ::dlclose(handle);
@@ -114,14 +150,21 @@ struct Generated {
     }
     SampleModel model;
     std::size_t ops_id = 0, calls_id = 0, ops_mf = 0, calls_mf = 0, ops_fd = 0, calls_fd = 0;
+    std::size_t ops_mm = 0, calls_mm = 0, ops_bf = 0, calls_bf = 0;
+    std::size_t ops_j = 0, calls_j = 0, ops_jd = 0, calls_jd = 0;
     fs::path dir;
     void* handle = nullptr;
     Inverse inverse = nullptr;
     Forward forward = nullptr;
     MassForcing mass_forcing = nullptr;
+    MassMatrix mass_matrix = nullptr;
+    Bias bias = nullptr;
+    Jacobian jacobian = nullptr;
+    Bias jacobian_dot = nullptr;
     std::vector<double> context;
-    std::array<double, kJoints> q{}, qd{}, qdd{}, tau{}, id_out{}, fd_out{};
+    std::array<double, kJoints> q{}, qd{}, qdd{}, tau{}, id_out{}, fd_out{}, bias_out{};
     std::array<double, kJoints * kJoints> M{};  // row by row
+    std::array<double, 6 * kJoints> J{};        // link 7: angular rows, then linear, in N
 };
 
 Generated& generated() {
@@ -196,9 +239,60 @@ void GeneratedMassMatrix(benchmark::State& state) {
     counters(state, g.ops_mf, g.calls_mf);
 }
 
+// M alone (composite-rigid-body recursion)
+void GeneratedMassMatrixAlone(benchmark::State& state) {
+    Generated& g = generated();
+    std::array<double, kJoints * kJoints> M{};
+    for (auto _ : state) {
+        g.mass_matrix(g.context.data(), 0, g.q.data(), M.data());
+        benchmark::DoNotOptimize(M.data());
+        benchmark::ClobberMemory();
+    }
+    counters(state, g.ops_mm, g.calls_mm);
+}
+
+// C(q, q') q' + g(q) alone
+void GeneratedBiasForces(benchmark::State& state) {
+    Generated& g = generated();
+    std::array<double, kJoints> out{};
+    for (auto _ : state) {
+        g.bias(g.context.data(), 0, g.q.data(), g.qd.data(), out.data());
+        benchmark::DoNotOptimize(out.data());
+        benchmark::ClobberMemory();
+    }
+    counters(state, g.ops_bf, g.calls_bf);
+}
+
+// the last link's frame Jacobian (6 x 7) at its origin, and J' q'
+void GeneratedJacobian(benchmark::State& state) {
+    Generated& g = generated();
+    std::array<double, 6 * kJoints> J{};
+    for (auto _ : state) {
+        g.jacobian(g.context.data(), 0, g.q.data(), J.data());
+        benchmark::DoNotOptimize(J.data());
+        benchmark::ClobberMemory();
+    }
+    counters(state, g.ops_j, g.calls_j);
+}
+
+void GeneratedJacobianDotRates(benchmark::State& state) {
+    Generated& g = generated();
+    std::array<double, 6> out{};
+    for (auto _ : state) {
+        g.jacobian_dot(g.context.data(), 0, g.q.data(), g.qd.data(), out.data());
+        benchmark::DoNotOptimize(out.data());
+        benchmark::ClobberMemory();
+    }
+    counters(state, g.ops_jd, g.calls_jd);
+}
+
 BENCHMARK(GeneratedInverse);
 BENCHMARK(GeneratedForward);
 BENCHMARK(GeneratedMassMatrix);
+BENCHMARK(GeneratedMassMatrixAlone);
+BENCHMARK(GeneratedBiasForces);
+BENCHMARK(GeneratedJacobian);
+BENCHMARK(GeneratedJacobianDotRates);
 
 #ifdef ALEMBERT_BENCH_MUJOCO
 // ---- MuJoCo: nested bodies at the joint origins (quat from the URDF rpy), a hinge about z,
@@ -263,6 +357,12 @@ struct MujocoArm {
         mj_comPos(m, d);
         mj_crb(m, d);
     }
+    void bias_forces(mjtNum* out) {
+        mj_kinematics(m, d);
+        mj_comPos(m, d);
+        mj_comVel(m, d);
+        mj_rne(m, d, 0, out);
+    }
     mjModel* m = nullptr;
     mjData* d = nullptr;
     mjtNum bias[kJoints] = {}, rhs[kJoints] = {};
@@ -316,9 +416,68 @@ void MujocoMassMatrix(benchmark::State& state) {
     }
 }
 
+// M alone as a dense matrix (mj_fullM after mj_crb), as the generated function gives it
+void MujocoMassMatrixDense(benchmark::State& state) {
+    Generated& g = generated();
+    MujocoArm& a = mujoco();
+    a.set(g);
+    mjtNum M[kJoints * kJoints];
+    a.mass_matrix();
+    mj_fullM(a.m, M, a.d->qM);
+    if (!agrees(state, max_diff(M, g.M, kJoints * kJoints), g.M, kJoints * kJoints)) return;
+    for (auto _ : state) {
+        a.mass_matrix();
+        mj_fullM(a.m, M, a.d->qM);
+        benchmark::DoNotOptimize(M);
+        benchmark::ClobberMemory();
+    }
+}
+
+// C(q, q') q' + g(q): mj_rne without accelerations
+void MujocoBiasForces(benchmark::State& state) {
+    Generated& g = generated();
+    MujocoArm& a = mujoco();
+    a.set(g);
+    mjtNum out[kJoints];
+    a.bias_forces(out);
+    if (!agrees(state, max_diff(out, g.bias_out, kJoints), g.bias_out, kJoints)) return;
+    for (auto _ : state) {
+        a.bias_forces(out);
+        benchmark::DoNotOptimize(out);
+        benchmark::ClobberMemory();
+    }
+}
+
+// the body Jacobian of link 7 at its frame's origin: kinematics, com positions (cdof), then
+// mj_jacBody (MuJoCo 2.2 has no J' q')
+void MujocoJacobian(benchmark::State& state) {
+    Generated& g = generated();
+    MujocoArm& a = mujoco();
+    a.set(g);
+    mjtNum jacp[3 * kJoints], jacr[3 * kJoints], J[6 * kJoints];
+    auto run = [&] {
+        mj_kinematics(a.m, a.d);
+        mj_comPos(a.m, a.d);
+        mj_jacBody(a.m, a.d, jacp, jacr, kJoints);
+    };
+    run();
+    std::copy(jacr, jacr + 3 * kJoints, J);
+    std::copy(jacp, jacp + 3 * kJoints, J + 3 * kJoints);
+    if (!agrees(state, max_diff(J, g.J, 6 * kJoints), g.J, 6 * kJoints)) return;
+    for (auto _ : state) {
+        run();
+        benchmark::DoNotOptimize(jacp);
+        benchmark::DoNotOptimize(jacr);
+        benchmark::ClobberMemory();
+    }
+}
+
 BENCHMARK(MujocoInverse);
 BENCHMARK(MujocoForward);
 BENCHMARK(MujocoMassMatrix);
+BENCHMARK(MujocoMassMatrixDense);
+BENCHMARK(MujocoBiasForces);
+BENCHMARK(MujocoJacobian);
 #endif
 
 #ifdef ALEMBERT_BENCH_DART

@@ -26,6 +26,7 @@
 #include "alembert/mech/sample_models.hpp"
 #include "alembert/mech/system.hpp"
 #include "alembert/eom/cross_check.hpp"
+#include "alembert/eom/jacobians.hpp"
 #include "alembert/eom/tree_dynamics.hpp"
 #include "alembert/eom/equations.hpp"
 #include "alembert/eom/inertia_forces.hpp"

@@ -324,6 +324,19 @@ std::string declarations(const CodePlan& plan, const Dialect& d) {
     os << ind << (d.cpp ? "bool " : "int ") << d.function("forward_dynamics") << "(" << ctx
        << "double t, const double* q, const double* qp, const double* u, double* qpp)" << cnst
        << ";\n";
+    if (!plan.mass_matrix.empty())
+        os << ind << "/* The mass matrix M (nq x nq, row by row) alone, by the composite-rigid-body\n"
+           << ind << "   recursion. */\n"
+           << ind << "void " << d.function("mass_matrix") << "(" << ctx
+           << arguments(plan.mass_matrix) << ")" << cnst << ";\n";
+    if (!plan.bias_forces.empty())
+        os << ind << "/* The bias forces C(q, qp) qp + g(q) alone (with no loads, f = -bias). */\n"
+           << ind << "void " << d.function("bias_forces") << "(" << ctx
+           << arguments(plan.bias_forces) << ")" << cnst << ";\n";
+    for (const CodeFunction& f : plan.jacobian_functions)
+        os << ind << "/* The " << f.summary << ". */\n"
+           << ind << "void " << d.function(f.name) << "(" << ctx << arguments(f) << ")" << cnst
+           << ";\n";
     if (!plan.inverse_dynamics.empty())
         os << ind << "/* Inverse dynamics: the loads u that give the accelerations qpp. */\n"
            << ind << "void " << d.function("inverse_dynamics") << "(" << ctx

@@ -231,6 +231,9 @@ std::size_t CodePlan::array_length(const std::string& array) const {
 std::vector<const CodeFunction*> CodePlan::functions() const {
     std::vector<const CodeFunction*> out{&mass_forcing};
     if (!accelerations.empty()) out.push_back(&accelerations);
+    if (!mass_matrix.empty()) out.push_back(&mass_matrix);
+    if (!bias_forces.empty()) out.push_back(&bias_forces);
+    for (const CodeFunction& f : jacobian_functions) out.push_back(&f);
     if (!inverse_dynamics.empty()) out.push_back(&inverse_dynamics);
     if (!output_function.empty()) out.push_back(&output_function);
     if (!load_laws.empty()) out.push_back(&load_laws);
@@ -436,6 +439,95 @@ CodePlan plan_code(const SymbolTable& table, const DynamicsEquations& eq,
                                compile_options, "the accelerations"),
             .input_names = input_names({&q_names, &qp_names, &u_names}),
             .parameter_names = parameter_names};
+    }
+
+    // ---- the mass matrix alone and the bias forces alone (composite-rigid-body recursion) -----
+    if (!eq.mass_matrix.empty() || !eq.bias_forces.empty()) {
+        if (nc > 0)
+            throw ArgumentError(std::string(kWho) + ": a mass matrix or bias forces alone were "
+                                "given for a model with constraints; leave them out");
+        if (!eq.mass_matrix.empty() && eq.mass_matrix.size() != n * n)
+            throw ArgumentError(std::string(kWho) + ": " + std::to_string(eq.mass_matrix.size()) +
+                                " entries of the mass matrix alone for " + std::to_string(n) +
+                                " coordinates; give n x n, row by row, or none");
+        if (!eq.bias_forces.empty() && eq.bias_forces.size() != n)
+            throw ArgumentError(std::string(kWho) + ": " + std::to_string(eq.bias_forces.size()) +
+                                " bias forces for " + std::to_string(n) +
+                                " coordinates; give one per coordinate, or none");
+    }
+    if (!eq.mass_matrix.empty())
+        plan.mass_matrix = {
+            .name = "mass_matrix",
+            .summary = "mass matrix M (nq x nq, row by row) alone (composite-rigid-body "
+                       "recursion: no forcing)",
+            .arrays = {"q"},
+            .results = {"M"},
+            .result_sizes = {n * n},
+            .program = compile(table, symbols({&q}), eq.mass_matrix, compile_options,
+                               "the mass matrix alone"),
+            .input_names = input_names({&q_names}),
+            .parameter_names = parameter_names};
+    if (!eq.bias_forces.empty())
+        plan.bias_forces = {
+            .name = "bias_forces",
+            .summary = "bias forces C(q, qp) qp + g(q) alone (M qpp + bias are the generalized "
+                       "inertia forces and weights)",
+            .arrays = {"q", "qp"},
+            .results = {"bias"},
+            .result_sizes = {n},
+            .program = compile(table, symbols({&q, &qp}), eq.bias_forces, compile_options,
+                               "the bias forces"),
+            .input_names = input_names({&q_names, &qp_names}),
+            .parameter_names = parameter_names};
+
+    // ---- point and frame Jacobians: position, J, J' q' ------------------------------------------
+    std::set<std::string> jacobian_names;
+    for (const CodegenJacobian& j : options.jacobians) {
+        const KinematicJacobian& kj = j.jacobian;
+        if (!is_identifier(j.name) || !jacobian_names.insert(j.name).second)
+            throw ArgumentError(std::string(kWho) + ": the Jacobian name '" + j.name +
+                                "' is not an identifier or is used twice; name each once with "
+                                "letters, digits and _");
+        if (nc > 0)
+            throw ArgumentError(std::string(kWho) + ": Jacobians were requested for a model "
+                                "with constraints; leave them out");
+        if (kj.jacobian.size() != kj.rows() * n)
+            throw ArgumentError(std::string(kWho) + ": the Jacobian '" + j.name + "' has " +
+                                std::to_string(kj.jacobian.size()) + " entries for " +
+                                std::to_string(kj.rows()) + " rows and " + std::to_string(n) +
+                                " coordinates; form it for the coordinates generated");
+        plan.jacobian_functions.push_back(
+            {.name = j.name + "_position",
+             .summary = "position of '" + j.name + "' (a point's p in N; a frame's R_NB row by "
+                        "row, then its origin's p in N)",
+             .arrays = {"q"},
+             .results = {"pos"},
+             .result_sizes = {kj.position.size()},
+             .program = compile(table, symbols({&q}), kj.position, compile_options,
+                                "the position of '" + j.name + "'"),
+             .input_names = input_names({&q_names}),
+             .parameter_names = parameter_names});
+        plan.jacobian_functions.push_back(
+            {.name = j.name + "_jacobian",
+             .summary = "Jacobian J of '" + j.name + "' (" + std::to_string(kj.rows()) +
+                        " x nq, row by row, in N: v = J qp; a frame's angular rows first)",
+             .arrays = {"q"},
+             .results = {"J"},
+             .result_sizes = {kj.jacobian.size()},
+             .program = compile(table, symbols({&q}), kj.jacobian, compile_options,
+                                "the Jacobian of '" + j.name + "'"),
+             .input_names = input_names({&q_names}),
+             .parameter_names = parameter_names});
+        plan.jacobian_functions.push_back(
+            {.name = j.name + "_jacobian_dot_rates",
+             .summary = "J' qp of '" + j.name + "' (the acceleration at qpp = 0, in N)",
+             .arrays = {"q", "qp"},
+             .results = {"Jdqp"},
+             .result_sizes = {kj.rows()},
+             .program = compile(table, symbols({&q, &qp}), kj.jacobian_dot_rates,
+                                compile_options, "J' q' of '" + j.name + "'"),
+             .input_names = input_names({&q_names, &qp_names}),
+             .parameter_names = parameter_names});
     }
 
     // ---- inverse dynamics: the residuals solved for the loads ---------------------------------

@@ -56,6 +56,8 @@ GeneratedCode write_code(const CodePlan& plan, Language language,
     };
     result.mass_forcing_operations = ops(plan.mass_forcing);
     result.accelerations_operations = ops(plan.accelerations);
+    result.mass_matrix_operations = ops(plan.mass_matrix);
+    result.bias_forces_operations = ops(plan.bias_forces);
     result.inverse_dynamics_operations = ops(plan.inverse_dynamics);
     result.outputs_operations = ops(plan.output_function);
     result.kinematics_operations = ops(plan.kinematics);

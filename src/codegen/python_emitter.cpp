@@ -124,6 +124,8 @@ std::vector<GeneratedFile> PythonEmitter::emit(const CodePlan& plan) const {
             os << "    return A.reshape(NQ + NC, NQ + NC), b\n";
         else if (f->name == "mass_forcing")
             os << "    return M.reshape(NQ, NQ), f\n";
+        else if (f->name == "mass_matrix")
+            os << "    return M.reshape(NQ, NQ)\n";
         else
             os << "    return " << f->results[0] << "\n";
     }

@@ -73,6 +73,27 @@ Spatial6 motion_transform(const Mat3& R, const Col3& r) {
     return {Rt, Mat3{}, ex(-1) * (Rt * skew(r)), Rt};
 }
 
+// X^T I X for a rigid-body inertia I = [[J, [h x]], [[h x]^T, m 1]] about a child's origin in its
+// frame (J about the origin, h = m c its first moment): the same inertia about the parent's
+// origin in the parent's frame, by a rotation (R J R^T, R h) and the parallel-axis shift by
+// r = r^{O/O_P}: J' = R J R^T + m [r x][r x]^T + [r x][Rh x]^T + [Rh x][r x]^T, h' = R h + m r.
+// Cheaper than the 6 x 6 product: the zero and repeated blocks are never formed.
+Spatial6 inertia_to_parent(const Spatial6& I, const Mat3& R, const Col3& r) {
+    const ex m = I.d(0, 0);
+    const Col3 h = R * Col3{I.b(2, 1), I.b(0, 2), I.b(1, 0)};
+    const Mat3 RJ = R * I.a, sr = skew(r), sh = skew(h);
+    Mat3 J;
+    for (int i = 0; i < 3; ++i)
+        for (int j = i; j < 3; ++j) {
+            ex e = 0;
+            for (int l = 0; l < 3; ++l) e += RJ(i, l) * R(j, l);
+            J(i, j) = J(j, i) = e;
+        }
+    J = J + m * (sr * sr.transpose()) + sr * sh.transpose() + sh * sr.transpose();
+    const Mat3 shp = skew(h + m * r);
+    return {J, shp, shp.transpose(), m * Mat3::identity()};
+}
+
 // ---- the tree ------------------------------------------------------------------------------------
 struct Node {
     TreeJoint joint;
@@ -384,7 +405,8 @@ std::vector<ex> tree_active_forces(const System& sys, const Speeds& sp,
 }
 
 // The rows and the accelerations of a tree extract_tree found.
-TreeEquations form_on_tree(const System& sys, const Speeds& sp, Tree& tree) {
+TreeEquations form_on_tree(const System& sys, const Speeds& sp, Tree& tree,
+                           const TreeOptions& options) {
     SymbolTable& st = sys.newtonian().symbols();
     const Namer name(st);
     std::vector<Node>& nodes = tree.nodes;
@@ -552,11 +574,72 @@ TreeEquations form_on_tree(const System& sys, const Speeds& sp, Tree& tree) {
         }
     }
 
+    // ---- bias forces: the rows' recursion at u' = 0, no loads -----------------------------------
+    std::vector<ex> bias_forces;
+    if (options.mass_matrix) {
+        bias_forces.assign(sp.u.size(), 0);
+        std::vector<Spatial> A(nb);  // (alpha, a^O) at u' = 0, -g of the base folded in
+        for (std::size_t k = 0; k < nb; ++k) {
+            const Node& n = nodes[k];
+            Spatial AP = n.parent >= 0 ? A[static_cast<std::size_t>(n.parent)] : base;
+            A[k] = name(X[k] * AP + c[k]);
+        }
+        std::vector<Spatial> f(nb);
+        for (std::size_t k = nb; k-- > 0;) {
+            Spatial fk = I[k] * A[k] + b[k];
+            for (int ch : nodes[k].children)
+                fk = fk + transpose(X[static_cast<std::size_t>(ch)]) * f[static_cast<std::size_t>(ch)];
+            f[k] = name(fk);
+        }
+        for (std::size_t k = 0; k < nb; ++k)
+            for (std::size_t i = 0; i < nodes[k].joint.coordinates.size(); ++i)
+                bias_forces[nodes[k].joint.coordinates[i]] = dot(S[k][i], f[k]);
+    }
+
+    // ---- mass matrix: the composite-rigid-body recursion ---------------------------------------
+    const std::size_t nu = sp.u.size();
+    std::vector<ex> mass_matrix;
+    if (options.mass_matrix) {
+        mass_matrix.assign(nu * nu, 0);
+        // composite inertias of the subtrees about their origins, from the tip inward
+        std::vector<Spatial6> Ic = I;
+        for (std::size_t k = nb; k-- > 0;) {
+            Ic[k] = name.symmetric(Ic[k]);
+            if (nodes[k].parent >= 0) {
+                const auto p = static_cast<std::size_t>(nodes[k].parent);
+                Ic[p] = Ic[p] + inertia_to_parent(Ic[k], nodes[k].R, nodes[k].r);
+            }
+        }
+        // per partial motion: its subtree's inertia force, carried towards the root
+        for (std::size_t k = 0; k < nb; ++k) {
+            const std::vector<std::size_t>& cols = nodes[k].joint.coordinates;
+            for (std::size_t i = 0; i < cols.size(); ++i) {
+                Spatial F = name(Ic[k] * S[k][i]);
+                for (std::size_t l = i; l < cols.size(); ++l) {
+                    ex m = name(dot(S[k][l], F));
+                    mass_matrix[cols[l] * nu + cols[i]] = mass_matrix[cols[i] * nu + cols[l]] = m;
+                }
+                for (std::size_t j = k; nodes[j].parent >= 0;) {
+                    const auto p = static_cast<std::size_t>(nodes[j].parent);
+                    F = name(transpose(X[j]) * F);
+                    j = p;
+                    const std::vector<std::size_t>& rows = nodes[j].joint.coordinates;
+                    for (std::size_t l = 0; l < rows.size(); ++l) {
+                        ex m = name(dot(S[j][l], F));
+                        mass_matrix[rows[l] * nu + cols[i]] = mass_matrix[cols[i] * nu + rows[l]] = m;
+                    }
+                }
+            }
+        }
+    }
+
     TreeEquations out;
     for (const Node& n : nodes) out.joints.push_back(n.joint);
     out.speeds = sp.u;
     out.residuals = std::move(residuals);
     out.accelerations = std::move(accelerations);
+    out.mass_matrix = std::move(mass_matrix);
+    out.bias_forces = std::move(bias_forces);
     return out;
 }
 
@@ -566,16 +649,17 @@ std::string explain_not_tree(const System& sys, const std::vector<TimeVariable>&
     return extract_tree(sys, q, rates_of(q)).why_not;
 }
 
-TreeEquations form_tree_equations(const System& sys, const std::vector<TimeVariable>& q) {
+TreeEquations form_tree_equations(const System& sys, const std::vector<TimeVariable>& q,
+                                  const TreeOptions& options) {
     Tree tree = extract_tree(sys, q, rates_of(q));
     if (!tree.why_not.empty())
         throw ModelError(std::string(kWho) + ": not a tree the recursion handles: " + tree.why_not +
                          "; form Kane's, Lagrange's or the road-map's equations instead");
-    return form_on_tree(sys, rates_of(q), tree);
+    return form_on_tree(sys, rates_of(q), tree, options);
 }
 
 TreeEquations form_tree_equations(const System& sys, const std::vector<TimeVariable>& q,
-                                  const std::vector<ex>& speeds) {
+                                  const std::vector<ex>& speeds, const TreeOptions& options) {
     SymbolTable& st = sys.newtonian().symbols();
     Speeds sp;
     sp.rates = false;
@@ -592,14 +676,15 @@ TreeEquations form_tree_equations(const System& sys, const std::vector<TimeVaria
     if (!tree.why_not.empty())
         throw ModelError(std::string(kWho) + ": not a tree the recursion handles: " + tree.why_not +
                          "; form Kane's equations with these speeds instead");
-    return form_on_tree(sys, sp, tree);
+    return form_on_tree(sys, sp, tree, options);
 }
 
 std::optional<TreeEquations> form_tree_equations_if_tree(const System& sys,
-                                                         const std::vector<TimeVariable>& q) {
+                                                         const std::vector<TimeVariable>& q,
+                                                         const TreeOptions& options) {
     Tree tree = extract_tree(sys, q, rates_of(q));
     if (!tree.why_not.empty()) return std::nullopt;
-    return form_on_tree(sys, rates_of(q), tree);
+    return form_on_tree(sys, rates_of(q), tree, options);
 }
 
 }  // namespace alembert

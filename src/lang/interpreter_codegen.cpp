@@ -8,6 +8,7 @@
 
 #include "alembert/codegen/codegen.hpp"
 #include "alembert/codegen/native.hpp"
+#include "alembert/eom/jacobians.hpp"
 #include "alembert/eom/planner.hpp"
 #include "alembert/eom/tree_dynamics.hpp"
 #include "alembert/lang/parser.hpp"
@@ -49,6 +50,7 @@ void Interpreter::Impl::codegen(const Statement& s) {
             r.loads.push_back(x);
         }
     if (s.has_word("name")) r.name = s.word("name").text;
+    if (s.lists.count("jacobians")) r.jacobians = s.lists.at("jacobians");
     r.dir = output_path(s);
     run_codegen(r, s.location);
 }
@@ -136,6 +138,36 @@ void Interpreter::Impl::run_codegen(const CodegenRequest& r, Location where) {
         opts.outputs.push_back({code_identifier(numbers.outputs[i].name), numbers.outputs[i].expression,
                                 numbers.output_si_units[i]});
     }
+    // point and frame Jacobians: a point's, or a body's frame at its origin B_o (else its mass
+    // centre)
+    for (const Word& w : r.jacobians) {
+        if (speeds)
+            throw ScriptError(w.location, "Jacobians are generated for the coordinates' rates, not for "
+                                          "equations in generalized speeds",
+                              "leave out 'jacobian' or declare the coordinates with q''");
+        auto point_named = [&](const std::string& name) -> const Point* {
+            for (const Point* P : sys.points())
+                if (P->name() == name) return P;
+            return nullptr;
+        };
+        const Body* body = nullptr;
+        for (const Body* b : sys.bodies())
+            if (b->name() == w.text) body = b;
+        if (body && body->frame()) {
+            const Point* O = point_named(w.text + "_o");
+            if (!O || O->owner() != body) O = &body->cm();
+            opts.jacobians.push_back(
+                {code_identifier(w.text), guard(w.location, [&] {
+                     return form_frame_jacobian(sys, q, *body->frame(), *O);
+                 })});
+        } else if (const Point* P = point_named(w.text)) {
+            opts.jacobians.push_back(
+                {code_identifier(w.text), guard(w.location, [&] { return form_point_jacobian(sys, q, *P); })});
+        } else {
+            throw ScriptError(w.location, "'" + w.text + "' is neither a point nor a rigid body of the model",
+                              "name a point (point P) or a body (body B) declared before codegen");
+        }
+    }
     // the script's simulation settings make the generated simulation program
     opts.simulation = true;
     SimulationSpec& spec = opts.simulation_spec;
@@ -174,10 +206,13 @@ void Interpreter::Impl::run_codegen(const CodegenRequest& r, Location where) {
             eqs.constraint_forces = constraint_forces;
             return generate_code(table, eqs, language, r.dir, opts);
         }
-        if (std::optional<TreeEquations> t = form_tree_equations_if_tree(sys, q)) {
+        if (std::optional<TreeEquations> t =
+                form_tree_equations_if_tree(sys, q, TreeOptions{.mass_matrix = true})) {
             tree = true;
             DynamicsEquations eqs{
                 q, t->residuals, loads, std::nullopt, t->accelerations, inverse_residuals};
+            eqs.mass_matrix = t->mass_matrix;
+            eqs.bias_forces = t->bias_forces;
             return generate_code(table, eqs, language, r.dir, opts);
         }
         KaneEquations k = form_kane_equations(sys, KaneOptions{.coordinates = q});
@@ -200,7 +235,7 @@ void Interpreter::Impl::run_codegen(const CodegenRequest& r, Location where) {
                "in the simulation";
     else if (tree)
         out << "\n  recursive formation: mass matrix and forcing, accelerations by the articulated-body "
-               "recursion (no solve)";
+               "recursion (no solve), mass matrix alone (composite-rigid-body recursion) and bias forces";
     else
         out << "\n  mass matrix and forcing (" << (g.symmetric_mass_matrix ? "Cholesky" : "LU")
             << " solve for the accelerations)";
@@ -209,6 +244,8 @@ void Interpreter::Impl::run_codegen(const CodegenRequest& r, Location where) {
     else if (speeds) out << "; no inverse dynamics (equations in generalized speeds)";
     else out << "; no inverse dynamics (" << loads.size() << " loads for " << q.size() << " coordinates)";
     if (!opts.outputs.empty()) out << ", " << opts.outputs.size() << " outputs";
+    if (!opts.jacobians.empty())
+        out << ", " << opts.jacobians.size() << (opts.jacobians.size() == 1 ? " Jacobian" : " Jacobians");
     out << ", a simulation program";
     if (numbers.options.integrator != Integrator::dopri5)
         out << " (integrating by Dormand-Prince 5(4): the integrator " << to_string(numbers.options.integrator)

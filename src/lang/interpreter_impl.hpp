@@ -138,6 +138,7 @@ struct CodegenRequest {
     std::vector<ex> loads{};  ///< empty: every load measure of the model
     std::string name{};       ///< empty: the script's name
     std::string dir{};
+    std::vector<Word> jacobians{};  ///< points and bodies whose Jacobians are generated
 };
 
 struct Interpreter::Impl {

@@ -73,15 +73,17 @@ inline CodegenCase planar_chain_case(int n) {
 }
 
 /// An n-link chain (planar or spatial) by the recursive formation: the road-map rows about
-/// successive joints and the articulated-body accelerations; the reference is formed from
-/// Kane's equations, an independent method.
+/// successive joints, the articulated-body accelerations, M alone and the bias forces alone;
+/// the reference is formed from Kane's equations, an independent method.
 inline CodegenCase tree_chain_case(int n, ChainKind kind) {
     CodegenCase c;
     c.name = std::string(kind == ChainKind::planar ? "tree" : "spatial_tree") + std::to_string(n);
     c.model = std::make_unique<SampleModel>(make_n_link_pendulum(n, kind));
     System& sys = c.model->system;
-    TreeEquations tree = form_tree_equations(sys, c.model->q);
+    TreeEquations tree = form_tree_equations(sys, c.model->q, TreeOptions{.mass_matrix = true});
     c.equations = {c.model->q, tree.residuals, c.model->unknowns, std::nullopt, tree.accelerations};
+    c.equations.mass_matrix = tree.mass_matrix;  // emitted in every language too
+    c.equations.bias_forces = tree.bias_forces;
     c.reference_residuals = form_kane_equations(sys, c.model->q);
     ex PE = sys.calc_potential_energy(), KE = sys.calc_kinetic_energy(sys.bodies());
     c.outputs = {{"E", KE + PE, "J"}};

@@ -474,3 +474,26 @@ TEST(Report, AModelThePlannerCannotPlanGetsANoteInsteadOfARoadmap) {
     EXPECT_NE(page.str().find("; form one in the script (roadmap E for ...) to see it here.\"]"), std::string::npos);
     EXPECT_NE(page.str().find("\"roadmap\":[]"), std::string::npos);
 }
+
+TEST(Codegen, JacobianClauseGeneratesAPointsAndABodysJacobians) {
+    // a body's frame Jacobian at its origin (C_o) and a point's Jacobian, three functions each;
+    // the sit-to-stand model is a tree, so M alone and the bias forces come too
+    TempDir dir;
+    Script r(dir.path);
+    r.run(sit_to_stand_model() + "codegen c name sts jacobian C, C_o to \"gen\"\n");
+    std::ifstream h(dir.path / "gen" / "sts.h");
+    std::string header((std::istreambuf_iterator<char>(h)), std::istreambuf_iterator<char>());
+    for (const char* f : {"sts_C_position(", "sts_C_jacobian(", "sts_C_jacobian_dot_rates(",
+                          "sts_C_o_jacobian(", "sts_mass_matrix(", "sts_bias_forces("})
+        EXPECT_NE(header.find(f), std::string::npos) << f << " in\n" << header;
+}
+
+TEST(Codegen, JacobianClauseNamesWhatIsNeitherAPointNorABody) {
+    TempDir dir;
+    Script r(dir.path);
+    EXPECT_NE(r.interp.run(sit_to_stand_model() + "codegen c name sts jacobian nowhere to \"gen\"\n",
+                           "test.alb"),
+              RunStatus::ok);
+    EXPECT_NE(r.err.str().find("'nowhere' is neither a point nor a rigid body"), std::string::npos)
+        << r.err.str();
+}

@@ -67,6 +67,11 @@ struct CodePlan {
     bool symmetric_mass_matrix = false;
     CodeFunction mass_forcing;      ///< inputs t, q, qp, u; results M (row-major), f
     CodeFunction accelerations;     ///< inputs t, q, qp, u; result qpp (empty if not given)
+    CodeFunction mass_matrix;       ///< inputs t, q; result M (row-major; empty if not given)
+    CodeFunction bias_forces;       ///< inputs t, q, qp; result bias (empty if not given)
+    /// Per requested Jacobian: its position (t, q; result pos), its Jacobian (t, q; result J)
+    /// and J' q' (t, q, qp; result Jdqp), in that order.
+    std::vector<CodeFunction> jacobian_functions;
     CodeFunction inverse_dynamics;  ///< inputs t, q, qp, qpp; result u (empty if not formed)
     CodeFunction output_function;   ///< inputs t, q, qp, qpp, u; result y
     CodeFunction load_laws;         ///< inputs t, q, qp; result u (simulation only)

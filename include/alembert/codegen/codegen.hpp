@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "alembert/eom/equations.hpp"
+#include "alembert/eom/jacobians.hpp"
 #include "alembert/eom/kane.hpp"
 #include "alembert/mech/constraint.hpp"
 #include "alembert/sym/symbol_table.hpp"
@@ -94,6 +95,14 @@ struct DynamicsEquations {
     /// and inverse dynamics are not used).
     std::vector<CodegenConstraint> constraints{};
     std::vector<ex> constraint_forces{};
+    /// The mass matrix alone, M(q, t), row by row (coordinates x coordinates), as functions
+    /// of t, q and the constants (`TreeEquations::mass_matrix`, the composite-rigid-body
+    /// recursion); when given, a `mass_matrix` function is generated (no forcing, no q').
+    std::vector<ex> mass_matrix{};
+    /// The bias forces alone, h(q, q', t) = C(q, q') q' + g(q), one per coordinate
+    /// (`TreeEquations::bias_forces`), so that M q'' + h are the generalized inertia forces
+    /// with gravity; when given, a `bias_forces` function is generated (no loads, no q'').
+    std::vector<ex> bias_forces{};
 };
 
 /// A quantity the generated code computes on request (an output column of a simulation):
@@ -102,6 +111,14 @@ struct CodegenOutput {
     std::string name;  ///< an identifier, e.g. "KE" or "p_NoQ_x"
     ex expression;
     std::string unit{};  ///< printed in comments and CSV headers, e.g. "J"
+};
+
+/// A point's or a frame's Jacobian to generate (form_point_jacobian, form_frame_jacobian):
+/// functions NAME_<name>_position (t, q), NAME_<name>_jacobian (t, q; rows x nq, row by row)
+/// and NAME_<name>_jacobian_dot_rates (t, q, qp; J' q', one per row).
+struct CodegenJacobian {
+    std::string name;  ///< an identifier, e.g. "flange"
+    KinematicJacobian jacobian;
 };
 
 /// What the generated simulation program does (Language::c and cpp write a main program with
@@ -141,6 +158,8 @@ struct CodegenOptions {
     bool expand_angle_sums = true;
     /// Extra outputs computed by an `outputs` function (and written by the simulation).
     std::vector<CodegenOutput> outputs{};
+    /// Point and frame Jacobians, three functions each (CodegenJacobian); C, C++ and Python.
+    std::vector<CodegenJacobian> jacobians{};
     /// Also write a complete simulation program (see SimulationSpec).
     bool simulation = false;
     SimulationSpec simulation_spec{};
@@ -154,6 +173,8 @@ struct GeneratedCode {
     /// and the operations done once per parameter set (all preludes together).
     std::size_t mass_forcing_operations = 0;
     std::size_t accelerations_operations = 0;  ///< explicit q'' (0 when not given)
+    std::size_t mass_matrix_operations = 0;    ///< M alone (0 when not given)
+    std::size_t bias_forces_operations = 0;    ///< h alone (0 when not given)
     std::size_t inverse_dynamics_operations = 0;
     std::size_t outputs_operations = 0;
     std::size_t prelude_operations = 0;
