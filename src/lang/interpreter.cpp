@@ -397,7 +397,28 @@ exmap Interpreter::Impl::bindings(const std::vector<Binding>& list, const std::s
 }
 
 double Interpreter::Impl::binding_value(const Binding& b, const std::string& what) {
-    double x = number_of(b.quantity, symbol_dimension(b.name.text), what, b.name.location);
+    Dimension given = Dimension::open();
+    double x = number_of(b.quantity, symbol_dimension(b.name.text), what, b.name.location, &given);
+    // a coordinate declared without a unit that turns a frame is an angle: `q = 1 m` was read
+    // as 1 rad in silence
+    if (!symbol_dimension(b.name.text).known && given.known && !given.is_none()) {
+        const std::string base = b.name.text.substr(0, b.name.text.find('\''));
+        const int primes = static_cast<int>(b.name.text.size() - base.size());
+        const Dimension angle_rate = Dimension::none() / pow(Dimension::time(), primes);
+        if (sys && sys->symbols().contains(base) &&
+            sys->symbols().kind(sys->symbols().symbol(base)) == SymbolKind::variable &&
+            given.conflicts(angle_rate)) {
+            const std::vector<std::string> kind =
+                coordinate_quantities({sys->symbols().variable(base)}, b.name.location);
+            if (kind.at(0) == "angle")
+                throw ScriptError(b.quantity.unit.empty() ? b.quantity.value->location
+                                                          : b.quantity.unit.location,
+                                  "'" + base + "' turns a frame, so it is an angle, but " +
+                                      what + " is " + describe(given),
+                                  "give an angle (" + b.name.text + " = 1 rad, or 57.3 deg), " +
+                                      "or declare its unit (variable " + base + "'' rad)");
+        }
+    }
     if (b.quantity.unit.empty() && !carries_unit(*b.quantity.value) && x != 0) {
         std::optional<Unit> u = display_unit(b.name.text);
         if (u && u->scale != 1)
