@@ -235,6 +235,12 @@ std::vector<Segment> segments_of(const System& sys, const std::vector<const Poin
     return out;
 }
 
+// "up" in N: against gravity, else Ny for planar models and Nz for others
+std::vector<double> view_up(const System& sys, const Evaluation& ev, bool planar) {
+    if (sys.gravity().is_zero()) return {0, planar ? 1.0 : 0, planar ? 0 : 1.0};
+    return ev.in_newtonian(-sys.gravity());
+}
+
 std::string geometry_json(const System& sys, const Evaluation& ev,
                           const std::vector<const Point*>& placed, bool* planar) {
     std::vector<std::string> pts, segs;
@@ -250,9 +256,7 @@ std::string geometry_json(const System& sys, const Evaluation& ev,
         segs.push_back(
             Obj().add("body", str(s.body)).add("from", str(s.from)).add("to", str(s.to)).done());
     // "up" in the 3D view: against gravity, else Ny for planar models and Nz for others
-    std::vector<double> up = sys.gravity().is_zero()
-                                 ? std::vector<double>{0, *planar ? 1.0 : 0, *planar ? 0 : 1.0}
-                                 : ev.in_newtonian(-sys.gravity());
+    std::vector<double> up = view_up(sys, ev, *planar);
     Obj o;
     o.add("planar", *planar ? "true" : "false").add("points", arr(pts)).add("segments", arr(segs));
     o.add("up", num_arr(up));
@@ -684,24 +688,55 @@ std::string cm(double v) {
     return buf;
 }
 
-// the page's projection: planar models in their plane, others turned 0.6 rad about Ny and
-// tilted 0.35 rad (the viewer's default view); TikZ's y points up
-std::array<double, 2> project(const std::vector<double>& p, bool planar) {
-    if (p.size() < 3) return {0, 0};
-    if (planar) return {p[0], p[1]};
-    const double ct = std::cos(0.6), st = std::sin(0.6), ce = std::cos(0.35), se = std::sin(0.35);
-    const double x = ct * p[0] + st * p[2], z = -st * p[0] + ct * p[2];
-    return {x, ce * p[1] + se * z};
-}
+// the page's projection (the viewer's default view), "up" up the page: planar models in their
+// plane; others in axes (h, up, h x up), h the N axis least along up made square to it,
+// turned 0.6 rad about up and tilted 0.35 rad; TikZ's y points up
+class Projection {
+public:
+    Projection(const std::vector<double>& up, bool planar) : planar_(planar) {
+        u_ = {up.size() > 0 ? up[0] : 0, up.size() > 1 ? up[1] : 1, up.size() > 2 ? up[2] : 0};
+        if (planar) u_[2] = 0;
+        const double n = std::sqrt(dot(u_, u_));
+        if (!(n > 1e-12) || !std::isfinite(n)) u_ = {0, 1, 0};
+        else for (double& x : u_) x /= n;
+        std::array<std::array<double, 3>, 3> axes{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}};
+        std::stable_sort(axes.begin(), axes.end(), [&](const auto& a, const auto& b) {
+            return std::abs(dot(a, u_)) < std::abs(dot(b, u_));
+        });
+        const double k = dot(axes[0], u_);
+        for (int i = 0; i < 3; ++i) h_[i] = axes[0][i] - k * u_[i];
+        const double hn = std::sqrt(dot(h_, h_));
+        for (double& x : h_) x /= hn;
+        w_ = {h_[1] * u_[2] - h_[2] * u_[1], h_[2] * u_[0] - h_[0] * u_[2],
+              h_[0] * u_[1] - h_[1] * u_[0]};
+    }
+    std::array<double, 2> operator()(const std::vector<double>& p) const {
+        if (p.size() < 3) return {0, 0};
+        const std::array<double, 3> q{p[0], p[1], p[2]};
+        if (planar_) return {u_[1] * q[0] - u_[0] * q[1], u_[0] * q[0] + u_[1] * q[1]};
+        const double ct = std::cos(0.6), st = std::sin(0.6), ce = std::cos(0.35), se = std::sin(0.35);
+        const double X = dot(q, h_), Y = dot(q, u_), Z = dot(q, w_);
+        const double x = ct * X + st * Z, z = -st * X + ct * Z;
+        return {x, ce * Y + se * z};
+    }
+
+private:
+    static double dot(const std::array<double, 3>& a, const std::array<double, 3>& b) {
+        return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+    }
+    bool planar_;
+    std::array<double, 3> u_{}, h_{}, w_{};
+};
 
 std::string tikz_diagram(const System& sys, const Evaluation& ev,
                          const std::vector<const Point*>& placed, bool planar,
                          const RoadmapRow& r) {
+    const Projection project(view_up(sys, ev, planar), planar);
     std::map<const Point*, std::array<double, 2>> at;
     std::vector<const Point*> order;  // the model's order, for the same output run to run
     double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
     for (const Point* p : placed) {
-        std::array<double, 2> q = project(ev.position(p), planar);
+        std::array<double, 2> q = project(ev.position(p));
         if (!std::isfinite(q[0]) || !std::isfinite(q[1])) continue;
         at[p] = q;
         order.push_back(p);
@@ -717,7 +752,7 @@ std::string tikz_diagram(const System& sys, const Evaluation& ev,
         return "(" + cm(scale * (q[0] - lo[0]) + dx) + "," + cm(scale * (q[1] - lo[1]) + dy) + ")";
     };
     auto unit = [&](const std::vector<double>& v, double* ux, double* uy) {
-        std::array<double, 2> d = project(v, planar);
+        std::array<double, 2> d = project(v);
         const double n = std::hypot(d[0], d[1]);
         if (!(n > 1e-12) || !std::isfinite(n)) return false;
         *ux = d[0] / n, *uy = d[1] / n;

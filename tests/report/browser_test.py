@@ -50,6 +50,7 @@ class Dom(html.parser.HTMLParser):
         self.status = None
         self.errors = ""
         self.fbds = []           # per svg.fbd: [data-loads, arrow groups counted]
+        self.gravity_shafts = []  # per gravity arrow in a diagram: (dx, dy) of its shaft, page axes
         self.equations = 0       # .equation boxes
         self.folded = 0          # long equations folded, typeset when opened
         self.katex = 0           # .katex inside them
@@ -105,6 +106,8 @@ class Dom(html.parser.HTMLParser):
             self.fbds.append([int(a.get("data-loads", "-1")), 0])
         if tag == "g" and "load" in c and self.inside("svg", "fbd"):
             self.fbds[-1][1] += 1
+        if tag == "line" and "shaft" in c and self.inside("g", "gravity") and self.inside("svg", "fbd"):
+            self.gravity_shafts.append((float(a["x2"]) - float(a["x1"]), float(a["y2"]) - float(a["y1"])))
         if "equation" in c:
             self.equations += 1
         if tag == "details" and "equation-folded" in c:
@@ -337,6 +340,13 @@ def examples(cli, source, work, browser):
         # the intermediates are on the page once, each row naming those it uses
         check(all(0 <= k < len(data["intermediates"]) for row in data["roadmap"] for k in row["intermediates"]),
               "%s: the rows' intermediates are in the page's table (%d)" % (name, len(data["intermediates"])))
+        # gravity down the page in every diagram, whichever N axis is up (SVG's y points down)
+        down = [dx == 0 and dy > 0 or abs(dx) <= 1e-9 * abs(dy) and dy > 0 for dx, dy in dom.gravity_shafts]
+        gravity = sum(1 for row in data["roadmap"] if row["diagram"]
+                      for load in row["diagram"]["loads"] if load["kind"] == "gravity")
+        check(len(down) == gravity and all(down),
+              "%s: gravity points down the page in every diagram (%d arrows of %d, shafts %s)"
+              % (name, len(down), gravity, dom.gravity_shafts[:3]))
         series = sum(len(h["series"]) for h in data["histories"])
         check(dom.plots == len(data["histories"]) and dom.series == series,
               "%s: a plot per history with its series (%d plots, %d series)" % (name, dom.plots, dom.series))

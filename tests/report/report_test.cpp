@@ -534,3 +534,55 @@ TEST(ReportLatex, TheRoadmapTableTheLoadsAndTheEquationsForAPaper) {
 
 }  // namespace
 }  // namespace alembert
+
+namespace alembert {
+namespace {
+// the (dx, dy) of every gravity arrow in roadmap.tex's diagrams (TikZ's y points up)
+std::vector<std::pair<double, double>> gravity_arrows(const std::string& tex) {
+    std::vector<std::pair<double, double>> out;
+    std::istringstream in(tex);
+    std::string line;
+    bool next = false;
+    while (std::getline(in, line)) {
+        if (next) {
+            const std::size_t at = line.find("++(");
+            if (at != std::string::npos) {
+                double dx = 0, dy = 0;
+                char comma = 0;
+                std::istringstream v(line.substr(at + 3));
+                v >> dx >> comma >> dy;
+                out.emplace_back(dx, dy);
+            }
+        }
+        next = line.rfind("% load: ", 0) == 0 && line.size() > 2 && line.substr(line.size() - 2) == " g";
+    }
+    return out;
+}
+}  // namespace
+
+TEST(Report, GravityPointsDownThePageWhicheverAxisIsUp) {
+    // the arm has Nz up (gravity -g Nz); the chain has Ny up: both drawn with gravity down
+    SampleModel arm = make_kuka_iiwa14();
+    SampleModel chain = make_n_link_pendulum(3, ChainKind::spatial);
+    for (SampleModel* m : {&arm, &chain}) {
+        ReportContent content;
+        content.system = &m->system;
+        content.title = "up";
+        content.coordinates = m->q;
+        content.rows = plan_roadmap(m->system, m->q, m->unknowns);
+        for (std::size_t i = 0; i < m->q.size(); ++i)
+            content.configuration[m->q[i].symbol()] = 0.3 + 0.1 * static_cast<double>(i);
+        const auto arrows = gravity_arrows(render_report_latex(content));
+        ASSERT_FALSE(arrows.empty());
+        for (const auto& [dx, dy] : arrows) {
+            EXPECT_LT(dy, -0.5);
+            EXPECT_LE(std::abs(dx), 0.01) << dx << ", " << dy;
+        }
+        // the page's "up" is against gravity
+        const std::string json = render_report_json(content);
+        const bool z_up = json.find("\"up\":[0,0,") != std::string::npos;
+        EXPECT_EQ(z_up, m == &arm) << json.substr(json.find("\"up\":"), 30);
+    }
+}
+
+}  // namespace alembert

@@ -86,14 +86,31 @@
   }
 
   // ---- geometry: the plane of planar models, an oblique view of spatial ones ----------------
-  // spatial models: turned about Ny by view.turn, then tilted by view.tilt (radians)
+  // "up" (against gravity: geo.up) is up the page. Planar models: their plane, up the page.
+  // Spatial models: in axes (h, up, h x up), h the N axis least along up made square to it,
+  // turned about up by view.turn, then tilted by view.tilt (radians)
   var view = {turn: 0.6, tilt: 0.35};
-  function projector(planar) {
-    if (planar) return function (p) { return [p[0], -p[1]]; };
+  function dot3(a, b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+  function upOf(geo, planar) {
+    var u = (geo.up || [0, 1, 0]).slice(0, 3);
+    if (planar) u[2] = 0;
+    var n = Math.hypot(u[0], u[1], u[2]);
+    return n > 1e-12 ? [u[0] / n, u[1] / n, u[2] / n] : [0, 1, 0];
+  }
+  function projector(geo) {
+    var u = upOf(geo, geo.planar);
+    if (geo.planar) return function (p) { return [u[1] * p[0] - u[0] * p[1], -(u[0] * p[0] + u[1] * p[1])]; };
+    var axes = [[1, 0, 0], [0, 1, 0], [0, 0, 1]];
+    axes.sort(function (a, b) { return Math.abs(dot3(a, u)) - Math.abs(dot3(b, u)); });
+    var a = axes[0], k = dot3(a, u), h = [a[0] - k * u[0], a[1] - k * u[1], a[2] - k * u[2]];
+    var hn = Math.hypot(h[0], h[1], h[2]);
+    h = [h[0] / hn, h[1] / hn, h[2] / hn];
+    var w = [h[1] * u[2] - h[2] * u[1], h[2] * u[0] - h[0] * u[2], h[0] * u[1] - h[1] * u[0]];  // h x up
     var ct = Math.cos(view.turn), st = Math.sin(view.turn), ce = Math.cos(view.tilt), se = Math.sin(view.tilt);
     return function (p) {
-      var x = ct * p[0] + st * p[2], z = -st * p[0] + ct * p[2];
-      return [x, -(ce * p[1] + se * z)];
+      var X = dot3(p, h), Y = dot3(p, u), Z = dot3(p, w);
+      var x = ct * X + st * Z, z = -st * X + ct * Z;
+      return [x, -(ce * Y + se * z)];
     };
   }
   function bounds(points, project) {
@@ -124,7 +141,7 @@
 
   // one free-body diagram: the model faded, S in ink, each load on S as an arrow
   function drawDiagram(parent, data, row) {
-    var geo = data.geometry, project = projector(geo.planar);
+    var geo = data.geometry, project = projector(geo);
     var at = {};
     geo.points.forEach(function (p) { at[p.name] = p.at; });
     var box = bounds(geo.points.map(function (p) { return p.at; }), project);
@@ -655,7 +672,7 @@
     }
     var sec = el("section", {id: "animation"}, main);
     el("h2", {}, sec, "Motion (" + a.source + ")");
-    var project = projector(geo.planar), index = {};
+    var project = projector(geo), index = {};
     a.points.forEach(function (n, i) { index[n] = i; });
     var pointAt = function (frame, name) { var i = 3 * index[name]; return [frame[i], frame[i + 1], frame[i + 2]]; };
     var all = [];
