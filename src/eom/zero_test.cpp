@@ -76,6 +76,18 @@ std::uint64_t constants_fingerprint(const SymbolTable& st) {
     return h;
 }
 
+// the remembered values, forgotten when `st`'s constant values differ from those they were
+// computed with
+RememberedValues& remembered_for(const SymbolTable& st) {
+    RememberedValues& r = remembered();
+    const std::uint64_t fp = constants_fingerprint(st);
+    if (r.constants != fp) {
+        r.intermediates.clear();
+        r.constants = fp;
+    }
+    return r;
+}
+
 class StateValues {
 public:
     StateValues(const SymbolTable& st, int state) : st_(st), state_(state) {}
@@ -182,24 +194,18 @@ private:
     int state_;
     ex moved_ = 0;
     // the values of intermediates that move with moved_, shared with the inner evaluations
-    std::shared_ptr<std::unordered_map<ex, long double, std::hash<ex>, GiNaC::ex_is_equal>>
-        fresh_ = std::make_shared<
-            std::unordered_map<ex, long double, std::hash<ex>, GiNaC::ex_is_equal>>();
+    using Values = std::unordered_map<ex, long double, std::hash<ex>, GiNaC::ex_is_equal>;
+    std::shared_ptr<Values> fresh_ = std::make_shared<Values>();
     std::unordered_map<const GiNaC::basic*, long double> memo_;
     std::vector<ex> keep_;
 };
 
-// the values of each expression's terms and of itself at each state, or nullopt where the
-// fast path cannot evaluate them (the compiled path, with its own fallback, decides then)
+// the same test through a compiled tape, for expressions the walk above cannot evaluate; it
+// falls back in turn to a symbolic test
 bool all_zero_compiled(const SymbolTable& st, const std::vector<ex>& es);
 
 bool all_zero(const SymbolTable& st, const std::vector<ex>& es) {
-    RememberedValues& r = remembered();
-    const std::uint64_t fp = constants_fingerprint(st);
-    if (r.constants != fp) {
-        r.intermediates.clear();
-        r.constants = fp;
-    }
+    remembered_for(st);
     try {
         for (int state = 0; state < kStates; ++state) {
             StateValues values(st, state);
@@ -306,12 +312,7 @@ std::vector<bool> calc_changes_with_at_random_states(const SymbolTable& st, cons
     };
     // the remembered intermediates' values first (all_zero's fast path); then compiled
     try {
-        RememberedValues& r = remembered();
-        const std::uint64_t fp = constants_fingerprint(st);
-        if (r.constants != fp) {
-            r.intermediates.clear();
-            r.constants = fp;
-        }
+        remembered_for(st);
         std::vector<bool> fast(symbols.size(), false);
         auto measured = [&](StateValues& v, long double* value) {
             long double scale = 1;
