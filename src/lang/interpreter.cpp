@@ -443,7 +443,35 @@ void Interpreter::Impl::execute(const Statement& s) {
     const StatementSpec* spec = find_statement(k);
     if (!spec) throw InternalError("the statement '" + k + "' is parsed but not registered");
     if (spec->needs_model) model(s.location);
-    spec->run(*this, s);
+    // what solve, evaluate and linearize print goes on the report's page too
+    const bool result = k == "solve" || k == "evaluate" || k == "linearize";
+    if (!result) {
+        spec->run(*this, s);
+        return;
+    }
+    transcript.keep_results();
+    try {
+        spec->run(*this, s);
+    } catch (...) {
+        (void)transcript.take_kept();
+        throw;
+    }
+    std::string text = transcript.take_kept();
+    if (text.empty()) return;
+    // the statement on one line: continuation lines ("\" at a line's end) joined
+    std::string statement;
+    for (std::size_t i = 0; i < s.source.size(); ++i) {
+        if (s.source[i] == '\\' && i + 1 < s.source.size() && s.source[i + 1] == '\n') {
+            while (!statement.empty() && statement.back() == ' ') statement.pop_back();
+            statement += ' ';
+            for (i += 2; i < s.source.size() && (s.source[i] == ' ' || s.source[i] == '\t'); ++i) {
+            }
+            --i;
+            continue;
+        }
+        statement += s.source[i];
+    }
+    results.push_back({s.location.line, statement, std::move(text)});
 }
 
 }  // namespace alembert::lang

@@ -366,6 +366,19 @@ void Interpreter::Impl::methods(const Statement& s) {
     print_equations(n.text, eqs, accelerations);
 }
 
+void Interpreter::Impl::remember_solved_configuration(const exmap& at, const std::vector<ex>& xs,
+                                                       const std::vector<double>& values, int line) {
+    exmap found;
+    for (const auto& [x, v] : at)
+        if (is_coordinate(x, 0)) found[x] = v;
+    for (std::size_t i = 0; i < xs.size() && i < values.size(); ++i)
+        if (is_coordinate(xs[i], 0)) found[xs[i]] = values[i];
+    if (found.empty()) return;
+    solved_configuration = std::move(found);
+    solved_line = line;
+    solved_after_histories = histories.size();
+}
+
 void Interpreter::Impl::solve(const Statement& s) {
     System& m = model(s.location);
     SymbolTable& table = m.symbols();
@@ -418,6 +431,7 @@ void Interpreter::Impl::solve(const Statement& s) {
         Equilibrium q = guard(n.location, [&] { return solve_equilibrium(table, eqs, xs, guess, at); },
                               "try another guess, nearer the solution you want");
         for (std::size_t i = 0; i < xs.size(); ++i) out += format_value(printed[i], q.values[i]) + "\n";
+        remember_solved_configuration(at, xs, q.values, s.location.line);
     } else {
         LinearSystem ls = guard(n.location, [&] { return form_linear_system(eqs, xs); });
         if (s.bindings.count("at")) {
@@ -435,6 +449,7 @@ void Interpreter::Impl::solve(const Statement& s) {
                                       "give every symbol a value after 'at'");
             for (std::size_t i = 0; i < xs.size(); ++i)
                 out += format_value(printed[i], x(static_cast<Eigen::Index>(i))) + "\n";
+            remember_solved_configuration(at, {}, {}, s.location.line);
         } else {
             SymbolicSolveOptions options;
             if (s.quantities.count("limit")) {

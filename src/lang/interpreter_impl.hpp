@@ -175,6 +175,15 @@ struct Interpreter::Impl {
     std::vector<PendingSymbol> pending_symbols{};  ///< declared before newtonian
     /// What simulate and inverse computed, in run order, for the report.
     std::vector<ReportHistory> histories{};
+    /// What solve, evaluate and linearize printed, in run order, for the report.
+    std::vector<ReportResult> results{};
+    /// The coordinates the last solve found or was given (its `at` values and the
+    /// coordinates solved for), where it was, and how many histories were recorded before it:
+    /// the report draws its diagrams there unless a later motion or the report's `at` says
+    /// otherwise.
+    exmap solved_configuration{};
+    int solved_line = 0;
+    std::size_t solved_after_histories = 0;
     bool allow_outside_output = false;  ///< `to` may leave output_dir (--allow-outside-out)
     std::size_t max_terms = kDefaultMaxTerms;  ///< largest expansion expand/simplify may form
     std::size_t print_limit = kDefaultPrintLimit;  ///< larger equations go to a file, abbreviated
@@ -259,6 +268,10 @@ struct Interpreter::Impl {
                                 const ReportSettings& settings = {});
     /// Records a table simulate or inverse wrote, with the motion behind it when known.
     void record_history(const std::string& title, const Table& table, const MotionSamples* motion);
+    /// Keeps the coordinates a solve was given (`at`) or found (`xs`, `values`) for the
+    /// report's diagrams.
+    void remember_solved_configuration(const exmap& at, const std::vector<ex>& xs,
+                                       const std::vector<double>& values, int line);
     ex quantity_expression(const Quantity& q, const Dimension& expected, const std::string& what);
     bool is_coordinate(const ex& x, int order);
     std::string output_path(const Statement& s) const;

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <sstream>
 
+#include "alembert/eom/statics.hpp"
 #include "interpreter_impl.hpp"
 
 namespace alembert::lang {
@@ -37,6 +38,60 @@ void Interpreter::Impl::record_history(const std::string& title, const Table& ta
     histories.push_back(std::move(h));
 }
 
+namespace {
+
+// The model's configuration constraints (loops) closed at `configuration`: where they are
+// not met there, the coordinates they hold that were not given (`given`) are solved for,
+// the last ones first (a loop's dependent coordinates), from the values at hand, and
+// `source` says so. A loop that cannot be closed from there is said, not fatal.
+void close_loops(const System& sys, const std::vector<TimeVariable>& q, const exmap& given,
+                 exmap& configuration, std::string& source) {
+    const SymbolTable& st = sys.symbols();
+    std::vector<ex> residuals;
+    for (const Constraint& k : sys.constraints())
+        if (k.kind == ConstraintKind::configuration) residuals.push_back(k.residual);
+    if (residuals.empty()) return;
+    exmap values;
+    for (const TimeVariable& v : q) values[v.symbol()] = 0;
+    for (const auto& [x, v] : configuration) values[x] = v;
+    double worst = 0;
+    try {
+        for (const ex& r : residuals) worst = std::max(worst, std::abs(st.evaluate(r, values)));
+    } catch (const Error&) {
+        return;  // a loop that needs what has no value: drawn as it is
+    }
+    if (worst <= 1e-10) return;
+    // the loops' own coordinates, the last first, as many as there are loop equations that
+    // can move (those not given)
+    std::vector<ex> free;
+    for (auto v = q.rbegin(); v != q.rend() && free.size() < residuals.size(); ++v) {
+        if (given.count(v->symbol())) continue;
+        if (std::any_of(residuals.begin(), residuals.end(),
+                        [&](const ex& r) { return st.depends_on(r, v->symbol()); }))
+            free.push_back(v->symbol());
+    }
+    if (free.empty()) return;
+    std::reverse(free.begin(), free.end());
+    exmap fixed = values, guess;
+    for (const ex& x : free) {
+        guess[x] = values[x];
+        fixed.erase(x);
+    }
+    try {
+        const Equilibrium e = solve_equilibrium(st, residuals, free, guess, fixed);
+        std::string names;
+        for (std::size_t i = 0; i < free.size(); ++i) {
+            configuration[free[i]] = e.values[i];
+            names += (i ? ", " : "") + st.name(free[i]);
+        }
+        source += ", with " + names + " solved to close the loops";
+    } catch (const Error&) {
+        source += "; the loops do not close there (solve for the configuration first)";
+    }
+}
+
+}  // namespace
+
 std::string Interpreter::Impl::write_report_to(const std::string& dir, const exmap& configuration,
                                                Location where, const ReportSettings& settings) {
     System& sys = model(where);
@@ -50,6 +105,7 @@ std::string Interpreter::Impl::write_report_to(const std::string& dir, const exm
     }
     c.coordinates = default_coordinates();
     c.histories = histories;
+    c.results = results;
     // the road-map: the last the script formed, else the planner's
     if (!last_roadmap.empty()) {
         c.rows = roadmaps.at(last_roadmap).rows;
@@ -66,19 +122,39 @@ std::string Interpreter::Impl::write_report_to(const std::string& dir, const exm
                               "; form one in the script (roadmap E for ...) to see it here.");
         }
     }
-    // the configuration of the diagrams: as given, else the first sample of a motion, else
-    // the initial values
+    // the configuration of the diagrams: as given, else where the later of the last solve and
+    // the first motion puts the model, else the initial values; then the loops closed
     for (const auto& [x, v] : numbers.initial) c.configuration[x] = v;
-    for (const ReportHistory& h : histories)
-        if (!h.motion.empty()) {
-            for (std::size_t k = 0; k < h.coordinates.size(); ++k)
-                if (!h.motion[k].empty())
-                    c.configuration[h.coordinates[k].symbol()] = h.motion[k].front();
-            break;
-        }
+    c.configuration_source = "the initial values";
+    auto motion = std::find_if(histories.begin(), histories.end(),
+                               [](const ReportHistory& h) { return !h.motion.empty(); });
+    const bool solved_last =
+        !solved_configuration.empty() &&
+        (motion == histories.end() ||
+         solved_after_histories > static_cast<std::size_t>(motion - histories.begin()));
+    if (solved_last) {
+        for (const auto& [x, v] : solved_configuration) c.configuration[x] = v;
+        c.configuration_source = "where solve at line " + std::to_string(solved_line) + " puts it";
+    } else if (motion != histories.end()) {
+        for (std::size_t k = 0; k < motion->coordinates.size(); ++k)
+            if (!motion->motion[k].empty())
+                c.configuration[motion->coordinates[k].symbol()] = motion->motion[k].front();
+        c.configuration_source = "the first sample of the " + motion->title;
+    }
+    if (!configuration.empty()) {
+        for (const auto& [x, v] : configuration) c.configuration[x] = v;
+        const bool all = std::all_of(c.coordinates.begin(), c.coordinates.end(),
+                                     [&](const TimeVariable& q) { return configuration.count(q.symbol()); });
+        c.configuration_source = all ? "given with report at"
+                                     : "given with report at, the other coordinates from " + c.configuration_source;
+    }
+    close_loops(sys, c.coordinates, configuration, c.configuration, c.configuration_source);
     for (const auto& [x, v] : configuration) c.configuration[x] = v;
     for (const auto& [name, u] : units)
-        if (u.display) c.units[name] = u.display->text;
+        if (u.display) {
+            c.units[name] = u.display->text;
+            c.unit_scales[name] = u.display->scale;
+        }
     c.plot_histories = settings.plots;
     c.plotted = settings.plotted;
     for (const std::string& name : settings.plotted) {

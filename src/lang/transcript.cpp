@@ -25,6 +25,7 @@ void Transcript::comment(const std::string& text) {
 }
 
 void Transcript::result(const std::string& text) {
+    if (keeping_) kept_ += text.empty() || text.back() != '\n' ? text + "\n" : text;
     if (muted_) return;
     StepIndicator::clear_line();  // a step's progress line on the terminal, if one shows
     *out_ << text;

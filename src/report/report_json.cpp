@@ -156,6 +156,65 @@ std::string unit_of(const ReportContent& c, const std::string& name) {
     return it == c.units.end() ? "" : it->second;
 }
 
+// a value of `name` in the unit it is shown in (its declared unit), from SI
+double shown_value(const ReportContent& c, const std::string& name, double si) {
+    auto it = c.unit_scales.find(name);
+    return it == c.unit_scales.end() || !(it->second > 0) ? si : si / it->second;
+}
+
+// "qA = 60 deg, qB = -41.6 deg (the configuration solve found at line 31)"
+std::string configuration_words(const ReportContent& c) {
+    std::string out;
+    for (const TimeVariable& q : c.coordinates) {
+        auto it = c.configuration.find(q.symbol());
+        const double si = it != c.configuration.end() && GiNaC::is_a<GiNaC::numeric>(it->second)
+                              ? GiNaC::ex_to<GiNaC::numeric>(it->second).to_double()
+                              : 0.0;
+        const std::string unit = unit_of(c, q.name());
+        out += (out.empty() ? "" : ", ") + q.name() + " = " + num(shown_value(c, q.name(), si)) +
+               (unit.empty() ? "" : " " + unit);
+    }
+    if (out.empty()) out = "the model's configuration";
+    if (!c.configuration_source.empty()) out += " (" + c.configuration_source + ")";
+    return out;
+}
+
+// text for a verbatim environment: lines longer than a page's width broken at a space (or
+// anywhere when there is none), continued indented
+std::string verbatim_lines(std::string text) {
+    constexpr std::size_t kWidth = 80;
+    while (!text.empty() && text.back() == '\n') text.pop_back();
+    std::string out;
+    std::size_t start = 0;
+    while (start <= text.size()) {
+        std::size_t end = text.find('\n', start);
+        if (end == std::string::npos) end = text.size();
+        std::string line = text.substr(start, end - start);
+        bool first = true;
+        while (!line.empty() || first) {
+            const std::size_t room = first ? kWidth : kWidth - 4;
+            std::string piece = line;
+            if (line.size() > room) {
+                std::size_t cut = line.rfind(' ', room);
+                if (cut == std::string::npos || cut < room / 2) cut = room;
+                piece = line.substr(0, cut);
+                line = line.substr(cut == room ? cut : cut + 1);
+            } else {
+                line.clear();
+            }
+            out += (first ? "" : "    ") + piece + "\n";
+            first = false;
+        }
+        if (end == text.size()) break;
+        start = end + 1;
+    }
+    // a line of the text ending the environment early is impossible: \end{verbatim} is never
+    // printed by a statement, but guard it all the same
+    std::string::size_type at;
+    while ((at = out.find("\\end{verbatim}")) != std::string::npos) out.replace(at, 1, "/");
+    return out;
+}
+
 std::string model_json(const ReportContent& c) {
     const System& sys = *c.system;
     const SymbolTable& st = sys.symbols();
@@ -199,7 +258,7 @@ std::string model_json(const ReportContent& c) {
         std::optional<double> v = st.value(k);
         constants.push_back(Obj()
                                 .add("name", str(st.name(k)))
-                                .add("value", v ? num(*v) : "null")
+                                .add("value", v ? num(shown_value(c, st.name(k), *v)) : "null")
                                 .add("unit", str(unit_of(c, st.name(k))))
                                 .done());
     }
@@ -883,6 +942,7 @@ std::string report_detail::render_latex(const ReportContent& c,
     t += "\\hline\n\\end{tabular}\n\n\\subsection*{Free-body diagrams}\n";
     t += "Unknown loads in red, known in blue, gravity in green; $O$ is the about point and "
          "$\\hat u$ the direction.\n\n";
+    t += "Drawn at " + configuration_words(c) + ".\n\n";
     Evaluation ev(sys, c.configuration);
     const std::vector<const Point*> placed = placed_points(sys);
     bool planar = true;
@@ -908,6 +968,12 @@ std::string report_detail::render_latex(const ReportContent& c,
     if (c.matrices) {
         t += "\\subsection*{Mass matrix and forcing}\n$M(q)\\,\\ddot q = f(q, \\dot q, t)$:\n";
         t += "\\[ " + matrices_tex(sys.symbols(), *c.matrices) + " \\]\n";
+    }
+    if (!c.results.empty()) {
+        t += "\\subsection*{Results}\n";
+        for (const ReportResult& r : c.results)
+            t += "Line " + std::to_string(r.line) + ":\n\\begin{verbatim}\n" +
+                 verbatim_lines("> " + r.statement + "\n" + r.text) + "\\end{verbatim}\n";
     }
     t += "\\end{document}\n";
     return t;
@@ -1020,14 +1086,39 @@ std::string report_detail::render_json(const ReportContent& c,
         auto it = ev.values.find(q.symbol());
         double v =
             it == ev.values.end() ? 0.0 : GiNaC::ex_to<GiNaC::numeric>(it->second).to_double();
-        config.push_back(Obj().add("name", str(q.name())).add("value", num(v)).done());
+        config.push_back(Obj()
+                             .add("name", str(q.name()))
+                             .add("value", num(v))
+                             .add("shown", num(shown_value(c, q.name(), v)))
+                             .add("unit", str(unit_of(c, q.name())))
+                             .done());
     }
+    // how far the drawn configuration is from closing each loop the model declares
+    std::vector<std::string> closure;
+    for (const Constraint& k : sys.constraints())
+        if (k.kind == ConstraintKind::configuration)
+            closure.push_back(Obj()
+                                  .add("name", str(k.name))
+                                  .add("residual", num(ev.at(k.residual)))
+                                  .done());
+    std::vector<std::string> results;
+    for (const ReportResult& r : c.results)
+        results.push_back(Obj()
+                              .add("line", std::to_string(r.line))
+                              .add("statement", str(r.statement))
+                              .add("text", str(r.text))
+                              .done());
     Obj o;
     o.add("format", "1")
         .add("title", str(c.title))
         .add("notes", str_arr(c.notes))
         .add("model", model_json(c));
-    o.add("configuration", arr(config)).add("geometry", geometry).add("roadmap", arr(rows));
+    o.add("configuration", arr(config))
+        .add("configuration_source", str(c.configuration_source))
+        .add("closure", arr(closure))
+        .add("geometry", geometry)
+        .add("roadmap", arr(rows));
+    o.add("results", arr(results));
     o.add("intermediates", str_arr(zs.tex));
     o.add("histories", arr(histories)).add("animation", animation_json(c, placed));
     o.add("checks", checks_json(c));

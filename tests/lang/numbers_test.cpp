@@ -439,9 +439,12 @@ TEST(Report, TheStatementDrawsTheRoadmapAtTheGivenConfigurationAndAnimatesTheSim
     std::stringstream page;
     page << in.rdbuf();
     const std::string html = page.str();
-    // qA as given, qB and qC from the first sample of the motion (SI)
-    EXPECT_NE(html.find("\"configuration\":[{\"name\":\"qA\",\"value\":0.174533},{\"name\":\"qB\",\"value\":-1.22173},"
-                        "{\"name\":\"qC\",\"value\":1.0472}]"),
+    // qA as given, qB and qC from the first sample of the motion (SI; the coordinates have no
+    // declared unit, so they are shown in SI too), and the page says where that is from
+    EXPECT_NE(html.find("\"configuration\":[{\"name\":\"qA\",\"value\":0.174533,\"shown\":0.174533,\"unit\":\"\"},"
+                        "{\"name\":\"qB\",\"value\":-1.22173,\"shown\":-1.22173,\"unit\":\"\"},"
+                        "{\"name\":\"qC\",\"value\":1.0472,\"shown\":1.0472,\"unit\":\"\"}],"
+                        "\"configuration_source\":\"given with report at, the other coordinates from the first sample of the simulation\""),
               std::string::npos);
     EXPECT_NE(html.find("\"animation\":{\"source\":\"simulation\""), std::string::npos);
     EXPECT_NE(html.find("{\"variable\":\"T_B\""), std::string::npos);

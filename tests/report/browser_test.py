@@ -7,7 +7,9 @@ then a screenshot is taken and checked not to be blank.
 
 usage: browser_test.py ALEMBERT_CLI SOURCE_DIR WORK_DIR     (exit 77: Chromium missing)"""
 import html.parser
+import math
 import os
+import re
 import shutil
 import struct
 import subprocess
@@ -74,6 +76,8 @@ class Dom(html.parser.HTMLParser):
         self.matrices = 0        # section#matrices (the mass matrix and forcing)
         self.matrices_katex = 0  # KaTeX renderings inside it
         self.matrices_tables = 0  # matrices KaTeX laid out inside it (span.mtable)
+        self.results = []        # per div.result: [statement line, output text]
+        self.configuration = ""  # the note saying where the diagrams are drawn
 
     def classes(self, attrs):
         return set((dict(attrs).get("class") or "").split())
@@ -98,6 +102,12 @@ class Dom(html.parser.HTMLParser):
             self.in_pre = a.get("id")
         if tag == "div" and "row" in c:
             self.rows += 1
+        if tag == "div" and "result" in c:
+            self.results.append(["", ""])
+        if tag == "pre" and self.inside("div", "result"):
+            c.add("statement" in c and "#statement" or "#output")
+        if tag == "p" and a.get("id") == "configuration":
+            c.add("#configuration")
         if tag == "canvas" and "view3d" in c:
             self.canvas = a
         if tag == "tr" and a.get("data-kind"):
@@ -149,6 +159,13 @@ class Dom(html.parser.HTMLParser):
             self.exercise += data
         if self.in_pre == "alembert-3d":
             self.image3d += data
+
+        if self.inside("pre", "#statement"):
+            self.results[-1][0] += data
+        if self.inside("pre", "#output"):
+            self.results[-1][1] += data
+        if self.inside("p", "#configuration"):
+            self.configuration += data
 
         hidden = self.inside("annotation") or self.inside("script") or self.inside("style")
         if not hidden and "\\" in data:
@@ -347,6 +364,27 @@ def examples(cli, source, work, browser):
         check(len(down) == gravity and all(down),
               "%s: gravity points down the page in every diagram (%d arrows of %d, shafts %s)"
               % (name, len(down), gravity, dom.gravity_shafts[:3]))
+        # every result the script printed is on the page, under its statement
+        with open(model) as f:
+            lines = f.read().split("\n")
+        printing = [i + 1 for i, l in enumerate(lines) if re.match(r"(solve|evaluate|linearize)\b", l)]
+        check([int(r[0].split(":")[0].split()[1]) for r in dom.results] == printing
+              and all(r[1].strip() for r in dom.results),
+              "%s: every solve, evaluate and linearize result shown under its statement (lines %s, page %s)"
+              % (name, printing, [r[0][:40] for r in dom.results]))
+        # drawn at a configuration the model takes: its loops closed, and the page says where
+        closure = [abs(k["residual"]) for k in data["closure"]]
+        check(all(r <= 1e-9 for r in closure) and data["configuration_source"]
+              and (data["configuration_source"] in dom.configuration or not data["roadmap"]),
+              "%s: the diagrams' configuration closes every loop (residuals %s) and is named (%r)"
+              % (name, closure, dom.configuration[-120:]))
+        if name == "four_bar_linkage":
+            # the coupler's tip is the rocker's: the loop is drawn closed, every link its length
+            at = {p["name"]: p["at"] for p in data["geometry"]["points"]}
+            gap = math.dist(at["B_tip"], at["C_tip"])
+            coupler, rocker = math.dist(at["B_o"], at["B_tip"]), math.dist(at["C_o"], at["C_tip"])
+            check(gap <= 1e-5 and abs(coupler - 1.2) <= 1e-5 and abs(rocker - 0.8) <= 1e-5,
+                  "four_bar_linkage: drawn closed (gap %.3g m, coupler %.6g m, rocker %.6g m)" % (gap, coupler, rocker))
         series = sum(len(h["series"]) for h in data["histories"])
         check(dom.plots == len(data["histories"]) and dom.series == series,
               "%s: a plot per history with its series (%d plots, %d series)" % (name, dom.plots, dom.series))

@@ -25,6 +25,16 @@ public:
     void comment(const std::string& text);
     /// Prints what a statement produced; `text` may hold several lines.
     void result(const std::string& text);
+    /// Starts keeping what result() prints (muted or not), until take_kept().
+    void keep_results() {
+        keeping_ = true;
+        kept_.clear();
+    }
+    /// What result() printed since keep_results(); stops keeping.
+    std::string take_kept() {
+        keeping_ = false;
+        return std::move(kept_);
+    }
     /// Flushes the stream.
     void flush() { out_->flush(); }
 
@@ -40,6 +50,8 @@ private:
     std::ostream* out_;
     bool echo_;
     bool muted_ = false;
+    bool keeping_ = false;
+    std::string kept_{};
     int digits_ = kDefaultDigits;
 
 public:

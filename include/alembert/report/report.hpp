@@ -23,6 +23,14 @@ struct ReportHistory {
     std::vector<std::vector<double>> motion{};  ///< motion[k][row]: coordinate k at each row (SI)
 };
 
+/// A result the script printed (a `solve`, `evaluate` or `linearize`), shown on the page where
+/// the script computed it.
+struct ReportResult {
+    int line = 0;              ///< the statement's line in the script
+    std::string statement{};   ///< the statement as written
+    std::string text{};        ///< what it printed
+};
+
 /// Everything a report shows. The page is a function of this alone (no clock, no paths), so
 /// the same content gives the same bytes.
 struct ReportContent {
@@ -33,9 +41,17 @@ struct ReportContent {
     /// Values of coordinates (and rates) at which free-body diagrams are drawn (SI); those
     /// missing are 0. Constants take their values from the model's symbol table.
     exmap configuration{};
+    /// Where the configuration comes from, for the reader ("the configuration solve found at
+    /// line 31", "the initial values"); empty: not said.
+    std::string configuration_source{};
     /// The unit each name is shown in ("deg" for qA, "N*m" for T_A); empty names have none.
     std::map<std::string, std::string> units{};
+    /// The SI value of one of `units` (1 deg = 0.0174533): values are shown divided by it;
+    /// a name missing here is shown in SI.
+    std::map<std::string, double> unit_scales{};
     std::vector<ReportHistory> histories{};
+    /// The results the script printed, in run order.
+    std::vector<ReportResult> results{};
     /// Remarks shown at the top of the page (why there is no road-map, ...).
     std::vector<std::string> notes{};
     /// Plot the histories at all; and which of their columns (by name; empty: every one).

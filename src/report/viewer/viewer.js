@@ -249,7 +249,7 @@
       return [p.name, p.on, p.from, p.position]; }));
     table(sec, ["load", "kind", "at", "on", "from", "vector"], m.loads.map(function (l) {
       return [l.label, l.kind, l.at, l.on, l.from, l.vector]; }));
-    table(sec, ["constant", "value (SI)", "unit"], m.constants.map(function (c) {
+    table(sec, ["constant", "value", "unit"], m.constants.map(function (c) {
       return [c.name, c.value === null ? "" : fmt(c.value), c.unit]; }));
     if (m.unknowns.length)
       table(sec, ["unknown", "unit"], m.unknowns.map(function (u) { return [u.name, u.unit]; }));
@@ -304,9 +304,10 @@
   function roadmap(main, data) {
     var sec = el("section", {id: "roadmap"}, main);
     el("h2", {}, sec, "MG road-map");
-    el("p", {"class": "note"}, sec, "Free-body diagrams at " + data.configuration.map(function (c) {
-      return c.name + " = " + fmt(c.value); }).join(", ") + " (SI). Unknown loads in red, known in blue, gravity in green; " +
-      "each equation is E = applied \u2212 inertial = 0.");
+    el("p", {"class": "note", id: "configuration"}, sec, "Free-body diagrams at " + data.configuration.map(function (c) {
+      return c.name + " = " + fmt(c.shown) + (c.unit ? " " + c.unit : ""); }).join(", ") +
+      (data.configuration_source ? " (" + data.configuration_source + ")" : "") +
+      ". Unknown loads in red, known in blue, gravity in green; each equation is E = applied \u2212 inertial = 0.");
     var head = ["variable", "translate/rotate", "direction", "system S", "FBD of S", "about point", "additional unknowns"];
     data.roadmap.forEach(function (row, i) {
       var card = el("div", {"class": "row", id: "row-" + (i + 1)}, sec);
@@ -730,6 +731,18 @@
   }
 
   // ---- the page ---------------------------------------------------------------------------
+  // ---- what the script printed: solve, evaluate, linearize --------------------------------
+  function results(main, data) {
+    if (!data.results || !data.results.length) return;
+    var sec = el("section", {id: "results"}, main);
+    el("h2", {}, sec, "Results");
+    data.results.forEach(function (r) {
+      var box = el("div", {"class": "result", "data-line": r.line}, sec);
+      el("pre", {"class": "statement"}, box, "line " + r.line + ": " + r.statement);
+      el("pre", {"class": "output"}, box, r.text.replace(/\n+$/, ""));
+    });
+  }
+
   function render(data, main) {
     while (main.firstChild) main.removeChild(main.firstChild);
     el("h1", {}, main, data.title + ": Alembert report");
@@ -748,6 +761,7 @@
     data.notes.forEach(function (n) { el("p", {"class": "warning"}, main, n); });
     diagrams = [];
     if (data.roadmap.length) roadmap(main, data);
+    results(main, data);
     if (data.matrices) matrices(main, data);
     animation(main, data);
     histories(main, data);

@@ -1,0 +1,182 @@
+// SPDX-License-Identifier: MIT
+// The report of a script: its diagrams drawn at a configuration the model takes (where solve
+// puts it, or with its loops closed), every result the script printed on the page, values in
+// the units the script declared.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <regex>
+#include <string>
+
+#include "support/script_dir.hpp"
+
+namespace report_page {
+
+namespace {
+
+using alembert::test::read_text;
+using alembert::test::ScriptInDir;
+using alembert::test::TempDir;
+
+// The four-bar of examples/four_bar_linkage: crank A (0.4 m) from N_o, coupler B (1.2 m),
+// rocker C (0.8 m) from N_c = 1 m along Nx>, the loop closed where B's tip meets C's
+const std::string kFourBar = R"(newtonian N
+body A, B, C
+point N_c
+point A_tip on A; point B_tip on B; point C_tip on C
+constant L_N = 1 m, L_A = 0.4 m, L_B = 1.2 m, L_C = 0.8 m, g = 9.81 m/s^2
+constant m_A = 1 kg, m_B = 2 kg, m_C = 1.5 kg
+variable qA'' rad, qB'' rad, qC'' rad
+unknown T N*m, F_x N, F_y N
+rotate A from N about z by qA
+rotate B from A about z by qB
+rotate C from N about z by qC
+translate A_o from N_o by 0>; translate N_c from N_o by L_N*Nx>; translate C_o from N_c by 0>
+translate A_tip from A_o by L_A*Ax>; translate B_o from A_tip by 0>
+translate B_tip from B_o by L_B*Bx>; translate C_tip from C_o by L_C*Cx>
+translate Acm from A_o by L_A/2*Ax>
+translate Bcm from B_o by L_B/2*Bx>
+translate Ccm from C_o by L_C/2*Cx>
+mass A = m_A; mass B = m_B; mass C = m_C
+inertia A = 0, 0, m_A*L_A^2/12; inertia B = 0, 0, m_B*L_B^2/12; inertia C = 0, 0, m_C*L_C^2/12
+gravity -g*Ny>
+torque T on A from N = T*Nz>
+force F_BC on B_tip from C_tip = F_x*Nx> + F_y*Ny>
+constraint configuration loop = pos(B_tip, C_tip) in N
+)";
+
+struct Xy {
+    double x = NAN, y = NAN;
+};
+
+// where the page's geometry puts point `name` (printed to 6 significant digits)
+Xy point_at(const std::string& page, const std::string& name) {
+    std::smatch m;
+    const std::regex re("\\{\"name\":\"" + name + "\",\"at\":\\[([-0-9.e+]+),([-0-9.e+]+),([-0-9.e+]+)\\]\\}");
+    if (!std::regex_search(page, m, re)) {
+        ADD_FAILURE() << "no point " << name << " in the page's geometry";
+        return {};
+    }
+    return {std::stod(m[1]), std::stod(m[2])};
+}
+
+double distance(Xy a, Xy b) { return std::hypot(a.x - b.x, a.y - b.y); }
+
+// the loop drawn closed: the coupler's tip on the rocker's, each link its own length, the
+// crank at 60 degrees; to the 6 digits the page prints
+void expect_drawn_closed_at_60_degrees(const std::string& page) {
+    const Xy A_tip = point_at(page, "A_tip"), B_o = point_at(page, "B_o"), B_tip = point_at(page, "B_tip"),
+             C_tip = point_at(page, "C_tip"), N_c = point_at(page, "N_c");
+    EXPECT_NEAR(A_tip.x, 0.4 * std::cos(M_PI / 3), 1e-6);
+    EXPECT_NEAR(A_tip.y, 0.4 * std::sin(M_PI / 3), 1e-6);
+    EXPECT_NEAR(distance(B_o, A_tip), 0, 1e-6);
+    EXPECT_NEAR(distance(B_tip, C_tip), 0, 1e-5) << "the loop is torn open";
+    EXPECT_NEAR(distance(B_o, B_tip), 1.2, 1e-5);
+    EXPECT_NEAR(distance(N_c, C_tip), 0.8, 1e-5);
+    // each of the loop's equations met at the drawn configuration
+    std::smatch m;
+    std::string rest = page;
+    int residuals = 0;
+    const std::regex re("\\{\"name\":\"loop_[xyz]\",\"residual\":([-0-9.e+]+)\\}");
+    while (std::regex_search(rest, m, re)) {
+        EXPECT_LE(std::abs(std::stod(m[1])), 1e-9) << m[0];
+        ++residuals;
+        rest = m.suffix();
+    }
+    EXPECT_GE(residuals, 2);
+}
+
+}  // namespace
+
+TEST(ReportPage, AFourBarIsDrawnWhereSolvePutsIt) {
+    TempDir dir;
+    ScriptInDir r(dir.path);
+    r.run(kFourBar +
+          "roadmap S for T, F_x, F_y, qB, qC statics\n"
+          "solve S for T, F_x, F_y, qB, qC guess qB = -30 deg, qC = 85 deg at qA = 60 deg\n"
+          "report to \"rep\"\n");
+    const std::string page = read_text(dir.path / "rep" / "index.html");
+    expect_drawn_closed_at_60_degrees(page);
+    EXPECT_NE(page.find("\"configuration_source\":\"where solve at line 25 puts it\""), std::string::npos);
+    const std::string tex = read_text(dir.path / "rep" / "roadmap.tex");
+    EXPECT_NE(tex.find("Drawn at qA = 1.0472 rad, "), std::string::npos);
+    EXPECT_NE(tex.find("(where solve at line 25 puts it)."), std::string::npos);
+}
+
+TEST(ReportPage, ALoopIsClosedFromTheInitialValuesWhenNothingWasSolved) {
+    // only the crank's angle given: qB and qC are solved for from 0 until the loop closes
+    TempDir dir;
+    ScriptInDir r(dir.path);
+    r.run(kFourBar + "initial qA = 60 deg\nreport to \"rep\"\n");
+    const std::string page = read_text(dir.path / "rep" / "index.html");
+    expect_drawn_closed_at_60_degrees(page);
+    EXPECT_NE(page.find("\"configuration_source\":\"the initial values, with qB, qC solved to close the loops\""),
+              std::string::npos);
+}
+
+TEST(ReportPage, WhatSolveEvaluateAndLinearizePrintedIsOnThePageUnderItsStatement) {
+    TempDir dir;
+    ScriptInDir r(dir.path);
+    // a mass on a spring: x'' = (F - k x)/m; at rest under F the spring stretches F/k
+    r.run("newtonian N\nparticle P\nconstant m = 2 kg, k = 50 N/m\nvariable x''\nunknown F N\n"
+          "translate P from N_o by x*Nx>\nmass P = m\nforce push on P = F*Nx>\n"
+          "spring s between P and N_o stiffness k length 0\n"
+          "kane K for x\n"
+          "solve K for x guess x = 0.1 m at x' = 0, x'' = 0, F = 10 N\n"
+          "evaluate k/m\n"
+          "evaluate 2*k/m \\\n    - k/m\n"
+          "report to \"rep\"\n");
+    const std::string page = read_text(dir.path / "rep" / "index.html");
+    const std::string printed = r.out.str();
+    // x = F/k = 0.2 m, k/m = 25 per s^2
+    EXPECT_NE(printed.find("x = 0.2\n"), std::string::npos) << printed;
+    EXPECT_NE(page.find("{\"line\":11,\"statement\":\"solve K for x guess x = 0.1 m at x' = 0, x'' = 0, F = 10 N\","
+                        "\"text\":\"x = 0.2\\n\"}"),
+              std::string::npos);
+    EXPECT_NE(page.find("{\"line\":12,\"statement\":\"evaluate k/m\",\"text\":\"= 25"), std::string::npos);
+    // a statement continued over two lines is shown on one
+    EXPECT_NE(page.find("{\"line\":13,\"statement\":\"evaluate 2*k/m - k/m\",\"text\":\"= 25"), std::string::npos);
+    const std::string tex = read_text(dir.path / "rep" / "roadmap.tex");
+    EXPECT_NE(tex.find("\\subsection*{Results}\nLine 11:\n\\begin{verbatim}\n> solve K for x guess x = 0.1 m at x' = 0, "
+                       "x'' = 0, F = 10 N\nx = 0.2\n\\end{verbatim}"),
+              std::string::npos)
+        << tex.substr(tex.find("Results") == std::string::npos ? 0 : tex.find("Results"));
+}
+
+TEST(ReportPage, ConstantsAndTheConfigurationAreShownInTheUnitsTheScriptDeclared) {
+    TempDir dir;
+    ScriptInDir r(dir.path);
+    r.run("newtonian N\nbody A\nconstant L = 41.82 cm, m = 6.5 kg, g = 9.81 m/s^2\nvariable q'' deg\n"
+          "rotate A from N about z by q\ntranslate A_o from N_o by 0>\ntranslate Acm from A_o by L*Ay>\n"
+          "mass A = m\ninertia A = 0, 0, 0\ngravity -g*Ny>\ninitial q = 30 deg\nreport to \"rep\"\n");
+    const std::string page = read_text(dir.path / "rep" / "index.html");
+    // 41.82 cm, not its SI value beside the unit cm
+    EXPECT_NE(page.find("{\"name\":\"L\",\"value\":41.82,\"unit\":\"cm\"}"), std::string::npos);
+    EXPECT_NE(page.find("{\"name\":\"q\",\"value\":0.523599,\"shown\":30,\"unit\":\"deg\"}"), std::string::npos);
+    EXPECT_NE(page.find("\"configuration_source\":\"the initial values\""), std::string::npos);
+}
+
+TEST(ReportPage, LongResultLinesAreBrokenInTheLatexDocument) {
+    // a result line longer than the page is continued on indented lines of at most 80
+    // characters, so the verbatim block stays inside the margins
+    TempDir dir;
+    ScriptInDir r(dir.path);
+    r.run("newtonian N\nconstant a_rather_long_name_for_a_constant = 1, another_rather_long_name = 2\n"
+          "evaluate a_rather_long_name_for_a_constant + another_rather_long_name + a_rather_long_name_for_a_constant*"
+          "another_rather_long_name + a_rather_long_name_for_a_constant/another_rather_long_name\n"
+          "latex to \"rep\"\n");
+    const std::string tex = read_text(dir.path / "rep" / "roadmap.tex");
+    const std::size_t begin = tex.find("\\begin{verbatim}"), end = tex.find("\\end{verbatim}");
+    ASSERT_NE(begin, std::string::npos);
+    ASSERT_NE(end, std::string::npos);
+    std::istringstream lines(tex.substr(begin, end - begin));
+    std::string line;
+    int count = 0;
+    while (std::getline(lines, line)) {
+        EXPECT_LE(line.size(), 80u) << line;
+        ++count;
+    }
+    EXPECT_GE(count, 4);  // \begin, the statement over two lines at least, the result
+}
+
+}  // namespace report_page
