@@ -125,12 +125,16 @@ std::vector<std::string> describe_free_body_diagram(const System& sys, const Bod
     // a joint's force)
     for (const Point* p : sys.points()) {
         const Body* from = nullptr;
-        if (!member(S, p->owner()) || !detail::joined_at(sys, *p, &from)) continue;
+        if (!member(S, p->owner()) || !is_joint_point(sys, *p, &from)) continue;
         if (member(S, from) || sys.find_joint_reaction(*p, from, p->owner())) continue;
         out.push_back("joint force at " + p->name() + " from " + body_or_ground(sys, from) +
                       " (unknown)");
     }
     return out;
+}
+
+bool is_joint_point(const System& sys, const Point& P, const Body** other) {
+    return detail::joined_at(sys, P, other);
 }
 
 namespace {

@@ -276,20 +276,44 @@ struct Segment {
     std::string body, from, to;
 };
 
-// sticks: a point located from another by a vector fixed in one body's frame is a segment of
-// that body; other nonzero links belong to the owner of the located point
+// sticks: a point of a body located from another by a vector fixed in the body (constant in
+// its frame) or of fixed length is a segment of that body; else a vector fixed in the other
+// point's body is a segment of that one, and one fixed in N of the ground. A vector that
+// changes in length and in all of them is a position, not material (a hip placed at
+// x Nx> + y Ny> from the origin, a rolling disk's contact point, a cart on its rail): no stick.
 std::vector<Segment> segments_of(const System& sys, const std::vector<const Point*>& placed) {
     std::vector<Segment> out;
+    const SymbolTable& st = sys.symbols();
     for (const Point* p : placed) {
         const Point* q = p->located_from();
         if (!q) continue;
         Vector r = p->pos_from(*q);
         if (r.is_zero()) continue;
-        std::set<const Frame*> frames;
-        for (const auto& part : r.components()) frames.insert(part.first);
-        const Body* owner = frames.size() == 1 ? sys.body_of(**frames.begin()) : nullptr;
-        if (!owner) owner = p->owner();
-        out.push_back({owner ? owner->name() : "", q->name(), p->name()});
+        const auto fixed_in = [&](const Body* b) {
+            const Frame& F = b && b->frame() ? *b->frame() : sys.newtonian();
+            if (b && !b->frame()) return false;  // a particle has no frame to hold a vector
+            try {
+                return is_zero_at_random_states(st, r.dt_in(F), sys.newtonian());
+            } catch (const Error&) {
+                return false;
+            }
+        };
+        // a point of a body at a fixed distance from the point it is placed from hangs there
+        // on a rod or a string of that length (a simple pendulum written in N's axes, a
+        // rolling disk's centre above its contact point)
+        const auto fixed_length = [&] {
+            try {
+                return is_zero_at_random_states(st, dot(r, r.dt_in(sys.newtonian())));
+            } catch (const Error&) {
+                return false;
+            }
+        };
+        if (p->owner() && (fixed_in(p->owner()) || fixed_length()))
+            out.push_back({p->owner()->name(), q->name(), p->name()});
+        else if (q->owner() && fixed_in(q->owner()))
+            out.push_back({q->owner()->name(), q->name(), p->name()});
+        else if (fixed_in(nullptr))
+            out.push_back({"", q->name(), p->name()});
     }
     return out;
 }
@@ -350,13 +374,14 @@ std::vector<DiagramLoad> diagram_loads(const System& sys, const Evaluation& ev,
             if (b->has_mass())
                 loads.push_back(
                     {"gravity", b->name() + " g", &b->cm(), ev.in_newtonian(sys.gravity()), false});
+    // joints where S meets the rest (a point placed at an offset that changes with the
+    // coordinates is no joint: a cart on a rail, a rolling disk's centre); a declared
+    // reaction's measures, drawn above, stand for the joint's force
     for (const Point* p : sys.points()) {
-        if (!member(S, p->owner()) || !p->located_from()) continue;
-        const Point* from = p->located_from();
-        // a declared reaction's measures, drawn above, stand for the joint's force
-        if (member(S, from->owner()) || sys.find_joint_reaction(*p, from->owner(), p->owner()))
-            continue;
-        loads.push_back({"joint", "from " + ground_or(sys, from->owner()), p, {}, true});
+        const Body* from = nullptr;
+        if (!member(S, p->owner()) || !is_joint_point(sys, *p, &from)) continue;
+        if (member(S, from) || sys.find_joint_reaction(*p, from, p->owner())) continue;
+        loads.push_back({"joint", "from " + ground_or(sys, from), p, {}, true});
     }
     return loads;
 }

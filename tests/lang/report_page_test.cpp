@@ -179,4 +179,41 @@ TEST(ReportPage, LongResultLinesAreBrokenInTheLatexDocument) {
     EXPECT_GE(count, 4);  // \begin, the statement over two lines at least, the result
 }
 
+TEST(ReportPage, APositionIsNoStickAndASlidingConnectionNoJointForce) {
+    // a cart C on a rail at x Nx> from the origin, a rod A pinned to it at C_o: the vector from
+    // N_o to C_o is where the cart is, not a body, and the rail lets C slide along Nx> (no
+    // joint force there); the pin at C_o is a joint (A's row about C_o draws its force)
+    TempDir dir;
+    ScriptInDir r(dir.path);
+    r.run("newtonian N\nbody C, A\nconstant M = 2 kg, m = 1 kg, L = 0.5 m, g = 9.81 m/s^2\n"
+          "variable x'', th''\nunknown F N\nrotate C from N about z by 0\nrotate A from N about z by th\n"
+          "translate C_o from N_o by x*Nx>\ntranslate Ccm from C_o by 0>\ntranslate A_o from C_o by 0>\n"
+          "translate Acm from A_o by L*Ay>\nmass C = M; mass A = m\ninertia C = 0, 0, 0; inertia A = 0, 0, m*L^2/12\n"
+          "gravity -g*Ny>\nforce push on C_o = F*Nx>\nroadmap E for F, th''\ninitial x = 0.3, th = 20 deg\n"
+          "report to \"rep\"\n");
+    const std::string page = read_text(dir.path / "rep" / "index.html");
+    EXPECT_NE(page.find("\"segments\":[{\"body\":\"A\",\"from\":\"A_o\",\"to\":\"Acm\"}]"), std::string::npos)
+        << page.substr(page.find("\"segments\""), 200);
+    const std::size_t F = page.find("{\"variable\":\"F\""), th = page.find("{\"variable\":\"th''\"");
+    ASSERT_NE(F, std::string::npos);
+    ASSERT_NE(th, std::string::npos);
+    const std::string F_row = page.substr(F, th - F), th_row = page.substr(th);
+    EXPECT_EQ(F_row.find("\"kind\":\"joint\""), std::string::npos) << F_row;
+    EXPECT_NE(th_row.find("\"kind\":\"joint\",\"label\":\"from C\""), std::string::npos);
+}
+
+TEST(ReportPage, AParticleOnAStringOfFixedLengthIsDrawnWithItsString) {
+    // a simple pendulum written in N's axes: P at L (sin q Nx> - cos q Ny>) from the pivot; the
+    // distance stays L, so the line from N_o to P is drawn as P's string; a bead placed at a
+    // changing distance (r Nx>) is not joined to the origin by a stick
+    TempDir dir;
+    ScriptInDir r(dir.path);
+    r.run("newtonian N\nparticle P, Q\nconstant m = 1 kg, L = 2 m, g = 9.81 m/s^2\nvariable q'', r''\n"
+          "translate P from N_o by L*sin(q)*Nx> - L*cos(q)*Ny>\ntranslate Q from N_o by r*Nx>\n"
+          "mass P = m; mass Q = m\ngravity -g*Ny>\ninitial q = 30 deg, r = 1\nreport to \"rep\"\n");
+    const std::string page = read_text(dir.path / "rep" / "index.html");
+    EXPECT_NE(page.find("\"segments\":[{\"body\":\"P\",\"from\":\"N_o\",\"to\":\"P\"}]"), std::string::npos)
+        << page.substr(page.find("\"segments\""), 200);
+}
+
 }  // namespace report_page

@@ -62,6 +62,14 @@ void form_roadmap_row(const System& sys, RoadmapRow& row, const std::vector<ex>&
 ///         constraint is used in statics (it restricts speeds only).
 void form_constraint_row(const System& sys, RoadmapRow& row, const std::vector<ex>& unknowns);
 
+/// True if point P of a body is a joint: it is located (through points of no body) from a
+/// point of another body C (or of the ground, C = nullptr) by an offset that stays constant in
+/// C's frame (N for the ground), so P is a point of both (a pin or a weld) and unknown contact
+/// loads act there. An offset that changes with the coordinates (a disk's centre at
+/// x Nx> + r Ny>, a rod's foot at L sin q Nx>) only says where P is: no joint. `other`
+/// receives C. Decided at random states (alembert::is_zero_at_random_states).
+bool is_joint_point(const System& sys, const Point& P, const Body** other = nullptr);
+
 /// The free-body diagram of S as text lines: each load external to S with where it acts and
 /// what exerts it, gravity, and the joints where S connects to the rest (unknown forces).
 std::vector<std::string> describe_free_body_diagram(const System& sys, const BodySet& S);

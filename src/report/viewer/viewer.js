@@ -829,11 +829,11 @@
     }
     var slider = document.getElementById("time-slider");
     if (slider) {
-      var stick = document.querySelector("svg.anim line.stick"), x0 = stick.getAttribute("x2");
+      var stick = document.querySelector("svg.anim line.stick"), x0 = stick ? stick.getAttribute("x2") : null;
       var frame0 = canvas ? canvas.getAttribute("data-frame") : null;
       slider.value = slider.max;
       slider.dispatchEvent(new Event("input"));
-      expect(stick.getAttribute("x2") !== x0, "the time slider moves the model");
+      if (stick) expect(stick.getAttribute("x2") !== x0, "the time slider moves the model");
       if (canvas) expect(canvas.getAttribute("data-frame") !== frame0, "the time slider moves the 3D view");
       var play = document.getElementById("play");
       slider.value = 0;
