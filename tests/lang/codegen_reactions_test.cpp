@@ -145,21 +145,50 @@ const std::string kArm =
     "initial q1 = 70 deg, q2 = -40 deg, q1' = 1 rad/s\nfinal time 2 s\noutput step 0.1 s\n"
     "output q1, Ex, Ey, Sx, Sy\n";
 
+// The same arm with B turned by q2 from N (absolute angles, not a tree in relative
+// coordinates: Kane's equations with their mass matrix, not the recursion). With th2 = q2 and
+// c = mB L1 b, the same Lagrangian gives
+//   (IA + mA a1^2 + mB L1^2) q1'' + c cos(q1 - q2) q2'' = -c sin(q1 - q2) q2'^2
+//                                                         - (mA a1 + mB L1) g sin q1 - T,
+//   c cos(q1 - q2) q1'' + (IB + mB b^2) q2'' = c sin(q1 - q2) q1'^2 - mB b g sin q2 + T
+// (the motor's pair, T on B and -T on A, works through q2' - q1'), and the same Newton's law.
+const std::string kArmAbsolute = [] {
+    std::string s = kArm;
+    s.replace(s.find("rotate B from A"), 15, "rotate B from N");
+    s.replace(s.find("q2 = -40 deg"), 12, "q2 = 30 deg");
+    return s;
+}();
+
 struct ArmForces {
     double Sx, Sy, Ex, Ey;
 };
 
 // the hand formulas above at (q1, q2, q1', q2') with the motor's torque T
-ArmForces arm_forces(double q1, double q2, double d1, double d2, double T) {
-    const double th2 = q1 + q2, h = mB * L1 * b * std::sin(q2);
-    const double M11 = IA + mA * a1 * a1 + IB + mB * (L1 * L1 + b * b + 2 * L1 * b * std::cos(q2));
-    const double M12 = IB + mB * (b * b + L1 * b * std::cos(q2)), M22 = IB + mB * b * b;
-    const double f1 = h * (2 * d1 * d2 + d2 * d2) - (mA * a1 + mB * L1) * g * std::sin(q1) -
-                      mB * b * g * std::sin(th2);
-    const double f2 = -h * d1 * d1 - mB * b * g * std::sin(th2) + T;
-    const double det = M11 * M22 - M12 * M12;
-    const double dd1 = (M22 * f1 - M12 * f2) / det, dd2 = (M11 * f2 - M12 * f1) / det;
-    const double d_th2 = d1 + d2, dd_th2 = dd1 + dd2;
+ArmForces arm_forces(double q1, double q2, double d1, double d2, double T, bool absolute) {
+    double th2, d_th2, dd1, dd2;
+    if (!absolute) {
+        const double h = mB * L1 * b * std::sin(q2);
+        th2 = q1 + q2;
+        const double M11 = IA + mA * a1 * a1 + IB + mB * (L1 * L1 + b * b + 2 * L1 * b * std::cos(q2));
+        const double M12 = IB + mB * (b * b + L1 * b * std::cos(q2)), M22 = IB + mB * b * b;
+        const double f1 = h * (2 * d1 * d2 + d2 * d2) - (mA * a1 + mB * L1) * g * std::sin(q1) -
+                          mB * b * g * std::sin(th2);
+        const double f2 = -h * d1 * d1 - mB * b * g * std::sin(th2) + T;
+        const double det = M11 * M22 - M12 * M12;
+        dd1 = (M22 * f1 - M12 * f2) / det, dd2 = (M11 * f2 - M12 * f1) / det;
+        d_th2 = d1 + d2;
+    } else {
+        const double c = mB * L1 * b;
+        th2 = q2;
+        const double M11 = IA + mA * a1 * a1 + mB * L1 * L1, M12 = c * std::cos(q1 - q2),
+                     M22 = IB + mB * b * b;
+        const double f1 = -c * std::sin(q1 - q2) * d2 * d2 - (mA * a1 + mB * L1) * g * std::sin(q1) - T;
+        const double f2 = c * std::sin(q1 - q2) * d1 * d1 - mB * b * g * std::sin(q2) + T;
+        const double det = M11 * M22 - M12 * M12;
+        dd1 = (M22 * f1 - M12 * f2) / det, dd2 = (M11 * f2 - M12 * f1) / det;
+        d_th2 = d2;
+    }
+    const double dd_th2 = absolute ? dd2 : dd1 + dd2;
     // l th'' (cos th, sin th) + l th'^2 (-sin th, cos th)
     auto ax = [](double l, double th, double d, double dd) {
         return l * dd * std::cos(th) - l * d * d * std::sin(th);
@@ -271,28 +300,35 @@ TEST(CodegenReactions, TheGeneratedReactionsFunctionGivesThePinForceAtAnyStateAn
 TEST(CodegenReactions, ATwoLinkArmsProgramWritesTheElbowAndShoulderForcesAtEveryRow) {
     if (!has_program(c_compiler() + " --version"))
         GTEST_SKIP() << "no C compiler '" << c_compiler() << "' found (set CC or install gcc)";
-    ScratchDir dir("reactions-arm");
-    run_script(kArm + "tolerance abs 1e-12 rel 1e-12\ncodegen c name arm to \"c\"\n", dir.path());
-    const fs::path at = dir.path() / "c";
-    compile_and_simulate(at, "arm", false);
-    std::string header;
-    const std::vector<std::vector<double>> rows = csv_rows(at / "arm.csv", &header);
-    EXPECT_EQ(header, "t [s],q1,q2,q1',q2',Sx [N],Sy [N],Ex [N],Ey [N],T [N*m]");
-    ASSERT_EQ(rows.size(), 21u);
-    double largest_elbow_rate = 0;
-    for (const std::vector<double>& r : rows) {
-        ASSERT_EQ(r.size(), 10u);
-        SCOPED_TRACE("t = " + std::to_string(r[0]));
-        const double T = T0 * std::cos(w_T * r[0]);
-        expect_close(r[9], T, "T, the motor's law");
-        const ArmForces f = arm_forces(r[1], r[2], r[3], r[4], T);
-        expect_close(r[5], f.Sx, "Sx");
-        expect_close(r[6], f.Sy, "Sy");
-        expect_close(r[7], f.Ex, "Ex");
-        expect_close(r[8], f.Ey, "Ey");
-        largest_elbow_rate = std::max(largest_elbow_rate, std::fabs(r[4]));
+    for (bool absolute : {false, true}) {
+        SCOPED_TRACE(absolute ? "absolute angles (Kane's equations)" : "relative angles (a tree)");
+        ScratchDir dir(absolute ? "reactions-arm-absolute" : "reactions-arm");
+        run_script((absolute ? kArmAbsolute : kArm) +
+                       "tolerance abs 1e-12 rel 1e-12\ncodegen c name arm to \"c\"\n",
+                   dir.path());
+        const fs::path at = dir.path() / "c";
+        // the recursion's accelerations for the tree, M q'' = f solved for the other
+        EXPECT_EQ(read_text(at / "arm.h").find("arm_accelerations") == std::string::npos, absolute);
+        compile_and_simulate(at, "arm", false);
+        std::string header;
+        const std::vector<std::vector<double>> rows = csv_rows(at / "arm.csv", &header);
+        EXPECT_EQ(header, "t [s],q1,q2,q1',q2',Sx [N],Sy [N],Ex [N],Ey [N],T [N*m]");
+        ASSERT_EQ(rows.size(), 21u);
+        double largest_elbow_rate = 0;
+        for (const std::vector<double>& r : rows) {
+            ASSERT_EQ(r.size(), 10u);
+            SCOPED_TRACE("t = " + std::to_string(r[0]));
+            const double T = T0 * std::cos(w_T * r[0]);
+            expect_close(r[9], T, "T, the motor's law");
+            const ArmForces f = arm_forces(r[1], r[2], r[3], r[4], T, absolute);
+            expect_close(r[5], f.Sx, "Sx");
+            expect_close(r[6], f.Sy, "Sy");
+            expect_close(r[7], f.Ex, "Ex");
+            expect_close(r[8], f.Ey, "Ey");
+            largest_elbow_rate = std::max(largest_elbow_rate, std::fabs(r[4] - (absolute ? r[3] : 0)));
+        }
+        EXPECT_GT(largest_elbow_rate, 1.0);  // the elbow moves: its centripetal terms are tested
     }
-    EXPECT_GT(largest_elbow_rate, 1.0);  // the elbow moves: its centripetal terms are tested
 }
 
 TEST(CodegenReactions, GeneratedPythonWritesThePinForceOfNewtonsLawAtEveryRow) {

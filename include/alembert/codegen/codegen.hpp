@@ -203,7 +203,8 @@ struct GeneratedCode {
 /// temporary name and renamed, so a reader never sees half a file). Functions, in every
 /// language: default parameters and a context that holds the values computed once per
 /// parameter set; the mass matrix and forcing; forward dynamics (accelerations); inverse
-/// dynamics (loads from q, q', q''); the requested outputs; the right-hand side of
+/// dynamics (loads from q, q', q''); the joint reactions (`equations.reactions`, from their
+/// road-map rows at q''); the requested outputs; the right-hand side of
 /// x' = (q', q'') for an integrator; and, with `options.simulation`, a simulation program.
 /// Common subexpressions are computed once and numbers folded (CompiledExpressions), so
 /// generation time is linear in the size of the reduced program.
