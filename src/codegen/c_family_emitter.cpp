@@ -341,6 +341,19 @@ std::string declarations(const CodePlan& plan, const Dialect& d) {
         os << ind << "/* Inverse dynamics: the loads u that give the accelerations qpp. */\n"
            << ind << "void " << d.function("inverse_dynamics") << "(" << ctx
            << arguments(plan.inverse_dynamics) << ")" << cnst << ";\n";
+    if (!plan.reactions.empty()) {
+        std::string measures, slots;
+        for (std::size_t k = 0; k < plan.reaction_loads.size(); ++k) {
+            measures += (k ? ", " : "") + plan.loads[plan.reaction_loads[k]].name;
+            slots += (k ? ", " : "") + std::to_string(plan.reaction_loads[k]);
+        }
+        os << ind << "/* The joint-reaction measures reaction[] = (" << measures << "), the loads\n"
+           << ind << "   u[" << slots << "], from their road-map rows at the accelerations qpp: call\n"
+           << ind << "   forward_dynamics first; u's other entries are the loads that act (those\n"
+           << ind << "   entries unread). The load laws give 0 for them: they do no work. */\n"
+           << ind << "void " << d.function("reactions") << "(" << ctx
+           << arguments(plan.reactions) << ")" << cnst << ";\n";
+    }
     if (!plan.output_function.empty())
         os << ind << "/* The requested outputs y. */\n"
            << ind << "void " << d.function("outputs") << "(" << ctx
@@ -566,7 +579,8 @@ std::string main_program(const CodePlan& plan, const Dialect& d, const CodePrint
     return 1;
 }
 
-/* One CSV row: t, q, qp, the loads and the outputs at (t, x). */
+/* One CSV row: t, q, qp, the loads (joint reactions computed at this state) and the outputs
+   at (t, x). */
 )" << st << "int write_row(FILE* out, " << model_arg << ", double t, const double* x) {\n";
     os << "    double u[" << (plan.load_count ? nu : std::string("1")) << "], qpp[" << nv
        << "], y[" << (plan.outputs.empty() ? std::string("1") : ny) << "];\n"
@@ -579,6 +593,16 @@ std::string main_program(const CodePlan& plan, const Dialect& d, const CodePrint
     os << "    if (!" << (d.cpp ? std::string("(model.forward_dynamics(") : "(" + d.name + "_forward_dynamics(")
        << call_ctx << "t, x, x + " << nq << ", " << (plan.load_count ? "u" : d.null())
        << ", qpp)" << (d.cpp ? "" : " == 0") << ")) return 0;\n";
+    if (!plan.reactions.empty()) {
+        // the joint reactions at this state, in place of the load laws' zeros
+        os << "    {\n        double r[" << plan.reaction_loads.size() << "];\n"
+           << "        " << (d.cpp ? "model." : d.name + "_") << "reactions(" << call_ctx
+           << "t, x, x + " << nq << ", qpp, u, r);\n";
+        for (std::size_t k = 0; k < plan.reaction_loads.size(); ++k)
+            os << "        u[" << plan.reaction_loads[k] << "] = r[" << k << "]; /* "
+               << plan.loads[plan.reaction_loads[k]].name << " */\n";
+        os << "    }\n";
+    }
     if (!plan.outputs.empty())
         os << "    " << (d.cpp ? "model." : d.name + "_") << "outputs(" << call_ctx << "t, x, x + "
            << nq << ", qpp, u, y);\n";

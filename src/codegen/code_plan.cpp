@@ -13,6 +13,7 @@
 #include "alembert/sym/evaluator.hpp"
 #include "alembert/sym/print.hpp"
 #include "linear_split.hpp"
+#include "reaction_solve.hpp"
 
 namespace alembert {
 
@@ -235,6 +236,7 @@ std::vector<const CodeFunction*> CodePlan::functions() const {
     if (!bias_forces.empty()) out.push_back(&bias_forces);
     for (const CodeFunction& f : jacobian_functions) out.push_back(&f);
     if (!inverse_dynamics.empty()) out.push_back(&inverse_dynamics);
+    if (!reactions.empty()) out.push_back(&reactions);
     if (!output_function.empty()) out.push_back(&output_function);
     if (!load_laws.empty()) out.push_back(&load_laws);
     if (!constraint_drift.empty()) out.push_back(&constraint_drift);
@@ -546,6 +548,38 @@ CodePlan plan_code(const SymbolTable& table, const DynamicsEquations& eq,
             .program =
                 compile(table, symbols({&q, &qp, &qpp}), u, compile_options, "inverse dynamics"),
             .input_names = input_names({&q_names, &qp_names, &qpp_names}),
+            .parameter_names = parameter_names};
+    }
+
+    // ---- joint reactions: their road-map rows solved at the accelerations qpp ------------------
+    if (!eq.reactions.empty()) {
+        if (nc > 0)
+            throw ArgumentError(std::string(kWho) + ": joint-reaction measures were given for a "
+                                "model with constraints; list them as constraint forces, or "
+                                "leave them out");
+        for (const ex& m : eq.reactions) {
+            auto at = std::find_if(eq.loads.begin(), eq.loads.end(),
+                                   [&](const ex& u) { return u.is_equal(m); });
+            if (at == eq.loads.end())
+                throw ArgumentError(std::string(kWho) + ": the joint-reaction measure '" +
+                                    to_string(m) + "' is not one of the loads; list it among them");
+            plan.reaction_loads.push_back(static_cast<std::size_t>(at - eq.loads.begin()));
+        }
+        const std::vector<ex> r =
+            detail::solve_reaction_rows(table, eq.reaction_residuals, eq.reactions, kWho);
+        std::string measures;
+        for (std::size_t slot : plan.reaction_loads)
+            measures += (measures.empty() ? "" : ", ") + plan.loads[slot].name;
+        plan.reactions = {
+            .name = "reactions",
+            .summary = "joint-reaction measures (" + measures + ") from their road-map rows at "
+                       "the accelerations qpp (forward dynamics first) and the other loads u",
+            .arrays = {"q", "qp", "qpp", "u"},
+            .results = {"reaction"},
+            .result_sizes = {r.size()},
+            .program = compile(table, symbols({&q, &qp, &qpp, &eq.loads}), r, compile_options,
+                               "the joint reactions"),
+            .input_names = input_names({&q_names, &qp_names, &qpp_names, &u_names}),
             .parameter_names = parameter_names};
     }
 

@@ -31,7 +31,7 @@ std::set<std::string> c_words() {
             "atan2", "sinh", "cosh", "tanh", "asinh", "acosh", "atanh", "sincos",
             // names of the generated code
             "t", "q", "qp", "qpp", "u", "M", "f", "y", "h", "p", "c", "x", "dx", "n", "i", "j",
-            "k", "s", "ok", "A", "b", "a", "e", "lambda"};
+            "k", "s", "ok", "A", "b", "a", "e", "lambda", "reaction"};
 }
 
 }  // namespace
@@ -242,7 +242,7 @@ const std::set<std::string>& MatlabPrinter::reserved() const {
         "sinh", "cosh", "tanh", "asinh", "acosh", "atanh", "sign", "chol", "zeros", "ones",
         "numel", "size", "struct", "fopen", "fclose", "fprintf", "ode45", "odeset", "disp",
         "error", "t", "q", "qp", "qpp", "u", "M", "f", "y", "h", "p", "x", "xdot", "ctx", "n",
-        "R", "sol", "k", "s", "fid"};
+        "R", "sol", "k", "s", "fid", "reaction"};
     return words;
 }
 
@@ -284,7 +284,7 @@ const std::set<std::string>& PythonPrinter::reserved() const {
         "if", "import", "in", "is", "lambda", "nonlocal", "not", "or", "pass", "raise",
         "return", "try", "while", "with", "yield", "math", "np", "numpy", "self", "float",
         "abs", "len", "range", "print", "t", "q", "qp", "qpp", "u", "M", "f", "y", "h", "p",
-        "x", "ctx", "n", "L", "sol", "k", "s"};
+        "x", "ctx", "n", "L", "sol", "k", "s", "reaction"};
     return words;
 }
 

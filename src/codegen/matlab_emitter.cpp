@@ -168,9 +168,17 @@ std::vector<GeneratedFile> MatlabEmitter::emit(const CodePlan& plan) const {
           << "    q = x(k, 1:" << n << ")';\n    qp = x(k, " << n + 1 << ":" << 2 * n << ")';\n"
           << "    u = " << (plan.load_count ? N + "_load_laws(t(k), q, qp, ctx)" : "zeros(0, 1)")
           << ";\n";
+        if (!plan.reactions.empty() || !plan.outputs.empty())
+            b << "    qpp = " << N << "_forward_dynamics(t(k), q, qp, u, ctx);\n";
+        if (!plan.reactions.empty()) {
+            b << "    r = " << N << "_reactions(t(k), q, qp, qpp, u, ctx);  % in place of the load "
+                 "laws' zeros\n";
+            for (std::size_t k = 0; k < plan.reaction_loads.size(); ++k)
+                b << "    u(" << plan.reaction_loads[k] + 1 << ") = r(" << k + 1 << ");  % "
+                  << plan.loads[plan.reaction_loads[k]].name << "\n";
+        }
         if (!plan.outputs.empty())
-            b << "    y = " << N << "_outputs(t(k), q, qp, " << N
-              << "_forward_dynamics(t(k), q, qp, u, ctx), u, ctx);\n";
+            b << "    y = " << N << "_outputs(t(k), q, qp, qpp, u, ctx);\n";
         else
             b << "    y = zeros(0, 1);\n";
         b << "    fprintf(fid, '%.17g', t(k));\n"

@@ -223,8 +223,16 @@ std::vector<GeneratedFile> PythonEmitter::emit(const CodePlan& plan) const {
        << "    for t, x in zip(sol.t, sol.y.T):\n"
        << "        q, qp = x[:NQ], x[NQ:]\n"
        << "        u = " << (plan.load_count ? "load_laws(t, q, qp, ctx)" : "np.empty(0)") << "\n";
+    if (!plan.reactions.empty() || !plan.outputs.empty())
+        os << "        qpp = forward_dynamics(t, q, qp, u, ctx)\n";
+    if (!plan.reactions.empty()) {
+        os << "        r = reactions(t, q, qp, qpp, u, ctx)  # in place of the load laws' zeros\n";
+        for (std::size_t k = 0; k < plan.reaction_loads.size(); ++k)
+            os << "        u[" << plan.reaction_loads[k] << "] = r[" << k << "]  # "
+               << plan.loads[plan.reaction_loads[k]].name << "\n";
+    }
     if (!plan.outputs.empty())
-        os << "        y = outputs(t, q, qp, forward_dynamics(t, q, qp, u, ctx), u, ctx)\n";
+        os << "        y = outputs(t, q, qp, qpp, u, ctx)\n";
     else
         os << "        y = np.empty(0)\n";
     os << "        rows.append(np.concatenate(([t], x, u, y)))\n"

@@ -118,6 +118,50 @@ void Interpreter::Impl::run_codegen(const CodegenRequest& r, Location where) {
                               "give the driving loads with input (input T = 0) or codegen c for T, so that "
                               "one unknown force per constraint remains");
     }
+    // declared joint reactions without an input law: non-contributing, the equations of motion
+    // do not hold them, so the generated code solves their road-map rows at each state's
+    // accelerations (the load laws' 0 would be a wrong answer); an output may read one not
+    // listed among the loads
+    auto is_load = [&](const ex& x) {
+        return std::any_of(loads.begin(), loads.end(), [&](const ex& l) { return l.is_equal(x); });
+    };
+    for (const JointReaction& reaction : sys.joint_reactions())
+        for (const ReactionComponent& c : reaction.components) {
+            const ex& x = c.measure;
+            if (is_load(x) || numbers.inputs.count(x) ||
+                std::none_of(numbers.outputs.begin(), numbers.outputs.end(),
+                             [&](const auto& o) { return table.depends_on(o.expression, x); }))
+                continue;
+            if (!constraint_forces.empty() &&
+                std::any_of(constraint_forces.begin(), constraint_forces.end(),
+                            [&](const ex& f) { return f.is_equal(x); }))
+                continue;
+            loads.push_back(x);
+        }
+    std::vector<ex> reactions;
+    std::string others;  // the loads that are not reactions computed here
+    for (const ex& x : loads)
+        if (!sys.reaction_of(x) || numbers.inputs.count(x))
+            others += (others.empty() ? "" : ", ") + to_string(x);
+    for (const ex& x : loads) {
+        const JointReaction* reaction = sys.reaction_of(x);
+        if (!reaction || numbers.inputs.count(x)) continue;
+        if (speeds || !constraint_forces.empty()) {
+            const std::string leave_out =
+                others.empty() ? "leave the reaction statement and its unknowns out"
+                               : "leave the measure out: codegen " + r.language.text + " for " + others;
+            throw ScriptError(where, "the reaction '" + reaction->name + "' measure " + to_string(x) +
+                                         " is not computed by code generated " +
+                                         (speeds ? "from Kane's equations in generalized speeds"
+                                                 : "for a model with constraints") +
+                                         " (the program would write 0 for it)",
+                              (speeds ? "declare the coordinates with q'' and drop the kane statement's "
+                                        "speeds (the reactions are then computed at every sample), or "
+                                      : "simulate computes it (output " + to_string(x) + "); or ") +
+                                  leave_out);
+        }
+        reactions.push_back(x);
+    }
     CodegenOptions opts;
     opts.name = r.name.empty() ? script_name : r.name;
     if (!is_identifier(opts.name))
@@ -134,7 +178,8 @@ void Interpreter::Impl::run_codegen(const CodegenRequest& r, Location where) {
                                                 (!speeds && numbers.outputs[i].expression.is_equal(v.d(1)));
         if (speeds)
             for (const ex& u : speeds->independent_speeds) state = state || numbers.outputs[i].expression.is_equal(u);
-        if (state) continue;
+        // and so are the loads (the joint reactions among them computed at each sample)
+        if (state || is_load(numbers.outputs[i].expression)) continue;
         opts.outputs.push_back({code_identifier(numbers.outputs[i].name), numbers.outputs[i].expression,
                                 numbers.output_si_units[i]});
     }
@@ -198,6 +243,13 @@ void Interpreter::Impl::run_codegen(const CodegenRequest& r, Location where) {
         if (std::any_of(loads.begin(), loads.end(),
                         [&](const ex& x) { return sys.reaction_of(x); }))
             inverse_residuals = residuals_of(plan_roadmap(sys, q, loads));
+        // the joint reactions' own rows, in the planner's order, the driving loads given
+        std::vector<ex> reaction_measures, reaction_residuals;
+        if (!reactions.empty())
+            for (const RoadmapRow& row : plan_roadmap(sys, q, reactions)) {
+                reaction_measures.push_back(row.variable);
+                reaction_residuals.push_back(row.equation);
+            }
         if (speeds) return generate_code(table, *speeds, loads, language, r.dir, opts);
         if (!constraint_forces.empty()) {
             KaneEquations k = form_kane_equations(sys, KaneOptions{.coordinates = q});
@@ -213,10 +265,14 @@ void Interpreter::Impl::run_codegen(const CodegenRequest& r, Location where) {
                 q, t->residuals, loads, std::nullopt, t->accelerations, inverse_residuals};
             eqs.mass_matrix = t->mass_matrix;
             eqs.bias_forces = t->bias_forces;
+            eqs.reactions = reaction_measures;
+            eqs.reaction_residuals = reaction_residuals;
             return generate_code(table, eqs, language, r.dir, opts);
         }
         KaneEquations k = form_kane_equations(sys, KaneOptions{.coordinates = q});
         DynamicsEquations eqs{q, k.residuals, loads, k.dynamics, {}, inverse_residuals};
+        eqs.reactions = reaction_measures;
+        eqs.reaction_residuals = reaction_residuals;
         return generate_code(table, eqs, language, r.dir, opts);
     });
     std::ostringstream out;
@@ -239,6 +295,9 @@ void Interpreter::Impl::run_codegen(const CodegenRequest& r, Location where) {
     else
         out << "\n  mass matrix and forcing (" << (g.symmetric_mass_matrix ? "Cholesky" : "LU")
             << " solve for the accelerations)";
+    if (!reactions.empty())
+        out << ", " << reactions.size() << " joint-reaction measure" << (reactions.size() == 1 ? "" : "s")
+            << " from the road-map rows at every sample";
     if (g.inverse_dynamics) out << ", inverse dynamics";
     else if (g.constraint_count) out << "; no inverse dynamics (a constrained model)";
     else if (speeds) out << "; no inverse dynamics (equations in generalized speeds)";

@@ -785,7 +785,7 @@ std::vector<StatementSpec> number_statements() {
          .help = "generates C, C++, MATLAB or Python code for the model's equations",
          .forms = {{"`codegen` *c\\|cpp\\|matlab\\|python* [`name` *N*] [`for` *loads*] [`jacobian` *points, bodies*] [`to` *\"dir\"*]",
                     "codegen c name fall jacobian C to \"code\"",
-                    "`generate_code` on Kane's equations (a tree's recursive rows when the model is one): functions for M and f, forward and inverse dynamics, M alone and the bias forces (trees), the outputs, and a simulation program with the script's settings; per `jacobian` name its position, Jacobian and J' q' (`form_point_jacobian`, or `form_frame_jacobian` of a body at its origin B_o, else its mass centre)"}},
+                    "`generate_code` on Kane's equations (a tree's recursive rows when the model is one): functions for M and f, forward and inverse dynamics, M alone and the bias forces (trees), the outputs, and a simulation program with the script's settings (the declared joint reactions without an `input` computed at every sample from their road-map rows, `NAME_reactions`; refused for constrained models and equations in speeds); per `jacobian` name its position, Jacobian and J' q' (`form_point_jacobian`, or `form_frame_jacobian` of a body at its origin B_o, else its mass centre)"}},
          .clauses = {"for", "jacobian", "to"}, .parse = parse_run, .run = [](M& m, const Statement& s) { m.codegen(s); }},
     };
 }

@@ -73,6 +73,11 @@ struct CodePlan {
     /// and J' q' (t, q, qp; result Jdqp), in that order.
     std::vector<CodeFunction> jacobian_functions;
     CodeFunction inverse_dynamics;  ///< inputs t, q, qp, qpp; result u (empty if not formed)
+    /// Joint-reaction measures (DynamicsEquations::reactions): inputs t, q, qp, qpp, u (its
+    /// entries for the measures unread); result reaction, one per measure, reaction[k]
+    /// the load loads[reaction_loads[k]]. Empty without them.
+    CodeFunction reactions;
+    std::vector<std::size_t> reaction_loads;
     CodeFunction output_function;   ///< inputs t, q, qp, qpp, u; result y
     CodeFunction load_laws;         ///< inputs t, q, qp; result u (simulation only)
     /// Constrained models: inputs t, q, qp; result e, per constraint its value c (0 for a

@@ -87,6 +87,17 @@ struct DynamicsEquations {
     /// `residuals_of(plan_roadmap(sys, q, loads))` with joint-reaction measures among the
     /// loads); when given, inverse dynamics solves these instead of `residuals`.
     std::vector<ex> inverse_residuals{};
+    /// Joint-reaction measures among `loads` (System::joint_reactions) that the generated code
+    /// computes rather than takes as inputs: non-contributing, they are absent from the
+    /// equations of motion, so the load laws cannot give them (an idle motor's 0 would be a
+    /// wrong answer). `reaction_residuals` holds their road-map rows, row i for reactions[i],
+    /// in the planner's order (`residuals_of(plan_roadmap(sys, q, reactions))`), linear in the
+    /// measures; they may hold q'' and the other loads. A `reactions` function then gives them
+    /// from t, q, q', q'' and the other loads (the rows solved block by block in their order),
+    /// and the simulation writes them at every sample after forward dynamics. Not with
+    /// constraints (their forces are solved with q'' instead).
+    std::vector<ex> reactions{};
+    std::vector<ex> reaction_residuals{};
     /// Closed loops and rolling: the constraints, and the load measures that hold them (a
     /// loop's pin force, a contact's friction force), one per constraint, which appear in the
     /// residuals. With constraints the unknowns are x = (q'', constraint forces): the residuals
@@ -192,7 +203,8 @@ struct GeneratedCode {
 /// temporary name and renamed, so a reader never sees half a file). Functions, in every
 /// language: default parameters and a context that holds the values computed once per
 /// parameter set; the mass matrix and forcing; forward dynamics (accelerations); inverse
-/// dynamics (loads from q, q', q''); the requested outputs; the right-hand side of
+/// dynamics (loads from q, q', q''); the joint reactions (`equations.reactions`, from their
+/// road-map rows at q''); the requested outputs; the right-hand side of
 /// x' = (q', q'') for an integrator; and, with `options.simulation`, a simulation program.
 /// Common subexpressions are computed once and numbers folded (CompiledExpressions), so
 /// generation time is linear in the size of the reduced program.
