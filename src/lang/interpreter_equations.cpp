@@ -11,6 +11,7 @@
 
 #include "alembert/cleanup.hpp"
 #include "alembert/lang/parser.hpp"
+#include "alembert/sim/block_solve.hpp"
 #include "alembert/sym/cse.hpp"
 #include "alembert/sym/print.hpp"
 #include "interpreter_impl.hpp"
@@ -419,7 +420,17 @@ void Interpreter::Impl::solve(const Statement& s) {
                               "try another guess, nearer the solution you want");
         for (std::size_t i = 0; i < xs.size(); ++i) out += format_value(printed[i], q.values[i]) + "\n";
     } else {
-        LinearSystem ls = guard(n.location, [&] { return form_linear_system(eqs, xs); });
+        // with values, rows that are not linear together may still be solved one block after
+        // another (a friction's |Fn| is a number once the row of Fn is solved)
+        std::optional<LinearSystem> linear;
+        if (s.bindings.count("at")) {
+            try {
+                linear = form_linear_system(eqs, xs);
+            } catch (const SolveError&) {
+            }
+        } else {
+            linear = guard(n.location, [&] { return form_linear_system(eqs, xs); });
+        }
         if (s.bindings.count("at")) {
             // every other symbol of the equations needs a value: a constant's, or one after 'at'
             Location where = s.bindings.at("at").front().name.location;
@@ -431,8 +442,18 @@ void Interpreter::Impl::solve(const Statement& s) {
                     throw ScriptError(where, "'" + table.name(y) + "' has no value",
                                       "give it one after 'at' (" + table.name(y) + " = ...), or solve for it");
                 }
-            Eigen::VectorXd x = guard(n.location, [&] { return solve_numeric(table, ls, at); },
-                                      "give every symbol a value after 'at'");
+            Eigen::VectorXd x = guard(
+                n.location,
+                [&] {
+                    if (linear) return solve_numeric(table, *linear, at);
+                    try {
+                        return solve_numeric_in_blocks(table, eqs, xs, at);
+                    } catch (const SolveError&) {
+                        form_linear_system(eqs, xs);  // the whole set's own message
+                        throw;
+                    }
+                },
+                "give every symbol a value after 'at'");
             for (std::size_t i = 0; i < xs.size(); ++i)
                 out += format_value(printed[i], x(static_cast<Eigen::Index>(i))) + "\n";
         } else {
@@ -466,7 +487,7 @@ void Interpreter::Impl::solve(const Statement& s) {
             };
             std::vector<ex> x;
             try {
-                x = guard(n.location, [&] { return solve_symbolic(ls, options); });
+                x = guard(n.location, [&] { return solve_symbolic(*linear, options); });
             } catch (...) {
                 if (shown) std::fprintf(stderr, "\r\033[K");
                 throw;

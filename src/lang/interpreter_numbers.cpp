@@ -511,6 +511,11 @@ void Interpreter::Impl::simulate(const Statement& s) {
     PlotOptions plot_options = plot_options_of(s, res.table.names);
     PlotResult plot = guard(s.location, [&] { return write_table_and_plot(res.table, dir, "simulation", plot_options); });
     record_history("simulation", res.table, nullptr);
+    if (!res.contact_lost.empty())
+        throw ScriptError(s.location, in_script_words(res.contact_lost),
+                          "the rows up to that instant are in " + dir +
+                              "/simulation.csv; simulate what follows with a model of the "
+                              "bodies apart, or end the run before it (final time)");
     std::ostringstream out;
     out << "simulated t = " << transcript.number(r.options.t_initial) << " to " << transcript.number(res.t_end) << " s";
     if (!res.stopped_by.empty()) out << ", stopped when " << res.stopped_by;

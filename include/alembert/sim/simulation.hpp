@@ -113,6 +113,11 @@ struct SimulationResult {
     double t_end = 0.0;
     std::vector<double> q_end{}, qd_end{};  ///< state at t_end (SI)
     std::size_t steps = 0;                  ///< accepted steps
+    /// run_simulation: empty, or why the run stopped early because a contact load it solves
+    /// for changed sign (stopped_by then reads "contact lost: 'N_w' changes sign"): the measure,
+    /// the time and the state. The table ends at that instant; the motion after it is not the
+    /// model's (the contact would pull), so a front end reports it as an error.
+    std::string contact_lost{};
     /// run_simulation: true if q'' came from the recursive tree formation (explicit
     /// accelerations, no solve), false for the dense equations A x = b.
     bool recursive = false;
