@@ -686,7 +686,7 @@ std::vector<StatementSpec> equation_statements() {
                     "`SymbolicSolveOptions::max_terms`: the symbolic solve with the term limit raised to n"},
                    {"`solve` *E* `for` *x...* `at` *name = value, ...*",
                     "solve E for T_A, T_B, T_C at qA = 20 deg, qB = -70 deg",
-                    "`form_linear_system` + `solve_numeric` (unset speeds, accelerations: error)"},
+                    "`form_linear_system` + `solve_numeric` (unset speeds, accelerations: error); rows not linear together are solved one block after another (`solve_numeric_in_blocks`: a road-map with a friction's |Fn| solves the row of Fn first)"},
                    {"`solve` *E* `for` *x...* `guess` *name = value, ...* [`at` ...]",
                     "solve E for q1, q2 guess q1 = 10 deg, q2 = 20 deg",
                     "`solve_equilibrium` (nonlinear; speeds and accelerations 0)"}},
