@@ -29,8 +29,10 @@ struct Block {
     System sys;
     SymbolTable& s = sys.symbols();
     TimeVariable x = s.add_variable("x");
-    ex Fn = s.add_unknown("Fn");
-    Block() {
+    ex Fn = s.add_unknown("Fn"), P = s.add_unknown("P");
+    // side = -1 declares the normal force as -Fn Sy> (Fn < 0 in contact); a pull P Sy> is
+    // given by an input when a test needs one (zero otherwise: an applied load)
+    explicit Block(int side = 1) {
         const Frame& N = sys.newtonian();
         Frame& S = sys.add_frame("S");
         S.orient_axis(N, Axis::z, -s.add_constant("beta", beta));
@@ -41,7 +43,8 @@ struct Block {
         B.set_mass(s.add_constant("m", m));
         B.set_inertia(B.cm(), 0, 0, 0);
         sys.set_gravity(-s.add_constant("g", g) * N.y());
-        sys.add_force(sys.point("B_o"), Fn * S.y(), "normal");
+        sys.add_force(sys.point("B_o"), side * Fn * S.y(), "normal");
+        sys.add_force(sys.point("B_o"), P * S.y(), "pull");
         sys.add_coulomb_friction(sys.point("B_o"), sys.origin(), s.add_constant("mu", mu), Fn,
                                  S.x(), "f");
     }
@@ -75,6 +78,54 @@ TEST(ContactLoads, AFrictionsNormalForceIsFoundAndSolvedWithTheAcceleration) {
         const double t = res.table.columns[0][k];
         EXPECT_NEAR(res.table.columns[1][k], Block::m * Block::g * std::cos(Block::beta), 1e-9);
         EXPECT_NEAR(res.table.columns[2][k], 0.5 * t + a * t * t / 2, 1e-9);
+    }
+}
+
+TEST(ContactLoads, ANormalForceDeclaredTheOtherWayIsSolvedWithItsSignAssumedNegative) {
+    // -Fn Sy> presses the block: along Sy> -Fn - m g cos(beta) = 0, Fn = -m g cos(beta); the
+    // friction -mu |Fn| csgn(x') is the same, so x'' = g (sin(beta) - mu cos(beta)) for x' > 0
+    Block b(-1);
+    SimulationRequest r;
+    r.model = "block";
+    r.coordinates = {b.x};
+    r.initial_values = {{b.x.d(1), 0.5}};
+    r.outputs = {{"Fn", b.Fn, "N"}, {"x", b.x.symbol(), "m"}};
+    r.options = {.t_final = 0.4, .output_step = 0.1, .abs_tol = 1e-12, .rel_tol = 1e-12,
+                 .progress = false};
+    const SimulationResult res = run_simulation(b.sys, r);
+    const double a = Block::g * (std::sin(Block::beta) - Block::mu * std::cos(Block::beta));
+    ASSERT_EQ(res.table.row_count(), 5u);
+    for (std::size_t k = 0; k < 5; ++k) {
+        const double t = res.table.columns[0][k];
+        EXPECT_NEAR(res.table.columns[1][k], -Block::m * Block::g * std::cos(Block::beta), 1e-9);
+        EXPECT_NEAR(res.table.columns[2][k], 0.5 * t + a * t * t / 2, 1e-9);
+    }
+}
+
+TEST(ContactLoads, APullThatLiftsTheBlockOffTheInclineEndsTheRunWhereFnReachesZero) {
+    // a pull P = k t along Sy>: Fn = m g cos(beta) - k t, zero at t* = m g cos(beta) / k;
+    // before it, x'' = g sin(beta) - mu (g cos(beta) - k t / m) (x' > 0), so
+    //   x = v0 t + g (sin(beta) - mu cos(beta)) t^2 / 2 + mu k t^3 / (6 m)
+    Block b;
+    const double k = 40, v0 = 0.5, m = Block::m, g = Block::g, mu = Block::mu, be = Block::beta;
+    SimulationRequest r;
+    r.model = "lifted";
+    r.coordinates = {b.x};
+    r.inputs = {{b.P, k * b.s.time()}};
+    r.initial_values = {{b.x.d(1), v0}};
+    r.outputs = {{"Fn", b.Fn, "N"}, {"x", b.x.symbol(), "m"}};
+    r.options = {.t_final = 1.0, .output_step = 0.05, .abs_tol = 1e-12, .rel_tol = 1e-12,
+                 .progress = false};
+    const SimulationResult res = run_simulation(b.sys, r);
+    const double ts = m * g * std::cos(be) / k;
+    EXPECT_NEAR(res.t_end, ts, 1e-9);
+    EXPECT_NE(res.contact_lost.find("'Fn' changes sign at t = "), std::string::npos) << res.contact_lost;
+    for (std::size_t row = 0; row < res.table.row_count(); ++row) {
+        const double t = res.table.columns[0][row];
+        EXPECT_NEAR(res.table.columns[1][row], m * g * std::cos(be) - k * t, 1e-9);
+        EXPECT_NEAR(res.table.columns[2][row],
+                    v0 * t + g * (std::sin(be) - mu * std::cos(be)) * t * t / 2 + mu * k * t * t * t / (6 * m),
+                    1e-9);
     }
 }
 
