@@ -11,6 +11,7 @@
 
 #include "alembert/cleanup.hpp"
 #include "alembert/lang/parser.hpp"
+#include "alembert/sim/block_solve.hpp"
 #include "alembert/sym/cse.hpp"
 #include "alembert/sym/print.hpp"
 #include "interpreter_impl.hpp"
@@ -433,7 +434,17 @@ void Interpreter::Impl::solve(const Statement& s) {
         for (std::size_t i = 0; i < xs.size(); ++i) out += format_value(printed[i], q.values[i]) + "\n";
         remember_solved_configuration(at, xs, q.values, s.location.line);
     } else {
-        LinearSystem ls = guard(n.location, [&] { return form_linear_system(eqs, xs); });
+        // with values, rows that are not linear together may still be solved one block after
+        // another (a friction's |Fn| is a number once the row of Fn is solved)
+        std::optional<LinearSystem> linear;
+        if (s.bindings.count("at")) {
+            try {
+                linear = form_linear_system(eqs, xs);
+            } catch (const SolveError&) {
+            }
+        } else {
+            linear = guard(n.location, [&] { return form_linear_system(eqs, xs); });
+        }
         if (s.bindings.count("at")) {
             // every other symbol of the equations needs a value: a constant's, or one after 'at'
             Location where = s.bindings.at("at").front().name.location;
@@ -445,8 +456,18 @@ void Interpreter::Impl::solve(const Statement& s) {
                     throw ScriptError(where, "'" + table.name(y) + "' has no value",
                                       "give it one after 'at' (" + table.name(y) + " = ...), or solve for it");
                 }
-            Eigen::VectorXd x = guard(n.location, [&] { return solve_numeric(table, ls, at); },
-                                      "give every symbol a value after 'at'");
+            Eigen::VectorXd x = guard(
+                n.location,
+                [&] {
+                    if (linear) return solve_numeric(table, *linear, at);
+                    try {
+                        return solve_numeric_in_blocks(table, eqs, xs, at);
+                    } catch (const SolveError&) {
+                        form_linear_system(eqs, xs);  // the whole set's own message
+                        throw;
+                    }
+                },
+                "give every symbol a value after 'at'");
             for (std::size_t i = 0; i < xs.size(); ++i)
                 out += format_value(printed[i], x(static_cast<Eigen::Index>(i))) + "\n";
             remember_solved_configuration(at, {}, {}, s.location.line);
@@ -481,7 +502,7 @@ void Interpreter::Impl::solve(const Statement& s) {
             };
             std::vector<ex> x;
             try {
-                x = guard(n.location, [&] { return solve_symbolic(ls, options); });
+                x = guard(n.location, [&] { return solve_symbolic(*linear, options); });
             } catch (...) {
                 if (shown) std::fprintf(stderr, "\r\033[K");
                 throw;
@@ -680,7 +701,7 @@ std::vector<StatementSpec> equation_statements() {
                     "`SymbolicSolveOptions::max_terms`: the symbolic solve with the term limit raised to n"},
                    {"`solve` *E* `for` *x...* `at` *name = value, ...*",
                     "solve E for T_A, T_B, T_C at qA = 20 deg, qB = -70 deg",
-                    "`form_linear_system` + `solve_numeric` (unset speeds, accelerations: error)"},
+                    "`form_linear_system` + `solve_numeric` (unset speeds, accelerations: error); rows not linear together are solved one block after another (`solve_numeric_in_blocks`: a road-map with a friction's |Fn| solves the row of Fn first)"},
                    {"`solve` *E* `for` *x...* `guess` *name = value, ...* [`at` ...]",
                     "solve E for q1, q2 guess q1 = 10 deg, q2 = 20 deg",
                     "`solve_equilibrium` (nonlinear; speeds and accelerations 0)"}},

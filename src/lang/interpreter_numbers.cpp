@@ -511,6 +511,11 @@ void Interpreter::Impl::simulate(const Statement& s) {
     PlotOptions plot_options = plot_options_of(s, res.table.names);
     PlotResult plot = guard(s.location, [&] { return write_table_and_plot(res.table, dir, "simulation", plot_options); });
     record_history("simulation", res.table, nullptr);
+    if (!res.contact_lost.empty())
+        throw ScriptError(s.location, in_script_words(res.contact_lost),
+                          "the rows up to that instant are in " + dir +
+                              "/simulation.csv; simulate what follows with a model of the "
+                              "bodies apart, or end the run before it (final time)");
     std::ostringstream out;
     out << "simulated t = " << transcript.number(r.options.t_initial) << " to " << transcript.number(res.t_end) << " s";
     if (!res.stopped_by.empty()) out << ", stopped when " << res.stopped_by;
@@ -703,7 +708,7 @@ std::vector<StatementSpec> number_statements() {
          .help = "gives load measures as formulas of time and state for simulate",
          .forms = {{"`input` *load = formula, ...*",
                     "input T_A = -k*qA - c*qA'",
-                    "`SimulationRequest::inputs`: a load measure as a formula of t, q, q' and constants (others 0; in a constrained model the others are the constraint forces, solved for); for a `specified` quantity, `SimulationRequest::specified`"}},
+                    "`SimulationRequest::inputs`: a load measure as a formula of t, q, q' and constants (in a constrained model the others are the constraint forces, solved for; in minimal coordinates a friction's normal force and the contact forces an output reads are solved from their road-map rows, and a workless load no row determines is refused; the others are 0); for a `specified` quantity, `SimulationRequest::specified`"}},
          .parse = parse_input, .run = [](M& m, const Statement& s) { m.set_inputs(s); }},
         {.keyword = "final", .family = family, .help = "sets the final time of simulate and inverse",
          .forms = {{"`final time` *T*",
@@ -747,7 +752,7 @@ std::vector<StatementSpec> number_statements() {
          .help = "integrates the equations of motion; writes a table and its plots",
          .forms = {{"`simulate` [`compiled` \\| `tape`] [`plot` *columns* \\| `plot none`] [`to` *\"dir\"*]",
                     "simulate to \"fall\"",
-                    "`run_simulation`, then `write_table_and_plot(..., \"simulation\")`: `simulation.csv`, `.png`, `.svg`; prints a table of about ten rows, the energy check (conservative models: an `energy` column) and the drift of each constraint; `plot` chooses the columns drawn, `plot none` draws none (runs over 4000 rows are drawn from rows keeping each column's extremes)"}},
+                    "`run_simulation`, then `write_table_and_plot(..., \"simulation\")`: `simulation.csv`, `.png`, `.svg`; prints a table of about ten rows, the energy check (conservative models: an `energy` column) and the drift of each constraint (a contact load it solves for that changes sign ends the run with an error naming it and the time, the rows up to then written: `SimulationResult::contact_lost`); `plot` chooses the columns drawn, `plot none` draws none (runs over 4000 rows are drawn from rows keeping each column's extremes)"}},
          .clauses = {"compiled", "tape", "plot", "to"}, .parse = parse_run,
          .run = [](M& m, const Statement& s) { m.simulate(s); }},
         {.keyword = "motion", .family = family,

@@ -12,6 +12,7 @@
 
 #include "alembert/eom/kane.hpp"
 #include "alembert/eom/tree_dynamics.hpp"
+#include "alembert/sim/contact_loads.hpp"
 #include "alembert/error.hpp"
 #include "alembert/sim/progress.hpp"
 #include "alembert/sym/print.hpp"
@@ -48,6 +49,29 @@ NumericFunction compile_over_layout(const SymbolTable& table, const StateLayout&
                             "of the equations (accelerations, constraint forces), the inputs and "
                             "constants with values");
     }
+}
+
+std::string names_of(const std::vector<ex>& list) {
+    std::string text;
+    for (const ex& x : list) text += (text.empty() ? "'" : ", '") + to_string(x) + "'";
+    return text;
+}
+
+// the values of `expressions` (over the layout of fd) at the initial state
+std::vector<double> calc_at_start(const SymbolTable& table, const ForwardDynamics& fd,
+                                  const std::vector<ex>& expressions, const std::vector<double>& q0,
+                                  const std::vector<double>& qd0, double t0) {
+    const NumericFunction f =
+        compile_over_layout(table, fd.layout(), expressions, "run_simulation()", {});
+    const std::size_t n = fd.coordinate_count();
+    std::vector<double> in(1 + 2 * n + fd.unknown_count() + fd.input_count(), 0.0);
+    in[0] = t0;
+    std::copy(q0.begin(), q0.end(), in.begin() + 1);
+    std::copy(qd0.begin(), qd0.end(), in.begin() + 1 + static_cast<std::ptrdiff_t>(n));
+    fd.calc_unknowns(t0, q0.data(), qd0.data(), nullptr, in.data() + 1 + 2 * n);
+    std::vector<double> values(expressions.size());
+    f.evaluate(in.data(), values.data());
+    return values;
 }
 
 // thrown where the recursive formation's q'' are not finite, to retry on the dense equations
@@ -424,6 +448,14 @@ SimulationResult run_simulation(const System& sys, const SimulationRequest& requ
                 solved.push_back(x);
         }
 
+    // the contact loads: measures the road-map determines though the equations of motion in
+    // these coordinates do not (a friction's normal force, a contact force an output reads)
+    std::vector<ex> reads;
+    for (const OutputSpec& o : request.outputs) reads.push_back(o.expression);
+    for (const EventSpec& e : request.events) reads.push_back(e.expression);
+    const ContactLoads contact = find_contact_loads(sys, q, solved, request.inputs, reads, who);
+    solved.insert(solved.end(), contact.measures.begin(), contact.measures.end());
+
     // load measures: the given formulas, the measures solved for, the rest zero
     exmap loads;
     for (const auto& [measure, formula] : request.inputs)
@@ -442,6 +474,27 @@ SimulationResult run_simulation(const System& sys, const SimulationRequest& requ
                                "', which is not a specified quantity of the model");
         loads[symbol] = formula;
     }
+    // initial values
+    std::vector<double> q0(q.size(), 0.0), qd0(q.size(), 0.0);
+    for (const auto& [symbol, value] : request.initial_values) {
+        bool found = false;
+        for (std::size_t i = 0; i < q.size(); ++i) {
+            if (symbol.is_equal(q[i].symbol())) q0[i] = table.evaluate(value), found = true;
+            if (symbol.is_equal(q[i].d(1))) qd0[i] = table.evaluate(value), found = true;
+        }
+        ALEMBERT_CHECK_ARG(found, who + "an initial value is given for '" + to_string(symbol) +
+                                      "', which is neither a coordinate nor a coordinate's rate");
+    }
+    const auto expanded = [&](const ex& e) {
+        return request.specified.empty() ? e : table.expand_intermediates(e);
+    };
+    // the contact loads' rows, planned once; the signs assumed inside abs() and the start
+    // values of the contact measures, found at the initial state
+    std::optional<ContactRows> contact_rows;
+    if (!contact.measures.empty()) contact_rows = plan_contact_rows(sys, q, solved);
+    std::vector<int> signs(contact.abs_arguments.size(), 1);
+    std::vector<double> contact_start(contact.measures.size(), 0.0);
+
     auto run = [&](bool allow_tree) {
         // a tree of bodies in relative coordinates: q'' from the articulated-body recursion (no
         // mass matrix, no solve; its size grows linearly in the bodies), the load measures run-time
@@ -487,28 +540,66 @@ SimulationResult run_simulation(const System& sys, const SimulationRequest& requ
                 f->evaluate(in->data(), u);
             };
         } else {
-            LinearSystem eqs = form_forward_equations(sys, q, solved);
-            if (!request.specified.empty()) {
-                // a specified quantity may sit inside a named intermediate's definition
-                eqs.A = GiNaC::ex_to<GiNaC::matrix>(table.expand_intermediates(eqs.A));
-                eqs.b = GiNaC::ex_to<GiNaC::matrix>(table.expand_intermediates(eqs.b));
+            const auto compile = [&] {
+                LinearSystem eqs = contact_rows
+                                       ? form_contact_equations(*contact_rows, contact.abs_arguments, signs)
+                                       : form_forward_equations(sys, q, solved);
+                if (!request.specified.empty()) {
+                    // a specified quantity may sit inside a named intermediate's definition
+                    eqs.A = GiNaC::ex_to<GiNaC::matrix>(table.expand_intermediates(eqs.A));
+                    eqs.b = GiNaC::ex_to<GiNaC::matrix>(table.expand_intermediates(eqs.b));
+                }
+                eqs.A = GiNaC::ex_to<GiNaC::matrix>(eqs.A.subs(loads));
+                eqs.b = GiNaC::ex_to<GiNaC::matrix>(eqs.b.subs(loads));
+                dynamics.emplace(compile_forward_dynamics(table, eqs, q, {}, request.model, request.make));
+            };
+            compile();
+            if (contact_rows) {
+                // |a| = s a with s assumed, then checked at the initial state: each pass takes
+                // the signs of the last solution; the run's events watch them afterwards
+                std::vector<ex> watched = contact.measures;
+                for (const ex& a : contact.abs_arguments) watched.push_back(expanded(a).subs(loads));
+                for (std::size_t pass = 0;; ++pass) {
+                    const std::vector<double> v =
+                        calc_at_start(table, *dynamics, watched, q0, qd0, request.options.t_initial);
+                    std::copy(v.begin(), v.begin() + static_cast<std::ptrdiff_t>(contact_start.size()),
+                              contact_start.begin());
+                    double scale = 1.0;
+                    for (double y : v) scale = std::max(scale, std::abs(y));
+                    std::vector<int> found = signs;
+                    for (std::size_t i = 0; i < signs.size(); ++i) {
+                        const double y = v[contact_start.size() + i];
+                        if (!(std::abs(y) > 1e-12 * scale))
+                            throw SolveError(who + "'" + to_string(contact.abs_arguments[i]) +
+                                             "' (a friction's normal force) is " + number(y) +
+                                             " at the start, so the side its contact presses from "
+                                             "is not known; start where the contact carries load, or "
+                                             "give the friction's normal force by an input");
+                        found[i] = y > 0 ? 1 : -1;
+                    }
+                    if (found == signs) break;
+                    if (pass > signs.size())
+                        throw SolveError(who + "no signs of " + names_of(contact.abs_arguments) +
+                                         " agree with the solution at the start (the friction "
+                                         "laws they enter have no consistent solution there)");
+                    signs = found;
+                    compile();
+                }
             }
-            eqs.A = GiNaC::ex_to<GiNaC::matrix>(eqs.A.subs(loads));
-            eqs.b = GiNaC::ex_to<GiNaC::matrix>(eqs.b.subs(loads));
-            dynamics.emplace(compile_forward_dynamics(table, eqs, q, {}, request.model, request.make));
         }
         const ForwardDynamics& fd = *dynamics;
 
         // outputs: the user's, then the checks
         std::vector<OutputSpec> outputs = request.outputs;
-        const auto expanded = [&](const ex& e) {
-            return request.specified.empty() ? e : table.expand_intermediates(e);
-        };
         for (OutputSpec& o : outputs) o.expression = expanded(o.expression).subs(loads);
         if (request.checks) {
             bool conservative = request.specified.empty();  // a driven quantity does work
             exmap without_constraint_forces = loads;
-            for (const ex& c : solved) without_constraint_forces[c] = 0;
+            // (not a contact load: a friction's normal force is what makes its friction work)
+            for (const ex& c : solved)
+                if (std::none_of(contact.measures.begin(), contact.measures.end(),
+                                 [&](const ex& m) { return m.is_equal(c); }))
+                    without_constraint_forces[c] = 0;
             for (const ex& f : form_generalized_active_forces(sys, q, LoadSelection::nonconservative))
                 conservative = conservative && equal(f.subs(without_constraint_forces), 0);
             if (conservative)
@@ -524,19 +615,26 @@ SimulationResult run_simulation(const System& sys, const SimulationRequest& requ
         OutputFunction out = compile_outputs(table, fd.layout(), outputs, request.make);
         std::vector<EventSpec> event_specs = request.events;
         for (EventSpec& e : event_specs) e.expression = expanded(e.expression).subs(loads);
+        // a contact load that changes sign ends the run: a contact force that would pull means
+        // the contact is lost, and a friction's normal force the sign assumed in |Fn| no longer
+        // holds; both are watched as events from their signs at the start
+        std::vector<std::string> lost_names;
+        for (std::size_t i = 0; i < contact.measures.size(); ++i) {
+            const double v = contact_start[i];
+            lost_names.push_back("contact lost: '" + to_string(contact.measures[i]) + "' changes sign");
+            event_specs.push_back({lost_names.back(), contact.measures[i],
+                                   v > 0   ? EventDirection::falling
+                                   : v < 0 ? EventDirection::rising
+                                           : EventDirection::any});
+        }
+        for (std::size_t i = 0; i < contact.abs_arguments.size(); ++i) {
+            const ex& a = contact.abs_arguments[i];
+            lost_names.push_back("contact lost: '" + to_string(a) + "' changes sign");
+            event_specs.push_back({lost_names.back(), signs[i] * expanded(a).subs(loads),
+                                   EventDirection::falling});
+        }
         EventFunction events = compile_events(table, fd.layout(), event_specs, request.make);
 
-        // initial values
-        std::vector<double> q0(q.size(), 0.0), qd0(q.size(), 0.0);
-        for (const auto& [symbol, value] : request.initial_values) {
-            bool found = false;
-            for (std::size_t i = 0; i < q.size(); ++i) {
-                if (symbol.is_equal(q[i].symbol())) q0[i] = table.evaluate(value), found = true;
-                if (symbol.is_equal(q[i].d(1))) qd0[i] = table.evaluate(value), found = true;
-            }
-            ALEMBERT_CHECK_ARG(found, who + "an initial value is given for '" + to_string(symbol) +
-                                          "', which is neither a coordinate nor a coordinate's rate");
-        }
         check_initial_constraints(sys, fd, request, q0, qd0);
         // the run stops at the first output row where a constraint has drifted too far
         std::function<void(const Table&, std::size_t)> check_row;
@@ -545,6 +643,18 @@ SimulationResult run_simulation(const System& sys, const SimulationRequest& requ
         SimulationResult result =
             simulate(fd, q0, qd0, request.options, out, events, input_laws, check_row);
         result.recursive = tree.has_value();
+        if (std::find(lost_names.begin(), lost_names.end(), result.stopped_by) != lost_names.end()) {
+            const std::string what = result.stopped_by.substr(std::string("contact lost: ").size());
+            // "t = 0.64, q = 0.86, q' = 2.7": the time with its unit, then the state
+            std::string state = detail::describe_state(fd.layout(), result.t_end, result.q_end.data(),
+                                                       result.qd_end.data(), nullptr);
+            const std::size_t comma = state.find(", ");
+            state = comma == std::string::npos ? "" : " (" + state.substr(comma + 2) + ")";
+            result.contact_lost =
+                who + what + " at t = " + number(result.t_end) + " s" + state +
+                ": the contact force would pull, so the contact is lost there and these "
+                "coordinates no longer describe the motion; the run stops at that instant";
+        }
         return result;
     };
     try {

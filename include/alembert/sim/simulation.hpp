@@ -113,6 +113,11 @@ struct SimulationResult {
     double t_end = 0.0;
     std::vector<double> q_end{}, qd_end{};  ///< state at t_end (SI)
     std::size_t steps = 0;                  ///< accepted steps
+    /// run_simulation: empty, or why the run stopped early because a contact load it solves
+    /// for changed sign (stopped_by then reads "contact lost: 'N_w' changes sign"): the measure,
+    /// the time and the state. The table ends at that instant; the motion after it is not the
+    /// model's (the contact would pull), so a front end reports it as an error.
+    std::string contact_lost{};
     /// run_simulation: true if q'' came from the recursive tree formation (explicit
     /// accelerations, no solve), false for the dense equations A x = b.
     bool recursive = false;
@@ -152,7 +157,9 @@ struct SimulationRequest {
     std::vector<ex> constraint_forces{};
     /// Values of the other load measures as formulas of t, q, q' (a motor law); a load
     /// measure of the model not given here is zero, except a measure of a declared joint
-    /// reaction that an output or event reads: it is solved for with the accelerations.
+    /// reaction that an output or event reads, and a contact load the road-map determines
+    /// (find_contact_loads: a friction's normal force, a contact force an output or event
+    /// reads): they are solved for with the accelerations.
     exmap inputs{};
     /// Values of specified symbols and of the derivatives of them the model uses, as formulas
     /// of t, q, q' (a driven base motion x_b = 0.1*sin(2*pi*t), x_b' and x_b''); substituted
@@ -182,14 +189,21 @@ struct SimulationRequest {
 /// call; any other model on compile_forward_dynamics' equations with the inputs substituted.
 /// The measures of declared joint reactions (System::add_joint_reaction) that an output or an
 /// event reads are solved for at each step with the accelerations, from the road-map's
-/// reaction rows (they do no work, so Kane's equations alone do not hold them). The declared constraints must hold at
+/// reaction rows (they do no work, so Kane's equations alone do not hold them). So are the
+/// contact loads (find_contact_loads), from the rows of plan_roadmap with q'' and them, with
+/// |a| = s a for each abs() argument a that holds one (a friction's normal force), the sign s
+/// taken from the solution at the initial state; each contact load and s a is watched as an
+/// event from its sign at the start, and where one crosses zero the run stops there with
+/// SimulationResult::contact_lost set (the contact is lost). The declared constraints must hold at
 /// the initial state (their residuals, the rates of configuration residuals, within
 /// options.constraint_tolerance): the initial values are not moved onto them silently; and
 /// their drift columns must stay within the same tolerance during the run.
 /// @throws as compile_forward_dynamics, compile_outputs and simulate; alembert::ArgumentError
 ///         naming the constraint and its residual (with its unit) if the initial state
 ///         violates it; alembert::SolveError naming the constraint, the time and the residual
-///         if its drift grows beyond the tolerance.
+///         if its drift grows beyond the tolerance; as find_contact_loads; alembert::SolveError
+///         naming a friction's normal force that is zero at the initial state, or abs()
+///         arguments whose signs no pass makes agree with the solution there.
 SimulationResult run_simulation(const System& sys, const SimulationRequest& request);
 
 /// Writes `table` to `dir`/`name`.csv (atomically) and plots it to `dir`/`name`.png and .svg
