@@ -12,6 +12,7 @@
 
 #include "alembert/lang/interpreter.hpp"
 #include "support/constants.hpp"
+#include "support/script_dir.hpp"
 
 namespace fs = std::filesystem;
 using namespace alembert::lang;
@@ -27,10 +28,13 @@ std::string example(const std::string& name) {
     return s.str();
 }
 
-// runs the statements (quietly: results only) and returns what they printed
+// runs the statements (quietly: results only) and returns what they printed; what they
+// write (an example's inverse, a sweep) goes to a temporary directory, not where the test runs
 struct Session {
+    alembert::test::TempDir dir{"alembert-examples"};
     std::ostringstream out, err;
     Interpreter interp{out, err, false};
+    Session() { interp.set_output_dir(dir.path.string()); }
     std::string run(const std::string& text) {
         out.str("");
         RunStatus s = interp.run(text, "test.alb");
