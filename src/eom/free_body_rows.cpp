@@ -3,12 +3,16 @@
 #include "free_body_rows.hpp"
 
 #include <algorithm>
+#include <cstdint>
 #include <map>
 #include <numeric>
 #include <tuple>
 
+#include <Eigen/Dense>
+
 #include "alembert/error.hpp"
 #include "alembert/sym/print.hpp"
+#include "alembert/eom/kane.hpp"
 #include "alembert/eom/zero_test.hpp"
 
 namespace alembert::detail {
@@ -30,6 +34,74 @@ bool joined_at(const System& sys, const Point& P, const Body** other) {
     }
     if (!is_zero_at_random_states(sys.symbols(), offset, sys.newtonian())) return false;
     if (other) *other = C;
+    return true;
+}
+
+namespace {
+
+// a value in +-[0.3, 1.7] drawn from a symbol's name and the state (FNV-1a): the same for
+// every run, whatever the addresses
+double draw(const std::string& name, unsigned state) {
+    std::uint64_t h = 1469598103934665603ull ^ state;
+    for (char c : name) h = (h ^ static_cast<unsigned char>(c)) * 1099511628211ull;
+    const double x = static_cast<double>(h >> 11) / 9007199254740992.0;  // [0, 1)
+    return (h & 1 ? -1 : 1) * (0.3 + 1.4 * x);
+}
+
+}  // namespace
+
+bool constraint_forces_declared(const System& sys, const std::vector<TimeVariable>& coordinates,
+                                const std::vector<ex>& unknowns) {
+    if (sys.constraints().empty()) return true;
+    // the frames' table names z' intermediates as it differentiates; it is the model's own
+    SymbolTable& st = sys.newtonian().symbols();
+    std::vector<ex> measures;
+    for (const ex& x : unknowns)
+        if (st.owns(x) && st.kind(x) == SymbolKind::unknown) measures.push_back(x);
+    // F_r (linear in the measures) and each constraint at the velocity level (affine in the
+    // speeds)
+    const std::vector<ex> F = form_generalized_active_forces(sys, coordinates);
+    std::vector<ex> C;
+    for (const Constraint& c : sys.constraints())
+        C.push_back(c.kind == ConstraintKind::motion ? c.residual : st.dt(c.residual));
+    GiNaC::exset leaves;
+    for (const std::vector<ex>* es : {&F, static_cast<const std::vector<ex>*>(&C)})
+        for (const ex& e : *es)
+            for (const ex& s : st.calc_leaf_symbols(e)) leaves.insert(s);
+    const exmap constants = st.constant_values();
+    const Eigen::Index n = static_cast<Eigen::Index>(coordinates.size());
+    for (unsigned state = 1; state <= 2; ++state) {
+        exmap at;
+        for (const ex& s : leaves)
+            if (!constants.count(s)) at[s] = draw(to_string(s), state);
+        for (const ex& x : measures) at[x] = 0;
+        for (const TimeVariable& q : coordinates) at[q.d(1)] = 0;
+        // G(r, k): the coefficient of measure k in F_r
+        Eigen::MatrixXd G(n, static_cast<Eigen::Index>(measures.size()));
+        for (Eigen::Index r = 0; r < n; ++r) {
+            const double base = st.evaluate(F[static_cast<std::size_t>(r)], at);
+            for (std::size_t k = 0; k < measures.size(); ++k) {
+                at[measures[k]] = 1;
+                G(r, static_cast<Eigen::Index>(k)) = st.evaluate(F[static_cast<std::size_t>(r)], at) - base;
+                at[measures[k]] = 0;
+            }
+        }
+        Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> cod(G);
+        for (const ex& c : C) {
+            // the constraint's direction: the coefficients of the speeds
+            Eigen::VectorXd d(n);
+            const double base = st.evaluate(c, at);
+            for (Eigen::Index r = 0; r < n; ++r) {
+                at[coordinates[static_cast<std::size_t>(r)].d(1)] = 1;
+                d(r) = st.evaluate(c, at) - base;
+                at[coordinates[static_cast<std::size_t>(r)].d(1)] = 0;
+            }
+            if (d.norm() == 0) continue;
+            if (measures.empty()) return false;
+            const Eigen::VectorXd rest = d - G * cod.solve(d);
+            if (rest.norm() > 1e-9 * d.norm()) return false;
+        }
+    }
     return true;
 }
 
@@ -58,21 +130,21 @@ struct FbCandidate {
     std::vector<std::size_t> holds;
 };
 
-// the unknowns of `shared` whose coefficient in e is not zero (load measures at random
-// states; accelerations and coordinates where the equation holds them)
+// the unknowns of `shared` that e changes with at random states: load measures and
+// accelerations whose coefficients are not zero, coordinates it depends on (a coefficient
+// that cancels, sin th cos th - cos th sin th, does not count: such a row does not hold it)
 std::vector<std::size_t> held_by(const System& sys, const ex& e, const std::vector<ex>& shared) {
     std::vector<std::size_t> h;
     if (e.is_zero()) return h;
-    const SymbolTable& st = sys.symbols();
     const GiNaC::exset syms = symbols_of(e);
-    for (std::size_t k = 0; k < shared.size(); ++k) {
-        const ex& x = shared[k];
-        if (!syms.count(x)) continue;
-        if (st.owns(x) && st.kind(x) == SymbolKind::unknown &&
-            is_zero_at_random_states(st, e.diff(GiNaC::ex_to<GiNaC::symbol>(x))))
-            continue;
-        h.push_back(k);
-    }
+    std::vector<std::size_t> present;
+    std::vector<ex> xs;
+    for (std::size_t k = 0; k < shared.size(); ++k)
+        if (syms.count(shared[k])) present.push_back(k), xs.push_back(shared[k]);
+    if (xs.empty()) return h;
+    const std::vector<bool> changes = calc_changes_with_at_random_states(sys.symbols(), e, xs);
+    for (std::size_t i = 0; i < present.size(); ++i)
+        if (changes[i]) h.push_back(present[i]);
     return h;
 }
 
@@ -87,9 +159,11 @@ bool located(const System& sys, const Point& P, Vector& r) {
 }
 
 // the systems S that meet the rest only through declared loads: a body with every body
-// joined to it, none joined to the ground, none moved by a constrained coordinate
+// joined to it, none joined to the ground, none moved by a constrained coordinate (unless
+// declared loads supply the constraints' forces)
 std::vector<BodySet> free_systems(const System& sys, const std::vector<TimeVariable>& coordinates,
-                                  const std::vector<const Body*>& carriers) {
+                                  const std::vector<const Body*>& carriers,
+                                  bool constraint_forces_are_loads) {
     const BodySet all = sys.bodies();
     std::map<const Body*, std::size_t> index;
     for (std::size_t i = 0; i < all.size(); ++i) index[all[i]] = i;
@@ -107,9 +181,11 @@ std::vector<BodySet> free_systems(const System& sys, const std::vector<TimeVaria
         if (!C) grounded[index[p->owner()]] = true;
         else root[find(index[p->owner()])] = find(index[C]);
     }
-    // the bodies a constrained coordinate moves keep undeclared constraint forces
+    // the bodies a constrained coordinate moves keep undeclared constraint forces, unless
+    // declared loads supply every constraint's force
     std::vector<bool> constrained(all.size(), false);
     for (const Constraint& c : sys.constraints()) {
+        if (constraint_forces_are_loads) break;
         const GiNaC::exset syms = symbols_of(c.residual);
         for (const TimeVariable& q : coordinates) {
             if (!syms.count(q.symbol()) && !syms.count(q.d(1))) continue;
@@ -279,7 +355,8 @@ std::vector<RoadmapRow> plan_free_body_rows(const System& sys,
                 break;
             }
     }
-    for (const BodySet& S : free_systems(sys, coordinates, carriers))
+    const bool constraint_forces_are_loads = constraint_forces_declared(sys, coordinates, unknowns);
+    for (const BodySet& S : free_systems(sys, coordinates, carriers, constraint_forces_are_loads))
         add_free_body_candidates(sys, S, shared, analysis, cands);
 
     // the coordinate whose derivative (or itself) an unknown is, or -1 for a load measure
@@ -382,7 +459,18 @@ std::vector<RoadmapRow> plan_free_body_rows(const System& sys,
             std::string names;
             for (std::size_t k = 0; k < shared.size(); ++k)
                 if (!solved[k]) names += (names.empty() ? "" : ", ") + to_string(shared[k]);
-            throw ModelError("no choice of S, direction and about point determines " + names);
+            std::string constraints;
+            if (!constraint_forces_are_loads)
+                for (const Constraint& c : sys.constraints())
+                    constraints += (constraints.empty() ? "" : ", ") + c.name;
+            throw ModelError(
+                "no choice of S, direction and about point determines " + names +
+                (constraints.empty()
+                     ? std::string()
+                     : " (the forces of the constraints " + constraints +
+                           " are no declared loads, so no body their coordinates move has a "
+                           "free-body row; declare the force that holds each constraint, such "
+                           "as a loop's pin force as a force pair, with its measures unknown)"));
         }
     }
     std::vector<RoadmapRow> rows;

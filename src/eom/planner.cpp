@@ -3,8 +3,10 @@
 #include "alembert/eom/planner.hpp"
 
 #include <algorithm>
+#include <functional>
 #include <limits>
 #include <memory>
+#include <optional>
 
 #include "alembert/error.hpp"
 #include "alembert/sym/print.hpp"
@@ -67,7 +69,10 @@ void locate_instantaneous_centre(const System& sys, const TimeVariable& q, const
     p.O = p.own.get();
 }
 
-Plan plan_coordinate(const System& sys, const TimeVariable& q) {
+// `constraint_forces_are_loads` tells (when asked: it costs an evaluation of the generalized
+// forces) whether declared loads supply every constraint's force
+Plan plan_coordinate(const System& sys, const TimeVariable& q,
+                     const std::function<bool()>& constraint_forces_are_loads) {
     const Frame& N = sys.newtonian();
     const ex& qd = q.d(1);
     Plan p;
@@ -113,9 +118,10 @@ Plan plan_coordinate(const System& sys, const TimeVariable& q) {
             break;
         }
     }
-    // none: the instantaneous centre, where workless contact forces pass (not with declared
-    // constraints, whose forces do work when q alone changes)
-    if (!p.O && sys.constraints().empty())
+    // none: the instantaneous centre, where workless contact forces pass (with declared
+    // constraints, only when declared loads supply their forces: the row keeps those loads,
+    // as the other rows do; an undeclared constraint force would do work when q alone changes)
+    if (!p.O && constraint_forces_are_loads())
         locate_instantaneous_centre(sys, q, *p.S[static_cast<std::size_t>(turning - pw.begin())],
                                     w0, pv[static_cast<std::size_t>(turning - pw.begin())], p);
     if (!p.O) {
@@ -358,8 +364,15 @@ std::vector<RoadmapRow> plan_roadmap(const System& sys,
             shared.push_back(x);
     }
     const std::size_t n_rows = coordinates.size() + constraint_rows.size();
+    std::optional<bool> forces_declared;
+    const std::function<bool()> constraint_forces_are_loads = [&] {
+        if (!forces_declared)
+            forces_declared = detail::constraint_forces_declared(sys, coordinates, unknowns);
+        return *forces_declared;
+    };
     std::vector<Plan> plans;
-    for (const TimeVariable& q : coordinates) plans.push_back(plan_coordinate(sys, q));
+    for (const TimeVariable& q : coordinates)
+        plans.push_back(plan_coordinate(sys, q, constraint_forces_are_loads));
     // why the rows of the coordinates and constraints alone do not serve (then the free-body
     // rows of what carries the unknown loads are searched too)
     std::string refusal;
