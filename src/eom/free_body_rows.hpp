@@ -44,7 +44,10 @@ struct FixedRow {
 /// ground, and none moved by a coordinate in a declared constraint unless
 /// constraint_forces_declared): translate along the axes of the model's frames and the
 /// unknown forces' directions, rotate about those axes through the points of S and the
-/// intersections of the lines of two unknown forces.
+/// intersections of the lines of two unknown forces; and of every system S that meets the
+/// rest at one joint alone (the bodies on the far side of a joint from the ground, when
+/// that joint parts them: the rod and slider beyond a crank pin), rotated about the
+/// directions the joint lets S turn, about the joint, where its force drops out.
 /// Each row is formed with `unknowns` (its additional unknowns, FBD).
 /// @throws alembert::ModelError naming the unknowns left if no such choice exists.
 std::vector<RoadmapRow> plan_free_body_rows(const System& sys,

@@ -3,6 +3,7 @@
 #include "alembert/eom/planner.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <functional>
 #include <limits>
 #include <memory>
@@ -478,6 +479,21 @@ std::vector<RoadmapRow> plan_roadmap(const System& sys,
         try {
             free_rows = detail::plan_free_body_rows(sys, coordinates, fixed, shared, unknowns, analysis);
         } catch (const ModelError& e) {
+            // a constraint whose force no declared load supplies leaves its bodies without
+            // free-body rows: that first, it is the fix
+            std::string constraints;
+            if (!constraint_forces_are_loads())
+                for (const Constraint& c : sys.constraints())
+                    constraints += (constraints.empty() ? "" : ", ") + c.name;
+            std::string rest = refusal.substr(refusal.find(' ') + 1);  // without "plan_roadmap(): "
+            rest[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(rest[0])));
+            if (!constraints.empty())
+                throw ModelError(
+                    "plan_roadmap(): the forces of the constraints " + constraints +
+                    " are no declared loads, so no body their coordinates move has a free-body "
+                    "row; declare the force that holds each constraint (a loop's pin force as a "
+                    "force pair), with its measures unknown. " + rest +
+                    ". Free-body rows of the bodies the unknown loads act on: " + e.what());
             throw ModelError(refusal + ". Free-body rows of the bodies the unknown loads act on: " +
                              e.what() +
                              " (declare each contact force on the body it acts on, with its "

@@ -249,6 +249,96 @@ TEST(TextbookProblems, SliderCrankWithoutThePinForceIsRefusedSayingWhy) {
                      ModelError, "the forces of the constraints loop_x, loop_y are no declared loads");
 }
 
+// The same slider-crank in minimal coordinates: the crank angle qA alone, the rod turned from
+// the crank by qB(qA) = asin(-(a/b) sin qA) - qA, the slider pinned at the rod's tip (no pin
+// force declared: a joint). A textbook takes the rod and slider {B, C} about the crank pin
+// B_o, where the pin's force drops out (N_n, P, gravity and the inertia of B and C remain),
+// then the whole linkage about N_o for T (N_n known). Both numbers agree with the model
+// above, by the same hand derivations, in statics and at a given crank motion.
+TEST(TextbookProblems, SliderCrankInMinimalCoordinatesAgrees) {
+    System sys;
+    SymbolTable& s = sys.symbols();
+    TimeVariable qA = s.add_variable("qA");
+    ex a = s.add_constant("a"), b = s.add_constant("b"), g = s.add_constant("g");
+    ex m_A = s.add_constant("m_A"), m_B = s.add_constant("m_B"), m_C = s.add_constant("m_C");
+    ex P = s.add_constant("P");
+    ex T = s.add_unknown("T"), N_n = s.add_unknown("N_n");
+    const Frame& N = sys.newtonian();
+    RigidBody& A = sys.add_rigid_body("A");
+    RigidBody& B = sys.add_rigid_body("B");
+    Particle& C = sys.add_particle("C");
+    A.body_frame().orient_axis(N, Axis::z, qA);
+    B.body_frame().orient_axis(A.body_frame(), Axis::z,
+                               GiNaC::asin(-a / b * GiNaC::sin(qA.symbol())) - qA.symbol());
+    sys.point("A_o").set_pos(sys.origin(), Vector());
+    A.cm().set_pos(sys.point("A_o"), a / 2 * A.body_frame().x());
+    Point& A_t = sys.add_point("A_t", &A);
+    A_t.set_pos(sys.point("A_o"), a * A.body_frame().x());
+    sys.point("B_o").set_pos(A_t, Vector());
+    B.cm().set_pos(sys.point("B_o"), b / 2 * B.body_frame().x());
+    Point& B_t = sys.add_point("B_t", &B);
+    B_t.set_pos(sys.point("B_o"), b * B.body_frame().x());
+    C.cm().set_pos(B_t, Vector());
+    A.set_mass(m_A);
+    A.set_inertia(A.cm(), 0, 0, m_A * a * a / 12);
+    B.set_mass(m_B);
+    B.set_inertia(B.cm(), 0, 0, m_B * b * b / 12);
+    C.set_mass(m_C);
+    sys.set_gravity(-g * N.y());
+    sys.add_torque(A, T * N.z(), "T");
+    sys.add_force(C.cm(), P * N.x(), "P");
+    sys.add_force(C.cm(), N_n * N.y(), "Nn");
+    std::mt19937 rng(17);
+    std::uniform_real_distribution<double> angle(-3.0, 3.0), rate(-4.0, 4.0), load(-50.0, 50.0);
+    for (Analysis analysis : {Analysis::statics, Analysis::dynamics}) {
+        std::vector<RoadmapRow> rows = plan_roadmap(sys, {qA}, {T, N_n}, analysis);
+        ASSERT_EQ(rows.size(), 2u);
+        EXPECT_TRUE(rows[0].variable.is_equal(N_n));
+        EXPECT_EQ(rows[0].motion, Motion::rotate);
+        EXPECT_TRUE(along(rows[0].direction, N.z()) || along(rows[0].direction, -N.z()));
+        EXPECT_EQ(body_names(rows[0].system), "B,C");
+        ASSERT_NE(rows[0].about, nullptr);
+        EXPECT_EQ(rows[0].about->name(), "B_o");
+        EXPECT_TRUE(rows[0].additional_unknowns.empty());
+        EXPECT_TRUE(rows[1].variable.is_equal(T));
+        EXPECT_EQ(rows[1].motion, Motion::rotate);
+        EXPECT_EQ(body_names(rows[1].system), "A,B,C");
+        ASSERT_NE(rows[1].about, nullptr);
+        EXPECT_EQ(rows[1].about->name(), "A_o");
+        for (int k = 0; k < 4; ++k) {
+            const double Pv = load(rng);
+            const bool still = analysis == Analysis::statics;
+            SliderCrankMotion h(angle(rng), still ? 0 : rate(rng), still ? 0 : rate(rng));
+            Eigen::VectorXd v = solve_rows(sys, rows, {T, N_n},
+                                           {{qA.symbol(), h.th}, {qA.d(1), h.thd}, {qA.d(2), h.thdd},
+                                            {a, kA}, {b, kB}, {g, kG}, {m_A, kmA}, {m_B, kmB},
+                                            {m_C, kmC}, {P, Pv}});
+            // the full model's rows at the same state (checked against the hand derivation above)
+            SliderCrank full;
+            std::vector<RoadmapRow> full_rows =
+                still ? plan_roadmap(full.sys, {full.qA, full.qB, full.x},
+                                     {full.T, full.N_n, full.F_x, full.F_y, full.qB.symbol(), full.x.symbol()},
+                                     Analysis::statics)
+                      : plan_roadmap(full.sys, {full.qA, full.qB, full.x},
+                                     {full.T, full.N_n, full.F_x, full.F_y, full.qB.d(2), full.x.d(2)});
+            Eigen::VectorXd w =
+                still ? solve_rows(full.sys, full_rows, {full.T, full.N_n, full.F_x, full.F_y},
+                                   slider_crank_values(full, h, Pv), true)
+                      : solve_rows(full.sys, full_rows,
+                                   {full.T, full.N_n, full.F_x, full.F_y, full.qB.d(2), full.x.d(2)},
+                                   slider_crank_values(full, h, Pv));
+            expect_close(v(0), w(0), "T");
+            expect_close(v(1), w(1), "N_n");
+            if (still) {
+                const double phi = h.phi, th = h.th;
+                expect_close(v(0), (kmA + kmB) * kG * kA / 2 * std::cos(th) +
+                                       Pv * kA * std::sin(th - phi) / std::cos(phi), "T (virtual work)");
+                expect_close(v(1), kmC * kG + kmB * kG / 2 + Pv * std::tan(phi), "N_n");
+            }
+        }
+    }
+}
+
 // ==========================================================================================
 // (2) Bead on a hoop. A hoop H (mass M, radius R, a thin ring: I = M R^2 / 2 about a
 // diameter, M R^2 about its axis Hy) turns freely about its vertical diameter Nz> = Hz>

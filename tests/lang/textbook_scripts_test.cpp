@@ -118,6 +118,48 @@ solve S for T, N_n, F_x, F_y, qB, x guess qB = -40 deg, x = 1.3 m at qA = 50 deg
     expect_close(r.value("x"), a * std::cos(th) + b * std::cos(phi), "x");
 }
 
+// The same slider-crank in its crank angle alone: the rod turned from the crank by
+// asin(-(a/b) sin qA) - qA, the slider pinned at the rod's tip. Rod and slider about the crank
+// pin B_o give N_n, the whole linkage about N_o gives T: the same two numbers as above.
+TEST(TextbookScripts, SliderCrankInItsCrankAngleAlone) {
+    TempDir dir;
+    ScriptRun r(R"(newtonian N
+body A, B
+particle C
+point A_t on A; point B_t on B
+constant a = 0.3 m, b = 1.1 m, g = 9.81 m/s^2
+constant m_A = 1.4 kg, m_B = 2.3 kg, m_C = 3.1 kg, P = -200 N
+variable qA'' rad
+unknown T N*m, N_n N
+rotate A from N about z by qA
+rotate B from A about z by -asin(a/b*sin(qA)) - qA
+translate A_o from N_o by 0>
+translate Acm from A_o by a/2*Ax>
+translate A_t from A_o by a*Ax>
+translate B_o from A_t by 0>
+translate Bcm from B_o by b/2*Bx>
+translate B_t from B_o by b*Bx>
+translate C from B_t by 0>
+mass A = m_A; mass B = m_B; mass C = m_C
+inertia A = 0, 0, m_A*a^2/12; inertia B = 0, 0, m_B*b^2/12
+gravity -g*Ny>
+torque T on A from N = T*Nz>
+force load on C = P*Nx>
+force Nn on C = N_n*Ny>
+roadmap S for T, N_n statics
+digits 17
+solve S for T, N_n at qA = 50 deg
+)",
+                dir.path);
+    const std::string t = r.out.str();
+    EXPECT_TRUE(std::regex_search(t, std::regex("\\| N_n +\\| rotate +\\| Nz> +\\| \\{B, C\\} +\\|.*\\| B_o +\\|"))) << t;
+    EXPECT_TRUE(std::regex_search(t, std::regex("\\| T +\\| rotate +\\| Nz> +\\| \\{A, B, C\\} +\\|.*\\| A_o +\\|"))) << t;
+    const double a = 0.3, b = 1.1, g = 9.81, mA = 1.4, mB = 2.3, mC = 3.1, P = -200;
+    const double th = 50 * std::numbers::pi / 180, phi = std::asin(-a / b * std::sin(th));
+    expect_close(r.value("T"), (mA + mB) * g * a / 2 * std::cos(th) + P * a * std::sin(th - phi) / std::cos(phi), "T");
+    expect_close(r.value("N_n"), mC * g + mB * g / 2 + P * std::tan(phi), "N_n");
+}
+
 // A cart C (M = 2 kg) on Nx> pushed by F, with an inverted pendulum R (mr = 0.5 kg, Lr = 1 m,
 // uniform) pinned on it, th from the upright (Ry> = -sin th Nx> + cos th Ny>). Kane's
 // equation for th: (mr Lr/2)(g sin th + x'' cos th) - (mr Lr^2/3) th'' = 0, so a motion with
