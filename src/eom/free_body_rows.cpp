@@ -397,7 +397,8 @@ std::vector<RoadmapRow> plan_free_body_rows(const System& sys,
                                             const std::vector<TimeVariable>& coordinates,
                                             const std::vector<FixedRow>& fixed,
                                             const std::vector<ex>& shared,
-                                            const std::vector<ex>& unknowns, Analysis analysis) {
+                                            const std::vector<ex>& unknowns, Analysis analysis,
+                                            bool constraint_forces_are_loads) {
     const SymbolTable& st = sys.symbols();
     std::vector<FbCandidate> cands;
     for (const FixedRow& f : fixed) {
@@ -422,7 +423,6 @@ std::vector<RoadmapRow> plan_free_body_rows(const System& sys,
                 break;
             }
     }
-    const bool constraint_forces_are_loads = constraint_forces_declared(sys, coordinates, unknowns);
     const Systems systems = calc_systems(sys, coordinates, carriers, constraint_forces_are_loads);
     for (const BodySet& S : systems.free) add_free_body_candidates(sys, S, shared, analysis, cands);
     // a system hinged to the rest at one joint: rotate about the joint's free axes there

@@ -48,12 +48,14 @@ struct FixedRow {
 /// rest at one joint alone (the bodies on the far side of a joint from the ground, when
 /// that joint parts them: the rod and slider beyond a crank pin), rotated about the
 /// directions the joint lets S turn, about the joint, where its force drops out.
-/// Each row is formed with `unknowns` (its additional unknowns, FBD).
+/// Each row is formed with `unknowns` (its additional unknowns, FBD);
+/// `constraint_forces_are_loads` is constraint_forces_declared(sys, coordinates, unknowns).
 /// @throws alembert::ModelError naming the unknowns left if no such choice exists.
 std::vector<RoadmapRow> plan_free_body_rows(const System& sys,
                                             const std::vector<TimeVariable>& coordinates,
                                             const std::vector<FixedRow>& fixed,
                                             const std::vector<ex>& shared,
-                                            const std::vector<ex>& unknowns, Analysis analysis);
+                                            const std::vector<ex>& unknowns, Analysis analysis,
+                                            bool constraint_forces_are_loads);
 
 }  // namespace alembert::detail

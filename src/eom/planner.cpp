@@ -477,7 +477,8 @@ std::vector<RoadmapRow> plan_roadmap(const System& sys,
         for (const RoadmapRow& r : constraint_rows)
             fixed.push_back({r, detail::FixedRow::kAnyCoordinate});
         try {
-            free_rows = detail::plan_free_body_rows(sys, coordinates, fixed, shared, unknowns, analysis);
+            free_rows = detail::plan_free_body_rows(sys, coordinates, fixed, shared, unknowns,
+                                                    analysis, constraint_forces_are_loads());
         } catch (const ModelError& e) {
             // a constraint whose force no declared load supplies leaves its bodies without
             // free-body rows: that first, it is the fix
