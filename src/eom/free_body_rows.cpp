@@ -3,12 +3,16 @@
 #include "free_body_rows.hpp"
 
 #include <algorithm>
+#include <cstdint>
 #include <map>
 #include <numeric>
 #include <tuple>
 
+#include <Eigen/Dense>
+
 #include "alembert/error.hpp"
 #include "alembert/sym/print.hpp"
+#include "alembert/eom/kane.hpp"
 #include "alembert/eom/zero_test.hpp"
 
 namespace alembert::detail {
@@ -30,6 +34,74 @@ bool joined_at(const System& sys, const Point& P, const Body** other) {
     }
     if (!is_zero_at_random_states(sys.symbols(), offset, sys.newtonian())) return false;
     if (other) *other = C;
+    return true;
+}
+
+namespace {
+
+// a value in +-[0.3, 1.7] drawn from a symbol's name and the state (FNV-1a): the same for
+// every run, whatever the addresses
+double draw(const std::string& name, unsigned state) {
+    std::uint64_t h = 1469598103934665603ull ^ state;
+    for (char c : name) h = (h ^ static_cast<unsigned char>(c)) * 1099511628211ull;
+    const double x = static_cast<double>(h >> 11) / 9007199254740992.0;  // [0, 1)
+    return (h & 1 ? -1 : 1) * (0.3 + 1.4 * x);
+}
+
+}  // namespace
+
+bool constraint_forces_declared(const System& sys, const std::vector<TimeVariable>& coordinates,
+                                const std::vector<ex>& unknowns) {
+    if (sys.constraints().empty()) return true;
+    // the frames' table names z' intermediates as it differentiates; it is the model's own
+    SymbolTable& st = sys.newtonian().symbols();
+    std::vector<ex> measures;
+    for (const ex& x : unknowns)
+        if (st.owns(x) && st.kind(x) == SymbolKind::unknown) measures.push_back(x);
+    // F_r (linear in the measures) and each constraint at the velocity level (affine in the
+    // speeds)
+    const std::vector<ex> F = form_generalized_active_forces(sys, coordinates);
+    std::vector<ex> C;
+    for (const Constraint& c : sys.constraints())
+        C.push_back(c.kind == ConstraintKind::motion ? c.residual : st.dt(c.residual));
+    GiNaC::exset leaves;
+    for (const std::vector<ex>* es : {&F, static_cast<const std::vector<ex>*>(&C)})
+        for (const ex& e : *es)
+            for (const ex& s : st.calc_leaf_symbols(e)) leaves.insert(s);
+    const exmap constants = st.constant_values();
+    const Eigen::Index n = static_cast<Eigen::Index>(coordinates.size());
+    for (unsigned state = 1; state <= 2; ++state) {
+        exmap at;
+        for (const ex& s : leaves)
+            if (!constants.count(s)) at[s] = draw(to_string(s), state);
+        for (const ex& x : measures) at[x] = 0;
+        for (const TimeVariable& q : coordinates) at[q.d(1)] = 0;
+        // G(r, k): the coefficient of measure k in F_r
+        Eigen::MatrixXd G(n, static_cast<Eigen::Index>(measures.size()));
+        for (Eigen::Index r = 0; r < n; ++r) {
+            const double base = st.evaluate(F[static_cast<std::size_t>(r)], at);
+            for (std::size_t k = 0; k < measures.size(); ++k) {
+                at[measures[k]] = 1;
+                G(r, static_cast<Eigen::Index>(k)) = st.evaluate(F[static_cast<std::size_t>(r)], at) - base;
+                at[measures[k]] = 0;
+            }
+        }
+        Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> cod(G);
+        for (const ex& c : C) {
+            // the constraint's direction: the coefficients of the speeds
+            Eigen::VectorXd d(n);
+            const double base = st.evaluate(c, at);
+            for (Eigen::Index r = 0; r < n; ++r) {
+                at[coordinates[static_cast<std::size_t>(r)].d(1)] = 1;
+                d(r) = st.evaluate(c, at) - base;
+                at[coordinates[static_cast<std::size_t>(r)].d(1)] = 0;
+            }
+            if (d.norm() == 0) continue;
+            if (measures.empty()) return false;
+            const Eigen::VectorXd rest = d - G * cod.solve(d);
+            if (rest.norm() > 1e-9 * d.norm()) return false;
+        }
+    }
     return true;
 }
 
@@ -58,21 +130,21 @@ struct FbCandidate {
     std::vector<std::size_t> holds;
 };
 
-// the unknowns of `shared` whose coefficient in e is not zero (load measures at random
-// states; accelerations and coordinates where the equation holds them)
+// the unknowns of `shared` that e changes with at random states: load measures and
+// accelerations whose coefficients are not zero, coordinates it depends on (a coefficient
+// that cancels, sin th cos th - cos th sin th, does not count: such a row does not hold it)
 std::vector<std::size_t> held_by(const System& sys, const ex& e, const std::vector<ex>& shared) {
     std::vector<std::size_t> h;
     if (e.is_zero()) return h;
-    const SymbolTable& st = sys.symbols();
     const GiNaC::exset syms = symbols_of(e);
-    for (std::size_t k = 0; k < shared.size(); ++k) {
-        const ex& x = shared[k];
-        if (!syms.count(x)) continue;
-        if (st.owns(x) && st.kind(x) == SymbolKind::unknown &&
-            is_zero_at_random_states(st, e.diff(GiNaC::ex_to<GiNaC::symbol>(x))))
-            continue;
-        h.push_back(k);
-    }
+    std::vector<std::size_t> present;
+    std::vector<ex> xs;
+    for (std::size_t k = 0; k < shared.size(); ++k)
+        if (syms.count(shared[k])) present.push_back(k), xs.push_back(shared[k]);
+    if (xs.empty()) return h;
+    const std::vector<bool> changes = calc_changes_with_at_random_states(sys.symbols(), e, xs);
+    for (std::size_t i = 0; i < present.size(); ++i)
+        if (changes[i]) h.push_back(present[i]);
     return h;
 }
 
@@ -86,34 +158,64 @@ bool located(const System& sys, const Point& P, Vector& r) {
     }
 }
 
-// the systems S that meet the rest only through declared loads: a body with every body
-// joined to it, none joined to the ground, none moved by a constrained coordinate
-std::vector<BodySet> free_systems(const System& sys, const std::vector<TimeVariable>& coordinates,
-                                  const std::vector<const Body*>& carriers) {
+// the systems S whose free-body rows hold only declared loads: those that meet the rest
+// only through declared loads (a body with every body joined to it, none joined to the
+// ground), and those that meet it at one joint alone (`hinges`: the bodies beyond a joint
+// whose removal parts them from the rest and the ground, turned about that joint); none
+// moved by a constrained coordinate unless declared loads supply the constraints' forces
+struct Hinged {
+    BodySet S;
+    const Point* at;
+    std::vector<Vector> axes;  // the directions S turns about relative to the rest there
+};
+struct Systems {
+    std::vector<BodySet> free;
+    std::vector<Hinged> hinged;
+};
+
+void add_direction(const System& sys, std::vector<Vector>& dirs, const Vector& d);
+
+Systems calc_systems(const System& sys, const std::vector<TimeVariable>& coordinates,
+                     const std::vector<const Body*>& carriers, bool constraint_forces_are_loads) {
     const BodySet all = sys.bodies();
+    const std::size_t n = all.size(), kGround = n;
     std::map<const Body*, std::size_t> index;
-    for (std::size_t i = 0; i < all.size(); ++i) index[all[i]] = i;
-    std::vector<std::size_t> root(all.size());
-    std::iota(root.begin(), root.end(), 0);
-    auto find = [&](std::size_t i) {
-        while (root[i] != i) i = root[i] = root[root[i]];
-        return i;
+    for (std::size_t i = 0; i < n; ++i) index[all[i]] = i;
+    // the joints whose force is not declared: (point, its body, the other body or the ground)
+    struct Joint {
+        const Point* at;
+        std::size_t body, other;
     };
-    std::vector<bool> grounded(all.size(), false);
+    std::vector<Joint> joints;
     for (const Point* p : sys.points()) {
         const Body* C = nullptr;
         if (!p->owner() || !joined_at(sys, *p, &C)) continue;
         if (sys.find_joint_reaction(*p, C, p->owner())) continue;  // declared: a load
-        if (!C) grounded[index[p->owner()]] = true;
-        else root[find(index[p->owner()])] = find(index[C]);
+        joints.push_back({p, index[p->owner()], C ? index[C] : kGround});
     }
-    // the bodies a constrained coordinate moves keep undeclared constraint forces
-    std::vector<bool> constrained(all.size(), false);
+    // the components when every joint but `skip` holds (the ground is node n)
+    auto components = [&](std::size_t skip) {
+        std::vector<std::size_t> root(n + 1);
+        std::iota(root.begin(), root.end(), 0);
+        auto find = [&](std::size_t i) {
+            while (root[i] != i) i = root[i] = root[root[i]];
+            return i;
+        };
+        for (std::size_t j = 0; j < joints.size(); ++j)
+            if (j != skip) root[find(joints[j].body)] = find(joints[j].other);
+        std::vector<std::size_t> comp(n + 1);
+        for (std::size_t i = 0; i <= n; ++i) comp[i] = find(i);
+        return comp;
+    };
+    // the bodies a constrained coordinate moves keep undeclared constraint forces, unless
+    // declared loads supply every constraint's force
+    std::vector<bool> constrained(n, false);
     for (const Constraint& c : sys.constraints()) {
+        if (constraint_forces_are_loads) break;
         const GiNaC::exset syms = symbols_of(c.residual);
         for (const TimeVariable& q : coordinates) {
             if (!syms.count(q.symbol()) && !syms.count(q.d(1))) continue;
-            for (std::size_t i = 0; i < all.size(); ++i) {
+            for (std::size_t i = 0; i < n; ++i) {
                 const Body* b = all[i];
                 Vector w = b->frame() ? b->frame()->ang_vel_in(sys.newtonian()).diff(q.d(1)) : Vector();
                 Vector v = b->cm().vel_in(sys.newtonian()).diff(q.d(1));
@@ -121,20 +223,61 @@ std::vector<BodySet> free_systems(const System& sys, const std::vector<TimeVaria
             }
         }
     }
-    std::vector<BodySet> out;
+    // the members of the component `r` if one of them carries an unknown load and none is
+    // constrained, else nothing
+    auto members = [&](const std::vector<std::size_t>& comp, std::size_t r) {
+        BodySet S;
+        bool carries = false;
+        for (std::size_t i = 0; i < n; ++i) {
+            if (comp[i] != r) continue;
+            if (constrained[i]) return BodySet{};
+            S.push_back(all[i]);
+            carries = carries || std::find(carriers.begin(), carriers.end(), all[i]) != carriers.end();
+        }
+        return carries ? S : BodySet{};
+    };
+    Systems out;
+    const std::vector<std::size_t> held = components(joints.size());
     std::vector<std::size_t> seen;
     for (const Body* b : carriers) {
-        std::size_t r = find(index[b]);
-        if (std::find(seen.begin(), seen.end(), r) != seen.end()) continue;
+        const std::size_t r = held[index[b]];
+        if (r == held[kGround] || std::find(seen.begin(), seen.end(), r) != seen.end()) continue;
         seen.push_back(r);
-        BodySet S;
-        bool ok = true;
-        for (std::size_t i = 0; i < all.size(); ++i)
-            if (find(i) == r) {
-                S.push_back(all[i]);
-                ok = ok && !grounded[i] && !constrained[i];
-            }
-        if (ok) out.push_back(S);
+        BodySet S = members(held, r);
+        if (!S.empty()) out.free.push_back(std::move(S));
+    }
+    const Frame& N = sys.newtonian();
+    for (std::size_t j = 0; j < joints.size(); ++j) {
+        const std::vector<std::size_t> comp = components(j);
+        if (comp[joints[j].body] == comp[joints[j].other]) continue;  // a loop: not parted by it
+        // the directions the joint lets its two sides turn about: the partials of the relative
+        // angular velocity (no torque about them unless one is declared)
+        std::vector<Vector> axes;
+        const Body& B = *all[joints[j].body];
+        Vector w_rel = B.frame() ? B.frame()->ang_vel_in(N) : Vector();
+        if (joints[j].other != kGround && all[joints[j].other]->frame())
+            w_rel = w_rel - all[joints[j].other]->frame()->ang_vel_in(N);
+        for (const TimeVariable& q : coordinates) {
+            Vector d = w_rel.diff(q.d(1));
+            if (d.is_zero() || fb_zero(sys, d)) continue;
+            // an axis of a frame when it lies along one (a pin's axis Nz>, not k Nz> / |k|)
+            std::vector<const Frame*> frames{&N};
+            for (const Frame* F = B.frame(); F; F = F->parent()) frames.push_back(F);
+            for (const Frame* F : frames)
+                for (const Vector& e : {F->x(), F->y(), F->z()})
+                    if (fb_zero(sys, cross(e, d))) {
+                        d = e;
+                        break;
+                    }
+            add_direction(sys, axes, d);
+        }
+        if (axes.empty()) continue;  // a weld
+        // the side away from the ground
+        for (std::size_t side : {joints[j].body, joints[j].other}) {
+            if (side == kGround || comp[side] == comp[kGround]) continue;
+            BodySet S = members(comp, comp[side]);
+            if (!S.empty()) out.hinged.push_back({std::move(S), joints[j].at, axes});
+        }
     }
     return out;
 }
@@ -254,7 +397,8 @@ std::vector<RoadmapRow> plan_free_body_rows(const System& sys,
                                             const std::vector<TimeVariable>& coordinates,
                                             const std::vector<FixedRow>& fixed,
                                             const std::vector<ex>& shared,
-                                            const std::vector<ex>& unknowns, Analysis analysis) {
+                                            const std::vector<ex>& unknowns, Analysis analysis,
+                                            bool constraint_forces_are_loads) {
     const SymbolTable& st = sys.symbols();
     std::vector<FbCandidate> cands;
     for (const FixedRow& f : fixed) {
@@ -279,8 +423,17 @@ std::vector<RoadmapRow> plan_free_body_rows(const System& sys,
                 break;
             }
     }
-    for (const BodySet& S : free_systems(sys, coordinates, carriers))
-        add_free_body_candidates(sys, S, shared, analysis, cands);
+    const Systems systems = calc_systems(sys, coordinates, carriers, constraint_forces_are_loads);
+    for (const BodySet& S : systems.free) add_free_body_candidates(sys, S, shared, analysis, cands);
+    // a system hinged to the rest at one joint: rotate about the joint's free axes there
+    for (const Hinged& h : systems.hinged)
+        for (const Vector& u : h.axes) {
+            RoadmapRow r{.variable = ex(), .motion = Motion::rotate, .direction = u, .system = h.S,
+                         .about = h.at, .analysis = analysis};
+            r.equation = form_roadmap_equation(sys, r);
+            std::vector<std::size_t> held = held_by(sys, r.equation, shared);
+            cands.push_back({std::move(r), -1, 3, std::move(held)});
+        }
 
     // the coordinate whose derivative (or itself) an unknown is, or -1 for a load measure
     std::vector<int> coordinate_of(shared.size(), -1);

@@ -3,8 +3,11 @@
 #include "alembert/eom/planner.hpp"
 
 #include <algorithm>
+#include <cctype>
+#include <functional>
 #include <limits>
 #include <memory>
+#include <optional>
 
 #include "alembert/error.hpp"
 #include "alembert/sym/print.hpp"
@@ -67,7 +70,10 @@ void locate_instantaneous_centre(const System& sys, const TimeVariable& q, const
     p.O = p.own.get();
 }
 
-Plan plan_coordinate(const System& sys, const TimeVariable& q) {
+// `constraint_forces_are_loads` tells (when asked: it costs an evaluation of the generalized
+// forces) whether declared loads supply every constraint's force
+Plan plan_coordinate(const System& sys, const TimeVariable& q,
+                     const std::function<bool()>& constraint_forces_are_loads) {
     const Frame& N = sys.newtonian();
     const ex& qd = q.d(1);
     Plan p;
@@ -113,9 +119,10 @@ Plan plan_coordinate(const System& sys, const TimeVariable& q) {
             break;
         }
     }
-    // none: the instantaneous centre, where workless contact forces pass (not with declared
-    // constraints, whose forces do work when q alone changes)
-    if (!p.O && sys.constraints().empty())
+    // none: the instantaneous centre, where workless contact forces pass (with declared
+    // constraints, only when declared loads supply their forces: the row keeps those loads,
+    // as the other rows do; an undeclared constraint force would do work when q alone changes)
+    if (!p.O && constraint_forces_are_loads())
         locate_instantaneous_centre(sys, q, *p.S[static_cast<std::size_t>(turning - pw.begin())],
                                     w0, pv[static_cast<std::size_t>(turning - pw.begin())], p);
     if (!p.O) {
@@ -358,8 +365,15 @@ std::vector<RoadmapRow> plan_roadmap(const System& sys,
             shared.push_back(x);
     }
     const std::size_t n_rows = coordinates.size() + constraint_rows.size();
+    std::optional<bool> forces_declared;
+    const std::function<bool()> constraint_forces_are_loads = [&] {
+        if (!forces_declared)
+            forces_declared = detail::constraint_forces_declared(sys, coordinates, unknowns);
+        return *forces_declared;
+    };
     std::vector<Plan> plans;
-    for (const TimeVariable& q : coordinates) plans.push_back(plan_coordinate(sys, q));
+    for (const TimeVariable& q : coordinates)
+        plans.push_back(plan_coordinate(sys, q, constraint_forces_are_loads));
     // why the rows of the coordinates and constraints alone do not serve (then the free-body
     // rows of what carries the unknown loads are searched too)
     std::string refusal;
@@ -463,8 +477,24 @@ std::vector<RoadmapRow> plan_roadmap(const System& sys,
         for (const RoadmapRow& r : constraint_rows)
             fixed.push_back({r, detail::FixedRow::kAnyCoordinate});
         try {
-            free_rows = detail::plan_free_body_rows(sys, coordinates, fixed, shared, unknowns, analysis);
+            free_rows = detail::plan_free_body_rows(sys, coordinates, fixed, shared, unknowns,
+                                                    analysis, constraint_forces_are_loads());
         } catch (const ModelError& e) {
+            // a constraint whose force no declared load supplies leaves its bodies without
+            // free-body rows: that first, it is the fix
+            std::string constraints;
+            if (!constraint_forces_are_loads())
+                for (const Constraint& c : sys.constraints())
+                    constraints += (constraints.empty() ? "" : ", ") + c.name;
+            std::string rest = refusal.substr(refusal.find(' ') + 1);  // without "plan_roadmap(): "
+            rest[0] = static_cast<char>(std::toupper(static_cast<unsigned char>(rest[0])));
+            if (!constraints.empty())
+                throw ModelError(
+                    "plan_roadmap(): the forces of the constraints " + constraints +
+                    " are no declared loads, so no body their coordinates move has a free-body "
+                    "row; declare the force that holds each constraint (a loop's pin force as a "
+                    "force pair), with its measures unknown. " + rest +
+                    ". Free-body rows of the bodies the unknown loads act on: " + e.what());
             throw ModelError(refusal + ". Free-body rows of the bodies the unknown loads act on: " +
                              e.what() +
                              " (declare each contact force on the body it acts on, with its "
