@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "support/script_dir.hpp"
 #include "alembert/lang/diagnostic.hpp"
 #include "alembert/lang/interpreter.hpp"
 
@@ -84,11 +85,16 @@ TEST(Diagnostics, CorpusHasAtLeastFortyScriptsAndEachIsListed) {
 }
 
 TEST(Diagnostics, EachMalformedScriptGivesItsMessageAtItsLineAndColumn) {
-    // run from the scripts' directory, so the data files they read (data/*.csv) are found
-    // and named in messages by the same relative paths on every machine
+    // run from a copy of the scripts' directory, so the data files they read (data/*.csv) are
+    // found and named in messages by the same relative paths on every machine, and whatever a
+    // script writes before its error lands in the copy, not in the sources
     struct InScriptsDirectory {
+        alembert::test::TempDir copy{"alembert-corpus"};
         fs::path before = fs::current_path();
-        InScriptsDirectory() { fs::current_path(kScripts); }
+        InScriptsDirectory() {
+            fs::copy(kScripts, copy.path / "scripts", fs::copy_options::recursive);
+            fs::current_path(copy.path / "scripts");
+        }
         ~InScriptsDirectory() { fs::current_path(before); }
     } in_scripts;
     for (const Expected& e : manifest()) {

@@ -17,6 +17,7 @@
 #include <string>
 #include <unistd.h>
 
+#include "support/script_dir.hpp"
 #include "alembert/error.hpp"
 #include "alembert/lang/interpreter.hpp"
 #include "alembert/sim/integrator.hpp"
@@ -45,16 +46,9 @@ std::string sit_to_stand_model() {
     return out;
 }
 
-struct TempDir {
-    fs::path path;
-    TempDir() {
-        std::string t = (fs::temp_directory_path() / "alembert-lang-XXXXXX").string();
-        path = ::mkdtemp(t.data());
-    }
-    ~TempDir() {
-        std::error_code ec;
-        fs::remove_all(path, ec);
-    }
+// a temporary directory named alembert-lang-...
+struct TempDir : alembert::test::TempDir {
+    TempDir() : alembert::test::TempDir("alembert-lang") {}
 };
 
 struct Script {

@@ -14,6 +14,7 @@
 #include <string>
 #include <unistd.h>
 
+#include "support/script_dir.hpp"
 #include "alembert/lang/interpreter.hpp"
 #include "alembert/sim/table.hpp"
 
@@ -25,16 +26,9 @@ namespace silent_answers {
 
 namespace {
 
-struct TempDir {
-    fs::path path;
-    TempDir() {
-        std::string t = (fs::temp_directory_path() / "alembert-silent-XXXXXX").string();
-        path = ::mkdtemp(t.data());
-    }
-    ~TempDir() {
-        std::error_code ec;
-        fs::remove_all(path, ec);
-    }
+// a temporary directory named alembert-silent-...
+struct TempDir : alembert::test::TempDir {
+    TempDir() : alembert::test::TempDir("alembert-silent") {}
 };
 
 struct Script {

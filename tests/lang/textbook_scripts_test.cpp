@@ -12,6 +12,7 @@
 #include <string>
 #include <unistd.h>
 
+#include "support/script_dir.hpp"
 #include "alembert/lang/interpreter.hpp"
 #include "alembert/sim/table.hpp"
 
@@ -23,16 +24,9 @@ namespace textbook_scripts {
 
 namespace {
 
-struct TempDir {
-    fs::path path;
-    TempDir() {
-        std::string t = (fs::temp_directory_path() / "alembert-textbook-XXXXXX").string();
-        path = ::mkdtemp(t.data());
-    }
-    ~TempDir() {
-        std::error_code ec;
-        fs::remove_all(path, ec);
-    }
+// a temporary directory named alembert-textbook-...
+struct TempDir : alembert::test::TempDir {
+    TempDir() : alembert::test::TempDir("alembert-textbook") {}
 };
 
 struct ScriptRun {

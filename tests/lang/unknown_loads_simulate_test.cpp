@@ -15,6 +15,7 @@
 #include <string>
 #include <unistd.h>
 
+#include "support/script_dir.hpp"
 #include "alembert/lang/interpreter.hpp"
 #include "alembert/sim/table.hpp"
 
@@ -26,16 +27,9 @@ namespace unknown_loads_simulate {
 
 namespace {
 
-struct TempDir {
-    fs::path path;
-    TempDir() {
-        std::string t = (fs::temp_directory_path() / "alembert-loads-XXXXXX").string();
-        path = ::mkdtemp(t.data());
-    }
-    ~TempDir() {
-        std::error_code ec;
-        fs::remove_all(path, ec);
-    }
+// a temporary directory named alembert-loads-...
+struct TempDir : alembert::test::TempDir {
+    TempDir() : alembert::test::TempDir("alembert-loads") {}
 };
 
 struct Script {
