@@ -2,6 +2,7 @@
 // The report statement: the model, its road-map and what simulate and inverse computed, as HTML.
 #include <algorithm>
 #include <filesystem>
+#include <numbers>
 #include <sstream>
 
 #include "alembert/eom/statics.hpp"
@@ -155,6 +156,18 @@ std::string Interpreter::Impl::write_report_to(const std::string& dir, const exm
             c.units[name] = u.display->text;
             c.unit_scales[name] = u.display->scale;
         }
+    // a coordinate declared without a unit that turns a frame is an angle: shown in degrees,
+    // as a reader measures a joint, not in radians
+    try {
+        const std::vector<std::string> kinds = coordinate_quantities(c.coordinates, where);
+        for (std::size_t k = 0; k < c.coordinates.size() && k < kinds.size(); ++k)
+            if (kinds[k] == "angle" && !c.units.count(c.coordinates[k].name())) {
+                c.units[c.coordinates[k].name()] = "deg";
+                c.unit_scales[c.coordinates[k].name()] = std::numbers::pi / 180;
+            }
+    } catch (const ScriptError&) {
+        // a coordinate whose kind cannot be told keeps SI
+    }
     c.plot_histories = settings.plots;
     c.plotted = settings.plotted;
     for (const std::string& name : settings.plotted) {

@@ -433,11 +433,12 @@ TEST(Report, TheStatementDrawsTheRoadmapAtTheGivenConfigurationAndAnimatesTheSim
     std::stringstream page;
     page << in.rdbuf();
     const std::string html = page.str();
-    // qA as given, qB and qC from the first sample of the motion (SI; the coordinates have no
-    // declared unit, so they are shown in SI too), and the page says where that is from
-    EXPECT_NE(html.find("\"configuration\":[{\"name\":\"qA\",\"value\":0.174533,\"shown\":0.174533,\"unit\":\"\"},"
-                        "{\"name\":\"qB\",\"value\":-1.22173,\"shown\":-1.22173,\"unit\":\"\"},"
-                        "{\"name\":\"qC\",\"value\":1.0472,\"shown\":1.0472,\"unit\":\"\"}],"
+    // qA as given, qB and qC from the first sample of the motion (SI), shown in degrees (the
+    // coordinates have no declared unit and turn frames: angles), and the page says where
+    // that is from
+    EXPECT_NE(html.find("\"configuration\":[{\"name\":\"qA\",\"value\":0.174533,\"shown\":10,\"unit\":\"deg\"},"
+                        "{\"name\":\"qB\",\"value\":-1.22173,\"shown\":-70,\"unit\":\"deg\"},"
+                        "{\"name\":\"qC\",\"value\":1.0472,\"shown\":60,\"unit\":\"deg\"}],"
                         "\"configuration_source\":\"given with report at, the other coordinates from the first sample of the simulation\""),
               std::string::npos);
     EXPECT_NE(html.find("\"animation\":{\"source\":\"simulation\""), std::string::npos);
