@@ -277,8 +277,9 @@ struct Segment {
 };
 
 // sticks: a point of a body located from another by a vector fixed in the body (constant in
-// its frame) or of fixed length is a segment of that body; else a vector fixed in the other
-// point's body is a segment of that one, and one fixed in N of the ground. A vector that
+// its frame) is a segment of that body; else a vector fixed in the other point's body is a
+// segment of that one; else one of fixed length a segment of the located point's body, and
+// one fixed in N of the ground. A vector that
 // changes in length and in all of them is a position, not material (a hip placed at
 // x Nx> + y Ny> from the origin, a rolling disk's contact point, a cart on its rail): no stick.
 std::vector<Segment> segments_of(const System& sys, const std::vector<const Point*>& placed) {
@@ -308,10 +309,12 @@ std::vector<Segment> segments_of(const System& sys, const std::vector<const Poin
                 return false;
             }
         };
-        if (p->owner() && (fixed_in(p->owner()) || fixed_length()))
+        if (p->owner() && fixed_in(p->owner()))
             out.push_back({p->owner()->name(), q->name(), p->name()});
         else if (q->owner() && fixed_in(q->owner()))
             out.push_back({q->owner()->name(), q->name(), p->name()});
+        else if (p->owner() && fixed_length())
+            out.push_back({p->owner()->name(), q->name(), p->name()});
         else if (fixed_in(nullptr))
             out.push_back({"", q->name(), p->name()});
     }
