@@ -510,7 +510,7 @@ void Interpreter::Impl::simulate(const Statement& s) {
     });
     PlotOptions plot_options = plot_options_of(s, res.table.names);
     PlotResult plot = guard(s.location, [&] { return write_table_and_plot(res.table, dir, "simulation", plot_options); });
-    record_history("simulation", res.table, nullptr);
+    record_history("simulate", s.location.line, dir + "/simulation.csv", res.table, nullptr);
     if (!res.contact_lost.empty())
         throw ScriptError(s.location, in_script_words(res.contact_lost),
                           "the rows up to that instant are in " + dir +
