@@ -94,6 +94,7 @@ struct InverseRequest {
     std::string unitless_unit{};  ///< how to read coordinate columns without a unit ("": refuse non-SI)
     Evaluation evaluation = Evaluation::automatic;
     std::string dir{};
+    int line = 0;                 ///< the statement's line; 0: run from the command line
     std::vector<Word> plotted{};  ///< `plot` names; `plot none` is the single word none
     double body_mass_kg = 0;      ///< `per kg mass M`: loads and powers per kg of M (0: not asked)
     std::vector<ForcePlate> cycle_plates{};  ///< `cycles P, ...`: one foot's plates (none: no cycles)
@@ -266,8 +267,11 @@ struct Interpreter::Impl {
     /// (of roadmap.tex with settings.latex_only).
     std::string write_report_to(const std::string& dir, const exmap& configuration, Location where,
                                 const ReportSettings& settings = {});
-    /// Records a table simulate or inverse wrote, with the motion behind it when known.
-    void record_history(const std::string& title, const Table& table, const MotionSamples* motion);
+    /// Records a table simulate or inverse wrote, with the motion behind it when known: the
+    /// statement (`simulate`), its line (0: run from the command line) and the file written
+    /// (named relative to the output directory in the history's title).
+    void record_history(const std::string& statement, int line, const std::string& file,
+                        const Table& table, const MotionSamples* motion);
     /// Keeps the coordinates a solve was given (`at`) or found (`xs`, `values`) for the
     /// report's diagrams.
     void remember_solved_configuration(const exmap& at, const std::vector<ex>& xs,

@@ -73,6 +73,7 @@ void Interpreter::Impl::inverse(const Statement& s) {
     }
     r.evaluation = evaluation_of(s);
     r.dir = output_path(s);
+    r.line = s.location.line;
     if (s.lists.count("plot")) r.plotted = s.lists.at("plot");
     run_inverse(r, s.location);
 }
@@ -200,7 +201,7 @@ void Interpreter::Impl::run_inverse(const InverseRequest& r, Location where) {
         write_inverse_results(id, samples, r, opts, q, where,
                               marker_residuals.names.empty() ? nullptr : &marker_residuals);
     const InverseAnalysisReport& rep = results.report;
-    record_history("inverse dynamics", rep.loads, r.motion_file.empty() ? &samples : nullptr);
+    record_history("inverse", r.line, rep.csv, rep.loads, r.motion_file.empty() ? &samples : nullptr);
     const Table& t = rep.loads;
     std::ostringstream out;
     out << "inverse dynamics over " << span << ", t = " << transcript.number(t.columns[0].front())

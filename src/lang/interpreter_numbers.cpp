@@ -510,7 +510,7 @@ void Interpreter::Impl::simulate(const Statement& s) {
     });
     PlotOptions plot_options = plot_options_of(s, res.table.names);
     PlotResult plot = guard(s.location, [&] { return write_table_and_plot(res.table, dir, "simulation", plot_options); });
-    record_history("simulation", res.table, nullptr);
+    record_history("simulate", s.location.line, dir + "/simulation.csv", res.table, nullptr);
     if (!res.contact_lost.empty())
         throw ScriptError(s.location, in_script_words(res.contact_lost),
                           "the rows up to that instant are in " + dir +
@@ -778,7 +778,7 @@ std::vector<StatementSpec> number_statements() {
          .help = "writes an HTML report: road-map with free-body diagrams, equations, plots, motion",
          .forms = {{"`report` [`at` *q = value, ...*] [`plot` *columns* \\| `plot none`] [`check`] [`matrices`] [`to` *\"dir\"*]",
                     "report at qA = 20 deg, qB = -70 deg, qC = 60 deg to \"report\"",
-                    "`write_report`: `index.html` (self-contained; KaTeX's fonts in `fonts/`) and `roadmap.tex` (the table, TikZ free-body diagrams and equations for LaTeX) with the model, the last road-map (or the planned one) with each row's free-body diagram drawn at the `at` configuration (default: the first sample of the motion, else the initial values), the equations typeset, the tables simulate and inverse wrote as plots (`plot` chooses the columns, `plot none` skips them; long runs thinned to about 2000 rows keeping their extremes), the motion animated (in 3D, turned by dragging), and the checks (energy, constraint drift; with `check`, `compare_methods` and `compare_reactions`); with `matrices`, the mass matrix and forcing M q'' = f typeset (`form_forward_equations`, as simulate forms them)"}},
+                    "`write_report`: `index.html` (self-contained; KaTeX's fonts in `fonts/`) and `roadmap.tex` (the table, TikZ free-body diagrams and equations for LaTeX) with the model, the last road-map (or the planned one) with each row's free-body diagram drawn at the `at` configuration (default: the first sample of the motion, else the initial values), the equations typeset, the tables simulate and inverse wrote as plots (one unit per plot axis, at most ten series per plot, each titled with the statement, line and table that computed it; `plot` chooses the columns, `plot none` skips them; long runs thinned to about 2000 rows keeping their extremes), the motion animated in real time with a speed control (in 3D, turned by dragging; the plots' cursor moves it), and the checks (energy, constraint drift; with `check`, `compare_methods` and `compare_reactions`); with `matrices`, the mass matrix and forcing M q'' = f typeset (`form_forward_equations`, as simulate forms them)"}},
          .clauses = {"at", "plot", "check", "matrices", "to"}, .parse = parse_report, .run = [](M& m, const Statement& s) { m.report(s); }},
         {.keyword = "latex", .family = family,
          .help = "writes the road-map, its free-body diagrams and equations as a LaTeX document",

@@ -10,10 +10,17 @@
 
 namespace alembert::lang {
 
-void Interpreter::Impl::record_history(const std::string& title, const Table& table,
+void Interpreter::Impl::record_history(const std::string& statement, int line,
+                                       const std::string& file, const Table& table,
                                        const MotionSamples* motion) {
     ReportHistory h;
-    h.title = title;
+    // the file as the script named it: relative to the output directory when inside it
+    namespace fs = std::filesystem;
+    const fs::path relative = fs::path(file).lexically_relative(output_dir);
+    const bool inside = !relative.empty() && *relative.begin() != "..";
+    h.file = (inside ? relative : fs::path(file).lexically_normal()).generic_string();
+    h.line = line;
+    h.title = report_history_title(statement, line, h.file);
     h.table = table;
     h.coordinates = default_coordinates();
     if (motion && motion->q.size() == h.coordinates.size()) {
@@ -140,7 +147,7 @@ std::string Interpreter::Impl::write_report_to(const std::string& dir, const exm
         for (std::size_t k = 0; k < motion->coordinates.size(); ++k)
             if (!motion->motion[k].empty())
                 c.configuration[motion->coordinates[k].symbol()] = motion->motion[k].front();
-        c.configuration_source = "the first sample of the " + motion->title;
+        c.configuration_source = "the first sample of " + motion->title;
     }
     if (!configuration.empty()) {
         for (const auto& [x, v] : configuration) c.configuration[x] = v;

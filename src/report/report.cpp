@@ -46,6 +46,13 @@ std::string html_escape(const std::string& s) {
 
 }  // namespace
 
+std::string report_history_title(const std::string& statement, int line, const std::string& file) {
+    std::string title = statement;
+    if (line > 0) title += " at line " + std::to_string(line);
+    if (!file.empty()) title += " (" + file + ")";
+    return title;
+}
+
 std::string default_katex_dir() {
     if (const char* env = std::getenv("ALEMBERT_KATEX_DIR"); env && *env) return env;
     return ALEMBERT_KATEX_DIR;
@@ -80,7 +87,7 @@ std::string report_detail::render_html(const ReportContent& content,
     page += "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n";
     page += "<meta name=\"viewport\" content=\"width=device-width, initial-scale=1\">\n";
     page += "<meta name=\"generator\" content=\"Alembert\">\n";
-    page += "<title>" + html_escape(content.title) + " - Alembert report</title>\n";
+    page += "<title>" + html_escape(content.title) + "</title>\n";  // the model's name
     if (!katex_css.empty()) page += "<style>\n" + katex_css + "\n</style>\n";
     page += "<style>\n" + std::string(report_detail::kViewerStyle) + "</style>\n";
     if (!katex_js.empty()) page += "<script>\n" + katex_js + "\n</script>\n";

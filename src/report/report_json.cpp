@@ -618,7 +618,8 @@ std::string history_json(const ReportContent& c, const ReportHistory& h) {
                              .add("values", num_arr(shown.columns[k]))
                              .done());
     Obj o;
-    o.add("title", str(h.title)).add("rows", num(static_cast<double>(t.row_count())));
+    o.add("title", str(h.title)).add("line", std::to_string(h.line)).add("file", str(h.file));
+    o.add("rows", num(static_cast<double>(t.row_count())));
     o.add("plotted_rows", num(static_cast<double>(shown.row_count())));
     o.add("time", num_arr(shown.columns[0]));
     o.add("time_unit", str(shown.units[0]));

@@ -425,9 +425,10 @@ TEST(Digits, OnlyWholeNumbersFromOneToSeventeen) {
 TEST(Report, TheStatementDrawsTheRoadmapAtTheGivenConfigurationAndAnimatesTheSimulation) {
     TempDir dir;
     Script r(dir.path);
-    r.run(sit_to_stand_model() + "roadmap E for T_A, T_B, T_C\n"
-          "initial qA = 20 deg, qB = -70 deg, qC = 60 deg\nfinal time 0.2 s\noutput step 0.05 s\n"
-          "simulate to \"fall\"\nreport at qA = 10 deg to \"rep\"\n");
+    const std::string before = sit_to_stand_model() + "roadmap E for T_A, T_B, T_C\n"
+          "initial qA = 20 deg, qB = -70 deg, qC = 60 deg\nfinal time 0.2 s\noutput step 0.05 s\n";
+    const std::string simulate_line = std::to_string(std::count(before.begin(), before.end(), '\n') + 1);
+    r.run(before + "simulate to \"fall\"\nreport at qA = 10 deg to \"rep\"\n");
     EXPECT_NE(r.out.str().find("wrote rep/index.html"), std::string::npos) << r.out.str();
     std::ifstream in(dir.path / "rep" / "index.html");
     std::stringstream page;
@@ -439,10 +440,45 @@ TEST(Report, TheStatementDrawsTheRoadmapAtTheGivenConfigurationAndAnimatesTheSim
     EXPECT_NE(html.find("\"configuration\":[{\"name\":\"qA\",\"value\":0.174533,\"shown\":10,\"unit\":\"deg\"},"
                         "{\"name\":\"qB\",\"value\":-1.22173,\"shown\":-70,\"unit\":\"deg\"},"
                         "{\"name\":\"qC\",\"value\":1.0472,\"shown\":60,\"unit\":\"deg\"}],"
-                        "\"configuration_source\":\"given with report at, the other coordinates from the first sample of the simulation\""),
+                        "\"configuration_source\":\"given with report at, the other coordinates from the first sample of "
+                        "simulate at line " + simulate_line + " (fall/simulation.csv)\""),
+              std::string::npos) << html.substr(html.find("\"configuration\":"), 400);
+    EXPECT_NE(html.find("\"animation\":{\"source\":\"simulate at line " + simulate_line + " (fall/simulation.csv)\""),
               std::string::npos);
-    EXPECT_NE(html.find("\"animation\":{\"source\":\"simulation\""), std::string::npos);
     EXPECT_NE(html.find("{\"variable\":\"T_B\""), std::string::npos);
+}
+
+// Three runs of one script are told apart on the page: each history's title names its
+// statement, the statement's line (counted here from the script's text) and the table it wrote
+// relative to the output directory; inverse's table is named by its loads' kind (torques.csv).
+TEST(Report, EachHistoryIsTitledByItsStatementLineAndTable) {
+    TempDir dir;
+    Script r(dir.path);
+    const std::string model = sit_to_stand_model();
+    const int first = static_cast<int>(std::count(model.begin(), model.end(), '\n')) + 1;
+    r.run(model +
+          "initial qA = 20 deg, qB = -70 deg, qC = 60 deg\nfinal time 0.1 s\noutput step 0.05 s\n"  // first..first+2
+          "simulate to \"a\"\n"                                                                  // first+3
+          "initial qA = 10 deg\nsimulate to \"b/c\"\n"                                           // first+5
+          "simulate\n"                                                                           // first+6
+          "motion qA = 10 deg, qB = -70 deg, qC = 60 deg\ninverse for T_A, T_B, T_C to \"inv\"\n"  // first+8
+          "report to \"rep\"\n");
+    std::ifstream in(dir.path / "rep" / "index.html");
+    std::stringstream page;
+    page << in.rdbuf();
+    const std::string html = page.str();
+    const auto title = [&](const std::string& statement, int line, const std::string& file) {
+        return "\"title\":\"" + statement + " at line " + std::to_string(line) + " (" + file + ")\",\"line\":" +
+               std::to_string(line) + ",\"file\":\"" + file + "\"";
+    };
+    EXPECT_NE(html.find(title("simulate", first + 3, "a/simulation.csv")), std::string::npos);
+    EXPECT_NE(html.find(title("simulate", first + 5, "b/c/simulation.csv")), std::string::npos);
+    EXPECT_NE(html.find(title("simulate", first + 6, "simulation.csv")), std::string::npos);
+    EXPECT_NE(html.find(title("inverse", first + 8, "inv/torques.csv")), std::string::npos)
+        << html.substr(html.find("\"histories\":"), 300);
+    // the page's <title> is the model's name: a script given as text, not read from a file,
+    // is named "model"
+    EXPECT_NE(html.find("<title>model</title>"), std::string::npos);
 }
 
 TEST(Report, AtNamesCoordinatesOnly) {

@@ -26,7 +26,12 @@ WEBGL = ["--enable-unsafe-swiftshader"]
 EXERCISE = ["unticking a series hides it", "ticking it shows it again", "the cursor reads values",
             "dragging zooms into a time range", "show all zooms out again", "the 3D view is drawn",
             "dragging turns the 3D view", "the time slider moves the model", "the time slider moves the 3D view",
-            "play starts the animation", "pause stops it"]
+            "play starts the animation", "pause stops it", "the cursor moves the animation", "the speed control offers",
+            "play at 1\u00d7", "play at 0.5\u00d7", "play at 2\u00d7", "play at 0.25\u00d7"]
+# what it does with the plots and the animation on every example's page
+EXERCISE_PLOTS = ["the cursor reads values", "dragging zooms into a time range", "show all zooms out again"]
+EXERCISE_MOTION = ["the time slider moves the model", "play starts the animation", "the speed control offers",
+                   "play at 1\u00d7", "play at 0.5\u00d7", "play at 2\u00d7", "play at 0.25\u00d7"]
 
 
 def check(ok, what):
@@ -78,6 +83,9 @@ class Dom(html.parser.HTMLParser):
         self.matrices_tables = 0  # matrices KaTeX laid out inside it (span.mtable)
         self.results = []        # per div.result: [statement line, output text]
         self.configuration = ""  # the note saying where the diagrams are drawn
+        self.title = ""          # the page's <title>
+        self.h1 = ""
+        self.figures = []        # per figure.plot: its unit, title, y axis label and series (unit, colour)
 
     def classes(self, attrs):
         return set((dict(attrs).get("class") or "").split())
@@ -128,8 +136,12 @@ class Dom(html.parser.HTMLParser):
             self.raw += 1
         if tag == "svg" and "plot-svg" in c:
             self.plots += 1
+        if tag == "figure" and "plot" in c:
+            self.figures.append({"unit": a.get("data-unit"), "title": a.get("data-title"), "label": "", "series": []})
         if tag == "polyline" and "series" in c:
             self.series += 1
+            if self.inside("figure", "plot"):
+                self.figures[-1]["series"].append((a.get("data-unit"), a.get("stroke")))
         if tag == "input" and a.get("type") == "checkbox" and a.get("data-series"):
             self.legend_boxes += 1
         if tag == "svg" and "anim" in c:
@@ -166,6 +178,12 @@ class Dom(html.parser.HTMLParser):
             self.results[-1][1] += data
         if self.inside("p", "#configuration"):
             self.configuration += data
+        if self.inside("title") and not self.inside("svg"):
+            self.title += data
+        if self.inside("h1"):
+            self.h1 += data
+        if self.inside("text", "y-label") and self.inside("figure", "plot"):
+            self.figures[-1]["label"] += data
 
         hidden = self.inside("annotation") or self.inside("script") or self.inside("style")
         if not hidden and "\\" in data:
@@ -215,6 +233,46 @@ def png_pixels(path):
         gray.extend((line[x] + line[x + 1] + line[x + 2]) // 3 for x in range(0, stride, channels))
     return width, height, gray
 
+
+
+def unit_text(unit):
+    """A unit as the plots' axes show it: N*m as N·m, none said."""
+    return unit.replace("*", "\u00b7") if unit else "no unit"
+
+
+def check_plots(dom, data, who, model):
+    """The page is titled with the model's name; one unit per plot, named on its y axis; no
+    two series of a plot in one colour; every series plotted once; no two plots titled alike
+    (each names the statement, line and table behind it, and its unit)."""
+    check(dom.title.strip() == model and dom.h1.strip() == model,
+          "%s: the page's title and heading are the model's name %r (%r, %r)" % (who, model, dom.title, dom.h1))
+    # expected: per history, per unit in order, as many plots as hold its series ten at a time
+    expected = []
+    for h in data["histories"]:
+        units = []
+        for ser in h["series"]:
+            if ser["unit"] not in units:
+                units.append(ser["unit"])
+        for u in units:
+            n = sum(1 for ser in h["series"] if ser["unit"] == u)
+            expected += [u] * math.ceil(n / 10)
+    figures = dom.figures
+    check([f["unit"] for f in figures] == expected,
+          "%s: a plot per unit of each history (%s, expected %s)" % (who, [f["unit"] for f in figures], expected))
+    check(sum(len(f["series"]) for f in figures) == sum(len(h["series"]) for h in data["histories"]),
+          "%s: every series plotted once (%d)" % (who, sum(len(f["series"]) for f in figures)))
+    for f in figures:
+        units = set(u for u, _ in f["series"])
+        colours = [c for _, c in f["series"]]
+        check(units <= {f["unit"]} and f["label"] == unit_text(f["unit"]),
+              "%s: %s: its series share its unit %r, shown on its axis (%s, label %r)"
+              % (who, f["title"], f["unit"], sorted(units), f["label"]))
+        check(len(set(colours)) == len(colours) and all(colours),
+              "%s: %s: no two of its %d series in one colour (%s)" % (who, f["title"], len(colours), colours))
+    titles = [f["title"] for f in figures]
+    check(len(set(titles)) == len(titles), "%s: no two plots titled alike (%s)" % (who, titles))
+    check(all(re.match(r"(simulate|inverse) at line \d+ \(.+\.csv\): ", t) for t in titles),
+          "%s: each plot titled with its statement, line and table (%s)" % (who, titles[:2]))
 
 
 def console_lines(stderr):
@@ -297,7 +355,9 @@ def three_d(cli, source, work, browser):
               % (name, dom.canvas.get("data-sticks"), dom.canvas.get("data-shells")))
         check_exercise(dom.exercise.strip().splitlines(),
                        ["the 3D view is drawn", "dragging turns the 3D view", "the time slider moves the 3D view",
-                        "dragging zooms into a time range", "play starts the animation"], name)
+                        "dragging zooms into a time range", "play starts the animation", "the cursor moves the animation",
+                        "play at 1\u00d7"], name)
+        check_plots(dom, data, name, name)
         if dom.image3d.startswith("data:image/png;base64,"):
             png = os.path.join(out, "view3d.png")
             with open(png, "wb") as f:
@@ -335,7 +395,7 @@ def examples(cli, source, work, browser):
             continue
         data = page_data(index)
         url = "file://" + os.path.abspath(index)
-        dom, console = open_page(browser, url)
+        dom, console = open_page(browser, url + "#exercise")
         check(dom.status == "ready" and not dom.errors.strip(), "%s: the viewer finished without errors (%r)"
               % (name, dom.errors.strip()[:300]))
         check(not console, "%s: no console messages (%s)" % (name, console[:2]))
@@ -385,9 +445,12 @@ def examples(cli, source, work, browser):
             coupler, rocker = math.dist(at["B_o"], at["B_tip"]), math.dist(at["C_o"], at["C_tip"])
             check(gap <= 1e-5 and abs(coupler - 1.2) <= 1e-5 and abs(rocker - 0.8) <= 1e-5,
                   "four_bar_linkage: drawn closed (gap %.3g m, coupler %.6g m, rocker %.6g m)" % (gap, coupler, rocker))
-        series = sum(len(h["series"]) for h in data["histories"])
-        check(dom.plots == len(data["histories"]) and dom.series == series,
-              "%s: a plot per history with its series (%d plots, %d series)" % (name, dom.plots, dom.series))
+        check_plots(dom, data, name, name)
+        # the controls worked: the plots' cursor and zoom, the animation's slider, play and speed
+        want = (EXERCISE_PLOTS if data["histories"] else []) + (EXERCISE_MOTION if data["animation"] else [])
+        if data["histories"] and data["animation"]:
+            want.append("the cursor moves the animation")
+        check_exercise(dom.exercise.strip().splitlines(), want, name)
         if not data["geometry"]["planar"]:
             check(dom.canvas is not None, "%s: a spatial model is shown in the 3D view" % name)
         if data["animation"]:
@@ -535,6 +598,10 @@ def main():
           "(%d plots, %d series)" % (dom.plots, dom.series))
     check(dom.anim == 1 and dom.anim_sticks >= 3 and dom.play and dom.slider,
           "the animation with its sticks, play button and time slider")
+    # the torques (N*m) and the joints' forces (N) on two plots
+    check(sorted(f["unit"] for f in dom.figures) == ["N", "N*m"],
+          "the torques and the joint forces on plots of their own (%s)" % [f["unit"] for f in dom.figures])
+    check_plots(dom, page_data(index), "sit-to-stand", "sit_to_stand")
 
     # the controls, worked once in the page (#exercise): series toggles, the value readout,
     # the time slider, play and pause

@@ -116,27 +116,38 @@ TEST(Report, ALongSpatialChainsGeometryIsWrittenWithoutExpandingItsPositions) {
     }
 }
 
+// A history's title names its statement, line and table; each series carries its own unit
+// (the page plots each unit on its own axis), and the page's <title> is the model's name.
 TEST(Report, HistoriesArePlottedAndTheirMotionAnimated) {
     SitToStand s;
     ReportHistory h;
-    h.title = "inverse dynamics";
+    h.line = 31;
+    h.file = "out/torques.csv";
+    h.title = report_history_title("inverse", h.line, h.file);
+    EXPECT_EQ(h.title, "inverse at line 31 (out/torques.csv)");
+    EXPECT_EQ(report_history_title("inverse", 0, "torques.csv"), "inverse (torques.csv)");
     h.table.add_column("t", "s");
     h.table.add_column("T_A", "N*m");
+    h.table.add_column("F_Ac", "N");
     h.table.columns[0] = {0, 0.5, 1};
     h.table.columns[1] = {1, 2, 3};
+    h.table.columns[2] = {-4, 5, 6};
     h.coordinates = s.m.q;
     h.motion = {{0, 0, 0}, {0, 0, 0}, {0, 0, 0}};
     s.content.histories.push_back(h);
     const std::string json = render_report_json(s.content);
-    EXPECT_NE(json.find("\"title\":\"inverse "
-                        "dynamics\",\"rows\":3,\"plotted_rows\":3,\"time\":[0,0.5,1],\"time_unit\":"
-                        "\"s\",\"series\":[{"
-                        "\"name\":\"T_A\",\"unit\":\"N*m\","
-                        "\"values\":[1,2,3]}]"),
-              std::string::npos);
-    std::size_t anim = json.find("\"animation\":{\"source\":\"inverse dynamics\"");
+    EXPECT_NE(json.find("\"title\":\"inverse at line 31 (out/torques.csv)\",\"line\":31,"
+                        "\"file\":\"out/torques.csv\",\"rows\":3,\"plotted_rows\":3,"
+                        "\"time\":[0,0.5,1],\"time_unit\":\"s\",\"series\":["
+                        "{\"name\":\"T_A\",\"unit\":\"N*m\",\"values\":[1,2,3]},"
+                        "{\"name\":\"F_Ac\",\"unit\":\"N\",\"values\":[-4,5,6]}]"),
+              std::string::npos)
+        << json.substr(json.find("\"histories\":"), 300);
+    std::size_t anim = json.find("\"animation\":{\"source\":\"inverse at line 31 (out/torques.csv)\"");
     ASSERT_NE(anim, std::string::npos);
     EXPECT_NE(json.find("\"time\":[0,0.5,1],\"frames\":[[", anim), std::string::npos);
+    const std::string html = render_report_html(s.content, "", "");
+    EXPECT_NE(html.find("<title>sit_to_stand</title>"), std::string::npos);
 }
 
 // the values of the JSON array after `key` (from `from` on), as numbers
@@ -167,7 +178,7 @@ TEST(Report, LongHistoriesAreThinnedForPlottingKeepingTheEndsAndTheExtremes) {
     }
     s.content.histories.push_back(h);
     const std::string json = render_report_json(s.content);
-    std::size_t at = json.find("\"title\":\"simulation\",\"rows\":100001,\"plotted_rows\":");
+    std::size_t at = json.find("\"title\":\"simulation\",\"line\":0,\"file\":\"\",\"rows\":100001,\"plotted_rows\":");
     ASSERT_NE(at, std::string::npos);
     const std::vector<double> t = numbers_after(json, "\"time\":", at);
     const std::vector<double> x = numbers_after(json, "\"values\":", at);
@@ -433,7 +444,7 @@ TEST(Report, PageHoldsTheDataAndTheViewerAndNoClosingScriptInsideTheData) {
               std::string::npos);
     EXPECT_NE(page.find("Alembert's report viewer"), std::string::npos);
     EXPECT_EQ(count(page, "</script>"), 2u);  // the data's and the viewer's
-    EXPECT_NE(page.find("<title>a&lt;/script&gt;b - Alembert report</title>"), std::string::npos);
+    EXPECT_NE(page.find("<title>a&lt;/script&gt;b</title>"), std::string::npos);  // the model's name
 }
 
 TEST(Report, WritesIndexHtmlWithoutLeavingTemporaries) {

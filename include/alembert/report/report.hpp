@@ -15,13 +15,23 @@
 namespace alembert {
 
 /// A time history to plot: a table whose first column is the time, and, when the motion is
-/// known, the coordinates at each of its rows (SI) for the animation.
+/// known, the coordinates at each of its rows (SI) for the animation. The page plots each unit
+/// of the table's columns on its own axis, under the title.
 struct ReportHistory {
-    std::string title{};                        ///< "inverse dynamics", "simulation"
+    /// What computed it, for the reader to tell runs apart: "simulate at line 31
+    /// (fall/simulation.csv)" (report_history_title)
+    std::string title{};
+    int line = 0;                               ///< the statement's line in the script; 0: none
+    std::string file{};                         ///< the table as written ("fall/simulation.csv")
     Table table{};                              ///< t, then the series, in their units
     std::vector<TimeVariable> coordinates{};    ///< the coordinates `motion` holds
     std::vector<std::vector<double>> motion{};  ///< motion[k][row]: coordinate k at each row (SI)
 };
+
+/// A history's title from what computed it: `statement` ("simulate", "inverse"), its `line`
+/// (0: not from a script line) and the `file` it wrote: "simulate at line 31
+/// (fall/simulation.csv)", "inverse (torques.csv)".
+std::string report_history_title(const std::string& statement, int line, const std::string& file);
 
 /// A result the script printed (a `solve`, `evaluate` or `linearize`), shown on the page where
 /// the script computed it.

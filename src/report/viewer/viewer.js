@@ -346,119 +346,8 @@
     tex(sec, data.matrices.tex, true);
   }
 
-  var palette = ["#1f77b4", "#d62728", "#2ca02c", "#9467bd", "#ff7f0e", "#17becf", "#8c564b", "#e377c2"];
-  function niceTicks(lo, hi, n) {
-    var span = hi - lo || 1, step = Math.pow(10, Math.floor(Math.log10(span / n)));
-    [1, 2, 5, 10].some(function (m) { if (span / (step * m) <= n) { step *= m; return true; } return false; });
-    var out = [];
-    for (var v = Math.ceil(lo / step) * step; v <= hi + 1e-9 * span; v += step) out.push(Math.abs(v) < 1e-12 * span ? 0 : v);
-    return out;
-  }
-  var plotCount = 0;
-  function plot(parent, h) {
-    ++plotCount;
-    var W = 720, H = 300, ml = 60, mr = 20, mt = 16, mb = 40;
-    var fig = el("figure", {"class": "plot"}, parent);
-    el("figcaption", {}, fig, h.title + (h.plotted_rows < h.rows ? " (" + h.rows + " rows, " + h.plotted_rows +
-       " plotted: each stretch of the run keeps its least and greatest values)" : ""));
-    var s = svg("svg", {"class": "plot-svg", viewBox: "0 0 " + W + " " + H, width: W, height: H}, fig);
-    var shown = h.series.map(function () { return true; });
-    var readout = el("div", {"class": "readout"}, fig, "move over the plot to read values");
-    var legend = el("div", {"class": "legend"}, fig);
-    h.series.forEach(function (ser, k) {
-      var lab = el("label", {style: "color:" + palette[k % palette.length]}, legend);
-      var box = el("input", {type: "checkbox", checked: "checked", "data-series": ser.name}, lab);
-      lab.appendChild(document.createTextNode(" " + ser.name + (ser.unit ? " [" + ser.unit + "]" : "")));
-      box.addEventListener("change", function () { shown[k] = box.checked; draw(); });
-    });
-    var t = h.time, full0 = t[0], full1 = t[t.length - 1] === full0 ? full0 + 1 : t[t.length - 1];
-    var x0 = full0, x1 = full1;
-    var cursor = null, band = null;
-    var zoomBar = el("div", {"class": "zoom"}, fig);
-    var reset = el("button", {type: "button", "class": "zoom-reset", disabled: "disabled"}, zoomBar, "show all");
-    el("span", {"class": "note"}, zoomBar, " drag across the plot to zoom into a time range; double-click or \u201cshow all\u201d to zoom out");
-    reset.addEventListener("click", function () { zoomTo(full0, full1); });
-    function zoomTo(a, b) {
-      if (!(b > a)) return;
-      x0 = Math.max(full0, a); x1 = Math.min(full1, b);
-      if (x0 === full0 && x1 === full1) reset.setAttribute("disabled", "disabled");
-      else reset.removeAttribute("disabled");
-      fig.setAttribute("data-range", fmt(x0) + " " + fmt(x1));
-      draw();
-    }
-    function timeAt(e) {
-      var r = s.getBoundingClientRect(), x = (e.clientX - r.left) * W / r.width;
-      return x0 + (x - ml) / (W - ml - mr) * (x1 - x0);
-    }
-    function draw() {
-      while (s.firstChild) s.removeChild(s.firstChild);
-      var lo = Infinity, hi = -Infinity;
-      h.series.forEach(function (ser, k) {
-        if (!shown[k]) return;
-        ser.values.forEach(function (v, i) {
-          if (v !== null && t[i] >= x0 && t[i] <= x1) { lo = Math.min(lo, v); hi = Math.max(hi, v); }
-        });
-      });
-      if (!isFinite(lo)) { lo = -1; hi = 1; }
-      if (hi === lo) { hi += 1; lo -= 1; }
-      var X = function (v) { return ml + (v - x0) / (x1 - x0) * (W - ml - mr); };
-      var Y = function (v) { return mt + (hi - v) / (hi - lo) * (H - mt - mb); };
-      var axes = svg("g", {"class": "axes"}, s);
-      niceTicks(lo, hi, 6).forEach(function (v) {
-        svg("line", {x1: ml, x2: W - mr, y1: Y(v), y2: Y(v), "class": "grid"}, axes);
-        svg("text", {x: ml - 6, y: Y(v) + 4, "text-anchor": "end"}, axes, fmt(v));
-      });
-      niceTicks(x0, x1, 8).forEach(function (v) {
-        svg("line", {x1: X(v), x2: X(v), y1: mt, y2: H - mb, "class": "grid"}, axes);
-        svg("text", {x: X(v), y: H - mb + 16, "text-anchor": "middle"}, axes, fmt(v));
-      });
-      svg("text", {x: (W + ml) / 2, y: H - 6, "text-anchor": "middle"}, axes, "t" + (h.time_unit ? " [" + h.time_unit + "]" : ""));
-      var clip = "clip-" + plotCount;
-      svg("rect", {x: ml, y: mt, width: W - ml - mr, height: H - mt - mb}, svg("clipPath", {id: clip}, s));
-      h.series.forEach(function (ser, k) {
-        if (!shown[k]) return;
-        var pts = [];
-        ser.values.forEach(function (v, i) {
-          // the rows in view and one on either side, so lines reach the edges
-          if (v !== null && (i + 1 < t.length ? t[i + 1] >= x0 : true) && (i > 0 ? t[i - 1] <= x1 : true))
-            pts.push(X(t[i]).toFixed(2) + "," + Y(v).toFixed(2));
-        });
-        svg("polyline", {points: pts.join(" "), fill: "none", stroke: palette[k % palette.length], "stroke-width": 1.8,
-                         "class": "series", "data-series": ser.name, "clip-path": "url(#" + clip + ")"}, s);
-      });
-      cursor = svg("line", {x1: -10, x2: -10, y1: mt, y2: H - mb, "class": "cursor"}, s);
-      band = svg("rect", {x: 0, y: mt, width: 0, height: H - mt - mb, "class": "zoom-band"}, s);
-      s.X = X;
-    }
-    var dragFrom = null;
-    s.addEventListener("mousedown", function (e) { dragFrom = timeAt(e); e.preventDefault(); });
-    window.addEventListener("mouseup", function (e) {
-      if (dragFrom === null) return;
-      var a = dragFrom, b = timeAt(e);
-      dragFrom = null;
-      band.setAttribute("width", 0);
-      if (Math.abs(b - a) > 0.01 * (x1 - x0)) zoomTo(Math.min(a, b), Math.max(a, b));
-    });
-    s.addEventListener("dblclick", function () { zoomTo(full0, full1); });
-    s.addEventListener("mousemove", function (e) {
-      var tv = timeAt(e), best = 0;
-      if (dragFrom !== null) {
-        var xa = s.X(Math.max(x0, Math.min(x1, dragFrom))), xb = s.X(Math.max(x0, Math.min(x1, tv)));
-        band.setAttribute("x", Math.min(xa, xb)); band.setAttribute("width", Math.abs(xb - xa));
-      }
-      t.forEach(function (v, i) { if (Math.abs(v - tv) < Math.abs(t[best] - tv)) best = i; });
-      cursor.setAttribute("x1", s.X(t[best])); cursor.setAttribute("x2", s.X(t[best]));
-      readout.textContent = "t = " + fmt(t[best]) + h.series.filter(function (ser, k) { return shown[k]; }).map(function (ser) {
-        return ", " + ser.name + " = " + fmt(ser.values[best]) + (ser.unit ? " " + ser.unit : ""); }).join("");
-    });
-    draw();
-  }
-  function histories(main, data) {
-    if (!data.histories.length) return;
-    var sec = el("section", {id: "histories"}, main);
-    el("h2", {}, sec, "Time histories");
-    data.histories.forEach(function (h) { plot(sec, h); });
-  }
+  // the plots of the time histories (plots.js)
+  var plots = alembertPlots({el: el, svg: svg, fmt: fmt}), palette = plots.palette;
 
   // ---- the 3D view (three.js, when the report inlines it) ------------------------------------
   // frames: arrays of the points' positions (x, y, z each) then the bodies' axes (9 each);
@@ -659,6 +548,23 @@
     return {show: show, canvas: canvas};
   }
 
+  // ---- the animation -----------------------------------------------------------------------
+  // the speeds offered (seconds of motion per second of wall time)
+  var SPEEDS = [0.25, 0.5, 1, 2, 4];
+  // the motion's time `elapsed` ms after play started at motion time `from`, at `rate`
+  function playedTime(from, elapsed, rate) { return from + rate * Math.max(0, elapsed) / 1000; }
+  // the frame due at time t: the last whose time is not after t (the first before them all)
+  function frameAt(times, t) {
+    var lo = 0, hi = times.length - 1;
+    if (t >= times[hi]) return hi;
+    while (hi - lo > 1) {
+      var mid = (lo + hi) >> 1;
+      if (times[mid] <= t) lo = mid; else hi = mid;
+    }
+    return lo;
+  }
+  var animator = null;  // the animation's player, when there is a motion
+
   function animation(main, data) {
     var a = data.animation, geo = data.geometry;
     if (!a) {
@@ -672,7 +578,7 @@
       return;
     }
     var sec = el("section", {id: "animation"}, main);
-    el("h2", {}, sec, "Motion (" + a.source + ")");
+    el("h2", {}, sec, "Motion: " + a.source);
     var project = projector(geo), index = {};
     a.points.forEach(function (n, i) { index[n] = i; });
     var pointAt = function (frame, name) { var i = 3 * index[name]; return [frame[i], frame[i + 1], frame[i + 2]]; };
@@ -695,7 +601,13 @@
     var button = el("button", {type: "button", id: "play"}, controls, "play");
     var slider = el("input", {type: "range", min: 0, max: a.frames.length - 1, value: 0, step: 1, id: "time-slider"}, controls);
     var label = el("span", {"class": "time"}, controls);
-    function show(k) {
+    var speedLabel = el("label", {}, controls, "speed ");
+    var speed = el("select", {id: "speed", title: "seconds of motion played per second"}, speedLabel);
+    SPEEDS.forEach(function (v) {
+      var o = el("option", {value: v}, speed, v + "\u00d7" + (v === 1 ? " (real time)" : ""));
+      if (v === 1) o.selected = true;
+    });
+    function show(k, fromCursor) {
       var f = a.frames[k];
       geo.segments.forEach(function (seg, j) {
         var p = project(pointAt(f, seg.from)), q = project(pointAt(f, seg.to));
@@ -705,29 +617,58 @@
       label.textContent = "t = " + fmt(a.time[k]) + " s";
       slider.value = k;
       if (three) three.show(k);
+      if (!fromCursor) plots.cursorAt(a.time[k], true);
     }
-    var playing = false, start = 0, t0 = 0;
-    function tick(now) {
-      if (!playing) return;
-      var t = a.time[0] + t0 + (now - start) / 1000, k = 0;
-      while (k + 1 < a.time.length && a.time[k + 1] <= t) ++k;
+    // playing: the frame shown is the one due at the motion's time, which runs `rate` times
+    // the wall clock from where play started (frames are skipped or held, never one per tick)
+    var player = {playing: false, rate: 1, wall0: 0, time0: 0, frame: 0};
+    function stop() { player.playing = false; button.textContent = "play"; }
+    player.stop = stop;
+    // what is shown at wall-clock instant `now` (ms, performance.now()); false at the end
+    player.advance = function (now) {
+      var k = frameAt(a.time, playedTime(player.time0, now - player.wall0, player.rate));
+      if (k !== player.frame) { player.frame = k; show(k); }
+      return k + 1 < a.time.length;
+    };
+    function tick() {
+      if (!player.playing) return;
+      if (player.advance(performance.now())) window.requestAnimationFrame(tick);
+      else stop();
+    }
+    // play from frame k, now
+    player.start = function (k) {
+      if (k + 1 >= a.time.length) k = 0;
+      player.frame = k;
       show(k);
-      if (k + 1 >= a.time.length) { playing = false; button.textContent = "play"; return; }
+      player.time0 = a.time[k];
+      player.wall0 = performance.now();
+      player.playing = true;
+      button.textContent = "pause";
       window.requestAnimationFrame(tick);
-    }
+    };
     button.addEventListener("click", function () {
-      playing = !playing;
-      button.textContent = playing ? "pause" : "play";
-      if (playing) {
-        var k = Number(slider.value);
-        if (k + 1 >= a.time.length) k = 0;
-        t0 = a.time[k] - a.time[0];
-        start = performance.now();
-        window.requestAnimationFrame(tick);
-      }
+      if (player.playing) stop(); else player.start(Number(slider.value));
     });
-    slider.addEventListener("input", function () { playing = false; button.textContent = "play"; show(Number(slider.value)); });
+    speed.addEventListener("change", function () {
+      // the new rate from the time shown now
+      var now = performance.now();
+      if (player.playing) {
+        player.time0 = playedTime(player.time0, now - player.wall0, player.rate);
+        player.wall0 = now;
+      }
+      player.rate = Number(speed.value);
+    });
+    slider.addEventListener("input", function () { stop(); player.frame = Number(slider.value); show(player.frame); });
+    // the plots' cursor moves the motion to the frame nearest its time
+    plots.follow(function (t) {
+      stop();
+      var k = 0;
+      a.time.forEach(function (v, i) { if (Math.abs(v - t) < Math.abs(a.time[k] - t)) k = i; });
+      player.frame = k;
+      show(k, true);
+    });
     show(0);
+    animator = player;
   }
 
   // ---- the page ---------------------------------------------------------------------------
@@ -745,7 +686,8 @@
 
   function render(data, main) {
     while (main.firstChild) main.removeChild(main.firstChild);
-    el("h1", {}, main, data.title + ": Alembert report");
+    el("h1", {}, main, data.title);
+    el("p", {"class": "note subtitle"}, main, "Alembert report");
     if (!data.geometry.planar) {
       // a spatial model: sliders turn the drawings
       var turn = el("div", {"class": "controls", id: "view-controls"}, main);
@@ -764,7 +706,7 @@
     results(main, data);
     if (data.matrices) matrices(main, data);
     animation(main, data);
-    histories(main, data);
+    plots.histories(main, data);
     checks(main, data);
     model(main, data);
   }
@@ -829,11 +771,15 @@
     }
     var slider = document.getElementById("time-slider");
     if (slider) {
-      var stick = document.querySelector("svg.anim line.stick"), x0 = stick ? stick.getAttribute("x2") : null;
+      // where the sticks are (a model's first stick may be fixed to the ground: an arm's base)
+      var sticks = document.querySelectorAll("svg.anim line.stick"), stick = sticks.length > 0;
+      var placed = function () { return Array.prototype.map.call(sticks, function (l) {
+        return ["x1", "y1", "x2", "y2"].map(function (c) { return l.getAttribute(c); }).join(" "); }).join(";"); };
+      var x0 = placed();
       var frame0 = canvas ? canvas.getAttribute("data-frame") : null;
       slider.value = slider.max;
       slider.dispatchEvent(new Event("input"));
-      if (stick) expect(stick.getAttribute("x2") !== x0, "the time slider moves the model");
+      if (stick) expect(placed() !== x0, "the time slider moves the model");
       if (canvas) expect(canvas.getAttribute("data-frame") !== frame0, "the time slider moves the 3D view");
       var play = document.getElementById("play");
       slider.value = 0;
@@ -842,6 +788,38 @@
       expect(play.textContent === "pause", "play starts the animation");
       play.click();
       expect(play.textContent === "play", "pause stops it");
+      var times = data.animation.time, span = times[times.length - 1] - times[0];
+      // the plots' cursor moves the motion to the frame nearest the time under it
+      var plotFig = document.querySelector("figure.plot");
+      if (plotFig) {
+        slider.value = 0;
+        slider.dispatchEvent(new Event("input"));
+        var ps = plotFig.querySelector("svg"), pr = ps.getBoundingClientRect();
+        ps.dispatchEvent(new MouseEvent("mousemove", {clientX: pr.left + 0.8 * pr.width, clientY: pr.top + 0.5 * pr.height}));
+        var tc = Number(plotFig.getAttribute("data-cursor")), want = 0;
+        times.forEach(function (v, i) { if (Math.abs(v - tc) < Math.abs(times[want] - tc)) want = i; });
+        expect(want > 0 && Number(slider.value) === want && (!canvas || canvas.getAttribute("data-frame") === String(want)),
+               "the cursor moves the animation (t = " + fmt(tc) + " s: frame " + slider.value + ", nearest " + want + ")");
+      }
+      // play at each speed: after a wall time w the frame shown is the last at or before
+      // t0 + speed * w (the player's own clock, driven here with chosen instants)
+      var speed = document.getElementById("speed"), step = 0;
+      for (var i = 1; i < times.length; ++i) step = Math.max(step, times[i] - times[i - 1]);
+      expect(speed && speed.options.length >= 4 && speed.value === "1",
+             "the speed control offers " + (speed ? speed.options.length : 0) + " speeds, 1\u00d7 (real time) first");
+      [1, 0.5, 2, 0.25].forEach(function (rate) {
+        speed.value = String(rate);
+        speed.dispatchEvent(new Event("change"));
+        animator.start(0);
+        var wall = 0.4 * span / rate;  // seconds of wall time for 40 % of the motion
+        animator.advance(animator.wall0 + 1000 * wall);
+        var due = times[0] + 0.4 * span, shown = times[animator.frame];
+        expect(shown <= due + 1e-9 * span && due - shown <= step + 1e-9 * span && Number(slider.value) === animator.frame,
+               "play at " + rate + "\u00d7: " + fmt(wall) + " s of wall time shows t = " + fmt(shown) + " s (due " + fmt(due) + " s)");
+        animator.stop();
+      });
+      speed.value = "1";
+      speed.dispatchEvent(new Event("change"));
     }
     el("pre", {id: "alembert-exercise"}, document.body, out.join("\n"));
     // the 3D view as drawn at the start (the browser test saves and checks it)
