@@ -288,6 +288,47 @@ Equilibrium solve_equilibrium(const SymbolTable& table, const std::vector<ex>& r
         E = E_new;
     }
 
+    if (options.require_determined && P.equations() == P.size() && n > 0) {
+        // the equations must fix every unknown at the solution: a singular Jacobian leaves an
+        // unknown (the largest part of the null direction) at whatever the guess gave
+        Eigen::MatrixXd J = P.jacobian(x);
+        Eigen::JacobiSVD<Eigen::MatrixXd> svd(J, Eigen::ComputeFullV);
+        const Eigen::VectorXd& sv = svd.singularValues();
+        const double scale = std::max(J_scale, sv(0));
+        if (!finite(sv) || sv(n - 1) <= 1e-12 * scale) {
+            Eigen::Index j = 0;
+            svd.matrixV().col(n - 1).cwiseAbs().maxCoeff(&j);
+            auto name = [&](Eigen::Index i) {
+                const auto k = static_cast<std::size_t>(i);
+                return k < options.residual_names.size() ? options.residual_names[k]
+                                                         : "E[" + std::to_string(k + 1) + "]";
+            };
+            std::string rows;
+            for (Eigen::Index i = 0; i < J.rows(); ++i)
+                if (!(std::abs(J(i, j)) > 1e-12 * scale))
+                    rows += (rows.empty() ? "" : ", ") + name(i);
+            std::ostringstream os;
+            os.precision(8);
+            os << "solve_equilibrium(): the equations do not fix '" << to_string(unknowns[static_cast<std::size_t>(j)])
+               << "' at the solution found (" << P.describe(x) << ", after " << out.iterations
+               << " iterations): the Jacobian dE/dx is singular there (rank " << (sv.array() > 1e-12 * scale).count()
+               << " of " << n << ")"
+               << (rows.empty() ? std::string() : ", and " + rows + (rows.find(',') == std::string::npos ? " does" : " do") +
+                                                   " not change with it")
+               << ", so its value is the guess's, not an answer; solve for an unknown the "
+                  "equations depend on at this state, or from equations that hold it";
+            throw SolveError(os.str());
+        }
+        // refined to rounding: full Newton steps while max|E| falls
+        for (int polish = 0; polish < 3 && max_abs(E) > 0; ++polish) {
+            Eigen::VectorXd x_new = clip(x + Eigen::VectorXd(P.jacobian(x).fullPivLu().solve(-E)));
+            Eigen::VectorXd E_new = P.residual(x_new);
+            if (!finite(E_new) || !(max_abs(E_new) < max_abs(E))) break;
+            x = x_new;
+            E = E_new;
+        }
+    }
+
     // the branch
     for (std::size_t c = 0; c < conditions.size(); ++c) {
         const SignCondition& sc = options.conditions[c];

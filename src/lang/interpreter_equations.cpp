@@ -415,7 +415,14 @@ void Interpreter::Impl::solve(const Statement& s) {
                 throw ScriptError(s.bindings.at("guess").front().name.location,
                                   "'" + table.name(x) + "' is guessed but not solved for",
                                   "guess only the unknowns after 'for'");
-        Equilibrium q = guard(n.location, [&] { return solve_equilibrium(table, eqs, xs, guess, at); },
+        // an unknown the equations do not depend on at the answer is refused, not returned
+        // at its guess; a road-map's rows are named as it prints them
+        StaticsOptions options{.require_determined = true};
+        if (auto rm = roadmaps.find(n.text); rm != roadmaps.end() && rm->second.rows.size() == eqs.size())
+            for (const RoadmapRow& r : rm->second.rows)
+                options.residual_names.push_back("E_" + to_string(r.variable) + " (the row of " + n.text +
+                                                 " for " + to_string(r.variable) + ")");
+        Equilibrium q = guard(n.location, [&] { return solve_equilibrium(table, eqs, xs, guess, at, options); },
                               "try another guess, nearer the solution you want");
         for (std::size_t i = 0; i < xs.size(); ++i) out += format_value(printed[i], q.values[i]) + "\n";
     } else {
@@ -668,7 +675,7 @@ std::vector<StatementSpec> equation_statements() {
                     "`form_linear_system` + `solve_numeric` (unset speeds, accelerations: error)"},
                    {"`solve` *E* `for` *x...* `guess` *name = value, ...* [`at` ...]",
                     "solve E for q1, q2 guess q1 = 10 deg, q2 = 20 deg",
-                    "`solve_equilibrium` (nonlinear; speeds and accelerations 0)"}},
+                    "`solve_equilibrium` (nonlinear; speeds and accelerations not given after `at` are 0; refused, naming the unknown and the rows, when at the answer the equations do not change with an unknown)"}},
          .clauses = {"for", "at", "guess", "limit"}, .parse = parse_solve,
          .run = [](M& m, const Statement& s) { m.solve(s); }},
         {.keyword = "digits", .family = solving,

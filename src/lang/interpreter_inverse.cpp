@@ -89,10 +89,21 @@ void Interpreter::Impl::run_inverse(const InverseRequest& r, Location where) {
     // force plates: their records give the plate symbols' values at each time
     std::shared_ptr<PlateInputs> plate_data = plate_inputs();
     if (plate_data) make = with_plate_inputs(make, plate_data);
+    // the specified quantities a `motion` drives, with their declared derivatives: their rows
+    // give the loads that drive them
+    exmap specified;
+    for (const auto& [x, f] : numbers.specified) {
+        TimeVariable v = table.variable(table.name(x));
+        ex d = f;
+        for (int k = 0; k <= v.order(); ++k) {
+            if (k > 0) d = guard(where, [&] { return sys.symbols().dt(d); });
+            specified[v.d(k)] = d;
+        }
+    }
     // the hint is for a count of load measures that does not match the equations
     InverseDynamics id = guard(where, [&] {
         try {
-            return compile_inverse_dynamics(sys, q, r.loads, script_name, make);
+            return compile_inverse_dynamics(sys, q, r.loads, script_name, make, specified);
         } catch (const ArgumentError& e) {
             if (std::string(e.what()).find(" equations for ") == std::string::npos) throw;
             throw ScriptError(where, in_script_words(e.what()),
