@@ -45,8 +45,10 @@ bool position_of(const System& sys, const Point& P, Vector& r) {
 
 // The instantaneous centre of S's motion when only q changes: the point whose partial
 // velocity is zero, r^{IC/cm} = w x v / (w . w) for the partial angular velocity w and the
-// mass centre's partial velocity v (planar motion: v normal to w). A point of the model there
-// stands for it (a point of S first: a rolling disk's contact point); else a point IC_q.
+// mass centre's partial velocity v (planar motion: v normal to w). A point of the model on the
+// axis through it along w stands for it (a point of S first: a rolling disk's contact point;
+// then a fixed point such as a top's tip at N_o: the moments about any point of the axis have
+// the same component along w); else a point IC_q.
 void locate_instantaneous_centre(const System& sys, const TimeVariable& q, const Body& B,
                                  const Vector& w, const Vector& v, Plan& p) {
     Vector r_cm;
@@ -58,7 +60,8 @@ void locate_instantaneous_centre(const System& sys, const TimeVariable& q, const
         for (const Point* P : sys.points()) {
             const bool on_S = P->owner() && std::find(p.S.begin(), p.S.end(), P->owner()) != p.S.end();
             Vector rp;
-            if (on_S != (pass == 0) || !position_of(sys, *P, rp) || !zero(sys, rp - r)) continue;
+            if (on_S != (pass == 0) || !position_of(sys, *P, rp) || !zero(sys, v + cross(w, rp - r_cm)))
+                continue;
             p.O = P;
             break;
         }

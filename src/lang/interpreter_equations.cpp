@@ -260,7 +260,20 @@ void Interpreter::Impl::roadmap(const Statement& s) {
     for (const Word& w : s.lists.at("unknowns")) unknowns.push_back(symbol(w, "an unknown, coordinate or acceleration"));
     std::vector<TimeVariable> q = default_coordinates();
     Analysis analysis = s.flag("statics") ? Analysis::statics : Analysis::dynamics;
-    std::vector<RoadmapRow> rows = guard(n.location, [&] { return plan_roadmap(m, q, unknowns, analysis); });
+    // a speed no row holds is refused where the script names it
+    std::vector<RoadmapRow> rows = guard(n.location, [&] {
+        try {
+            return plan_roadmap(m, q, unknowns, analysis);
+        } catch (const ModelError& e) {
+            const std::string what = e.what();
+            for (std::size_t k = 0; k < unknowns.size(); ++k)
+                if (what.find("holds the speed '" + to_string(unknowns[k]) + "'") != std::string::npos)
+                    throw ScriptError(s.lists.at("unknowns")[k].location, in_script_words(what),
+                                      "list the accelerations or loads the rows hold (roadmap " + n.text + " for " +
+                                          to_string(unknowns[k]) + "' ...), or write a row yourself");
+            throw;
+        }
+    });
     // a row is solved for its unknown: one that does not hold it (0 = 0 for a speed) would
     // leave the unknown at whatever a solve starts from
     for (const RoadmapRow& r : rows)
