@@ -426,8 +426,14 @@ std::vector<RoadmapRow> plan_roadmap(const System& sys,
         for (std::size_t i = 0; i < n_rows; ++i) {
             if (probe[i].is_zero()) continue;
             const GiNaC::exset syms = symbols_of(probe[i]);
+            std::vector<ex> present;
             for (const ex& x : shared)
-                if (syms.count(x)) held[i].insert(x), ++n_held[i];
+                if (syms.count(x)) present.push_back(x);
+            // held by meaning: a measure whose coefficient cancels (a torque normal to u, in
+            // measures that cancel only as numbers) drops out
+            const std::vector<bool> changes = calc_changes_with_at_random_states(sys.symbols(), probe[i], present);
+            for (std::size_t j = 0; j < present.size(); ++j)
+                if (changes[j]) held[i].insert(present[j]), ++n_held[i];
         }
         // a speed unknown (q' of a coordinate q declared to order 2) goes to a row whose
         // equation (dynamics) holds it, preferring rows that still hold it with the other

@@ -435,8 +435,16 @@ void Interpreter::Impl::solve(const Statement& s) {
             for (const RoadmapRow& r : rm->second.rows)
                 options.residual_names.push_back("E_" + to_string(r.variable) + " (the row of " + n.text +
                                                  " for " + to_string(r.variable) + ")");
-        Equilibrium q = guard(n.location, [&] { return solve_equilibrium(table, eqs, xs, guess, at, options); },
-                              "try another guess, nearer the solution you want");
+        Equilibrium q = guard(n.location, [&] {
+            try {
+                return solve_equilibrium(table, eqs, xs, guess, at, options);
+            } catch (const SolveError& e) {
+                if (std::string(e.what()).find("the equations do not fix") == std::string::npos) throw;
+                throw ScriptError(n.location, in_script_words(e.what()),
+                                  "solve for the unknowns the rows were planned for (roadmap " + n.text +
+                                      " for ...), where each row holds its unknown at this state");
+            }
+        }, "try another guess, nearer the solution you want");
         for (std::size_t i = 0; i < xs.size(); ++i) out += format_value(printed[i], q.values[i]) + "\n";
     } else {
         LinearSystem ls = guard(n.location, [&] { return form_linear_system(eqs, xs); });
