@@ -645,7 +645,7 @@ std::vector<StatementSpec> equation_statements() {
          .help = "plans MG road-map equations for unknowns, or prints a road-map's table",
          .forms = {{"`roadmap` *E* `for` *unknowns* [`statics`]",
                     "roadmap E for T_A, T_B, T_C",
-                    "`plan_roadmap` (over the `coordinates`) + `format_roadmap_table`: prints the table and `E_<unknown>: 0 = ...`"},
+                    "`plan_roadmap` (over the `coordinates`, and the `specified` quantities for the loads that drive them) + `format_roadmap_table`: prints the table and `E_<unknown>: 0 = ...`; unknowns are accelerations, coordinates (statics), load measures and speeds (a steady precession rate `psi'`, from a row that holds it)"},
                    {"`roadmap` *E*",
                     "roadmap E",
                     "`format_roadmap_table` of the rows of E"}},
