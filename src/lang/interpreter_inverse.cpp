@@ -105,7 +105,18 @@ void Interpreter::Impl::run_inverse(const InverseRequest& r, Location where) {
         try {
             return compile_inverse_dynamics(sys, q, r.loads, script_name, make, specified);
         } catch (const ArgumentError& e) {
-            if (std::string(e.what()).find(" equations for ") == std::string::npos) throw;
+            // a specified quantity the rows need, with no motion to give it
+            const std::string what = e.what();
+            for (const ex& x : table.symbols(SymbolKind::specified))
+                if (table.derivative_order(x) == 0 && !numbers.specified.count(x) &&
+                    what.find("the specified '" + table.name(x) + "'") != std::string::npos)
+                    throw ScriptError(where,
+                                      "the specified quantity " + table.name(x) +
+                                          " has no motion, and inverse dynamics needs it and its "
+                                          "derivatives at every sample",
+                                      "prescribe it with the coordinates: motion " + table.name(x) +
+                                          " = ... (a formula of t)");
+            if (what.find(" equations for ") == std::string::npos) throw;
             throw ScriptError(where, in_script_words(e.what()),
                               "list as many load measures as the model has coordinates, one acting "
                               "at each joint");
