@@ -491,14 +491,19 @@ std::vector<RoadmapRow> plan_roadmap(const System& sys,
                     continue;
                 }
                 if (!held[i].count(shared[k]) || (derivative && is_driven(i))) continue;
+                // the load drives the row's motion (a torque about its axis, a force along its
+                // direction); a specified motion's row is complete only with the load that
+                // drives it, so it takes no other (a contact force there would leave out an
+                // actuator the model does not declare)
+                const bool drives =
+                    !is_constraint(i) && detail::acts_only_along(sys, shared[k], plan_of(i).motion, plan_of(i).u);
+                if (is_driven(i) && !drives) continue;
                 const double others = static_cast<double>(n_held[i] - 1);
                 cost[k][i] = 1 + others + (is_constraint(i)
                                                ? 0.5 * static_cast<double>(n - k) / static_cast<double>(n + 1)
                                                : 0);
                 // among rows that hold as many others, the row whose motion the load drives
-                // (a torque about the row's axis, a force along its direction)
-                if (!is_constraint(i) && detail::acts_only_along(sys, shared[k], plan_of(i).motion, plan_of(i).u))
-                    cost[k][i] -= 0.25;
+                if (drives) cost[k][i] -= 0.25;
             }
         }
         row_of = n ? assign_min_cost(cost) : std::vector<int>{};

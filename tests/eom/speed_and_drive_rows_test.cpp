@@ -256,6 +256,38 @@ TEST(DriveRows, MotorTorqueOfAPrescribedRotationComesFromTheSpecifiedQuantitysRo
     EXPECT_THROW(plan_roadmap(sys, {r}, {r.d(2), th.d(2)}), ModelError);
 }
 
+// (4b) The same tube with the motor left out and the tube's push on the bead an unknown N_y
+// along Ay>: theta's row would need the motor, so it takes no other load; N_y comes from the
+// bead's own free-body row along Ay>. By hand, P's acceleration along Ay> is
+// r theta'' + 2 r' theta', so N_y = mP (r theta'' + 2 r' theta').
+TEST(DriveRows, SpecifiedMotionsRowTakesOnlyTheLoadThatDrivesIt) {
+    System sys;
+    SymbolTable& s = sys.symbols();
+    TimeVariable r = s.add_variable("r"), th = s.add_specified("theta");
+    ex mP = s.add_constant("mP", 0.3), IA = s.add_constant("IA", 0.1), N_y = s.add_unknown("N_y");
+    const Frame& N = sys.newtonian();
+    RigidBody& A = sys.add_rigid_body("A");
+    Particle& P = sys.add_particle("P");
+    A.body_frame().orient_axis(N, Axis::z, th.symbol());
+    P.point().set_pos(sys.origin(), r.symbol() * A.body_frame().x());
+    A.cm().set_pos(sys.origin(), Vector());
+    A.set_mass(1);
+    A.set_inertia(A.cm(), 0, 0, IA);
+    P.set_mass(mP);
+    sys.add_force(P.point(), N_y * A.body_frame().y(), "push");
+
+    std::vector<RoadmapRow> rows = plan_roadmap(sys, {r}, {r.d(2), N_y});
+    const RoadmapRow& RN = row_for(rows, N_y);
+    EXPECT_EQ(RN.motion, Motion::translate);
+    EXPECT_TRUE(along(RN.direction, A.body_frame().y()));
+    EXPECT_EQ(body_names(RN.system), "P");
+    const double rv = 0.2, rd = -0.15, w = 2.0, al = 0.7;
+    const exmap at{{r.symbol(), rv}, {r.d(1), rd}, {th.symbol(), 0.9}, {th.d(1), w}, {th.d(2), al}};
+    std::vector<double> x = solve_rows(sys, rows, {r.d(2), N_y}, at);
+    expect_close(x[0], w * w * rv, "r''");
+    expect_close(x[1], 0.3 * (rv * al + 2 * rd * w), "N_y");
+}
+
 // (5) A pendulum whose pivot is driven: a cart B of mass M at the specified x(t) along Nx>, a
 // pendulum A (a point mass m at L from the pivot B_o, angle theta from the downward vertical,
 // Ay> = -sin(theta) Nx> + cos(theta) Ny>, the mass at B_o - L Ay>), gravity -g Ny>, the

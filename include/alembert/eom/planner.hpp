@@ -33,7 +33,8 @@ namespace alembert {
 /// accelerations 0 (a top's precession rate: the row about the nodal axis, not psi's own row,
 /// which holds psi' only times theta'). Specified quantities declared with derivatives that are
 /// not among `coordinates` get rows planned as coordinates' are (S = what moves when only
-/// they change), for load measures only: the loads that drive them.
+/// they change), for the loads that drive them only (a torque about the row's direction, a
+/// force along it: another load there would stand in for an actuator the model leaves out).
 /// When no point of S stays fixed, O is a point of the model on the axis of S's motion (a
 /// point of S first, then a fixed one such as a top's tip), else the instantaneous centre.
 /// The constraints the model declares (System::add_configuration_constraint,
