@@ -8,6 +8,7 @@
 #include "alembert/eom/equations.hpp"
 #include "alembert/eom/planner.hpp"
 #include "alembert/eom/statics.hpp"
+#include "alembert/eom/zero_test.hpp"
 #include "alembert/error.hpp"
 #include "support/expect.hpp"
 
@@ -85,6 +86,22 @@ struct Top {
 };
 
 }  // namespace
+
+// (0) The test the speed rows use: e = z + c with the intermediate z = a b (a speed times a
+// speed). e changes with a, but not with b held at 0 (inside the intermediate, where a
+// substitution would not reach); c changes it either way; and e = a^2 b still changes with
+// b when a is not held.
+TEST(SpeedRows, ChangesWithOthersZeroSeesInsideIntermediates) {
+    SymbolTable s;
+    TimeVariable a = s.add_variable("a"), b = s.add_variable("b"), c = s.add_variable("c");
+    const ex z = s.add_intermediate(a.symbol() * b.symbol(), "z");
+    const ex e = z + c.symbol();
+    EXPECT_TRUE(calc_changes_with_others_zero_at_random_states(s, e, a.symbol(), {}));
+    EXPECT_FALSE(calc_changes_with_others_zero_at_random_states(s, e, a.symbol(), {b.symbol()}));
+    EXPECT_TRUE(calc_changes_with_others_zero_at_random_states(s, e, c.symbol(), {b.symbol()}));
+    EXPECT_TRUE(calc_changes_with_others_zero_at_random_states(s, a.symbol() * a.symbol() * b.symbol(), b.symbol(), {c.symbol()}));
+    EXPECT_FALSE(calc_changes_with_others_zero_at_random_states(s, e, b.symbol(), {a.symbol()}));
+}
 
 // (1) The steady precession rate of a top. By hand, with I1' = I1 + m r^2 (about the tip) and
 // the nodal axis x1, y2 = Az> x x1, Nz> = cos(theta) Az> + sin(theta) y2: with theta' = 0,
