@@ -13,6 +13,7 @@
 #include "alembert/sym/print.hpp"
 #include "alembert/sym/simplify.hpp"
 #include "free_body_rows.hpp"
+#include "unknown_rows.hpp"
 #include "alembert/eom/zero_test.hpp"
 
 namespace alembert {
@@ -47,8 +48,10 @@ bool position_of(const System& sys, const Point& P, Vector& r) {
 
 // The instantaneous centre of S's motion when only q changes: the point whose partial
 // velocity is zero, r^{IC/cm} = w x v / (w . w) for the partial angular velocity w and the
-// mass centre's partial velocity v (planar motion: v normal to w). A point of the model there
-// stands for it (a point of S first: a rolling disk's contact point); else a point IC_q.
+// mass centre's partial velocity v (planar motion: v normal to w). A point of the model on the
+// axis through it along w stands for it (a point of S first: a rolling disk's contact point;
+// then a fixed point such as a top's tip at N_o: the moments about any point of the axis have
+// the same component along w); else a point IC_q.
 void locate_instantaneous_centre(const System& sys, const TimeVariable& q, const Body& B,
                                  const Vector& w, const Vector& v, Plan& p) {
     Vector r_cm;
@@ -60,7 +63,8 @@ void locate_instantaneous_centre(const System& sys, const TimeVariable& q, const
         for (const Point* P : sys.points()) {
             const bool on_S = P->owner() && std::find(p.S.begin(), p.S.end(), P->owner()) != p.S.end();
             Vector rp;
-            if (on_S != (pass == 0) || !position_of(sys, *P, rp) || !zero(sys, rp - r)) continue;
+            if (on_S != (pass == 0) || !position_of(sys, *P, rp) || !zero(sys, v + cross(w, rp - r_cm)))
+                continue;
             p.O = P;
             break;
         }
@@ -364,7 +368,6 @@ std::vector<RoadmapRow> plan_roadmap(const System& sys,
         else
             shared.push_back(x);
     }
-    const std::size_t n_rows = coordinates.size() + constraint_rows.size();
     std::optional<bool> forces_declared;
     const std::function<bool()> constraint_forces_are_loads = [&] {
         if (!forces_declared)
@@ -374,6 +377,24 @@ std::vector<RoadmapRow> plan_roadmap(const System& sys,
     std::vector<Plan> plans;
     for (const TimeVariable& q : coordinates)
         plans.push_back(plan_coordinate(sys, q, constraint_forces_are_loads));
+    // the rows of the specified motions something moves with, after the constraint rows: the
+    // loads that drive them are found there (column 4: treat the specified quantity as a
+    // coordinate and see what moves); plans[coordinates.size() + d] is the d-th one's
+    std::vector<TimeVariable> driven;
+    for (const TimeVariable& v : detail::calc_driven_quantities(sys, coordinates)) {
+        Plan p = plan_coordinate(sys, v, constraint_forces_are_loads);
+        if (p.S.empty() || (p.motion == Motion::rotate && !p.O)) continue;
+        driven.push_back(v);
+        plans.push_back(std::move(p));
+    }
+    const std::size_t n_coordinates = coordinates.size(), n_constraints = constraint_rows.size();
+    const std::size_t n_rows = n_coordinates + n_constraints + driven.size();
+    // the kind of row i and its plan (coordinate and driven rows)
+    auto is_constraint = [&](std::size_t i) { return i >= n_coordinates && i < n_coordinates + n_constraints; };
+    auto is_driven = [&](std::size_t i) { return i >= n_coordinates + n_constraints; };
+    auto plan_of = [&](std::size_t i) -> const Plan& {
+        return plans[is_driven(i) ? i - n_constraints : i];
+    };
     // why the rows of the coordinates and constraints alone do not serve (then the free-body
     // rows of what carries the unknown loads are searched too)
     std::string refusal;
@@ -382,6 +403,8 @@ std::vector<RoadmapRow> plan_roadmap(const System& sys,
             "plan_roadmap(): " + std::to_string(shared.size()) + " unknowns but only " +
             std::to_string(coordinates.size()) + " coordinates and " +
             std::to_string(constraint_rows.size()) + " constraint rows" +
+            (driven.empty() ? std::string()
+                            : " and " + std::to_string(driven.size()) + " rows of specified motions") +
             (n_reactions ? " (besides " + std::to_string(n_reactions) +
                                " joint-reaction measures, which have rows of their own)"
                          : std::string()) +
@@ -394,15 +417,17 @@ std::vector<RoadmapRow> plan_roadmap(const System& sys,
     if (refusal.empty()) {
         // a statics-style equation per coordinate, to see which load measures it holds
         std::vector<ex> probe(n_rows);
-        for (std::size_t i = 0; i < coordinates.size(); ++i) {
-            if (plans[i].S.empty() || (plans[i].motion == Motion::rotate && !plans[i].O)) continue;
-            RoadmapRow r{.variable = coordinates[i].symbol(), .motion = plans[i].motion,
-                         .direction = plans[i].u, .system = plans[i].S, .about = plans[i].O,
-                         .analysis = Analysis::statics};
+        for (std::size_t i = 0; i < n_rows; ++i) {
+            if (is_constraint(i)) {
+                probe[i] = constraint_rows[i - n_coordinates].equation;
+                continue;
+            }
+            const Plan& p = plan_of(i);
+            if (p.S.empty() || (p.motion == Motion::rotate && !p.O)) continue;
+            RoadmapRow r{.variable = ex(), .motion = p.motion, .direction = p.u, .system = p.S,
+                         .about = p.O, .analysis = Analysis::statics};
             probe[i] = form_roadmap_equation(sys, r);
         }
-        for (std::size_t c = 0; c < constraint_rows.size(); ++c)
-            probe[coordinates.size() + c] = constraint_rows[c].equation;
 
         // each unknown to its own row: a coordinate (or its derivative) to its coordinate's row,
         // else a row whose equation holds it, preferring rows with the fewest other unknowns,
@@ -415,32 +440,98 @@ std::vector<RoadmapRow> plan_roadmap(const System& sys,
         for (std::size_t i = 0; i < n_rows; ++i) {
             if (probe[i].is_zero()) continue;
             const GiNaC::exset syms = symbols_of(probe[i]);
+            std::vector<ex> present;
             for (const ex& x : shared)
-                if (syms.count(x)) held[i].insert(x), ++n_held[i];
+                if (syms.count(x)) present.push_back(x);
+            // held by meaning: a measure whose coefficient cancels (a torque normal to u, in
+            // measures that cancel only as numbers) drops out
+            const std::vector<bool> changes = calc_changes_with_at_random_states(sys.symbols(), probe[i], present);
+            for (std::size_t j = 0; j < present.size(); ++j)
+                if (changes[j]) held[i].insert(present[j]), ++n_held[i];
+        }
+        // a speed unknown (q' of a coordinate q declared to order 2) goes to a row whose
+        // equation (dynamics) holds it, preferring rows that still hold it with the other
+        // speeds and all accelerations 0 (a steady precession rate: the row about the nodal
+        // axis, not psi's own row, which holds psi' only times theta')
+        std::vector<int> speed_of(n, -1);
+        std::vector<std::vector<bool>> holds_speed(n), holds_speed_alone(n);
+        if (analysis == Analysis::dynamics)
+            for (std::size_t k = 0; k < n; ++k) speed_of[k] = detail::calc_speed_of(shared[k], coordinates);
+        if (std::any_of(speed_of.begin(), speed_of.end(), [](int j) { return j >= 0; })) {
+            for (std::size_t k = 0; k < n; ++k) holds_speed[k] = holds_speed_alone[k] = std::vector<bool>(n_rows, false);
+            for (std::size_t i = 0; i < n_coordinates + n_constraints; ++i) {
+                ex E;
+                if (is_constraint(i)) {
+                    E = constraint_rows[i - n_coordinates].equation;
+                } else {
+                    const Plan& p = plans[i];
+                    if (p.S.empty() || (p.motion == Motion::rotate && !p.O)) continue;
+                    RoadmapRow r{.variable = ex(), .motion = p.motion, .direction = p.u, .system = p.S,
+                                 .about = p.O, .analysis = Analysis::dynamics};
+                    E = form_roadmap_equation(sys, r);
+                }
+                std::vector<ex> speeds;
+                for (std::size_t k = 0; k < n; ++k)
+                    if (speed_of[k] >= 0) speeds.push_back(shared[k]);
+                const std::vector<bool> changes = calc_changes_with_at_random_states(sys.symbols(), E, speeds);
+                for (std::size_t k = 0, s = 0; k < n; ++k) {
+                    if (speed_of[k] < 0) continue;
+                    holds_speed[k][i] = changes[s++];
+                    holds_speed_alone[k][i] =
+                        holds_speed[k][i] &&
+                        calc_changes_with_others_zero_at_random_states(
+                            sys.symbols(), E, shared[k], detail::calc_other_rates(shared[k], coordinates));
+                }
+            }
         }
         std::vector<std::vector<double>> cost(n, std::vector<double>(n_rows, kInfeasible));
         for (std::size_t k = 0; k < n; ++k) {
+            bool derivative = false;  // of a coordinate: never on a specified motion's row
+            for (const TimeVariable& q : coordinates)
+                for (int d = 0; d <= q.order(); ++d) derivative = derivative || shared[k].is_equal(q.d(d));
             for (std::size_t i = 0; i < n_rows; ++i) {
+                if (speed_of[k] >= 0) {
+                    if (!holds_speed[k][i]) continue;
+                    cost[k][i] = 1 + static_cast<double>(n_held[i]) +
+                                 (holds_speed_alone[k][i] ? 0 : static_cast<double>(n_rows + 1));
+                    continue;
+                }
                 bool own = false;
-                if (i < coordinates.size())
+                if (i < n_coordinates)
                     for (int d = 0; d <= coordinates[i].order(); ++d)
                         if (shared[k].is_equal(coordinates[i].d(d))) own = true;
                 if (own) {
                     cost[k][i] = 0;
                     continue;
                 }
-                if (!held[i].count(shared[k])) continue;
+                if (!held[i].count(shared[k]) || (derivative && is_driven(i))) continue;
+                // the load drives the row's motion (a torque about its axis, a force along its
+                // direction); a specified motion's row is complete only with the load that
+                // drives it, so it takes no other (a contact force there would leave out an
+                // actuator the model does not declare)
+                const bool drives =
+                    !is_constraint(i) && detail::acts_only_along(sys, shared[k], plan_of(i).motion, plan_of(i).u);
+                if (is_driven(i) && !drives) continue;
                 const double others = static_cast<double>(n_held[i] - 1);
-                cost[k][i] = 1 + others + (i >= coordinates.size()
+                cost[k][i] = 1 + others + (is_constraint(i)
                                                ? 0.5 * static_cast<double>(n - k) / static_cast<double>(n + 1)
                                                : 0);
+                // among rows that hold as many others, the row whose motion the load drives
+                if (drives) cost[k][i] -= 0.25;
             }
         }
         row_of = n ? assign_min_cost(cost) : std::vector<int>{};
         if (n && row_of.empty()) {
             // name an unknown no row can hold, or say that they compete
             for (std::size_t k = 0; k < n && refusal.empty(); ++k)
-                if (std::all_of(cost[k].begin(), cost[k].end(), [](double c) { return c >= kInfeasible; }))
+                if (speed_of[k] >= 0 &&
+                    std::all_of(cost[k].begin(), cost[k].end(), [](double c) { return c >= kInfeasible; }))
+                    refusal = "plan_roadmap(): no road-map row holds the speed '" + to_string(shared[k]) +
+                              "' (the equation of every coordinate's row and constraint row is the "
+                              "same whatever its value); a speed is found only from a row that "
+                              "depends on it, as a steady motion's rate is from the row its "
+                              "gyroscopic or centripetal terms enter; solve for another unknown";
+                else if (std::all_of(cost[k].begin(), cost[k].end(), [](double c) { return c >= kInfeasible; }))
                     refusal = "plan_roadmap(): no road-map row holds the unknown '" +
                               to_string(shared[k]) +
                               "'; check that it acts on a body that moves, or that it is not "
@@ -453,14 +544,16 @@ std::vector<RoadmapRow> plan_roadmap(const System& sys,
         }
         for (std::size_t k = 0; k < row_of.size() && refusal.empty(); ++k) {
             const std::size_t i = static_cast<std::size_t>(row_of[k]);
-            if (i < coordinates.size() && plans[i].motion == Motion::rotate && !plans[i].O)
-                refusal = "plan_roadmap(): " + plans[i].note + " (unknown '" + to_string(shared[k]) + "')";
+            if (!is_constraint(i) && plan_of(i).motion == Motion::rotate && !plan_of(i).O)
+                refusal = "plan_roadmap(): " + plan_of(i).note + " (unknown '" + to_string(shared[k]) + "')";
         }
     }
 
     // the free-body rows: contact forces as unknowns in minimal coordinates (the road-map's
     // column 4: release the contact along u, S is what would move), about points chosen so
     // that each row holds as few unknowns as possible
+    // (a speed has no free-body row: refused as it is)
+    if (refusal.find("holds the speed") != std::string::npos) throw ModelError(refusal);
     const bool free_body = !refusal.empty();
     std::vector<RoadmapRow> free_rows;
     if (free_body) {
@@ -530,17 +623,17 @@ std::vector<RoadmapRow> plan_roadmap(const System& sys,
         if (free_body) continue;  // its row is among the free-body rows
         const std::size_t i = static_cast<std::size_t>(row_of[k++]);
         reaction_row.push_back(false);
-        if (i >= coordinates.size()) {
+        if (is_constraint(i)) {
             // formed already, with no variable: its additional unknowns are all those it
             // holds, so only the one it is now for leaves the list
-            RoadmapRow r = constraint_rows[i - coordinates.size()];
+            RoadmapRow r = constraint_rows[i - n_coordinates];
             r.variable = x;
             std::erase_if(r.additional_unknowns,
                           [&](const ex& y) { return y.is_equal(r.variable); });
             rows.push_back(std::move(r));
             continue;
         }
-        const Plan& p = plans[i];
+        const Plan& p = plan_of(i);
         if (p.motion == Motion::rotate && !p.O)
             throw ModelError("plan_roadmap(): " + p.note + " (unknown '" + to_string(x) + "')");
         RoadmapRow r{.variable = x,

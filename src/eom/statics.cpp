@@ -36,7 +36,10 @@ public:
         fixed_ = st.constant_values();
         for (const auto& [s, v] : values) fixed_[s] = v;
         for (const ex& x : unknowns) fixed_.erase(x);
-        for (const ex& r : residuals) E_.push_back(close(r));
+        for (const ex& r : residuals) {
+            open_.push_back(st.expand_intermediates(r));
+            E_.push_back(close_expanded(open_.back()));
+        }
         J_ = GiNaC::matrix(static_cast<unsigned>(E_.size()), static_cast<unsigned>(x_.size()));
         for (std::size_t i = 0; i < E_.size(); ++i)
             for (std::size_t j = 0; j < x_.size(); ++j)
@@ -46,8 +49,10 @@ public:
 
     // e with intermediates expanded and every known symbol replaced; speeds and
     // accelerations not given are 0 (at rest)
-    ex close(const ex& e) {
-        ex f = st_.expand_intermediates(e);
+    ex close(const ex& e) { return close_expanded(st_.expand_intermediates(e)); }
+
+    // the same for e with its intermediates expanded
+    ex close_expanded(const ex& f) {
         for (const ex& s : symbols_of(f)) {
             if (fixed_.count(s) || is_unknown(s)) continue;
             if (st_.owns(s) && st_.kind(s) == SymbolKind::variable && st_.derivative_order(s) >= 1) {
@@ -82,6 +87,25 @@ public:
 
     double value(const ex& closed, const Eigen::VectorXd& x) const { return number(closed, at(x)); }
 
+    // J at x with the entries that are rounding errors set to 0: an entry whose terms, before
+    // the known values are put in (a substitution adds like terms up), cancel to 1e-10 of
+    // their size (psi' sin(phi) cos(phi) - psi' cos(phi) sin(phi) at 1e-19)
+    Eigen::MatrixXd jacobian_without_rounding(const Eigen::VectorXd& x) const {
+        exmap m = fixed_;
+        for (const auto& [s, v] : at(x)) m[s] = v;
+        Eigen::MatrixXd J = jacobian(x);
+        for (std::size_t i = 0; i < open_.size(); ++i)
+            for (std::size_t j = 0; j < x_.size(); ++j) {
+                const auto r = static_cast<Eigen::Index>(i), c = static_cast<Eigen::Index>(j);
+                const ex d = open_[i].diff(GiNaC::ex_to<GiNaC::symbol>(x_[j]));
+                double size = std::abs(J(r, c));
+                if (GiNaC::is_a<GiNaC::add>(d))
+                    for (std::size_t k = 0; k < d.nops(); ++k) size = std::max(size, std::abs(number(d.op(k), m)));
+                if (!(std::abs(J(r, c)) > 1e-10 * size)) J(r, c) = 0;
+            }
+        return J;
+    }
+
     // "q = 1.5708, T = 3"
     std::string describe(const Eigen::VectorXd& x) const {
         std::ostringstream os;
@@ -111,6 +135,7 @@ private:
     const SymbolTable& st_;
     std::vector<ex> x_;
     exmap fixed_;
+    std::vector<ex> open_;  // the residuals with their intermediates expanded, no values put in
     std::vector<ex> E_;
     GiNaC::matrix J_;
 };
@@ -286,6 +311,50 @@ Equilibrium solve_equilibrium(const SymbolTable& table, const std::vector<ex>& r
                  std::string(options.bounds.empty() ? ")" : ", or a bound in the way)"));
         x = x_new;
         E = E_new;
+    }
+
+    if (options.require_determined && P.equations() == P.size() && n > 0) {
+        // the equations must fix every unknown at the solution: a singular Jacobian leaves an
+        // unknown (the largest part of the null direction) at whatever the guess gave
+        Eigen::MatrixXd J = P.jacobian_without_rounding(x);
+        Eigen::JacobiSVD<Eigen::MatrixXd> svd(J, Eigen::ComputeFullV);
+        const Eigen::VectorXd sv = svd.singularValues();
+        // negligible beside the largest singular value met (all of them when J is 0)
+        const double scale = std::max(J_scale, sv(0));
+        auto negligible = [&](double v) { return !(v > 1e-12 * scale); };
+        if (!finite(sv) || negligible(sv(n - 1))) {
+            Eigen::Index j = 0;
+            svd.matrixV().col(n - 1).cwiseAbs().maxCoeff(&j);
+            auto name = [&](Eigen::Index i) {
+                const auto k = static_cast<std::size_t>(i);
+                return k < options.residual_names.size() ? options.residual_names[k]
+                                                         : "E[" + std::to_string(k + 1) + "]";
+            };
+            std::string rows;
+            for (Eigen::Index i = 0; i < J.rows(); ++i)
+                if (negligible(std::abs(J(i, j))))
+                    rows += (rows.empty() ? "" : ", ") + name(i);
+            std::ostringstream os;
+            os.precision(8);
+            os << "solve_equilibrium(): the equations do not fix '" << to_string(unknowns[static_cast<std::size_t>(j)])
+               << "' at the solution found (" << P.describe(x) << ", after " << out.iterations
+               << " iterations): the Jacobian dE/dx is singular there (rank "
+               << std::count_if(sv.data(), sv.data() + n, [&](double v) { return !negligible(v); })
+               << " of " << n << ")"
+               << (rows.empty() ? std::string() : ", and " + rows + (rows.find(',') == std::string::npos ? " does" : " do") +
+                                                   " not change with it")
+               << ", so its value is the guess's, not an answer; solve for an unknown the "
+                  "equations depend on at this state, or from equations that hold it";
+            throw SolveError(os.str());
+        }
+        // refined to rounding: full Newton steps while max|E| falls
+        for (int polish = 0; polish < 3 && max_abs(E) > 0; ++polish) {
+            Eigen::VectorXd x_new = clip(x + Eigen::VectorXd(P.jacobian(x).fullPivLu().solve(-E)));
+            Eigen::VectorXd E_new = P.residual(x_new);
+            if (!finite(E_new) || !(max_abs(E_new) < max_abs(E))) break;
+            x = x_new;
+            E = E_new;
+        }
     }
 
     // the branch

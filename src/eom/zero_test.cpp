@@ -377,6 +377,52 @@ std::vector<bool> calc_changes_with_at_random_states(const SymbolTable& st, cons
     return out;
 }
 
+bool calc_changes_with_others_zero_at_random_states(const SymbolTable& st, const ex& e,
+                                                    const ex& x, const std::vector<ex>& zeroed) {
+    if (e.is_zero()) return false;
+    std::vector<ex> inputs;
+    {
+        GiNaC::exset all;
+        for (const ex& s : zero_test_leaves(st, e)) all.insert(s);
+        inputs.assign(all.begin(), all.end());
+    }
+    const auto slot = std::find_if(inputs.begin(), inputs.end(), [&](const ex& s) { return s.is_equal(x); });
+    if (slot == inputs.end()) return false;
+    std::vector<bool> held_zero(inputs.size(), false);
+    for (std::size_t j = 0; j < inputs.size(); ++j)
+        held_zero[j] = std::any_of(zeroed.begin(), zeroed.end(), [&](const ex& z) { return z.is_equal(inputs[j]); });
+    // the terms of a sum, so that a change is measured against their size, then e
+    std::vector<ex> outputs;
+    if (GiNaC::is_a<GiNaC::add>(e))
+        for (std::size_t i = 0; i < e.nops(); ++i) outputs.push_back(e.op(i));
+    outputs.push_back(e);
+    try {
+        CompiledExpressions f(st, inputs, outputs);
+        std::mt19937 rng(20261128);
+        std::uniform_real_distribution<double> mag(0.3, 1.7);
+        std::bernoulli_distribution negative(0.5);
+        std::vector<long double> in(inputs.size()), base(outputs.size()), moved(outputs.size());
+        const auto k = static_cast<std::size_t>(slot - inputs.begin());
+        for (int state = 0; state < kStates; ++state) {
+            for (std::size_t j = 0; j < in.size(); ++j)
+                in[j] = held_zero[j] ? 0.0L : (negative(rng) ? -1 : 1) * mag(rng);
+            f.evaluate_extended(in.data(), base.data());
+            in[k] += 1;
+            f.evaluate_extended(in.data(), moved.data());
+            long double scale = 1;
+            for (std::size_t o = 0; o < outputs.size(); ++o)
+                scale = std::max({scale, std::abs(base[o]), std::abs(moved[o])});
+            const long double change = std::abs(moved.back() - base.back());
+            if (!std::isfinite(static_cast<double>(change)) || !std::isfinite(static_cast<double>(scale)))
+                return false;
+            if (change > 1e-11L * scale) return true;
+        }
+    } catch (const std::exception&) {
+        // not evaluable there: taken not to change (callers then prefer other rows)
+    }
+    return false;
+}
+
 bool is_zero_at_random_states(const SymbolTable& st, const Vector& v, const Frame& F) {
     Col3 c = v.components_in(F);
     return all_zero(st, {c[0], c[1], c[2]});

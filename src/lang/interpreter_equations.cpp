@@ -261,7 +261,20 @@ void Interpreter::Impl::roadmap(const Statement& s) {
     for (const Word& w : s.lists.at("unknowns")) unknowns.push_back(symbol(w, "an unknown, coordinate or acceleration"));
     std::vector<TimeVariable> q = default_coordinates();
     Analysis analysis = s.flag("statics") ? Analysis::statics : Analysis::dynamics;
-    std::vector<RoadmapRow> rows = guard(n.location, [&] { return plan_roadmap(m, q, unknowns, analysis); });
+    // a speed no row holds is refused where the script names it
+    std::vector<RoadmapRow> rows = guard(n.location, [&] {
+        try {
+            return plan_roadmap(m, q, unknowns, analysis);
+        } catch (const ModelError& e) {
+            const std::string what = e.what();
+            for (std::size_t k = 0; k < unknowns.size(); ++k)
+                if (what.find("holds the speed '" + to_string(unknowns[k]) + "'") != std::string::npos)
+                    throw ScriptError(s.lists.at("unknowns")[k].location, in_script_words(what),
+                                      "list the accelerations or loads the rows hold (roadmap " + n.text + " for " +
+                                          to_string(unknowns[k]) + "' ...), or write a row yourself");
+            throw;
+        }
+    });
     // a row is solved for its unknown: one that does not hold it (0 = 0 for a speed) would
     // leave the unknown at whatever a solve starts from
     for (const RoadmapRow& r : rows)
@@ -429,8 +442,23 @@ void Interpreter::Impl::solve(const Statement& s) {
                 throw ScriptError(s.bindings.at("guess").front().name.location,
                                   "'" + table.name(x) + "' is guessed but not solved for",
                                   "guess only the unknowns after 'for'");
-        Equilibrium q = guard(n.location, [&] { return solve_equilibrium(table, eqs, xs, guess, at); },
-                              "try another guess, nearer the solution you want");
+        // an unknown the equations do not depend on at the answer is refused, not returned
+        // at its guess; a road-map's rows are named as it prints them
+        StaticsOptions options{.require_determined = true};
+        if (auto rm = roadmaps.find(n.text); rm != roadmaps.end() && rm->second.rows.size() == eqs.size())
+            for (const RoadmapRow& r : rm->second.rows)
+                options.residual_names.push_back("E_" + to_string(r.variable) + " (the row of " + n.text +
+                                                 " for " + to_string(r.variable) + ")");
+        Equilibrium q = guard(n.location, [&] {
+            try {
+                return solve_equilibrium(table, eqs, xs, guess, at, options);
+            } catch (const SolveError& e) {
+                if (std::string(e.what()).find("the equations do not fix") == std::string::npos) throw;
+                throw ScriptError(n.location, in_script_words(e.what()),
+                                  "solve for the unknowns the rows were planned for (roadmap " + n.text +
+                                      " for ...), where each row holds its unknown at this state");
+            }
+        }, "try another guess, nearer the solution you want");
         for (std::size_t i = 0; i < xs.size(); ++i) out += format_value(printed[i], q.values[i]) + "\n";
         remember_solved_configuration(at, xs, q.values, s.location.line);
     } else {
@@ -653,7 +681,7 @@ std::vector<StatementSpec> equation_statements() {
          .help = "plans MG road-map equations for unknowns, or prints a road-map's table",
          .forms = {{"`roadmap` *E* `for` *unknowns* [`statics`]",
                     "roadmap E for T_A, T_B, T_C",
-                    "`plan_roadmap` (over the `coordinates`) + `format_roadmap_table`: prints the table and `E_<unknown>: 0 = ...`"},
+                    "`plan_roadmap` (over the `coordinates`, and the `specified` quantities for the loads that drive them) + `format_roadmap_table`: prints the table and `E_<unknown>: 0 = ...`; unknowns are accelerations, coordinates (statics), load measures and speeds (a steady precession rate `psi'`, from a row that holds it)"},
                    {"`roadmap` *E*",
                     "roadmap E",
                     "`format_roadmap_table` of the rows of E"}},
@@ -704,7 +732,7 @@ std::vector<StatementSpec> equation_statements() {
                     "`form_linear_system` + `solve_numeric` (unset speeds, accelerations: error); rows not linear together are solved one block after another (`solve_numeric_in_blocks`: a road-map with a friction's |Fn| solves the row of Fn first)"},
                    {"`solve` *E* `for` *x...* `guess` *name = value, ...* [`at` ...]",
                     "solve E for q1, q2 guess q1 = 10 deg, q2 = 20 deg",
-                    "`solve_equilibrium` (nonlinear; speeds and accelerations 0)"}},
+                    "`solve_equilibrium` (nonlinear; speeds and accelerations not given after `at` are 0; refused, naming the unknown and the rows, when at the answer the equations do not change with an unknown)"}},
          .clauses = {"for", "at", "guess", "limit"}, .parse = parse_solve,
          .run = [](M& m, const Statement& s) { m.solve(s); }},
         {.keyword = "digits", .family = solving,

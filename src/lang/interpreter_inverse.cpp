@@ -90,12 +90,34 @@ void Interpreter::Impl::run_inverse(const InverseRequest& r, Location where) {
     // force plates: their records give the plate symbols' values at each time
     std::shared_ptr<PlateInputs> plate_data = plate_inputs();
     if (plate_data) make = with_plate_inputs(make, plate_data);
+    // the specified quantities a `motion` drives, with their declared derivatives: their rows
+    // give the loads that drive them
+    exmap specified;
+    for (const auto& [x, f] : numbers.specified) {
+        TimeVariable v = table.variable(table.name(x));
+        ex d = f;
+        for (int k = 0; k <= v.order(); ++k) {
+            if (k > 0) d = guard(where, [&] { return sys.symbols().dt(d); });
+            specified[v.d(k)] = d;
+        }
+    }
     // the hint is for a count of load measures that does not match the equations
     InverseDynamics id = guard(where, [&] {
         try {
-            return compile_inverse_dynamics(sys, q, r.loads, script_name, make);
+            return compile_inverse_dynamics(sys, q, r.loads, script_name, make, specified);
         } catch (const ArgumentError& e) {
-            if (std::string(e.what()).find(" equations for ") == std::string::npos) throw;
+            // a specified quantity the rows need, with no motion to give it
+            const std::string what = e.what();
+            for (const ex& x : table.symbols(SymbolKind::specified))
+                if (table.derivative_order(x) == 0 && !numbers.specified.count(x) &&
+                    what.find("the specified '" + table.name(x) + "'") != std::string::npos)
+                    throw ScriptError(where,
+                                      "the specified quantity " + table.name(x) +
+                                          " has no motion, and inverse dynamics needs it and its "
+                                          "derivatives at every sample",
+                                      "prescribe it with the coordinates: motion " + table.name(x) +
+                                          " = ... (a formula of t)");
+            if (what.find(" equations for ") == std::string::npos) throw;
             throw ScriptError(where, in_script_words(e.what()),
                               "list as many load measures as the model has coordinates, one acting "
                               "at each joint");

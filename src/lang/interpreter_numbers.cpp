@@ -759,7 +759,7 @@ std::vector<StatementSpec> number_statements() {
          .help = "prescribes coordinates as formulas of time, for inverse",
          .forms = {{"`motion` *q = formula of t, ...*",
                     "motion qA = (-25 + 20*minimum_jerk(t, 0.15, 1.5)) deg",
-                    "`PrescribedMotion` (q', q'' exact) for `inverse`; a `specified` quantity (`motion xb = A*sin(w*t)`) is driven in `simulate` with its derivatives (`SimulationRequest::specified`)"}},
+                    "`PrescribedMotion` (q', q'' exact) for `inverse`; a `specified` quantity (`motion xb = A*sin(w*t)`) is driven in `simulate` and `inverse` with its derivatives (`SimulationRequest::specified`; `compile_inverse_dynamics(..., specified)`: the load that drives it comes from its road-map row)"}},
          .parse = parse_motion, .run = [](M& m, const Statement& s) { m.set_prescribed_motion(s); }},
         {.keyword = "inverse", .family = family,
          .help = "inverse dynamics over the prescribed motion or a motion table",

@@ -321,13 +321,16 @@ InverseDynamics compile_inverse_dynamics(const SymbolTable& table, const LinearS
 
 InverseDynamics compile_inverse_dynamics(const System& sys, const std::vector<TimeVariable>& q,
                                          const std::vector<ex>& loads, const std::string& model,
-                                         const FunctionMaker& make) {
-    if (std::optional<LinearSystem> tree = tree_rows_for(sys, q, loads))
-        return compile_inverse_dynamics(sys.symbols(), *tree, q, model, make);
-    std::vector<RoadmapRow> rows = plan_roadmap(sys, q, loads, Analysis::dynamics);
-    InverseDynamics id = compile_inverse_dynamics(
-        sys.symbols(), form_linear_system(residuals_of(rows), loads), q, model, make);
+                                         const FunctionMaker& make, const exmap& specified) {
     const SymbolTable& table = sys.symbols();
+    // the specified quantities' formulas of t, through the intermediates they sit in
+    auto driven = [&](const ex& e) { return specified.empty() ? e : table.expand_intermediates(e).subs(specified); };
+    if (specified.empty())
+        if (std::optional<LinearSystem> tree = tree_rows_for(sys, q, loads))
+            return compile_inverse_dynamics(sys.symbols(), *tree, q, model, make);
+    std::vector<ex> E = residuals_of(plan_roadmap(sys, q, loads, Analysis::dynamics));
+    for (ex& e : E) e = driven(e);
+    InverseDynamics id = compile_inverse_dynamics(sys.symbols(), form_linear_system(E, loads), q, model, make);
     if (sys.constraints().empty()) {
         // fewer loads act than there are coordinates: the rows leave equations of motion out,
         // and a motion no load can make would get loads all the same; Kane's equation of
@@ -351,7 +354,7 @@ InverseDynamics compile_inverse_dynamics(const System& sys, const std::vector<Ti
             std::vector<std::string> names;
             for (std::size_t i = 0; i < q.size(); ++i) {
                 names.push_back("Kane's equation for " + q[i].name());
-                checks.push_back(table.expand_intermediates(kane[i]));
+                checks.push_back(table.expand_intermediates(kane[i]).subs(specified));
             }
             for (std::size_t i = 0; i < q.size(); ++i) checks.push_back(calc_size_bound(checks[i]));
             id.set_unused_equations(std::move(names), make_numeric_function(table, in, checks, {}));
@@ -367,7 +370,7 @@ InverseDynamics compile_inverse_dynamics(const System& sys, const std::vector<Ti
     std::vector<std::string> names;
     for (const Constraint& c : sys.constraints()) {
         names.push_back(std::string("the ") + to_string(c.kind) + " constraint '" + c.name + "'");
-        residuals.push_back(table.expand_intermediates(c.residual));
+        residuals.push_back(table.expand_intermediates(c.residual).subs(specified));
     }
     try {
         id.set_constraints(std::move(names), make_numeric_function(table, in, residuals, {}));

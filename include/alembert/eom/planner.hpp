@@ -24,9 +24,19 @@ namespace alembert {
 /// be evaluated there.
 ///
 /// `unknowns` are what the rows solve for: accelerations q_i'' (forward dynamics), torque or
-/// force measures (inverse dynamics, statics), or coordinates q_i (statics). A coordinate's own
-/// derivative is assigned to its row; a load measure to the row whose equation holds it with
-/// the fewest other unknowns.
+/// force measures (inverse dynamics, statics), coordinates q_i (statics), or speeds q_i'
+/// (dynamics: a steady motion's rate). A coordinate or its acceleration is assigned to its own
+/// row; a load measure to the row whose equation holds it (by meaning, at random states) with
+/// the fewest other unknowns, among those preferably the row whose motion it drives (a torque
+/// about the row's direction, a force along it); a speed to a row whose dynamic equation
+/// changes with it, preferably one that still does with the other speeds and all
+/// accelerations 0 (a top's precession rate: the row about the nodal axis, not psi's own row,
+/// which holds psi' only times theta'). Specified quantities declared with derivatives that are
+/// not among `coordinates` get rows planned as coordinates' are (S = what moves when only
+/// they change), for the loads that drive them only (a torque about the row's direction, a
+/// force along it: another load there would stand in for an actuator the model leaves out).
+/// When no point of S stays fixed, O is a point of the model on the axis of S's motion (a
+/// point of S first, then a fixed one such as a top's tip), else the instantaneous centre.
 /// The constraints the model declares (System::add_configuration_constraint,
 /// add_motion_constraint) add rows of Motion::constraint: the configuration constraints
 /// themselves for statics, their time derivatives at the acceleration level for dynamics.
@@ -50,7 +60,8 @@ namespace alembert {
 /// block needs only the unknowns of the blocks before it (a stable topological order of the
 /// strongly connected components of "row i holds the unknown of row j"); where a block with
 /// reaction rows has more than one row, their notes name the rows solved with them.
-/// @throws alembert::ModelError naming the unknown if no row holds it, or if there are more
+/// @throws alembert::ModelError naming the unknown if no row holds it (a speed: "no road-map
+///         row holds the speed"), or if there are more
 ///         unknowns (besides reaction measures) than coordinates and constraint rows.
 std::vector<RoadmapRow> plan_roadmap(const System& sys,
                                      const std::vector<TimeVariable>& coordinates,

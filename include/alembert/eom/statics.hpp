@@ -41,6 +41,15 @@ struct StaticsOptions {
     /// Where the Jacobian is singular, take the least-squares (minimum-norm) step instead of
     /// stopping; when false, a singular Jacobian is a SolveError.
     bool least_squares = true;
+    /// At the solution, refuse (SolveError) when the equations do not fix every unknown there
+    /// (as many residuals as unknowns and a singular Jacobian: the value of an unknown no
+    /// residual changes with is the guess's); the message names the unknown and the residuals
+    /// that do not change with it. A solution that passes is refined by full Newton steps
+    /// while max|E| falls (to rounding, past `tolerance`).
+    bool require_determined = false;
+    /// How messages name the residuals, in their order (a road-map's "E_psi'"); "E[i]"
+    /// (from 1) where empty.
+    std::vector<std::string> residual_names{};
 };
 
 /// An equilibrium found by alembert::solve_equilibrium.

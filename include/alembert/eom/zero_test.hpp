@@ -30,6 +30,14 @@ bool is_zero_at_random_states(const SymbolTable& st, const ex& e);
 std::vector<bool> calc_changes_with_at_random_states(const SymbolTable& st, const ex& e,
                                                      const std::vector<ex>& symbols);
 
+/// Whether `e` changes with the symbol `x` when the symbols of `zeroed` are held at 0 and the
+/// others take random values: e compiled once (through the intermediates, never expanded) and
+/// evaluated at two random states with x moved by 1, the change compared at 1e-11 times the
+/// size of e's terms. A row that holds a speed only multiplied by other speeds (psi' theta')
+/// does not change with it when those speeds are 0. False where e cannot be evaluated there.
+bool calc_changes_with_others_zero_at_random_states(const SymbolTable& st, const ex& e,
+                                                    const ex& x, const std::vector<ex>& zeroed);
+
 /// The same for every measure of v in frame F.
 bool is_zero_at_random_states(const SymbolTable& st, const Vector& v, const Frame& F);
 

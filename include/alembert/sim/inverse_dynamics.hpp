@@ -137,9 +137,14 @@ InverseDynamics compile_inverse_dynamics(const SymbolTable& table, const LinearS
 /// entering the rows (motor torques, forces on bodies; not joint reactions), the same rows are
 /// formed recursively instead (form_tree_equations: their size grows linearly in the number of
 /// bodies, the planned closed forms' as its square); the loads are the same.
+/// `specified` gives the specified quantities the motion drives, and their derivatives, as
+/// formulas of t (as SimulationRequest::specified): they are substituted into the rows, through
+/// the intermediates; the load that drives a specified quantity comes from its row (S = what
+/// moves when only it changes; see plan_roadmap).
 /// @throws as plan_roadmap and compile_inverse_dynamics above.
 InverseDynamics compile_inverse_dynamics(const System& sys, const std::vector<TimeVariable>& q,
                                          const std::vector<ex>& loads, const std::string& model,
-                                         const FunctionMaker& make = {});
+                                         const FunctionMaker& make = {},
+                                         const exmap& specified = {});
 
 }  // namespace alembert
