@@ -215,6 +215,35 @@ RoadmapRow plan_reaction(const System& sys, const JointReaction& reaction,
     return r;
 }
 
+// The reaction measures among `unknowns` whose own rows (plan_reaction) would repeat one
+// another: the same S, the same motion, parallel directions and, for rotations, the same
+// about point. Such rows are one equation twice, and the measures they hold could not be
+// told apart; both are returned.
+GiNaC::exset calc_repeated_reaction_rows(const System& sys, const std::vector<ex>& unknowns,
+                                         Analysis analysis) {
+    GiNaC::exset out;
+    std::vector<RoadmapRow> own;
+    for (const ex& x : unknowns) {
+        const JointReaction* jr = sys.reaction_of(x);
+        if (!jr) continue;
+        auto c = std::find_if(jr->components.begin(), jr->components.end(),
+                              [&](const ReactionComponent& rc) { return rc.measure.is_equal(x); });
+        RoadmapRow r = plan_reaction(sys, *jr, *c, analysis);
+        r.variable = x;
+        for (const RoadmapRow& o : own) {
+            if (o.motion != r.motion || o.system.size() != r.system.size()) continue;
+            if (r.motion == Motion::rotate && o.about != r.about) continue;
+            if (!std::is_permutation(o.system.begin(), o.system.end(), r.system.begin())) continue;
+            if (!zero(sys, cross(o.direction, r.direction))) continue;
+            // both measures are planned together, so that their rows differ
+            out.insert(o.variable);
+            out.insert(x);
+        }
+        own.push_back(std::move(r));
+    }
+    return out;
+}
+
 // Minimum-cost assignment of each of n agents to a distinct one of m >= n tasks (Hungarian
 // algorithm, Kuhn-Munkres with potentials); cost[i][j] = kInfeasible forbids a pair. Returns
 // the task of each agent, or an empty vector when no complete assignment exists.
@@ -359,11 +388,16 @@ std::vector<RoadmapRow> plan_roadmap(const System& sys,
         constraint_rows.push_back(std::move(r));
     }
     // the measures of declared joint reactions get rows of their own; the other unknowns
-    // share the coordinate and constraint rows
+    // share the coordinate and constraint rows. A measure whose own row would repeat an
+    // earlier measure's (a ladder's wall push and floor friction, both along Nx> on S = the
+    // ladder) is planned like a contact force instead: its row is searched among the
+    // coordinates' and the free-body rows
     std::vector<ex> shared;
     std::size_t n_reactions = 0;
+    const GiNaC::exset repeated = calc_repeated_reaction_rows(sys, unknowns, analysis);
+    const auto own_row = [&](const ex& x) { return sys.reaction_of(x) && !repeated.count(x); };
     for (const ex& x : unknowns) {
-        if (sys.reaction_of(x))
+        if (own_row(x))
             ++n_reactions;
         else
             shared.push_back(x);
@@ -604,7 +638,7 @@ std::vector<RoadmapRow> plan_roadmap(const System& sys,
     }
     std::size_t k = 0;
     for (const ex& x : unknowns) {
-        if (const JointReaction* jr = sys.reaction_of(x)) {
+        if (const JointReaction* jr = own_row(x) ? sys.reaction_of(x) : nullptr) {
             auto c =
                 std::find_if(jr->components.begin(), jr->components.end(),
                              [&](const ReactionComponent& rc) { return rc.measure.is_equal(x); });

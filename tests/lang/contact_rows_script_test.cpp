@@ -102,6 +102,31 @@ TEST(ContactScript, LadderInStaticEquilibrium) {
     expect_close(r.value("F_f"), -m * g / 2 * std::tan(q), "F_f");
 }
 
+// The same ladder with its contacts declared as joint reactions (the wall's push at the top,
+// the floor's push and friction at the foot). The wall's and the floor's rows translating S =
+// {A} along Nx> are the same equation, N_w + F_f = 0; a solve refused them as singular ("the
+// same load declared twice?"), and an earlier version printed N_w = x2, F_f = x2. By hand, as
+// above: about the foot, N_w L cos q = m g (L/2) sin q; along Ny>, N_f = m g; along Nx>,
+// F_f = -N_w.
+TEST(ContactScript, LadderWithItsContactsDeclaredAsReactions) {
+    std::string text = kRod;
+    text.replace(text.find("unknown N_w N, N_f N"), 20, "unknown N_w N, N_f N, F_f N");
+    text.replace(text.find("force Nw on A_w = N_w*Nx>\n"), 26, "");
+    text.replace(text.find("force Nf on A_o = N_f*Ny>\n"), 26, "");
+    text += "reaction wall between N and A at A_w force N_w along Nx>\n"
+            "reaction floor between N and A at A_o force N_f along Ny>, F_f along Nx>\n"
+            "roadmap E for N_w, N_f, F_f statics\n"
+            "solve E for N_w, N_f, F_f at q = 0.55 rad\n";
+    ScriptRun r(text);
+    const double m = 2.5, g = 9.81, q = 0.55;
+    expect_close(r.value("N_w"), m * g / 2 * std::tan(q), "N_w");
+    expect_close(r.value("N_f"), m * g, "N_f");
+    expect_close(r.value("F_f"), -m * g / 2 * std::tan(q), "F_f");
+    // no two rows the same: one of the wall's and the floor's Nx> rows turns about a point
+    const std::string t = r.out.str();
+    EXPECT_NE(t.find("| rotate           | Nz>"), std::string::npos) << t;
+}
+
 // Two unknown forces on one line of action stay refused, in the script's own names.
 TEST(ContactScript, ForcesOnOneLineRefused) {
     std::ostringstream out, err;
