@@ -18,7 +18,21 @@ struct ReportContent;
 
 namespace alembert::report_detail {
 
-/// Each row's equation typeset (LaTeX, readable form). Simplifying an equation for the reader
+/// Between the lines of an equation typeset on several (an abbreviated row's named parts, a
+/// mass matrix written entry by entry): KaTeX breaks the line there; the LaTeX document
+/// writes each line as a paragraph of its own (tex_lines).
+inline constexpr const char* kTexLineBreak = " \\newline ";
+
+/// `tex` with \left( \right) (and | |) written \bigl( \bigr): TeX and KaTeX break a formula in
+/// text style after a + or - at its outer level, never inside a \left ... \right group.
+std::string breakable_tex(std::string tex);
+
+/// The lines of a typeset equation (split at kTexLineBreak).
+std::vector<std::string> tex_lines(const std::string& tex);
+
+/// Each row's equation typeset (LaTeX, readable form: calc_solved_equation, "T_A = ..." when
+/// solved, "0 = ..." otherwise; rows over 1,500 operations abbreviated with named parts w1 = ...
+/// on the following lines), written breakable (breakable_tex). Simplifying an equation for the reader
 /// is the costly part of a report (seconds for a 42-row arm), so write_report typesets once
 /// and hands the result to both the page and roadmap.tex.
 std::vector<std::string> typeset_equations(const ReportContent& content);
@@ -131,7 +145,13 @@ PageIntermediates page_intermediates(const System& sys, const std::vector<Roadma
 /// The direction as the road-map table writes it: in N when it is constant there.
 std::string direction_words(const System& sys, const Vector& u);
 
-/// M q'' = f typeset: the matrix, the column of accelerations and the forcing.
+/// M q'' = f typeset (breakable_tex): the matrix, the column of accelerations and the forcing
+/// when the widest row of entries takes at most kMatrixRowChars characters of TeX; else the
+/// equation with the accelerations' column, then each entry on a line of its own,
+/// M_{ij} = ... and f_{i} = ... (kTexLineBreak between them). Entries are written with the
+/// intermediates written out and simplified (simplify) when that takes at most
+/// kReadableSimplifyOps operations.
+inline constexpr std::size_t kMatrixRowChars = 90;
 std::string matrices_tex(const SymbolTable& st, const LinearSystem& m);
 
 }  // namespace alembert::report_detail

@@ -366,56 +366,6 @@ std::string motion_word(Motion m) {
 
 namespace {
 
-// "0 = t1 + t2 ...": the terms holding the row's variable first, the others in the order of
-// their printed form; one line per few terms, so long equations wrap
-std::string equation_tex(const ex& e, const ex& variable) {
-    std::vector<std::string> terms;
-    if (GiNaC::is_a<GiNaC::add>(e)) {
-        std::vector<std::pair<std::string, ex>> keyed;
-        for (std::size_t i = 0; i < e.nops(); ++i) keyed.emplace_back(to_string(e.op(i)), e.op(i));
-        std::stable_sort(keyed.begin(), keyed.end(), [&](const auto& a, const auto& b) {
-            const bool va = a.second.has(variable), vb = b.second.has(variable);
-            return va != vb ? va : a.first < b.first;
-        });
-        for (const auto& k : keyed) terms.push_back(to_latex(k.second));
-    } else {
-        terms.push_back(to_latex(e));
-    }
-    std::string out = "\\begin{aligned} 0 ={} & ";
-    std::size_t line = 0;
-    for (std::size_t i = 0; i < terms.size(); ++i) {
-        std::string t = terms[i];
-        bool neg = !t.empty() && t[0] == '-';
-        if (i > 0 && line + t.size() > 110) {
-            out += " \\\\ & ";
-            line = 0;
-        }
-        if (i > 0 || neg)
-            out += neg ? " - " + t.substr(1) : " + " + t;
-        else
-            out += t;
-        line += t.size();
-    }
-    return out + " \\end{aligned}";
-}
-
-// equations of more operations than this are typeset abbreviated, with numbered intermediates
-// (written out as a tree, the TeX of a large model's equation grows exponentially with the
-// sharing in it; and simplifying a row of 1,500 to 4,000 operations for the page cost the
-// arm's report 2 of its 3.6 s while leaving a wall of a hundred terms)
-constexpr std::size_t kAbbreviateOps = 1500;
-
-// "0 = ..." with the named parts of the equation below it, w_1 = ..., each line short, the
-// parts in the order they are needed
-std::string abbreviated_equation_tex(const ex& e) {
-    const AbbreviatedForm f = abbreviate_form({e}, 100, "w");
-    std::string out = "\\begin{aligned} 0 ={} & " + to_latex(f.results.at(0));
-    for (std::size_t i = 0; i < f.definitions.size(); ++i)
-        out += std::string(" \\\\ ") + (i == 0 ? "\\text{with } " : "") + to_latex(f.definitions[i].first) +
-               " ={} & " + to_latex(f.definitions[i].second);
-    return out + " \\end{aligned}";
-}
-
 // the names of the intermediates `e` uses, with those their definitions use (at most 200)
 std::set<std::string> intermediates_used(const System& sys, const ex& e) {
     const SymbolTable& st = sys.symbols();
@@ -451,7 +401,7 @@ PageIntermediates page_intermediates(const System& sys, const std::vector<Roadma
         if (all.count(st.name(z))) {
             position[st.name(z)] = p.names.size();
             p.names.push_back(st.name(z));
-            p.tex.push_back(to_latex(z) + " = " + to_latex(st.definition(z)));
+            p.tex.push_back(breakable_tex(to_latex(z) + " = " + to_latex(st.definition(z))));
         }
     for (const auto& u : used) {
         std::vector<std::size_t> idx;
@@ -489,17 +439,43 @@ namespace report_detail {
 
 // M q'' = f typeset: the matrix, the column of accelerations and the forcing
 std::string matrices_tex(const SymbolTable& st, const LinearSystem& m) {
-    std::string M = "\\begin{bmatrix} ", x = "\\begin{bmatrix} ", f = "\\begin{bmatrix} ";
-    for (unsigned i = 0; i < m.A.rows(); ++i) {
-        const std::string end = i + 1 < m.A.rows() ? " \\\\ " : " ";
-        for (unsigned j = 0; j < m.A.cols(); ++j)
-            M += (j ? " & " : "") + to_latex(readable_entry(st, m.A(i, j)));
-        M += end;
-        f += to_latex(readable_entry(st, m.b(i, 0))) + end;
+    const unsigned n = m.A.rows();
+    std::vector<std::vector<std::string>> M(n);
+    std::vector<std::string> f(n);
+    std::size_t widest = 0;  // the widest line of the matrix form: a row of M and f's entry
+    for (unsigned i = 0; i < n; ++i) {
+        std::size_t width = 0;
+        for (unsigned j = 0; j < m.A.cols(); ++j) {
+            M[i].push_back(to_latex(readable_entry(st, m.A(i, j))));
+            width += M[i].back().size() + 3;
+        }
+        f[i] = to_latex(readable_entry(st, m.b(i, 0)));
+        widest = std::max(widest, width + f[i].size());
     }
+    std::string x = "\\begin{bmatrix} ";
     for (std::size_t j = 0; j < m.unknowns.size(); ++j)
         x += to_latex(m.unknowns[j]) + (j + 1 < m.unknowns.size() ? " \\\\ " : " ");
-    return M + "\\end{bmatrix} " + x + "\\end{bmatrix} = " + f + "\\end{bmatrix}";
+    x += "\\end{bmatrix}";
+    if (widest > kMatrixRowChars) {
+        // too wide for a column: the equation, then each entry on a line of its own
+        std::string t = "M \\, " + x + " = f \\text{, with}";
+        const auto index = [](unsigned k) { return std::to_string(k + 1); };
+        for (unsigned i = 0; i < n; ++i)
+            for (unsigned j = 0; j < M[i].size(); ++j)
+                t += std::string(kTexLineBreak) + "M_{" + index(i) + (n > 9 ? "," : "") + index(j) +
+                     "} = " + M[i][j];
+        for (unsigned i = 0; i < n; ++i)
+            t += std::string(kTexLineBreak) + "f_{" + index(i) + "} = " + f[i];
+        return breakable_tex(t);
+    }
+    std::string A = "\\begin{bmatrix} ", b = "\\begin{bmatrix} ";
+    for (unsigned i = 0; i < n; ++i) {
+        const std::string end = i + 1 < n ? " \\\\ " : " ";
+        for (unsigned j = 0; j < M[i].size(); ++j) A += (j ? " & " : "") + M[i][j];
+        A += end;
+        b += f[i] + end;
+    }
+    return breakable_tex(A + "\\end{bmatrix} " + x + " = " + b + "\\end{bmatrix}");
 }
 
 }  // namespace report_detail
@@ -674,18 +650,6 @@ std::string animation_json(const ReportContent& c, const std::vector<const Point
 
 }  // namespace
 
-std::vector<std::string> report_detail::typeset_equations(const ReportContent& c) {
-    std::vector<std::string> out;
-    if (!c.system) return out;
-    out.reserve(c.rows.size());
-    Simplifier simplifier;  // the rows share their kinematics: each node is simplified once
-    for (const RoadmapRow& r : c.rows)
-        out.push_back(count_ops(r.equation) > kAbbreviateOps
-                          ? abbreviated_equation_tex(r.equation)
-                          : equation_tex(readable_equation(*c.system, r.equation, simplifier),
-                                         r.variable));
-    return out;
-}
 
 
 std::vector<ReportCheck> calc_report_checks(const ReportContent& c) {
