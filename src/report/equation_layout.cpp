@@ -44,19 +44,34 @@ std::size_t longest_unbreakable(const std::string& tex) {
     return std::max(longest, tex.size() - start);
 }
 
-// "lhs = t1 + t2 ...": the terms holding the row's variable first (in 0 = E), the others in the
-// order of their printed form
-std::string terms_tex(const ReadableRelation& r, const ex& variable) {
+// whether the term holds an acceleration of the model
+bool holds_acceleration(const SymbolTable& st, const ex& term) {
+    for (const ex& s : symbols_of(term))
+        if (st.owns(s) && st.kind(s) == SymbolKind::variable && st.derivative_order(s) == 2)
+            return true;
+    return false;
+}
+
+// "lhs = t1 + t2 ...": the terms holding the row's variable first (in 0 = E), then those of
+// the accelerations (their coefficients gathered), then the rest, each group in the order of
+// the terms' printed form
+std::string terms_tex(const SymbolTable& st, const ReadableRelation& r, const ex& variable) {
     std::vector<std::string> terms;
     const ex& e = r.rhs;
     if (GiNaC::is_a<GiNaC::add>(e)) {
-        std::vector<std::pair<std::string, ex>> keyed;
-        for (std::size_t i = 0; i < e.nops(); ++i) keyed.emplace_back(to_string(e.op(i)), e.op(i));
-        std::stable_sort(keyed.begin(), keyed.end(), [&](const auto& a, const auto& b) {
-            const bool va = a.second.has(variable), vb = b.second.has(variable);
-            return va != vb ? va : a.first < b.first;
+        struct Term {
+            int group;
+            std::string key;
+            ex term;
+        };
+        std::vector<Term> keyed;
+        for (std::size_t i = 0; i < e.nops(); ++i)
+            keyed.push_back({e.op(i).has(variable) ? 0 : holds_acceleration(st, e.op(i)) ? 1 : 2,
+                             to_string(e.op(i)), e.op(i)});
+        std::stable_sort(keyed.begin(), keyed.end(), [](const Term& a, const Term& b) {
+            return a.group != b.group ? a.group < b.group : a.key < b.key;
         });
-        for (const auto& k : keyed) terms.push_back(to_latex(k.second));
+        for (const Term& k : keyed) terms.push_back(to_latex(k.term));
     } else {
         terms.push_back(to_latex(e));
     }
@@ -85,8 +100,8 @@ std::string abbreviated_equation_tex(const std::string& lhs, const ex& e) {
 
 // the relation as terms_tex writes it, or, when a piece of it too long for a line would be
 // left unbroken (a fraction over a long root), abbreviated with named parts
-std::string relation_tex(const ReadableRelation& r, const ex& variable) {
-    const std::string whole = terms_tex(r, variable);
+std::string relation_tex(const SymbolTable& st, const ReadableRelation& r, const ex& variable) {
+    const std::string whole = terms_tex(st, r, variable);
     if (longest_unbreakable(report_detail::breakable_tex(whole)) <= kUnbreakableChars)
         return whole;
     return abbreviated_equation_tex(r.solved() ? to_latex(r.lhs) : "0", r.rhs);
@@ -128,7 +143,8 @@ std::vector<std::string> report_detail::typeset_equations(const ReportContent& c
         out.push_back(breakable_tex(
             count_ops(r.equation) > kAbbreviateOps
                 ? abbreviated_equation_tex("0", r.equation)
-                : relation_tex(calc_solved_equation(*c.system, r.equation, r.variable, simplifier),
+                : relation_tex(c.system->symbols(),
+                               calc_solved_equation(*c.system, r.equation, r.variable, simplifier),
                                r.variable)));
     return out;
 }

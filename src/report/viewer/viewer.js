@@ -317,7 +317,8 @@
     el("p", {"class": "note", id: "configuration"}, sec, "Free-body diagrams at " + data.configuration.map(function (c) {
       return c.name + " = " + fmt(c.shown) + (c.unit ? " " + c.unit : ""); }).join(", ") +
       (data.configuration_source ? " (" + data.configuration_source + ")" : "") +
-      ". Unknown loads in red, known in blue, gravity in green; each equation is E = applied \u2212 inertial = 0.");
+      ". Unknown loads in red, known in blue, gravity in green; each equation is E = applied \u2212 inertial = 0, " +
+      "shown solved for the row's unknown where it holds it linearly with a constant coefficient.");
     var head = ["variable", "translate/rotate", "direction", "system S", "FBD of S", "about point", "additional unknowns"];
     data.roadmap.forEach(function (row, i) {
       var card = el("div", {"class": "row", id: "row-" + (i + 1)}, sec);
