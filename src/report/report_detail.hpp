@@ -2,8 +2,15 @@
 // Helpers shared by the report's sources (private to src/report).
 #pragma once
 
+#include <cmath>
+#include <exception>
+#include <map>
 #include <string>
 #include <vector>
+
+#include "alembert/eom/equations.hpp"
+#include "alembert/eom/roadmap.hpp"
+#include "alembert/mech/system.hpp"
 
 namespace alembert {
 struct ReportContent;
@@ -11,7 +18,21 @@ struct ReportContent;
 
 namespace alembert::report_detail {
 
-/// Each row's equation typeset (LaTeX, readable form). Simplifying an equation for the reader
+/// Between the lines of an equation typeset on several (an abbreviated row's named parts, a
+/// mass matrix written entry by entry): KaTeX breaks the line there; the LaTeX document
+/// writes each line as a paragraph of its own (tex_lines).
+inline constexpr const char* kTexLineBreak = " \\newline ";
+
+/// `tex` with \left( \right) (and | |) written \bigl( \bigr): TeX and KaTeX break a formula in
+/// text style after a + or - at its outer level, never inside a \left ... \right group.
+std::string breakable_tex(std::string tex);
+
+/// The lines of a typeset equation (split at kTexLineBreak).
+std::vector<std::string> tex_lines(const std::string& tex);
+
+/// Each row's equation typeset (LaTeX, readable form: calc_solved_equation, "T_A = ..." when
+/// solved, "0 = ..." otherwise; rows over 1,500 operations abbreviated with named parts w1 = ...
+/// on the following lines), written breakable (breakable_tex). Simplifying an equation for the reader
 /// is the costly part of a report (seconds for a 42-row arm), so write_report typesets once
 /// and hands the result to both the page and roadmap.tex.
 std::vector<std::string> typeset_equations(const ReportContent& content);
@@ -26,5 +47,111 @@ std::string render_html(const ReportContent& content, const std::vector<std::str
 /// The viewer's script and style (src/report/viewer), compiled in.
 extern const char* const kViewerScript;
 extern const char* const kViewerStyle;
+
+// ---- shared by the page's data (report_json.cpp) and the LaTeX document (latex_document.cpp)
+
+/// Values for evaluating the model's geometry: the configuration, every other variable and
+/// rate 0, unknowns and specified quantities 1 (so a load's arrow shows its positive sense).
+struct Evaluation {
+    const System& sys;
+    exmap values;
+
+    Evaluation(const System& s, const exmap& configuration) : sys(s) {
+        const SymbolTable& st = sys.symbols();
+        for (SymbolKind k : {SymbolKind::variable, SymbolKind::specified})
+            for (const ex& x : st.symbols(k)) values[x] = 0;
+        for (const ex& x : st.symbols(SymbolKind::unknown)) values[x] = 1;
+        for (const auto& [x, v] : configuration) values[x] = v;
+    }
+    /// The value of `e`, or NaN if it needs what is not known.
+    double at(const ex& e) const {
+        try {
+            return sys.symbols().evaluate(e, values);
+        } catch (const std::exception&) {
+            return std::nan("");  // a library error, or GiNaC's (a spring of length 0 at rest)
+        }
+    }
+    std::vector<double> in_newtonian(const Vector& v) const {
+        Col3 c = v.components_in(sys.newtonian());
+        return {at(c[0]), at(c[1]), at(c[2])};
+    }
+    /// Where `p` is, measured from the origin in N: evaluated once per point, since every
+    /// row's diagram places the same points
+    const std::vector<double>& position(const Point* p) const {
+        auto it = positions_.find(p);
+        if (it == positions_.end())
+            it = positions_.emplace(p, in_newtonian(p->pos_from(sys.origin()))).first;
+        return it->second;
+    }
+    /// position(p) from its components in N, already at hand
+    const std::vector<double>& position(const Point* p, const Col3& in_n) const {
+        auto it = positions_.find(p);
+        if (it == positions_.end())
+            it = positions_.emplace(p, std::vector<double>{at(in_n[0]), at(in_n[1]), at(in_n[2])})
+                     .first;
+        return it->second;
+    }
+
+private:
+    mutable std::map<const Point*, std::vector<double>> positions_;
+};
+
+/// The model's points that have a path to the origin (those a drawing can place).
+std::vector<const Point*> placed_points(const System& sys);
+
+/// "qA = 60 deg, qB = -41.6 deg (the configuration solve found at line 31)"
+std::string configuration_words(const ReportContent& c);
+
+/// A stick of the drawing: `body`'s (empty: the ground's) from point `from` to point `to`.
+struct Segment {
+    std::string body, from, to;
+};
+
+/// The sticks the drawings show, from how the placed points are located.
+std::vector<Segment> segments_of(const System& sys, const std::vector<const Point*>& placed);
+
+/// "up" in N: against gravity, else Ny for planar models and Nz for others
+std::vector<double> view_up(const System& sys, const Evaluation& ev, bool planar);
+
+/// The drawing's points and sticks as the page's JSON; sets *planar (decided at random states).
+std::string geometry_json(const System& sys, const Evaluation& ev,
+                          const std::vector<const Point*>& placed, bool* planar);
+
+/// One arrow of a free-body diagram: a load external to S at its point.
+struct DiagramLoad {
+    std::string kind, label;  ///< kind: force, torque, gravity, joint
+    const Point* at = nullptr;
+    std::vector<double> vector{};  ///< in N at the configuration (empty for a joint)
+    bool unknown = false;
+};
+
+/// The loads of one free-body diagram, as the viewer and the TikZ picture draw them.
+std::vector<DiagramLoad> diagram_loads(const System& sys, const Evaluation& ev,
+                                       const RoadmapRow& r);
+
+/// "translate", "rotate" or "constraint"
+std::string motion_word(Motion m);
+
+// the intermediates the rows use, each once for the whole page, in dependency order: their
+// names, their definitions as TeX, and for each row the positions of those it uses (rows of
+// one model share most of theirs; repeating them per row made a 7-joint arm's page 2 MB)
+struct PageIntermediates {
+    std::vector<std::string> names, tex;
+    std::vector<std::vector<std::size_t>> of_row;
+};
+
+PageIntermediates page_intermediates(const System& sys, const std::vector<RoadmapRow>& rows);
+
+/// The direction as the road-map table writes it: in N when it is constant there.
+std::string direction_words(const System& sys, const Vector& u);
+
+/// M q'' = f typeset (breakable_tex): the matrix, the column of accelerations and the forcing
+/// when the widest row of entries takes at most kMatrixRowChars characters of TeX; else the
+/// equation with the accelerations' column, then each entry on a line of its own,
+/// M_{ij} = ... and f_{i} = ... (kTexLineBreak between them). Entries are written with the
+/// intermediates written out and simplified (simplify) when that takes at most
+/// kReadableSimplifyOps operations.
+inline constexpr std::size_t kMatrixRowChars = 90;
+std::string matrices_tex(const SymbolTable& st, const LinearSystem& m);
 
 }  // namespace alembert::report_detail

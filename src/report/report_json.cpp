@@ -24,6 +24,8 @@ namespace alembert {
 
 namespace {
 
+using namespace report_detail;
+
 // ---- a small JSON writer: objects keep the order keys are written in -----------------------
 
 std::string num(double v) {
@@ -74,51 +76,10 @@ std::string ground_or(const System& sys, const Body* b) {
 
 // ---- numbers at the configuration ----------------------------------------------------------
 
-/// Values for evaluating the model's geometry: the configuration, every other variable and
-/// rate 0, unknowns and specified quantities 1 (so a load's arrow shows its positive sense).
-struct Evaluation {
-    const System& sys;
-    exmap values;
 
-    Evaluation(const System& s, const exmap& configuration) : sys(s) {
-        const SymbolTable& st = sys.symbols();
-        for (SymbolKind k : {SymbolKind::variable, SymbolKind::specified})
-            for (const ex& x : st.symbols(k)) values[x] = 0;
-        for (const ex& x : st.symbols(SymbolKind::unknown)) values[x] = 1;
-        for (const auto& [x, v] : configuration) values[x] = v;
-    }
-    /// The value of `e`, or NaN if it needs what is not known.
-    double at(const ex& e) const {
-        try {
-            return sys.symbols().evaluate(e, values);
-        } catch (const std::exception&) {
-            return std::nan("");  // a library error, or GiNaC's (a spring of length 0 at rest)
-        }
-    }
-    std::vector<double> in_newtonian(const Vector& v) const {
-        Col3 c = v.components_in(sys.newtonian());
-        return {at(c[0]), at(c[1]), at(c[2])};
-    }
-    /// Where `p` is, measured from the origin in N: evaluated once per point, since every
-    /// row's diagram places the same points
-    const std::vector<double>& position(const Point* p) const {
-        auto it = positions_.find(p);
-        if (it == positions_.end())
-            it = positions_.emplace(p, in_newtonian(p->pos_from(sys.origin()))).first;
-        return it->second;
-    }
-    /// position(p) from its components in N, already at hand
-    const std::vector<double>& position(const Point* p, const Col3& in_n) const {
-        auto it = positions_.find(p);
-        if (it == positions_.end())
-            it = positions_.emplace(p, std::vector<double>{at(in_n[0]), at(in_n[1]), at(in_n[2])})
-                     .first;
-        return it->second;
-    }
+}  // namespace
 
-private:
-    mutable std::map<const Point*, std::vector<double>> positions_;
-};
+namespace report_detail {
 
 std::vector<const Point*> placed_points(const System& sys) {
     std::vector<const Point*> out;
@@ -132,6 +93,10 @@ std::vector<const Point*> placed_points(const System& sys) {
     }
     return out;
 }
+
+}  // namespace report_detail
+
+namespace {
 
 // the point a torque on B is drawn at: where B is joined to what is outside B, else Bcm
 const Point* torque_point(const System& sys, const Body* B) {
@@ -162,6 +127,10 @@ double shown_value(const ReportContent& c, const std::string& name, double si) {
     return it == c.unit_scales.end() || !(it->second > 0) ? si : si / it->second;
 }
 
+}  // namespace
+
+namespace report_detail {
+
 // "qA = 60 deg, qB = -41.6 deg (the configuration solve found at line 31)"
 std::string configuration_words(const ReportContent& c) {
     std::string out;
@@ -179,41 +148,10 @@ std::string configuration_words(const ReportContent& c) {
     return out;
 }
 
-// text for a verbatim environment: lines longer than a page's width broken at a space (or
-// anywhere when there is none), continued indented
-std::string verbatim_lines(std::string text) {
-    constexpr std::size_t kWidth = 80;
-    while (!text.empty() && text.back() == '\n') text.pop_back();
-    std::string out;
-    std::size_t start = 0;
-    while (start <= text.size()) {
-        std::size_t end = text.find('\n', start);
-        if (end == std::string::npos) end = text.size();
-        std::string line = text.substr(start, end - start);
-        bool first = true;
-        while (!line.empty() || first) {
-            const std::size_t room = first ? kWidth : kWidth - 4;
-            std::string piece = line;
-            if (line.size() > room) {
-                std::size_t cut = line.rfind(' ', room);
-                if (cut == std::string::npos || cut < room / 2) cut = room;
-                piece = line.substr(0, cut);
-                line = line.substr(cut == room ? cut : cut + 1);
-            } else {
-                line.clear();
-            }
-            out += (first ? "" : "    ") + piece + "\n";
-            first = false;
-        }
-        if (end == text.size()) break;
-        start = end + 1;
-    }
-    // a line of the text ending the environment early is impossible: \end{verbatim} is never
-    // printed by a statement, but guard it all the same
-    std::string::size_type at;
-    while ((at = out.find("\\end{verbatim}")) != std::string::npos) out.replace(at, 1, "/");
-    return out;
-}
+}  // namespace report_detail
+
+namespace {
+
 
 std::string model_json(const ReportContent& c) {
     const System& sys = *c.system;
@@ -272,9 +210,10 @@ std::string model_json(const ReportContent& c) {
     return o.done();
 }
 
-struct Segment {
-    std::string body, from, to;
-};
+
+}  // namespace
+
+namespace report_detail {
 
 // sticks: a point of a body located from another by a vector fixed in the body (constant in
 // its frame) is a segment of that body; else a vector fixed in the other point's body is a
@@ -349,13 +288,14 @@ std::string geometry_json(const System& sys, const Evaluation& ev,
     return o.done();
 }
 
-/// One arrow of a free-body diagram: a load external to S at its point.
-struct DiagramLoad {
-    std::string kind, label;  ///< kind: force, torque, gravity, joint
-    const Point* at = nullptr;
-    std::vector<double> vector{};  ///< in N at the configuration (empty for a joint)
-    bool unknown = false;
-};
+}  // namespace report_detail
+
+namespace {
+
+
+}  // namespace
+
+namespace report_detail {
 
 /// The loads of one free-body diagram, as the viewer and the TikZ picture draw them.
 std::vector<DiagramLoad> diagram_loads(const System& sys, const Evaluation& ev,
@@ -389,6 +329,10 @@ std::vector<DiagramLoad> diagram_loads(const System& sys, const Evaluation& ev,
     return loads;
 }
 
+}  // namespace report_detail
+
+namespace {
+
 std::string diagram_json(const System& sys, const Evaluation& ev, const RoadmapRow& r) {
     std::vector<std::string> loads;
     for (const DiagramLoad& l : diagram_loads(sys, ev, r)) {
@@ -405,6 +349,10 @@ std::string diagram_json(const System& sys, const Evaluation& ev, const RoadmapR
     return o.done();
 }
 
+}  // namespace
+
+namespace report_detail {
+
 std::string motion_word(Motion m) {
     switch (m) {
         case Motion::translate:
@@ -417,55 +365,9 @@ std::string motion_word(Motion m) {
     return "";
 }
 
-// "0 = t1 + t2 ...": the terms holding the row's variable first, the others in the order of
-// their printed form; one line per few terms, so long equations wrap
-std::string equation_tex(const ex& e, const ex& variable) {
-    std::vector<std::string> terms;
-    if (GiNaC::is_a<GiNaC::add>(e)) {
-        std::vector<std::pair<std::string, ex>> keyed;
-        for (std::size_t i = 0; i < e.nops(); ++i) keyed.emplace_back(to_string(e.op(i)), e.op(i));
-        std::stable_sort(keyed.begin(), keyed.end(), [&](const auto& a, const auto& b) {
-            const bool va = a.second.has(variable), vb = b.second.has(variable);
-            return va != vb ? va : a.first < b.first;
-        });
-        for (const auto& k : keyed) terms.push_back(to_latex(k.second));
-    } else {
-        terms.push_back(to_latex(e));
-    }
-    std::string out = "\\begin{aligned} 0 ={} & ";
-    std::size_t line = 0;
-    for (std::size_t i = 0; i < terms.size(); ++i) {
-        std::string t = terms[i];
-        bool neg = !t.empty() && t[0] == '-';
-        if (i > 0 && line + t.size() > 110) {
-            out += " \\\\ & ";
-            line = 0;
-        }
-        if (i > 0 || neg)
-            out += neg ? " - " + t.substr(1) : " + " + t;
-        else
-            out += t;
-        line += t.size();
-    }
-    return out + " \\end{aligned}";
-}
+}  // namespace report_detail
 
-// equations of more operations than this are typeset abbreviated, with numbered intermediates
-// (written out as a tree, the TeX of a large model's equation grows exponentially with the
-// sharing in it; and simplifying a row of 1,500 to 4,000 operations for the page cost the
-// arm's report 2 of its 3.6 s while leaving a wall of a hundred terms)
-constexpr std::size_t kAbbreviateOps = 1500;
-
-// "0 = ..." with the named parts of the equation below it, w_1 = ..., each line short, the
-// parts in the order they are needed
-std::string abbreviated_equation_tex(const ex& e) {
-    const AbbreviatedForm f = abbreviate_form({e}, 100, "w");
-    std::string out = "\\begin{aligned} 0 ={} & " + to_latex(f.results.at(0));
-    for (std::size_t i = 0; i < f.definitions.size(); ++i)
-        out += std::string(" \\\\ ") + (i == 0 ? "\\text{with } " : "") + to_latex(f.definitions[i].first) +
-               " ={} & " + to_latex(f.definitions[i].second);
-    return out + " \\end{aligned}";
-}
+namespace {
 
 // the names of the intermediates `e` uses, with those their definitions use (at most 200)
 std::set<std::string> intermediates_used(const System& sys, const ex& e) {
@@ -483,13 +385,10 @@ std::set<std::string> intermediates_used(const System& sys, const ex& e) {
     return used;
 }
 
-// the intermediates the rows use, each once for the whole page, in dependency order: their
-// names, their definitions as TeX, and for each row the positions of those it uses (rows of
-// one model share most of theirs; repeating them per row made a 7-joint arm's page 2 MB)
-struct PageIntermediates {
-    std::vector<std::string> names, tex;
-    std::vector<std::vector<std::size_t>> of_row;
-};
+
+}  // namespace
+
+namespace report_detail {
 
 PageIntermediates page_intermediates(const System& sys, const std::vector<RoadmapRow>& rows) {
     const SymbolTable& st = sys.symbols();
@@ -505,7 +404,7 @@ PageIntermediates page_intermediates(const System& sys, const std::vector<Roadma
         if (all.count(st.name(z))) {
             position[st.name(z)] = p.names.size();
             p.names.push_back(st.name(z));
-            p.tex.push_back(to_latex(z) + " = " + to_latex(st.definition(z)));
+            p.tex.push_back(breakable_tex(to_latex(z) + " = " + to_latex(st.definition(z))));
         }
     for (const auto& u : used) {
         std::vector<std::size_t> idx;
@@ -526,6 +425,10 @@ std::string direction_words(const System& sys, const Vector& u) {
     return Vector(sys.newtonian(), c).to_string();
 }
 
+}  // namespace report_detail
+
+namespace {
+
 // an entry of the mass matrix or forcing as people read it: intermediates written out,
 // simplified when small enough
 ex readable_entry(const SymbolTable& st, const ex& e) {
@@ -533,20 +436,54 @@ ex readable_entry(const SymbolTable& st, const ex& e) {
     return count_ops(x) <= kReadableSimplifyOps ? simplify(x) : x;
 }
 
+}  // namespace
+
+namespace report_detail {
+
 // M q'' = f typeset: the matrix, the column of accelerations and the forcing
 std::string matrices_tex(const SymbolTable& st, const LinearSystem& m) {
-    std::string M = "\\begin{bmatrix} ", x = "\\begin{bmatrix} ", f = "\\begin{bmatrix} ";
-    for (unsigned i = 0; i < m.A.rows(); ++i) {
-        const std::string end = i + 1 < m.A.rows() ? " \\\\ " : " ";
-        for (unsigned j = 0; j < m.A.cols(); ++j)
-            M += (j ? " & " : "") + to_latex(readable_entry(st, m.A(i, j)));
-        M += end;
-        f += to_latex(readable_entry(st, m.b(i, 0))) + end;
+    const unsigned n = m.A.rows();
+    std::vector<std::vector<std::string>> M(n);
+    std::vector<std::string> f(n);
+    std::size_t widest = 0;  // the widest line of the matrix form: a row of M and f's entry
+    for (unsigned i = 0; i < n; ++i) {
+        std::size_t width = 0;
+        for (unsigned j = 0; j < m.A.cols(); ++j) {
+            M[i].push_back(to_latex(readable_entry(st, m.A(i, j))));
+            width += M[i].back().size() + 3;
+        }
+        f[i] = to_latex(readable_entry(st, m.b(i, 0)));
+        widest = std::max(widest, width + f[i].size());
     }
+    std::string x = "\\begin{bmatrix} ";
     for (std::size_t j = 0; j < m.unknowns.size(); ++j)
         x += to_latex(m.unknowns[j]) + (j + 1 < m.unknowns.size() ? " \\\\ " : " ");
-    return M + "\\end{bmatrix} " + x + "\\end{bmatrix} = " + f + "\\end{bmatrix}";
+    x += "\\end{bmatrix}";
+    if (widest > kMatrixRowChars) {
+        // too wide for a column: the equation, then each entry on a line of its own
+        std::string t = "M \\, " + x + " = f \\text{, with}";
+        const auto index = [](unsigned k) { return std::to_string(k + 1); };
+        for (unsigned i = 0; i < n; ++i)
+            for (unsigned j = 0; j < M[i].size(); ++j)
+                t += std::string(kTexLineBreak) + "M_{" + index(i) + (n > 9 ? "," : "") + index(j) +
+                     "} = " + M[i][j];
+        for (unsigned i = 0; i < n; ++i)
+            t += std::string(kTexLineBreak) + "f_{" + index(i) + "} = " + f[i];
+        return breakable_tex(t);
+    }
+    std::string A = "\\begin{bmatrix} ", b = "\\begin{bmatrix} ";
+    for (unsigned i = 0; i < n; ++i) {
+        const std::string end = i + 1 < n ? " \\\\ " : " ";
+        for (unsigned j = 0; j < M[i].size(); ++j) A += (j ? " & " : "") + M[i][j];
+        A += end;
+        b += f[i] + end;
+    }
+    return breakable_tex(A + "\\end{bmatrix} " + x + " = " + b + "\\end{bmatrix}");
 }
+
+}  // namespace report_detail
+
+namespace {
 
 // the mass matrix and forcing: their entries as text (to read back) and all of it as TeX
 std::string matrices_json(const System& sys, const LinearSystem& m) {
@@ -714,299 +651,10 @@ std::string animation_json(const ReportContent& c, const std::vector<const Point
     return "null";
 }
 
-// text for LaTeX's text mode
-std::string tex_text(const std::string& s) {
-    std::string o;
-    for (char ch : s) {
-        switch (ch) {
-            case '_':
-                o += "\\_";
-                break;
-            case '&':
-                o += "\\&";
-                break;
-            case '%':
-                o += "\\%";
-                break;
-            case '#':
-                o += "\\#";
-                break;
-            case '$':
-                o += "\\$";
-                break;
-            case '{':
-                o += "\\{";
-                break;
-            case '}':
-                o += "\\}";
-                break;
-            case '>':
-                o += "\\textgreater{}";
-                break;
-            case '<':
-                o += "\\textless{}";
-                break;
-            case '^':
-                o += "\\textasciicircum{}";
-                break;
-            case '~':
-                o += "\\textasciitilde{}";
-                break;
-            case '\\':
-                o += "\\textbackslash{}";
-                break;
-            default:
-                o += ch;
-        }
-    }
-    return o;
-}
-
-std::string set_words(const BodySet& S) {
-    std::string s = "\\{";
-    for (std::size_t i = 0; i < S.size(); ++i) s += (i ? ", " : "") + tex_text(S[i]->name());
-    return s + "\\}";
-}
-
-// ---- the free-body diagram in TikZ ---------------------------------------------------------
-
-std::string cm(double v) {
-    char buf[32];
-    std::snprintf(buf, sizeof buf, "%.3f", std::abs(v) < 5e-4 ? 0.0 : v);
-    return buf;
-}
-
-// the page's projection (the viewer's default view), "up" up the page: planar models in their
-// plane; others in axes (h, up, h x up), h the N axis least along up made square to it,
-// turned 0.6 rad about up and tilted 0.35 rad; TikZ's y points up
-class Projection {
-public:
-    Projection(const std::vector<double>& up, bool planar) : planar_(planar) {
-        u_ = {up.size() > 0 ? up[0] : 0, up.size() > 1 ? up[1] : 1, up.size() > 2 ? up[2] : 0};
-        if (planar) u_[2] = 0;
-        const double n = std::sqrt(dot(u_, u_));
-        if (!(n > 1e-12) || !std::isfinite(n)) u_ = {0, 1, 0};
-        else for (double& x : u_) x /= n;
-        std::array<std::array<double, 3>, 3> axes{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}};
-        std::stable_sort(axes.begin(), axes.end(), [&](const auto& a, const auto& b) {
-            return std::abs(dot(a, u_)) < std::abs(dot(b, u_));
-        });
-        const double k = dot(axes[0], u_);
-        for (int i = 0; i < 3; ++i) h_[i] = axes[0][i] - k * u_[i];
-        const double hn = std::sqrt(dot(h_, h_));
-        for (double& x : h_) x /= hn;
-        w_ = {h_[1] * u_[2] - h_[2] * u_[1], h_[2] * u_[0] - h_[0] * u_[2],
-              h_[0] * u_[1] - h_[1] * u_[0]};
-    }
-    std::array<double, 2> operator()(const std::vector<double>& p) const {
-        if (p.size() < 3) return {0, 0};
-        const std::array<double, 3> q{p[0], p[1], p[2]};
-        if (planar_) return {u_[1] * q[0] - u_[0] * q[1], u_[0] * q[0] + u_[1] * q[1]};
-        const double ct = std::cos(0.6), st = std::sin(0.6), ce = std::cos(0.35), se = std::sin(0.35);
-        const double X = dot(q, h_), Y = dot(q, u_), Z = dot(q, w_);
-        const double x = ct * X + st * Z, z = -st * X + ct * Z;
-        return {x, ce * Y + se * z};
-    }
-
-private:
-    static double dot(const std::array<double, 3>& a, const std::array<double, 3>& b) {
-        return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-    }
-    bool planar_;
-    std::array<double, 3> u_{}, h_{}, w_{};
-};
-
-std::string tikz_diagram(const System& sys, const Evaluation& ev,
-                         const std::vector<const Point*>& placed, bool planar,
-                         const RoadmapRow& r) {
-    const Projection project(view_up(sys, ev, planar), planar);
-    std::map<const Point*, std::array<double, 2>> at;
-    std::vector<const Point*> order;  // the model's order, for the same output run to run
-    double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
-    for (const Point* p : placed) {
-        std::array<double, 2> q = project(ev.position(p));
-        if (!std::isfinite(q[0]) || !std::isfinite(q[1])) continue;
-        at[p] = q;
-        order.push_back(p);
-        for (int k = 0; k < 2; ++k) lo[k] = std::min(lo[k], q[k]), hi[k] = std::max(hi[k], q[k]);
-    }
-    if (at.empty()) return "";
-    const double size = std::max({hi[0] - lo[0], hi[1] - lo[1], 1e-9});
-    const double scale = 5.0 / size, arrow = 1.3;  // the model 5 cm across; arrows 1.3 cm
-    auto xy = [&](const std::array<double, 2>& q) {
-        return "(" + cm(scale * (q[0] - lo[0])) + "," + cm(scale * (q[1] - lo[1])) + ")";
-    };
-    auto shifted = [&](const std::array<double, 2>& q, double dx, double dy) {
-        return "(" + cm(scale * (q[0] - lo[0]) + dx) + "," + cm(scale * (q[1] - lo[1]) + dy) + ")";
-    };
-    auto unit = [&](const std::vector<double>& v, double* ux, double* uy) {
-        std::array<double, 2> d = project(v);
-        const double n = std::hypot(d[0], d[1]);
-        if (!(n > 1e-12) || !std::isfinite(n)) return false;
-        *ux = d[0] / n, *uy = d[1] / n;
-        return true;
-    };
-    auto find = [&](const std::string& name) -> const Point* {
-        for (const Point* p : order)
-            if (p->name() == name) return p;
-        return nullptr;
-    };
-    std::string t = "\\begin{tikzpicture}[>=stealth, every node/.style={font=\\scriptsize}]\n";
-    for (const Segment& seg : segments_of(sys, placed)) {
-        const Point *a = find(seg.from), *b = find(seg.to);
-        if (!a || !b) continue;
-        const bool in_s = std::any_of(r.system.begin(), r.system.end(),
-                                      [&](const Body* x) { return x->name() == seg.body; });
-        t += "\\draw[" + std::string(in_s ? "line width=1.6pt" : "line width=1.2pt, black!25") +
-             ", line cap=round] " + xy(at[a]) + " -- " + xy(at[b]) + ";\n";
-    }
-    for (const Point* p : order) t += "\\fill " + xy(at[p]) + " circle (0.8pt);\n";
-    for (const DiagramLoad& l : diagram_loads(sys, ev, r)) {
-        auto it = at.find(l.at);
-        if (it == at.end()) continue;
-        const std::array<double, 2> p = it->second;
-        const std::string colour = l.kind == "gravity" ? "green!50!black"
-                                   : l.unknown         ? "red!75!black"
-                                                       : "blue!70!black";
-        const std::string label = "{" + tex_text(l.label) + "}";
-        t += "% load: " + tex_text(l.label) + "\n";
-        double ux = 0, uy = 0;
-        if (l.kind == "joint") {
-            std::vector<std::vector<double>> axes{{1, 0, 0}, {0, 1, 0}};
-            if (!planar) axes.push_back({0, 0, 1});
-            for (const auto& e : axes)
-                if (unit(e, &ux, &uy))
-                    t += "\\draw[->, " + colour + "] " + xy(p) + " -- ++(" + cm(0.7 * arrow * ux) +
-                         "," + cm(0.7 * arrow * uy) + ");\n";
-            t += "\\node[" + colour + ", below right] at " + xy(p) + " " + label + ";\n";
-        } else if (l.kind == "torque" && planar) {
-            // an arc about the point, counterclockwise for a +z torque
-            const bool ccw = l.vector.size() < 3 || l.vector[2] >= 0;
-            const double a0 = ccw ? -1.0 : 2.6;
-            t += "\\draw[->, " + colour + "] " +
-                 shifted(p, 0.45 * std::cos(a0), 0.45 * std::sin(a0)) +
-                 " arc[start angle=" + (ccw ? "-57" : "149") +
-                 ", end angle=" + (ccw ? "149" : "-57") + ", radius=0.45] node[above] " + label +
-                 ";\n";
-        } else if (unit(l.vector, &ux, &uy)) {
-            const std::string tip = "++(" + cm(arrow * ux) + "," + cm(arrow * uy) + ")";
-            if (l.kind == "gravity")
-                t += "\\draw[->, " + colour + "] " + xy(p) + " -- " + tip + " node[right] " +
-                     label + ";\n";
-            else if (l.kind == "torque")  // in space: a double-headed arrow along the torque
-                t += "\\draw[->>, " + colour + "] " + xy(p) + " -- " + tip + " node[right] " +
-                     label + ";\n";
-            else
-                t += "\\draw[->, " + colour + "] " + shifted(p, -arrow * ux, -arrow * uy) +
-                     " node[above] " + label + " -- " + xy(p) + ";\n";
-        } else {
-            t += "\\draw[" + colour + "] " + xy(p) + " circle (0.2) node[above right] " + label +
-                 ";\n";
-        }
-    }
-    if (r.about && at.count(r.about))
-        t += "\\draw " + xy(at[r.about]) + " circle (2.5pt) node[below left] {$O$};\n";
-    double ux = 0, uy = 0;
-    const std::vector<double> u = ev.in_newtonian(r.direction);
-    const bool in_plane = unit(u, &ux, &uy) && (!planar || std::hypot(u[0], u[1]) > 0.2);
-    if (in_plane)
-        t += "\\draw[->, violet] (-0.8,-0.8) -- ++(" + cm(0.8 * ux) + "," + cm(0.8 * uy) +
-             ") node[right] {$\\hat u$};\n";
-    else
-        t += "\\draw[violet] (-0.8,-0.8) circle (0.12) node[right=3pt] {$\\hat u$ out of the "
-             "page};\n"
-             "\\fill[violet] (-0.8,-0.8) circle (0.03);\n";
-    t += "\\end{tikzpicture}\n";
-    return t;
-}
 
 }  // namespace
 
-std::vector<std::string> report_detail::typeset_equations(const ReportContent& c) {
-    std::vector<std::string> out;
-    if (!c.system) return out;
-    out.reserve(c.rows.size());
-    Simplifier simplifier;  // the rows share their kinematics: each node is simplified once
-    for (const RoadmapRow& r : c.rows)
-        out.push_back(count_ops(r.equation) > kAbbreviateOps
-                          ? abbreviated_equation_tex(r.equation)
-                          : equation_tex(readable_equation(*c.system, r.equation, simplifier),
-                                         r.variable));
-    return out;
-}
 
-std::string render_report_latex(const ReportContent& c) {
-    return report_detail::render_latex(c, report_detail::typeset_equations(c));
-}
-
-std::string report_detail::render_latex(const ReportContent& c,
-                                        const std::vector<std::string>& equations) {
-    if (!c.system)
-        throw ArgumentError(
-            "render_report_latex(): the report has no model; build one (newtonian N, ...) before "
-            "report");
-    const System& sys = *c.system;
-    std::string t;
-    t += "% Generated by Alembert from the model '" + c.title + "'; regenerate rather than edit.\n";
-    t += "\\documentclass[a4paper]{article}\n\\usepackage{amsmath}\n\\usepackage[margin=2cm]{"
-         "geometry}\n\\usepackage{tikz}\n";
-    t += "\\begin{document}\n\\section*{MG road-map of " + tex_text(c.title) + "}\n\n";
-    t += "Each equation is $E = \\text{applied} - \\text{inertial} = 0$; the free-body diagram of "
-         "$S$ lists the loads "
-         "external to $S$.\n\n";
-    t += "\\begin{tabular}{llllll}\n\\hline\nvariable & translate/rotate & direction & system $S$ "
-         "& about point & "
-         "additional unknowns \\\\\n\\hline\n";
-    for (const RoadmapRow& r : c.rows) {
-        std::string extra;
-        for (std::size_t i = 0; i < r.additional_unknowns.size(); ++i)
-            extra += (i ? ", " : "") + std::string("$") + to_latex(r.additional_unknowns[i]) + "$";
-        const bool constraint = r.motion == Motion::constraint;
-        t += "$" + to_latex(r.variable) + "$ & " + motion_word(r.motion) + " & " +
-             (constraint ? "--" : tex_text(direction_words(sys, r.direction))) + " & " +
-             (constraint ? "--" : "$" + set_words(r.system) + "$") + " & " +
-             (r.about ? tex_text(r.about->name()) : "--") + " & " +
-             (extra.empty() ? "none" : extra) + " \\\\\n";
-    }
-    t += "\\hline\n\\end{tabular}\n\n\\subsection*{Free-body diagrams}\n";
-    t += "Unknown loads in red, known in blue, gravity in green; $O$ is the about point and "
-         "$\\hat u$ the direction.\n\n";
-    t += "Drawn at " + configuration_words(c) + ".\n\n";
-    Evaluation ev(sys, c.configuration);
-    const std::vector<const Point*> placed = placed_points(sys);
-    bool planar = true;
-    (void)geometry_json(sys, ev, placed, &planar);
-    for (const RoadmapRow& r : c.rows) {
-        if (r.motion == Motion::constraint) continue;
-        t += "\\paragraph{$S = " + set_words(r.system) + "$ for $" + to_latex(r.variable) + "$.}";
-        for (std::size_t i = 0; i < r.fbd.size(); ++i) t += (i ? "; " : " ") + tex_text(r.fbd[i]);
-        t += ".\n\n\\begin{center}\n" + tikz_diagram(sys, ev, placed, planar, r) +
-             "\\end{center}\n\n";
-    }
-    t += "\\subsection*{Equations}\n";
-    for (std::size_t i = 0; i < c.rows.size(); ++i) {
-        const RoadmapRow& r = c.rows[i];
-        t += "\\[ E_{" + to_latex(r.variable) + "}: \\quad " + equations.at(i) + " \\]\n";
-    }
-    // the intermediates the equations name, once for all of them
-    const PageIntermediates zs = page_intermediates(sys, c.rows);
-    if (!zs.tex.empty()) {
-        t += "where\n";
-        for (const std::string& d : zs.tex) t += "\\[ " + d + " \\]\n";
-    }
-    if (c.matrices) {
-        t += "\\subsection*{Mass matrix and forcing}\n$M(q)\\,\\ddot q = f(q, \\dot q, t)$:\n";
-        t += "\\[ " + matrices_tex(sys.symbols(), *c.matrices) + " \\]\n";
-    }
-    if (!c.results.empty()) {
-        t += "\\subsection*{Results}\n";
-        for (const ReportResult& r : c.results)
-            t += "Line " + std::to_string(r.line) + ":\n\\begin{verbatim}\n" +
-                 verbatim_lines("> " + r.statement + "\n" + r.text) + "\\end{verbatim}\n";
-    }
-    t += "\\end{document}\n";
-    return t;
-}
 
 std::vector<ReportCheck> calc_report_checks(const ReportContent& c) {
     std::vector<ReportCheck> out;

@@ -2,8 +2,9 @@
 # SPDX-License-Identifier: MIT
 """The sit-to-stand report as a user sees it: headless Chromium opens DIR/index.html, its
 scripts run, and the DOM after them is checked (no errors, one free-body diagram per road-map
-row with one arrow group per load on S, every equation typeset by KaTeX, plots, animation),
-then a screenshot is taken and checked not to be blank.
+row with one arrow group per load on S, every equation typeset by KaTeX and no wider than its
+column on the screen at 1280 px and in print, plots, animation), then a screenshot is taken and
+checked not to be blank.
 
 usage: browser_test.py ALEMBERT_CLI SOURCE_DIR WORK_DIR     (exit 77: Chromium missing)"""
 import html.parser
@@ -372,6 +373,82 @@ def three_d(cli, source, work, browser):
             check(kinds.count("methods") >= 3, "%s: Kane, Lagrange and Newton-Euler compared (%s)" % (name, kinds))
 
 
+# appended to a copy of a report's page: once the viewer has drawn and KaTeX's fonts are in,
+# opens the folded equations as printing does (the viewer's beforeprint), then writes on
+# <body> how many .equation boxes there are and those whose content is wider than the box
+MEASURE = """<script>
+window.addEventListener("load", function () {
+  // #print: the page's @media print rules applied as printing applies them
+  if (location.hash === "#print")
+    Array.prototype.forEach.call(document.styleSheets, function (sheet) {
+      Array.prototype.forEach.call(sheet.cssRules, function (rule) {
+        if (rule.media && /print/.test(rule.media.mediaText))
+          Array.prototype.forEach.call(rule.cssRules, function (r) { sheet.insertRule(r.cssText, sheet.cssRules.length); });
+      });
+    });
+  document.fonts.ready.then(function () {
+    window.dispatchEvent(new Event("beforeprint"));
+    setTimeout(function () {
+      var boxes = document.querySelectorAll("div.equation"), wide = [];
+      boxes.forEach(function (b, i) {
+        if (b.scrollWidth > b.clientWidth + 1) wide.push(i + ":" + b.scrollWidth + ">" + b.clientWidth);
+      });
+      var row = document.querySelector(".row-body");
+      document.body.setAttribute("data-measured", boxes.length + "|" + wide.join(",") + "|" +
+                                 (row ? getComputedStyle(row).display : ""));
+    }, 100);
+  });
+});
+</script>"""
+
+
+def equation_widths(browser, index, who, print_pdf=False):
+    """Every .equation box no wider than its column: at 1280 px on the screen, and with the
+    page's @media print rules applied (measure.html#print) at an A4 page's width (about 720 px
+    within its margins), where the row's diagram and equation stack. With `print_pdf`, the page
+    printed to PDF by Chromium too (minutes for the arm's 200 pages, so for one page only)."""
+    rows = len(page_data(index)["roadmap"])
+    with open(index, encoding="utf-8") as f:
+        page = f.read()
+    at = page.rindex("</body>")
+    measure = os.path.join(os.path.dirname(index), "measure.html")
+    with open(measure, "w", encoding="utf-8") as f:
+        f.write(page[:at] + MEASURE + page[at:])
+    url = "file://" + os.path.abspath(measure)
+    for media, width in (("screen", 1280), ("print", 720)):
+        profile = tempfile.mkdtemp(prefix="alembert-chromium-")
+        try:
+            r = subprocess.run([browser, "--headless", "--disable-gpu", "--no-sandbox", "--user-data-dir=" + profile,
+                                "--hide-scrollbars", "--virtual-time-budget=10000",
+                                "--window-size=%d,1600" % width] + WEBGL + ["--dump-dom", url + "#" + media],
+                               capture_output=True, text=True, timeout=300)
+        finally:
+            shutil.rmtree(profile, ignore_errors=True)
+        m = re.search(r'data-measured="(\d+)\|([^|"]*)\|([a-z]*)"', r.stdout)
+        check(m is not None and int(m.group(1)) >= rows and not m.group(2),
+              "%s (%s, %d px): no equation wider than its column (%s)"
+              % (who, media, width, m.group(0)[:200] if m else "not measured"))
+        if media == "print" and rows:
+            check(m is not None and m.group(3) == "block",
+                  "%s: the print stylesheet applies (a row's diagram above its equation: %s)"
+                  % (who, m.group(3) if m else "not measured"))
+    if not print_pdf:
+        return
+    pdf = os.path.join(os.path.dirname(index), "printed.pdf")
+    profile = tempfile.mkdtemp(prefix="alembert-chromium-")
+    try:
+        subprocess.run([browser, "--headless", "--disable-gpu", "--no-sandbox", "--user-data-dir=" + profile,
+                        "--virtual-time-budget=10000", "--no-pdf-header-footer", "--print-to-pdf=" + pdf, url] + WEBGL,
+                       capture_output=True, text=True, timeout=300)
+    finally:
+        shutil.rmtree(profile, ignore_errors=True)
+    pages = 0
+    if os.path.isfile(pdf):
+        with open(pdf, "rb") as f:
+            pages = len(re.findall(rb"/Type\s*/Page[^s]", f.read()))
+    check(pages > 0, "%s: printed to PDF (%d pages)" % (who, pages))
+
+
 def examples(cli, source, work, browser):
     """One example's report per feature (report_examples.FEATURES; main() opens the
     sit-to-stand page): written, drawn without errors, one free-body diagram per road-map row
@@ -456,6 +533,7 @@ def examples(cli, source, work, browser):
         if data["animation"]:
             check(dom.anim == 1 and dom.play and dom.slider and (dom.canvas is not None or data["geometry"]["planar"]),
                   "%s: the animation with play and the time slider" % name)
+        equation_widths(browser, index, name)
         profile = tempfile.mkdtemp(prefix="alembert-chromium-")
         shot = os.path.join(out, "screenshot.png")
         try:
@@ -493,11 +571,16 @@ def options(cli, source, work, browser):
         else:
             check("methods" not in kinds, "report %s: no methods compared unless asked" % " ".join(args))
         if "--matrices" in args:
-            # M, the accelerations and f: three matrices in one display, typeset, no TeX left
-            check(dom.matrices == 1 and dom.matrices_katex == 1 and dom.matrices_tables == 3
+            # M, the accelerations and f: three matrices in one display; or, too wide for the
+            # column (the sit-to-stand's), the accelerations' column and each entry on a line
+            # of its own (M_{ij} = ..., f_{i} = ...); typeset, no TeX left
+            tex = page_data(os.path.join(out, "index.html"))["matrices"]["tex"]
+            matrices = 1 if "\\newline M_{" in tex else 3
+            check(dom.matrices == 1 and dom.matrices_katex == 1 and dom.matrices_tables == matrices
                   and dom.raw == 0 and dom.text_backslashes == 0,
                   "report %s: the mass matrix and forcing typeset by KaTeX (%d sections, %d renderings, %d matrices)"
                   % (" ".join(args), dom.matrices, dom.matrices_katex, dom.matrices_tables))
+            equation_widths(browser, os.path.join(out, "index.html"), "report " + " ".join(args))
         else:
             check(dom.matrices == 0, "report %s: no mass matrix and forcing unless asked" % " ".join(args))
 
@@ -590,6 +673,7 @@ def main():
           "arrows per diagram are the loads on S: %s" % dom.fbds)
     check(all(f[0] == f[1] for f in dom.fbds), "every load of the data is drawn")
     check(dom.equations == 9, "one equation per row (%d)" % dom.equations)
+    equation_widths(browser, index, "sit_to_stand", print_pdf=True)
     check(dom.katex == dom.equations, "every equation typeset by KaTeX (%d of %d)" % (dom.katex, dom.equations))
     check(dom.raw == 0 and dom.text_backslashes == 0,
           "no raw TeX left (%d raw boxes, %d texts with backslashes)" % (dom.raw, dom.text_backslashes))

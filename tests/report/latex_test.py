@@ -1,10 +1,13 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: MIT
-"""LaTeX out for one example per feature of a report (report_examples.py): `alembert report MODEL` writes roadmap.tex beside the page, with
-the road-map table (a line per row), a TikZ free-body diagram per row that has one (an arrow
-per load on S, as many as the HTML report draws), every row's equation and the document's end;
-where pdflatex is installed (Debian's texlive-latex-base and texlive-pictures;
-scripts/install_deps.sh installs them) each document is compiled and must give a PDF.
+"""LaTeX out for one example per feature of a report (report_examples.py): `alembert report MODEL
+--matrices` writes roadmap.tex beside the page, with the road-map table (a line per row), a TikZ
+free-body diagram per row that has one (an arrow per load on S, as many as the HTML report
+draws) kept in one box with its caption and its row's equation, every row's equation, the mass
+matrix and the document's end; a model without rows gets a document that says so. Where
+pdflatex is installed (Debian's texlive-latex-base and texlive-pictures; scripts/install_deps.sh
+installs them) each document is compiled and must give a PDF with no line more than 10 pt
+wider than the text (no "Overfull \\hbox" over 10 pt in the log).
 `alembert report MODEL --latex` writes that roadmap.tex alone, byte for byte (checked on one
 example: each report runs its whole script, which for the larger examples is most of the time).
 
@@ -45,7 +48,7 @@ def main():
             continue
         out = os.path.join(work, name)
         shutil.rmtree(out, ignore_errors=True)
-        r = subprocess.run([cli, "report", model, "--out", out], capture_output=True, text=True, timeout=600)
+        r = subprocess.run([cli, "report", model, "--matrices", "--out", out], capture_output=True, text=True, timeout=600)
         check(r.returncode == 0, "%s: alembert report exits 0 (stderr: %s)" % (name, r.stderr.strip()[:300]))
         tex_path = os.path.join(out, "roadmap.tex")
         check(os.path.isfile(tex_path), "%s: roadmap.tex written beside the page" % name)
@@ -57,7 +60,7 @@ def main():
             alone_checked = True
             alone = os.path.join(work, name + "_alone")
             shutil.rmtree(alone, ignore_errors=True)
-            r = subprocess.run([cli, "report", model, "--latex", "--out", alone], capture_output=True, text=True,
+            r = subprocess.run([cli, "report", model, "--matrices", "--latex", "--out", alone], capture_output=True, text=True,
                                timeout=600)
             alone_tex = os.path.join(alone, "roadmap.tex")
             check(r.returncode == 0 and os.path.isfile(alone_tex) and
@@ -72,11 +75,15 @@ def main():
         start = page.index('id="alembert-data">') + len('id="alembert-data">')
         data = json.loads(page[start:page.index("</script>", start)])
         rows = data["roadmap"]
-        table = tex[tex.find("\\begin{tabular}"):tex.find("\\end{tabular}")]
-        check(table.count("\\\\\n") == len(rows) + 1, "%s: the table has a line per row (%d rows)" % (name, len(rows)))
-        equations = re.findall(r"\\\[ E_\{(.*?)\}: \\quad \\begin\{aligned\}", tex)
-        check(len(equations) == len(rows) and tex.count("\\begin{aligned}") == tex.count("\\end{aligned}"),
-              "%s: every row's equation is there (%d of %d)" % (name, len(equations), len(rows)))
+        if not rows:
+            check("\\begin{tabular}" not in tex and "no MG road-map rows" in tex,
+                  "%s: no rows, and the document says so instead of an empty table" % name)
+        else:
+            table = tex[tex.find("\\begin{tabular}"):tex.find("\\end{tabular}")]
+            check(table.count("\\tabularnewline\n") == len(rows),
+                  "%s: the table has a line per row (%d rows)" % (name, len(rows)))
+        equations = re.findall(r"\\eqline\{E_\{(.*?)\}\\colon", tex)
+        check(len(equations) == len(rows), "%s: every row's equation is there (%d of %d)" % (name, len(equations), len(rows)))
         check([e for e in equations] == [r["variable_tex"] for r in rows],
               "%s: the equations in the rows' order" % name)
         pictures = [tex[a:tex.find("\\end{tikzpicture}", a)] for a in
@@ -84,6 +91,19 @@ def main():
         loads = [len(r["diagram"]["loads"]) for r in rows if r["diagram"]]
         check([p.count("% load: ") for p in pictures] == loads,
               "%s: a TikZ diagram per row with an arrow per load on S %s" % (name, loads))
+        # each row's box (a minipage, which never floats or breaks) holds its diagram, the
+        # diagram's caption and the start of the row's equation
+        boxes = [tex[a:tex.find("\\end{minipage}", a)] for a in
+                 [m.start() for m in re.finditer(r"\\begin\{minipage\}", tex)]]
+        together = len(boxes) == len(rows) and all(
+            ("\\eqline{E_{%s}\\colon" % r["variable_tex"]) in b and
+            (not r["diagram"] or ("\\begin{tikzpicture}" in b and ": free-body diagram of" in b))
+            for r, b in zip(rows, boxes))
+        check(together, "%s: each row's diagram, caption and equation in one box" % name)
+        if "matrices" in data:
+            check("\\subsection*{Mass matrix and forcing}" in tex and "\\eqline{" in
+                  tex[tex.find("\\subsection*{Mass matrix and forcing}"):],
+                  "%s: the mass matrix and forcing typeset" % name)
         check(tex.rstrip().endswith("\\end{document}"), "%s: the document ends" % name)
         if pdflatex:
             r = subprocess.run([pdflatex, "-interaction=nonstopmode", "-halt-on-error", "roadmap.tex"], cwd=out,
@@ -91,6 +111,11 @@ def main():
             errors = [l for l in r.stdout.splitlines() if l.startswith("!")]
             check(r.returncode == 0 and os.path.isfile(os.path.join(out, "roadmap.pdf")),
                   "%s: pdflatex compiles it (%s)" % (name, errors[:3]))
+            with open(os.path.join(out, "roadmap.log"), encoding="latin-1") as f:
+                over = [float(x) for x in re.findall(r"Overfull \\hbox \(([0-9.]+)pt too wide\)", f.read())]
+            check(not over or max(over) <= 10,
+                  "%s: no line over 10 pt wider than the text (%d overfull boxes, the widest %.1f pt)"
+                  % (name, len(over), max(over) if over else 0))
     return 1 if failures else 0
 
 

@@ -80,10 +80,10 @@ TEST(Report, EachRowsFreeBodyDiagramHoldsTheLoadsExternalToItsSystem) {
         << c;
     // the direction u = Nz, and the equation as TeX with the torque in it
     EXPECT_NE(c.find("\"direction\":[0,0,1]"), std::string::npos);
-    // the row's unknown leads its equation
-    EXPECT_NE(c.find("\"equation\":\"\\\\begin{aligned} 0 ={} \\u0026 T_{C}"), std::string::npos)
-        << c;
-    EXPECT_NE(c.find("\\\\begin{aligned}"), std::string::npos);
+    // the row solved for its unknown (T_C enters with coefficient 1), written breakable: no
+    // \left( ... \right) group that KaTeX or TeX could not break a line inside
+    EXPECT_NE(c.find("\"equation\":\"T_{C} = "), std::string::npos) << c;
+    EXPECT_EQ(c.find("\\\\left("), std::string::npos) << c;
 }
 
 TEST(Report, PointsArePlacedAtTheConfiguration) {
@@ -360,8 +360,12 @@ TEST(Report, MassMatrixAndForcingAgreeWithTheTriplePendulumDerivedByHand) {
     ASSERT_EQ(f.size(), 3u);
     const std::vector<std::string> tex = json_strings(json, "\"tex\":", "}");
     ASSERT_EQ(tex.size(), 1u);
-    EXPECT_EQ(count(tex[0], "\\begin{bmatrix}"), 3u);
+    // too wide for one line as a matrix: the equation with the accelerations' column, then each
+    // entry on a line of its own (M_{ij} = ..., f_{i} = ...)
+    EXPECT_EQ(count(tex[0], "\\begin{bmatrix}"), 1u);
     EXPECT_NE(tex[0].find(to_latex(s.m.q[2].d(2))), std::string::npos) << tex[0];
+    EXPECT_EQ(count(tex[0], " \\newline M_{"), 9u);
+    EXPECT_EQ(count(tex[0], " \\newline f_{"), 3u);
 
     // read the printed entries back: primes become _d, every name the model's own symbol
     const SymbolTable& st = s.m.system.symbols();
@@ -428,7 +432,14 @@ TEST(Report, MassMatrixAndForcingAgreeWithTheTriplePendulumDerivedByHand) {
     // the same matrices typeset in roadmap.tex
     const std::string latex = render_report_latex(s.content);
     EXPECT_NE(latex.find("\\subsection*{Mass matrix and forcing}"), std::string::npos);
-    EXPECT_NE(latex.find(tex[0]), std::string::npos);
+    // each line a paragraph of its own there
+    std::size_t lines = 0;
+    for (std::size_t start = 0, end = 0; end != std::string::npos; start = end + 10, ++lines) {
+        end = tex[0].find(" \\newline ", start);
+        const std::string line = tex[0].substr(start, end == std::string::npos ? end : end - start);
+        EXPECT_NE(latex.find("\\eqline{" + line + "}"), std::string::npos) << line;
+    }
+    EXPECT_EQ(lines, 13u);
 }
 
 TEST(Report, SameContentGivesTheSameBytes) {
@@ -520,15 +531,13 @@ TEST(ReportLatex, TheRoadmapTableTheLoadsAndTheEquationsForAPaper) {
     const std::string tex = render_report_latex(s.content);
     EXPECT_NE(tex.find("\\section*{MG road-map of sit\\_to\\_stand}"), std::string::npos)
         << tex.substr(0, 400);
-    EXPECT_NE(
-        tex.find("$T_{A}$ & rotate & Nz\\textgreater{} & $\\{A, B, C\\}$ & A\\_o & none \\\\"),
-        std::string::npos)
+    EXPECT_NE(tex.find("$T_{A}$ & rotate & \\raggedright Nz\\textgreater{} & \\raggedright "
+                       "$\\{A,\\allowbreak B,\\allowbreak C\\}$ & A\\_o & none \\tabularnewline"),
+              std::string::npos)
         << tex;
-    EXPECT_NE(
-        tex.find(
-            "\\paragraph{$S = \\{C\\}$ for $T_{C}$.} T\\_C on C from B (unknown); gravity at Ccm; "
-            "joint force at C\\_o from B (unknown)."),
-        std::string::npos);
+    EXPECT_NE(tex.find("\\paragraph{Row 3: $S = \\{C\\}$ for $T_{C}$.} T\\_C on C from B (unknown); "
+                       "gravity at Ccm; joint force at C\\_o from B (unknown)."),
+              std::string::npos);
     // one TikZ picture per row, each with an arrow per load on S: {A,B,C}: T_A, 3 weights, the
     // ground's force at A_o; {B,C}: T_B, 2 weights, A's force; {C}: T_C, its weight, B's force
     EXPECT_EQ(count(tex, "\\begin{tikzpicture}"), 3u);
@@ -538,8 +547,18 @@ TEST(ReportLatex, TheRoadmapTableTheLoadsAndTheEquationsForAPaper) {
         loads.push_back(count(tex.substr(at, tex.find("\\end{tikzpicture}", at) - at), "% load: "));
     EXPECT_EQ(loads, (std::vector<std::size_t>{5, 4, 3}));
     EXPECT_EQ(count(tex, "node[below left] {$O$}"), 3u);  // each about point marked
-    EXPECT_EQ(count(tex, "\\[ E_{T_{"), 3u);
-    EXPECT_EQ(count(tex, "\\begin{aligned}"), count(tex, "\\end{aligned}"));
+    // each row's diagram, its caption and its equation (solved for the torque) in one box that
+    // does not float away from them
+    EXPECT_EQ(count(tex, "\\begin{minipage}{\\linewidth}"), 3u);
+    EXPECT_EQ(count(tex, ": free-body diagram of $S = "), 3u);
+    for (const char* row : {"A", "B", "C"}) {
+        const std::string name = std::string("\\eqline{E_{T_{") + row + "}}\\colon\\ T_{" + row + "} = ";
+        const std::size_t at = tex.find(name);
+        EXPECT_NE(at, std::string::npos) << name;
+        EXPECT_GT(at, tex.find(std::string("Figure ") + static_cast<char>('1' + (row[0] - 'A'))));
+        EXPECT_LT(at, tex.find("\\end{minipage}", tex.find(std::string("Figure ") +
+                                                           static_cast<char>('1' + (row[0] - 'A')))));
+    }
     EXPECT_NE(tex.find("\\end{document}"), std::string::npos);
 }
 

@@ -56,11 +56,15 @@
   }
 
   // ---- equations --------------------------------------------------------------------------
+  // An equation on lines of its own (display) is typeset in KaTeX's text style, which breaks a
+  // line after a + - or = at the formula's outer level wherever the column is full (the report
+  // writes sums in plain parentheses, which do not stop that): no equation is wider than its
+  // column on the screen or in print. Continuation lines are indented.
   function tex(parent, source, display) {
-    var box = el(display ? "div" : "span", {"class": "equation"}, parent);
+    var box = el(display ? "div" : "span", {"class": display ? "equation broken" : "equation"}, parent);
     if (window.katex) {
       try {
-        window.katex.render(source, box, {displayMode: !!display, throwOnError: true, maxExpand: 1000000});
+        window.katex.render(source, box, {displayMode: false, throwOnError: true, maxExpand: 1000000});
         return box;
       } catch (e) {
         fail("KaTeX could not typeset: " + source.slice(0, 80) + "...: " + e.message);
@@ -84,6 +88,12 @@
     });
     return d;
   }
+  // printing opens the folded equations, so that the paper holds every one
+  window.addEventListener("beforeprint", function () {
+    Array.prototype.forEach.call(document.querySelectorAll("details.equation-folded"), function (d) {
+      if (!d.open) { d.open = true; d.dispatchEvent(new Event("toggle")); }
+    });
+  });
 
   // ---- geometry: the plane of planar models, an oblique view of spatial ones ----------------
   // "up" (against gravity: geo.up) is up the page. Planar models: their plane, up the page.
@@ -307,7 +317,8 @@
     el("p", {"class": "note", id: "configuration"}, sec, "Free-body diagrams at " + data.configuration.map(function (c) {
       return c.name + " = " + fmt(c.shown) + (c.unit ? " " + c.unit : ""); }).join(", ") +
       (data.configuration_source ? " (" + data.configuration_source + ")" : "") +
-      ". Unknown loads in red, known in blue, gravity in green; each equation is E = applied \u2212 inertial = 0.");
+      ". Unknown loads in red, known in blue, gravity in green; each equation is E = applied \u2212 inertial = 0, " +
+      "shown solved for the row's unknown where it holds it linearly with a constant coefficient.");
     var head = ["variable", "translate/rotate", "direction", "system S", "FBD of S", "about point", "additional unknowns"];
     data.roadmap.forEach(function (row, i) {
       var card = el("div", {"class": "row", id: "row-" + (i + 1)}, sec);

@@ -1,0 +1,392 @@
+// SPDX-License-Identifier: MIT
+// The road-map as a LaTeX document: the table, each row's free-body diagram in TikZ, the
+// equations, the mass matrix and the script's results.
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "alembert/error.hpp"
+#include "alembert/report/report.hpp"
+#include "report_detail.hpp"
+
+namespace alembert {
+
+namespace {
+
+using namespace report_detail;
+
+// text for a verbatim environment: lines longer than a page's width broken at a space (or
+// anywhere when there is none), continued indented
+std::string verbatim_lines(std::string text) {
+    constexpr std::size_t kWidth = 80;
+    while (!text.empty() && text.back() == '\n') text.pop_back();
+    std::string out;
+    std::size_t start = 0;
+    while (start <= text.size()) {
+        std::size_t end = text.find('\n', start);
+        if (end == std::string::npos) end = text.size();
+        std::string line = text.substr(start, end - start);
+        bool first = true;
+        while (!line.empty() || first) {
+            const std::size_t room = first ? kWidth : kWidth - 4;
+            std::string piece = line;
+            if (line.size() > room) {
+                std::size_t cut = line.rfind(' ', room);
+                if (cut == std::string::npos || cut < room / 2) cut = room;
+                piece = line.substr(0, cut);
+                line = line.substr(cut == room ? cut : cut + 1);
+            } else {
+                line.clear();
+            }
+            out += (first ? "" : "    ") + piece + "\n";
+            first = false;
+        }
+        if (end == text.size()) break;
+        start = end + 1;
+    }
+    // a line of the text ending the environment early is impossible: \end{verbatim} is never
+    // printed by a statement, but guard it all the same
+    std::string::size_type at;
+    while ((at = out.find("\\end{verbatim}")) != std::string::npos) out.replace(at, 1, "/");
+    return out;
+}
+
+// text for LaTeX's text mode
+std::string tex_text(const std::string& s) {
+    std::string o;
+    for (char ch : s) {
+        switch (ch) {
+            case '_':
+                o += "\\_";
+                break;
+            case '&':
+                o += "\\&";
+                break;
+            case '%':
+                o += "\\%";
+                break;
+            case '#':
+                o += "\\#";
+                break;
+            case '$':
+                o += "\\$";
+                break;
+            case '{':
+                o += "\\{";
+                break;
+            case '}':
+                o += "\\}";
+                break;
+            case '>':
+                o += "\\textgreater{}";
+                break;
+            case '<':
+                o += "\\textless{}";
+                break;
+            case '^':
+                o += "\\textasciicircum{}";
+                break;
+            case '~':
+                o += "\\textasciitilde{}";
+                break;
+            case '\\':
+                o += "\\textbackslash{}";
+                break;
+            default:
+                o += ch;
+        }
+    }
+    return o;
+}
+
+std::string set_words(const BodySet& S) {
+    std::string s = "\\{";
+    for (std::size_t i = 0; i < S.size(); ++i) s += (i ? ",\\allowbreak " : "") + tex_text(S[i]->name());
+    return s + "\\}";
+}
+
+// ---- the free-body diagram in TikZ ---------------------------------------------------------
+
+std::string cm(double v) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.3f", std::abs(v) < 5e-4 ? 0.0 : v);
+    return buf;
+}
+
+// the page's projection (the viewer's default view), "up" up the page: planar models in their
+// plane; others in axes (h, up, h x up), h the N axis least along up made square to it,
+// turned 0.6 rad about up and tilted 0.35 rad; TikZ's y points up
+class Projection {
+public:
+    Projection(const std::vector<double>& up, bool planar) : planar_(planar) {
+        u_ = {up.size() > 0 ? up[0] : 0, up.size() > 1 ? up[1] : 1, up.size() > 2 ? up[2] : 0};
+        if (planar) u_[2] = 0;
+        const double n = std::sqrt(dot(u_, u_));
+        if (!(n > 1e-12) || !std::isfinite(n)) u_ = {0, 1, 0};
+        else for (double& x : u_) x /= n;
+        std::array<std::array<double, 3>, 3> axes{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}};
+        std::stable_sort(axes.begin(), axes.end(), [&](const auto& a, const auto& b) {
+            return std::abs(dot(a, u_)) < std::abs(dot(b, u_));
+        });
+        const double k = dot(axes[0], u_);
+        for (int i = 0; i < 3; ++i) h_[i] = axes[0][i] - k * u_[i];
+        const double hn = std::sqrt(dot(h_, h_));
+        for (double& x : h_) x /= hn;
+        w_ = {h_[1] * u_[2] - h_[2] * u_[1], h_[2] * u_[0] - h_[0] * u_[2],
+              h_[0] * u_[1] - h_[1] * u_[0]};
+    }
+    std::array<double, 2> operator()(const std::vector<double>& p) const {
+        if (p.size() < 3) return {0, 0};
+        const std::array<double, 3> q{p[0], p[1], p[2]};
+        if (planar_) return {u_[1] * q[0] - u_[0] * q[1], u_[0] * q[0] + u_[1] * q[1]};
+        const double ct = std::cos(0.6), st = std::sin(0.6), ce = std::cos(0.35), se = std::sin(0.35);
+        const double X = dot(q, h_), Y = dot(q, u_), Z = dot(q, w_);
+        const double x = ct * X + st * Z, z = -st * X + ct * Z;
+        return {x, ce * Y + se * z};
+    }
+
+private:
+    static double dot(const std::array<double, 3>& a, const std::array<double, 3>& b) {
+        return a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+    }
+    bool planar_;
+    std::array<double, 3> u_{}, h_{}, w_{};
+};
+
+std::string tikz_diagram(const System& sys, const Evaluation& ev,
+                         const std::vector<const Point*>& placed, bool planar,
+                         const RoadmapRow& r) {
+    const Projection project(view_up(sys, ev, planar), planar);
+    std::map<const Point*, std::array<double, 2>> at;
+    std::vector<const Point*> order;  // the model's order, for the same output run to run
+    double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
+    for (const Point* p : placed) {
+        std::array<double, 2> q = project(ev.position(p));
+        if (!std::isfinite(q[0]) || !std::isfinite(q[1])) continue;
+        at[p] = q;
+        order.push_back(p);
+        for (int k = 0; k < 2; ++k) lo[k] = std::min(lo[k], q[k]), hi[k] = std::max(hi[k], q[k]);
+    }
+    if (at.empty()) return "";
+    const double size = std::max({hi[0] - lo[0], hi[1] - lo[1], 1e-9});
+    const double scale = 5.0 / size, arrow = 1.3;  // the model 5 cm across; arrows 1.3 cm
+    auto xy = [&](const std::array<double, 2>& q) {
+        return "(" + cm(scale * (q[0] - lo[0])) + "," + cm(scale * (q[1] - lo[1])) + ")";
+    };
+    auto shifted = [&](const std::array<double, 2>& q, double dx, double dy) {
+        return "(" + cm(scale * (q[0] - lo[0]) + dx) + "," + cm(scale * (q[1] - lo[1]) + dy) + ")";
+    };
+    auto unit = [&](const std::vector<double>& v, double* ux, double* uy) {
+        std::array<double, 2> d = project(v);
+        const double n = std::hypot(d[0], d[1]);
+        if (!(n > 1e-12) || !std::isfinite(n)) return false;
+        *ux = d[0] / n, *uy = d[1] / n;
+        return true;
+    };
+    auto find = [&](const std::string& name) -> const Point* {
+        for (const Point* p : order)
+            if (p->name() == name) return p;
+        return nullptr;
+    };
+    std::string t = "\\begin{tikzpicture}[>=stealth, every node/.style={font=\\scriptsize}]\n";
+    for (const Segment& seg : segments_of(sys, placed)) {
+        const Point *a = find(seg.from), *b = find(seg.to);
+        if (!a || !b) continue;
+        const bool in_s = std::any_of(r.system.begin(), r.system.end(),
+                                      [&](const Body* x) { return x->name() == seg.body; });
+        t += "\\draw[" + std::string(in_s ? "line width=1.6pt" : "line width=1.2pt, black!25") +
+             ", line cap=round] " + xy(at[a]) + " -- " + xy(at[b]) + ";\n";
+    }
+    for (const Point* p : order) t += "\\fill " + xy(at[p]) + " circle (0.8pt);\n";
+    for (const DiagramLoad& l : diagram_loads(sys, ev, r)) {
+        auto it = at.find(l.at);
+        if (it == at.end()) continue;
+        const std::array<double, 2> p = it->second;
+        const std::string colour = l.kind == "gravity" ? "green!50!black"
+                                   : l.unknown         ? "red!75!black"
+                                                       : "blue!70!black";
+        const std::string label = "{" + tex_text(l.label) + "}";
+        t += "% load: " + tex_text(l.label) + "\n";
+        double ux = 0, uy = 0;
+        if (l.kind == "joint") {
+            std::vector<std::vector<double>> axes{{1, 0, 0}, {0, 1, 0}};
+            if (!planar) axes.push_back({0, 0, 1});
+            for (const auto& e : axes)
+                if (unit(e, &ux, &uy))
+                    t += "\\draw[->, " + colour + "] " + xy(p) + " -- ++(" + cm(0.7 * arrow * ux) +
+                         "," + cm(0.7 * arrow * uy) + ");\n";
+            t += "\\node[" + colour + ", below right] at " + xy(p) + " " + label + ";\n";
+        } else if (l.kind == "torque" && planar) {
+            // an arc about the point, counterclockwise for a +z torque
+            const bool ccw = l.vector.size() < 3 || l.vector[2] >= 0;
+            const double a0 = ccw ? -1.0 : 2.6;
+            t += "\\draw[->, " + colour + "] " +
+                 shifted(p, 0.45 * std::cos(a0), 0.45 * std::sin(a0)) +
+                 " arc[start angle=" + (ccw ? "-57" : "149") +
+                 ", end angle=" + (ccw ? "149" : "-57") + ", radius=0.45] node[above] " + label +
+                 ";\n";
+        } else if (unit(l.vector, &ux, &uy)) {
+            const std::string tip = "++(" + cm(arrow * ux) + "," + cm(arrow * uy) + ")";
+            if (l.kind == "gravity")
+                t += "\\draw[->, " + colour + "] " + xy(p) + " -- " + tip + " node[right] " +
+                     label + ";\n";
+            else if (l.kind == "torque")  // in space: a double-headed arrow along the torque
+                t += "\\draw[->>, " + colour + "] " + xy(p) + " -- " + tip + " node[right] " +
+                     label + ";\n";
+            else
+                t += "\\draw[->, " + colour + "] " + shifted(p, -arrow * ux, -arrow * uy) +
+                     " node[above] " + label + " -- " + xy(p) + ";\n";
+        } else {
+            t += "\\draw[" + colour + "] " + xy(p) + " circle (0.2) node[above right] " + label +
+                 ";\n";
+        }
+    }
+    if (r.about && at.count(r.about))
+        t += "\\draw " + xy(at[r.about]) + " circle (2.5pt) node[below left] {$O$};\n";
+    double ux = 0, uy = 0;
+    const std::vector<double> u = ev.in_newtonian(r.direction);
+    const bool in_plane = unit(u, &ux, &uy) && (!planar || std::hypot(u[0], u[1]) > 0.2);
+    if (in_plane)
+        t += "\\draw[->, violet] (-0.8,-0.8) -- ++(" + cm(0.8 * ux) + "," + cm(0.8 * uy) +
+             ") node[right] {$\\hat u$};\n";
+    else
+        t += "\\draw[violet] (-0.8,-0.8) circle (0.12) node[right=3pt] {$\\hat u$ out of the "
+             "page};\n"
+             "\\fill[violet] (-0.8,-0.8) circle (0.03);\n";
+    t += "\\end{tikzpicture}\n";
+    return t;
+}
+
+// characters of an equation's TeX kept in one box with its row's diagram (about a third of a
+// page): a longer equation's further lines follow the box
+constexpr std::size_t kKeptChars = 2500;
+
+// the road-map table in the seed's columns; the direction, the set and the unknowns wrap in
+// their columns
+std::string table_tex(const System& sys, const std::vector<RoadmapRow>& rows) {
+    std::string t =
+        "{\\small\\setlength{\\tabcolsep}{4pt}\\noindent\\begin{tabular}{@{}l l p{0.25\\linewidth} p{0.16\\linewidth} l "
+        "p{0.2\\linewidth}@{}}\n\\hline\nvariable & translate/rotate & direction & system $S$ "
+        "& about point & additional unknowns \\\\\n\\hline\n";
+    for (const RoadmapRow& r : rows) {
+        std::string extra;
+        for (std::size_t i = 0; i < r.additional_unknowns.size(); ++i)
+            extra += (i ? ", " : "") + std::string("$") + to_latex(r.additional_unknowns[i]) + "$";
+        const bool constraint = r.motion == Motion::constraint;
+        t += "$" + to_latex(r.variable) + "$ & " + motion_word(r.motion) + " & " +
+             (constraint ? "--" : "\\raggedright " + tex_text(direction_words(sys, r.direction))) +
+             " & " + (constraint ? "--" : "\\raggedright $" + set_words(r.system) + "$") + " & " +
+             (r.about ? tex_text(r.about->name()) : "--") + " & " +
+             (extra.empty() ? "none" : "\\raggedright " + extra) + " \\tabularnewline\n";
+    }
+    return t + "\\hline\n\\end{tabular}}\n\n";
+}
+
+}  // namespace
+
+std::string render_report_latex(const ReportContent& c) {
+    return report_detail::render_latex(c, report_detail::typeset_equations(c));
+}
+
+std::string report_detail::render_latex(const ReportContent& c,
+                                        const std::vector<std::string>& equations) {
+    if (!c.system)
+        throw ArgumentError(
+            "render_report_latex(): the report has no model; build one (newtonian N, ...) before "
+            "report");
+    const System& sys = *c.system;
+    std::string t;
+    t += "% Generated by Alembert from the model '" + c.title + "'; regenerate rather than edit.\n";
+    t += "\\documentclass[a4paper]{article}\n\\usepackage{amsmath}\n\\usepackage[margin=2cm]{"
+         "geometry}\n\\usepackage{tikz}\n";
+    // an equation's lines: paragraphs of text-style math, ragged right, continued indented, so
+    // that TeX breaks a long one after a + or - where the line is full
+    t += "\\newenvironment{eqlines}{\\par\\smallskip\\raggedright}{\\par\\smallskip}\n"
+         "\\newcommand{\\eqline}[1]{\\par\\noindent\\hangindent=3em\\hangafter=1 $#1$\\par}\n";
+    t += "\\begin{document}\n\\section*{MG road-map of " + tex_text(c.title) + "}\n\n";
+    for (const std::string& note : c.notes) t += tex_text(note) + "\n\n";
+    if (c.rows.empty()) {
+        t += "This model has no MG road-map rows, so there is no table, free-body diagram or row "
+             "equation to show" +
+             std::string(c.notes.empty() ? ": the script formed none (no \\texttt{roadmap} or "
+                                           "\\texttt{plan} was run on it)"
+                                         : "") +
+             ".\n\n";
+    } else {
+        t += "Each row's equation is $E = \\text{applied} - \\text{inertial} = 0$, shown solved for "
+             "the row's unknown where it holds it linearly with a constant coefficient, else as "
+             "$0 = E$; accelerations are collected. The free-body diagram of $S$ lists the loads "
+             "external to $S$.\n\n";
+        t += table_tex(sys, c.rows);
+        t += "\\subsection*{Rows: free-body diagrams and equations}\n";
+        t += "Unknown loads in red, known in blue, gravity in green; $O$ is the about point and "
+             "$\\hat u$ the direction. Drawn at " +
+             configuration_words(c) + ".\n\n";
+    }
+    Evaluation ev(sys, c.configuration);
+    const std::vector<const Point*> placed = placed_points(sys);
+    bool planar = true;
+    (void)geometry_json(sys, ev, placed, &planar);
+    int figure = 0;
+    for (std::size_t i = 0; i < c.rows.size(); ++i) {
+        const RoadmapRow& r = c.rows[i];
+        const std::vector<std::string> lines = tex_lines(equations.at(i));
+        const std::string name = "E_{" + to_latex(r.variable) + "}\\colon\\ ";
+        // the diagram, its caption and the equation's first lines in one unbreakable box (no
+        // float to drift from them); lines past kKeptChars follow it, free to break across pages
+        std::size_t kept = 0, chars = 0;
+        while (kept < lines.size() && (kept == 0 || chars + lines[kept].size() <= kKeptChars))
+            chars += lines[kept++].size();
+        t += "\\par\\bigskip\\noindent\\begin{minipage}{\\linewidth}\n";
+        if (r.motion == Motion::constraint) {
+            t += "\\paragraph{Row " + std::to_string(i + 1) + ": $" + to_latex(r.variable) +
+                 "$ from constraint " + tex_text(r.constraint) + ".}\n";
+        } else {
+            t += "\\paragraph{Row " + std::to_string(i + 1) + ": $S = " + set_words(r.system) +
+                 "$ for $" + to_latex(r.variable) + "$.}";
+            for (std::size_t k = 0; k < r.fbd.size(); ++k)
+                t += (k ? "; " : " ") + tex_text(r.fbd[k]);
+            t += ".\n\n\\begin{center}\n" + tikz_diagram(sys, ev, placed, planar, r) +
+                 "\\par\\smallskip\\small Figure " + std::to_string(++figure) +
+                 ": free-body diagram of $S = " + set_words(r.system) + "$ for $" +
+                 to_latex(r.variable) + "$.\n\\end{center}\n";
+        }
+        t += "\\begin{eqlines}\n";
+        for (std::size_t k = 0; k < kept; ++k)
+            t += "\\eqline{" + (k ? std::string() : name) + lines[k] + "}\n";
+        t += "\\end{eqlines}\n\\end{minipage}\n";
+        if (kept < lines.size()) {
+            t += "\\begin{eqlines}\n";
+            for (std::size_t k = kept; k < lines.size(); ++k) t += "\\eqline{" + lines[k] + "}\n";
+            t += "\\end{eqlines}\n";
+        }
+    }
+    // the intermediates the equations name, once for all of them
+    const PageIntermediates zs = page_intermediates(sys, c.rows);
+    if (!zs.tex.empty()) {
+        t += "\\subsection*{Intermediates}\nThe equations use\n\\begin{eqlines}\n";
+        for (const std::string& d : zs.tex) t += "\\eqline{" + d + "}\n";
+        t += "\\end{eqlines}\n";
+    }
+    if (c.matrices) {
+        t += "\\subsection*{Mass matrix and forcing}\n$M(q)\\,\\ddot q = f(q, \\dot q, t)$:\n"
+             "\\begin{eqlines}\n";
+        for (const std::string& line : tex_lines(matrices_tex(sys.symbols(), *c.matrices)))
+            t += "\\eqline{" + line + "}\n";
+        t += "\\end{eqlines}\n";
+    }
+    if (!c.results.empty()) {
+        t += "\\subsection*{Results}\n";
+        for (const ReportResult& r : c.results)
+            t += "Line " + std::to_string(r.line) + ":\n\\begin{verbatim}\n" +
+                 verbatim_lines("> " + r.statement + "\n" + r.text) + "\\end{verbatim}\n";
+    }
+    t += "\\end{document}\n";
+    return t;
+}
+
+}  // namespace alembert
