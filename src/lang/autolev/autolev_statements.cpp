@@ -222,9 +222,11 @@ void Translator::assignment(const Statement& st) {
         if (!en || en->kind != Kind::variable)
             fail(lhs.where, "'" + lhs.text + "' is not a variable, so '" + lhs.text + "'' cannot be assigned",
                  "declare it with VARIABLES or MOTIONVARIABLES");
+        if (lhs.primes == 2 || (lhs.primes == 1 && rate_of_.count(en->name)))
+            return differential_equation(st, *en);  // X'' = f, or V' = f with X' = V
         if (lhs.primes != 1)
             fail(lhs.where, "an equation for '" + lhs.text + std::string(static_cast<std::size_t>(lhs.primes), '\'') +
-                                "' is not translated", "kinematical equations give first derivatives: Q1' = U1");
+                                "' is not translated", "give equations for first or second derivatives: X' = V, X'' = f");
         if (aliased_coordinates_.count(en->name)) return;  // Q1' = U1: U1 is written Q1'
         Text r = scalar(st.rhs);
         for (const KinematicEquation& k : kinematics_)
@@ -283,6 +285,67 @@ void Translator::kinematical_assignment(const Statement& st, const Entry& speed)
         if (k.coordinate == q->name)
             fail(st.lhs.where, "a second kinematical equation for '" + r.text + "'", "give one for each coordinate");
     kinematics_.push_back({q->name, q->name + "' - " + speed.name, st.where});
+}
+
+void Translator::differential_equation(const Statement& st, const Entry& v) {
+    auto r = rate_of_.find(v.name);
+    const std::string q = r == rate_of_.end() ? v.name : r->second;
+    for (const auto& [x, where] : odes_)
+        if (x == q)
+            fail(st.lhs.where, "a second equation for " + q + "'' (the first is at line " + std::to_string(where.line) + ")",
+                 "give one equation for each variable");
+    Text f = scalar(st.rhs);
+    if (newtonian_.empty()) {  // a file of equations alone: the particles need a frame to move in
+        newtonian_ = "N";
+        for (int k = 2; find(newtonian_) || object_spelt(newtonian_); ++k) newtonian_ = "N" + std::to_string(k);
+        report(Severity::note, st.where,
+               "the model is given by its differential equations; each variable is the coordinate of a particle "
+               "of unit mass in a Newtonian frame '" + newtonian_ + "'");
+    }
+    if (ode_mass_.empty()) ode_mass_ = dimensioned(Text{"1", false, 5, true}, "m_ode");
+    std::string p = q + "_ode";
+    for (int k = 2; find(p) || object_spelt(p) || labels_.count(p); ++k) p = q + "_ode" + std::to_string(k);
+    labels_.insert({p, 0});
+    ode_particles_.insert(p);
+    frames_lines_.push_back("particle " + p);
+    odes_.emplace_back(q, st.where);
+    const std::string x = newtonian_ + "x>";
+    emit("# " + q + "'' = " + f.s + ": a particle of unit mass moved along " + x + " by that force");
+    emit("translate " + p + " from " + newtonian_ + "_o by " + q + "*" + x);
+    emit("mass " + p + " = " + ode_mass_);
+    Text push{paren(f, 2) + "*" + x, true, 2, f.numeric};
+    force(p, std::nullopt, dimensioned(push, "f_" + p));
+}
+
+void Translator::check_differential_model() {
+    if (odes_.empty()) return;
+    const Location at = odes_.front().second;
+    const std::string first = odes_.front().first;
+    auto refuse = [&](const std::string& why, const std::string& hint) {
+        report(Severity::error, at, "the equation for " + first + "'' is not translated: " + why, hint);
+    };
+    for (const auto& [k, e] : objects_)
+        if ((e.kind == Kind::body || e.kind == Kind::particle) && !ode_particles_.count(e.name))
+            return refuse("the model also has " + std::string(kind_word(e.kind)) + " '" + e.name + "'",
+                          "a file is either a model of bodies and particles (KANE()) or a set of differential "
+                          "equations X'' = ...; give " + first + " a particle and forces instead");
+    if (kane_at_) return refuse("the file also forms Kane's equations (ZERO = FR() + FRSTAR())", "write either one");
+    if (has_gravity_) return refuse("GRAVITY would act on the equations' particles", "leave GRAVITY out");
+    for (const KinematicEquation& k : kinematics_)
+        report(Severity::error, k.where,
+               "the first-order equation " + k.residual + " = 0 is not translated: Alembert simulates equations "
+               "for second derivatives",
+               "write it as a second-order equation, or as " + k.coordinate + "' = V with a variable V and V' = ...");
+    for (const std::string& v : variables_) {
+        if (rate_of_.count(v)) continue;
+        bool has = false;
+        for (const auto& [x, where] : odes_) has = has || x == v;
+        const Entry* en = find(v);
+        if (!has)
+            report(Severity::error, en ? en->where : at,
+                   "the variable '" + v + "' has no equation (" + v + "'' = ...) among the model's differential equations",
+                   "give it one, or declare it SPECIFIED and give its value with INPUT");
+    }
 }
 
 std::string Translator::matrix(const Expr& m) {
@@ -452,6 +515,7 @@ void Translator::expression_statement(const Statement& st) {
         if (e.args.size() > 1)
             fail(e.args[1].where, "GRAVITY on some bodies only is not translated",
                  "Alembert's gravity acts on every body and particle; apply FORCE() to these instead");
+        has_gravity_ = true;
         return emit("gravity " + dimensioned(vec(e.args[0]), "g_" + newtonian_));
     }
     if (f == "FORCE" || f == "TORQUE") {

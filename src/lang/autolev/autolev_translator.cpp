@@ -277,6 +277,7 @@ void Translator::implicit_constants(const Statement& st) {
 void Translator::find_rate_speeds(const ParsedFile& parsed) {
     std::map<std::string, std::string> rate_of;  // speed -> coordinate
     std::set<std::string> coordinates;
+    std::vector<std::string> derivative_equations;  // X of X' = f, f not a variable
     auto variable = [this](const Expr& e, int primes) -> const Entry* {
         if (e.kind != Expr::Kind::name || e.vector || e.primes != primes) return nullptr;
         const Entry* en = find(e.text);
@@ -296,7 +297,10 @@ void Translator::find_rate_speeds(const ParsedFile& parsed) {
         if (variable(st.lhs, 1)) {  // Q' = U
             q = variable(st.lhs, 1);
             u = variable(st.rhs, 0);
-            if (!u) return;  // a kinematical equation of another form
+            if (!u) {  // a kinematical equation of another form, or U' = f for a speed U (below)
+                derivative_equations.push_back(q->name);
+                continue;
+            }
         } else if (variable(st.lhs, 0) && variable(st.rhs, 1)) {  // U = Q'
             u = variable(st.lhs, 0);
             q = variable(st.rhs, 1);
@@ -309,6 +313,10 @@ void Translator::find_rate_speeds(const ParsedFile& parsed) {
     }
     for (const auto& [u, q] : rate_of)
         if (coordinates.count(u) || rate_of.count(q)) return;  // chains such as Q' = U, U' = W
+    // U' = f is a differential equation for Q'' when Q' = U; for anything else, Q' = f is a
+    // kinematical equation of another form, and the speeds stay speeds
+    for (const std::string& x : derivative_equations)
+        if (!rate_of.count(x)) return;
     rate_of_ = std::move(rate_of);
     aliased_coordinates_ = std::move(coordinates);
 }

@@ -245,6 +245,14 @@ private:
     // OMEGA = THETA': a kinematical equation written as an assignment, THETA' - OMEGA = 0
     void kinematical_assignment(const Statement& st, const Entry& speed);
 
+    // X'' = f (or V' = f with X' = V): a model given by its differential equations. Each such
+    // X is the coordinate of a particle of unit mass on the Newtonian x axis pushed by the
+    // force f*Nx>, whose Kane equation f - 1*X'' = 0 is the file's equation itself.
+    void differential_equation(const Statement& st, const Entry& v);
+    // a model given by differential equations has no bodies, particles, gravity or KANE()
+    // of its own, and every variable has its equation
+    void check_differential_model();
+
     std::string matrix(const Expr& m);
 
     static bool is_call(const Expr& e, const char* f) {
@@ -335,6 +343,10 @@ private:
     Location kane_where_{};
     std::string kane_name_{};
     std::vector<KinematicEquation> kinematics_{};
+    std::vector<std::pair<std::string, Location>> odes_{};  // X of X'' = f, in the file's order
+    std::set<std::string> ode_particles_{};
+    std::string ode_mass_{};
+    bool has_gravity_ = false;
     std::vector<std::string> constraints_{}, dependent_{};
     std::optional<Location> constraints_where_{};  // the first DEPENDENT[i] = ...
     std::map<std::string, std::string> initial_{};
