@@ -333,8 +333,8 @@ void Translator::check_differential_model() {
     if (has_gravity_) return refuse("GRAVITY would act on the equations' particles", "leave GRAVITY out");
     for (const KinematicEquation& k : kinematics_)
         report(Severity::error, k.where,
-               "the first-order equation " + k.residual + " = 0 is not translated: Alembert simulates equations "
-               "for second derivatives",
+               "the first-order equation " + k.coordinate + "' = ... is not translated: Alembert simulates "
+               "equations for second derivatives",
                "write it as a second-order equation, or as " + k.coordinate + "' = V with a variable V and V' = ...");
     for (const std::string& v : variables_) {
         if (rate_of_.count(v)) continue;

@@ -31,7 +31,12 @@ AutolevTranslation Translator::run(std::string_view source) {
             pending_.push_back({Severity::error, file_, e.where(), e.what(), e.hint()});
         }
     }
-    // MASS A = MA and INERTIA B, I1, I2, I3 declare their undeclared names as constants
+    // MASS A = MA and INERTIA B, I1, I2, I3 declare their undeclared names as constants,
+    // unless the file assigns them (MA = 2*M)
+    for (const Statement& st : parsed.statements)
+        if (st.kind == Statement::Kind::assignment && st.lhs.kind == Expr::Kind::name && !st.lhs.vector &&
+            st.lhs.primes == 0)
+            assigned_.insert(upper(st.lhs.text));
     for (const Statement& st : parsed.statements)
         if (st.kind == Statement::Kind::list && (st.keyword == "MASS" || st.keyword == "INERTIA")) {
             try {
@@ -261,6 +266,7 @@ void Translator::implicit_constants(const Statement& st) {
     for (const Expr* v : values) {
         if (v->kind != Expr::Kind::name || v->vector || v->primes || find(v->text)) continue;
         std::string key = upper(v->text);
+        if (assigned_.count(key)) continue;  // MA = 2*M: a scalar of the file
         if (key == "T" || key == "PI") continue;
         if (!implicit_group_) {
             constants_.emplace_back();

@@ -330,7 +330,8 @@ private:
     std::vector<std::string> frames_lines_{};
     std::vector<std::vector<ConstantDecl>> constants_{};
     std::map<std::string, std::pair<std::size_t, std::size_t>> constant_index_{};
-    std::optional<std::size_t> implicit_group_{};  // the constants MASS and INERTIA declare
+    std::optional<std::size_t> implicit_group_{};
+    std::set<std::string> assigned_{};  // names the file assigns (upper case): no implicit constants  // the constants MASS and INERTIA declare
     std::vector<std::string> variables_{};
     std::set<std::string> given_{};
     std::map<std::string, std::string> rate_of_{};  // a speed that is a coordinate's rate -> the coordinate

@@ -350,7 +350,16 @@ TEST(AutolevMeaning, PartsThatCannotBeTranslatedAreErrors) {
                          Bad{head + "VARIABLES U\nU = 2*X\n", 4, 1, "is assigned only as a coordinate's rate"},
                          Bad{head + "CONSTANTS' K\n", 3, 1, "CONSTANTS is written with primes"},
                          Bad{head + "VARIABLES U\nX' += U\n", 4, 1, "'+=' on a derivative is not translated"},
-                         Bad{head + "X'' = -X\n", 3, 1, "an equation for 'X''' is not translated"}}) {
+                         Bad{head + "X''' = -X\n", 3, 1, "an equation for 'X'''' is not translated"},
+                         // a differential equation beside bodies, KANE() or a first-order one
+                         Bad{head + "BODIES B\nX'' = -X\n", 4, 1, "the model also has a body 'B'"},
+                         Bad{head + "X'' = -X\nZERO = FR() + FRSTAR()\nKANE()\n", 3, 1,
+                             "the file also forms Kane's equations"},
+                         Bad{head + "GRAVITY(-N2>)\nX'' = -X\n", 4, 1, "GRAVITY would act on"},
+                         Bad{head + "VARIABLES Y'\nX'' = -X\nY' = -Y\n", 5, 1,
+                             "the first-order equation Y' = ... is not translated"},
+                         Bad{head + "VARIABLES Y''\nX'' = -X\n", 3, 11, "the variable 'Y' has no equation"},
+                         Bad{head + "X'' = -X\nX'' = X\n", 4, 1, "a second equation for X''"}}) {
         AutolevTranslation t = translate_autolev(b.source, "bad.al");
         EXPECT_FALSE(t.ok()) << b.source;
         bool found = false;
