@@ -121,7 +121,8 @@ void Translator::assemble() {
     for (const std::string& r : renames_) s += "# renamed: " + r + "\n";
     if (!newtonian_.empty()) s += "newtonian " + newtonian_ + "\n";
     for (const std::string& l : frames_lines_) {
-        if (l.empty() || l[0] != '\x01') {
+        if (l.empty()) continue;  // a frame line emptied by frame_as_newtonian
+        if (l[0] != '\x01') {
             s += l + "\n";
             continue;
         }

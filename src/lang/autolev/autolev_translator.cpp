@@ -46,6 +46,7 @@ AutolevTranslation Translator::run(std::string_view source) {
             }
         }
     find_rate_speeds(parsed);
+    if (newtonian_.empty()) frame_as_newtonian(parsed);
     std::vector<Diagnostic> declaration_problems = std::move(pending_);
     pending_.clear();
     std::size_t next_declaration_problem = 0;
@@ -72,6 +73,42 @@ AutolevTranslation Translator::run(std::string_view source) {
                                                   : a.location.column < b.location.column;
     });
     return std::move(out_);
+}
+
+void Translator::frame_as_newtonian(const ParsedFile& parsed) {
+    // masses, loads and Kane's equations need the Newtonian frame: those files keep the error
+    for (const Statement& st : parsed.statements) {
+        if (st.kind == Statement::Kind::list && (st.keyword == "MASS" || st.keyword == "INERTIA")) return;
+        if (st.kind == Statement::Kind::expression && st.expr.kind == Expr::Kind::call) {
+            std::string f = upper(st.expr.text);
+            if (f == "GRAVITY" || f == "FORCE" || f == "TORQUE" || f == "KANE") return;
+        }
+        if (st.kind == Statement::Kind::assignment && st.lhs.kind == Expr::Kind::name) {
+            std::string k = upper(st.lhs.text);
+            if (k == "ZERO" || k.rfind("FORCE_", 0) == 0 || k.rfind("TORQUE_", 0) == 0) return;
+            const Entry* en = st.lhs.vector ? nullptr : find(st.lhs.text);
+            if (en && en->kind == Kind::variable && (st.lhs.primes == 2 || (st.lhs.primes == 1 && rate_of_.count(en->name))))
+                return;  // a differential equation: the model has a frame of its own
+        }
+    }
+    for (std::string& l : frames_lines_) {
+        if (l.rfind("frame ", 0) != 0) continue;
+        const std::string rest = l.substr(6);
+        const std::size_t comma = rest.find(", ");
+        const std::string name = rest.substr(0, comma);
+        const Entry* spelt = object_spelt(name);
+        if (!spelt) return;
+        Entry& e = objects_.at(spelt->key);
+        e.kind = Kind::newtonian;
+        newtonian_ = e.name;
+        implicit_points_[e.key + "O"] = e.name + "_o";
+        l = comma == std::string::npos ? "" : "frame " + rest.substr(comma + 2);
+        report(Severity::note, e.where,
+               "the file declares no NEWTONIAN frame and forms no equations of motion; its first frame '" + e.name +
+                   "' is the script's Newtonian frame (positions, velocities and accelerations name their frames, "
+                   "so they do not depend on which frame that is)");
+        return;
+    }
 }
 
 std::string Translator::alembert_spelling(const std::string& name, Location where) {

@@ -128,11 +128,17 @@ private:
         return nullptr;
     }
 
-    // the expanded names of a declarator: Q{3} -> Q1, Q2, Q3
+    // the expanded names of a declarator: Q{3} -> Q1, Q2, Q3; C{2,2} -> C11, C12, C21, C22
     static std::vector<std::string> expand(const Declarator& d) {
         if (d.last < d.first) return {d.name};
         std::vector<std::string> v;
-        for (int i = d.first; i <= d.last; ++i) v.push_back(d.name + std::to_string(i));
+        for (int i = d.first; i <= d.last; ++i) {
+            if (d.last2 < d.first2) {
+                v.push_back(d.name + std::to_string(i));
+                continue;
+            }
+            for (int j = d.first2; j <= d.last2; ++j) v.push_back(d.name + std::to_string(i) + std::to_string(j));
+        }
         return v;
     }
 
@@ -147,6 +153,10 @@ private:
     // Alembert's simulate and codegen take them. Only when every kinematical equation has this
     // form and the model has no constraints; otherwise the speeds stay speeds.
     void find_rate_speeds(const ParsedFile& parsed);
+
+    // A file of kinematics alone (no NEWTONIAN, no masses, loads or equations of motion): its
+    // first frame becomes the script's Newtonian frame, which Alembert needs first.
+    void frame_as_newtonian(const ParsedFile& parsed);
 
     static std::string join(const std::vector<std::string>& v, const char* sep = ", ") {
         std::string s;

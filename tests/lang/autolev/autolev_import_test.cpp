@@ -303,7 +303,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"kinematics_of_constant", kHead + "L' = U\n", 6, 1, "'L' is not a variable"},
         BadInput{"point_not_body", kHead + "V2PTS(N, A, P, A)\n", 6, 16, "expected a point"},
         BadInput{"simprot_axis", kHead + "SIMPROT(N, A, 4, Q)\n", 6, 15, "SIMPROT about this axis"},
-        BadInput{"two_dimensional_index", "NEWTONIAN N\nCONSTANTS I{3,3}\n", 2, 14, "two-dimensional"},
+        BadInput{"three_dimensional_index", "NEWTONIAN N\nCONSTANTS I{3,3,3}\n", 2, 16, "more than two dimensions"},
         BadInput{"too_many_indexed", "NEWTONIAN N\nCONSTANTS I{99999}\n", 2, 13, "more than 1000"},
         BadInput{"non_ascii", kHead + "X = 2\xC2\xB7L\n", 6, 6, "unexpected character"},
         BadInput{"nesting", kHead + "X = " + std::string(80, '(') + "L" + std::string(80, ')') + "\n", 6, 69,
