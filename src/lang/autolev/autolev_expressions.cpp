@@ -175,12 +175,91 @@ Text Translator::call_text(const Expr& e, bool& numeric) {
         if (e.args.size() == 2) fail(e.args[1].where, "DT of a scalar takes no frame", "write DT(s)");
         return {"dt(" + v.s + ")", false, 5};
     }
+    if (f == "EXPAND") {
+        if (e.args.size() != 1)
+            fail(e.where, "EXPAND() with a range of terms is not translated",
+                 "Alembert's expand() keeps every term: write EXPAND(e)");
+        Text v = expr(e.args[0]);
+        numeric = v.numeric;
+        return {"expand(" + v.s + ")", v.vector, 5};
+    }
+    if (f == "EXPLICIT" || f == "ARRANGE") {
+        // the same value, printed another way: EXPLICIT writes intermediates out, ARRANGE
+        // collects terms; Alembert prints its own way
+        if (f == "EXPLICIT" ? e.args.size() != 1 : e.args.empty())
+            fail(e.where, e.text + "() takes " + (f == "EXPLICIT" ? "one argument" : "the expression first"));
+        Text v = expr(e.args[0]);
+        numeric = v.numeric;
+        return v;
+    }
+    if (f == "D") {
+        // the partial derivative by a constant, variable (or one of its derivatives) or
+        // specified quantity
+        args(2, 2);
+        Text v = expr(e.args[0]);
+        if (v.vector)
+            fail(e.args[0].where, "D() of a vector is not translated",
+                 "take its measures first: D(DOT(v>, N1>), Q1)");
+        const Expr& x = e.args[1];
+        const Entry* en = x.kind == Expr::Kind::name && !x.vector ? find(x.text) : nullptr;
+        if (x.kind == Expr::Kind::name && !x.vector && upper(x.text) == "T" && !en)
+            fail(x.where, "D() by time is not translated", "write DT(e) for the time derivative");
+        if (!en || (en->kind != Kind::constant && en->kind != Kind::variable && en->kind != Kind::specified))
+            fail(x.where, "D() differentiates by a constant, variable or specified quantity",
+                 "write D(e, Q1) or D(e, U1)");
+        // a speed written as a rate (U1 is Q1') is differentiated by that rate, as it is the same
+        numeric = false;
+        return {"diff(" + v.s + ", " + scalar(x).s + ")", false, 5};
+    }
+    if (f == "RHS") {
+        // the right side of X = ...: the value of X itself
+        args(1, 1);
+        const Expr& x = e.args[0];
+        const Entry* en = x.kind == Expr::Kind::name && x.primes == 0 ? find(x.text) : nullptr;
+        if (!en || (en->kind != Kind::scalar && en->kind != Kind::vector))
+            fail(x.where, "RHS() is translated for a name the file assigns (X = ..., V> = ...)",
+                 "RHS of an equation other than an assignment has no counterpart; write the expression");
+        Text v = expr(x);
+        numeric = v.numeric;
+        return v;
+    }
+    static const std::map<std::string, std::string> missing{
+        {"COEF", "Alembert has no coefficient extraction; diff(e, x) is the coefficient of a term linear in x "
+                 "(D(e, X) in Autolev)"},
+        {"FACTOR", "Alembert's simplify() takes common factors out, but not a factor chosen by name"},
+        {"EVALUATE", "Alembert evaluates with the statement 'evaluate e at x = v' (printed), not inside an "
+                     "expression"},
+        {"REPLACE", "Alembert has no substitution inside an expression; 'evaluate e at x = v' prints the value"},
+        {"TAYLOR", "Alembert has no series expansion"},
+        {"SOLVE", "Alembert solves equations with the statement 'solve E for x' (printed), not as values"},
+        {"POLYNOMIAL", "Alembert has no polynomials as values"},
+        {"ROOTS", "Alembert has no polynomial roots"},
+        {"EXCLUDE", "Alembert keeps every term"},
+        {"INCLUDE", "Alembert keeps every term"},
+        {"FLOOR", "Alembert has no floor()"},
+        {"TRANSPOSE", "the translation has matrices only as direction cosine matrices (N_A = [...])"},
+        {"EIG", "eigenvalues are printed by Alembert's 'linearize', not computed inside an expression"},
+        {"DIAGMAT", "the translation has matrices only as direction cosine matrices (N_A = [...])"},
+        {"INV", "the translation has matrices only as direction cosine matrices (N_A = [...])"},
+        {"DET", "the translation has matrices only as direction cosine matrices (N_A = [...])"},
+        {"ELEMENT", "the translation has matrices only as direction cosine matrices (N_A = [...])"},
+        {"COLS", "the translation has matrices only as direction cosine matrices (N_A = [...])"},
+        {"ROWS", "the translation has matrices only as direction cosine matrices (N_A = [...])"},
+        {"MATRIX", "the translation has matrices only as direction cosine matrices (N_A = [...])"},
+        {"VECTOR", "write the vector from unit vectors: X*N1> + Y*N2>"},
+        {"CM", "Alembert has no point for the mass centre of a set of bodies"},
+        {"MASS", "Alembert's mass(S) takes a system declared with 'system S = A, B'"},
+        {"ANGVEL", "write the angular velocity's name: W_B_N>"},
+        {"NICHECK", "the translation has no nonholonomic checks"}};
+    if (auto it = missing.find(f); it != missing.end())
+        fail(e.where, "the Autolev function " + f + "() is not translated: " + it->second,
+             "docs/autolev.md lists each Autolev function with its translation or the reason it has none");
     if (f == "FR" || f == "FRSTAR")
         fail(e.where, e.text + "() is translated only in ZERO = FR() + FRSTAR()",
              "write ZERO = FR() + FRSTAR() and then KANE()");
     fail(e.where, "the Autolev function '" + e.text + "' is not translated",
          "the translator knows SIN, COS, TAN, ASIN, ACOS, ATAN, SQRT, EXP, LOG, ABS, DOT, CROSS, MAG, "
-         "UNITVEC, EXPRESS and DT");
+         "UNITVEC, EXPRESS, DT, D, EXPAND, EXPLICIT, ARRANGE and RHS");
 }
 
 std::string Translator::scalar_name(const Expr& e) {

@@ -277,6 +277,12 @@ public:
                         e.args.push_back(expression());
                     }
                 }
+                // TAYLOR(e, 0:3, Q = 0), EVALUATE(e, Q = 1): ranges and substitutions, which
+                // no translated function takes
+                if (is_symbol(":") || is_symbol("="))
+                    fail(t, "the arguments of " + upper(t.text) + "() hold '" + peek().text +
+                                "' (a range or a substitution), which no translated function takes",
+                         "docs/autolev.md lists each Autolev function with its translation or the reason it has none");
                 expect(")");
                 return e;
             }

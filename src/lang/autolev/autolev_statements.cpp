@@ -154,6 +154,19 @@ std::string Translator::unit(const std::string& words, Location where) {
 void Translator::command(const Statement& st) {
     const std::string& w = st.keyword;
     if (w == "CODE") return code(st);
+    if (w == "DEGREES" || w == "DEGREE") {
+        std::string on = upper(st.text.substr(st.text.find_first_not_of(" \t") == std::string::npos
+                                                   ? st.text.size() : st.text.find_first_not_of(" \t")));
+        while (!on.empty() && (on.back() == ' ' || on.back() == '\t')) on.pop_back();
+        if (on == "OFF") {  // angles without a unit are radians: as the translation reads them
+            report(Severity::note, st.where,
+                   "DEGREES OFF: angles without a unit are radians, as the script reads them; nothing to translate");
+            return;
+        }
+        fail(st.where, "DEGREES " + (on.empty() ? std::string("") : on + " ") +
+                           "is not translated: the script reads angles without a unit as radians",
+             "give each angle its unit (INPUT Q = 30 DEG) and remove DEGREES ON");
+    }
     static const char* const ignored[] = {"PAUSE", "SAVE", "AUTOZ", "AUTORHS", "AUTOEPS", "AUTOLEV", "OVERWRITE",
                                           "UNITSYSTEM", "UNITS", "DISPLAY", "ANIMATE", "ENCODE", "EXPLICIT",
                                           "PRINT", "RUN", "SHOW", "CLEAR", "DIGITS", "WRITE"};

@@ -233,6 +233,22 @@ std::vector<Case> cases() {
                      return Vec{(0.4 * std::sin(3 * t) - kG * 0.3 * std::sin(q[0])) / (0.36 / 3)};
                  },
                  {0}, {0}});
+    // X'' = -K X with the symmetric K = [5, -2; -2, 3]: V = (5 X1^2 - 4 X1 X2 + 3 X2^2) / 2
+    c.push_back({"indexed_2d.al", {"X1", "X2"},
+                 [](double, const Vec& q, const Vec&) {
+                     return Vec{-5 * q[0] + 2 * q[1], 2 * q[0] - 3 * q[1]};
+                 },
+                 {0.1, 0}, {0, 0.2},
+                 [](const Vec& q, const Vec& qd) {
+                     return (qd[0] * qd[0] + qd[1] * qd[1]) / 2 + (5 * q[0] * q[0] - 4 * q[0] * q[1] + 3 * q[1] * q[1]) / 2;
+                 }});
+    // V = K X^2/2 + C X^4/4, the force -dV/dX: M X'' = -K X - C X^3, M = 0.5, K = 2, C = 8
+    c.push_back({"potential_force.al", {"X"},
+                 [](double, const Vec& q, const Vec&) { return Vec{(-2 * q[0] - 8 * q[0] * q[0] * q[0]) / 0.5}; },
+                 {0.4}, {0},
+                 [](const Vec& q, const Vec& qd) {
+                     return 0.25 * qd[0] * qd[0] + q[0] * q[0] + 2 * q[0] * q[0] * q[0] * q[0];
+                 }});
     return c;
 }
 
@@ -371,7 +387,7 @@ INSTANTIATE_TEST_SUITE_P(Files, AutolevAcceptance, ::testing::ValuesIn(cases()),
 // Every file of the folder has a case (the kinematics file its own test below), and there are
 // at least twenty.
 TEST(AutolevAcceptanceFiles, EveryFileIsChecked) {
-    std::vector<std::string> checked{"vector_algebra.al"};
+    std::vector<std::string> checked{"vector_algebra.al", "no_newtonian_kinematics.al", "algebra_functions.al"};
     for (const Case& c : cases()) checked.push_back(c.file);
     int files = 0;
     for (const auto& e : std::filesystem::directory_iterator(kDir)) {
@@ -411,6 +427,58 @@ TEST(AutolevAcceptanceFiles, KinematicsAgreeWithTheHandDerivation) {
         Vec expected{x, y, d, vx, x * vy - y * vx, (l1 + l2 * std::cos(q2)) / d};
         for (std::size_t i = 0; i < 6; ++i)
             EXPECT_NEAR(v[i], expected[i], 1e-12 * std::max(1.0, std::abs(expected[i]))) << i << at << "\n" << r.out;
+    }
+}
+
+// The values `evaluate` prints for each name of `names` at `at`, in order.
+Vec evaluate(const AutolevTranslation& t, const std::vector<std::string>& names, const std::string& at) {
+    std::string extra;
+    for (const std::string& n : names) extra += "evaluate " + n + " at " + at + "\n";
+    ScriptRun r = run(t.script, extra);
+    EXPECT_EQ(r.status, RunStatus::ok) << r.err << t.script;
+    if (r.values.size() < names.size()) {
+        ADD_FAILURE() << r.out;
+        return Vec(names.size(), NAN);
+    }
+    return Vec(r.values.end() - static_cast<std::ptrdiff_t>(names.size()), r.values.end());
+}
+
+// A file without NEWTONIAN: the slider at R B1> on the arm B turning by Q in A has
+//   v = R' B1> + R Q' B2>,  a = (R'' - R Q'^2) B1> + (2 R' Q' + R Q'') B2>,
+// and a.A1> = (R'' - R Q'^2) cos Q - (2 R' Q' + R Q'') sin Q.
+TEST(AutolevAcceptanceFiles, KinematicsWithoutNewtonianAgreeWithTheHandDerivation) {
+    AutolevTranslation t = import("no_newtonian_kinematics.al");
+    ASSERT_TRUE(t.ok());
+    std::mt19937 rng(2027);
+    auto uniform = [&](double a, double b) { return std::uniform_real_distribution<double>(a, b)(rng); };
+    for (int trial = 0; trial < 3; ++trial) {
+        double q = uniform(-3, 3), r = uniform(-2, 2), qd = uniform(-3, 3), rd = uniform(-3, 3);
+        double qdd = uniform(-5, 5), rdd = uniform(-5, 5);
+        std::string at = "Q = " + num(q) + ", R = " + num(r) + ", Q' = " + num(qd) + ", R' = " + num(rd) +
+                         ", Q'' = " + num(qdd) + ", R'' = " + num(rdd);
+        Vec v = evaluate(t, {"VR", "VT", "AR", "AT", "AX"}, at);
+        double ar = rdd - r * qd * qd, at_ = 2 * rd * qd + r * qdd;
+        Vec expected{rd, r * qd, ar, at_, ar * std::cos(q) - at_ * std::sin(q)};
+        for (std::size_t i = 0; i < expected.size(); ++i)
+            EXPECT_NEAR(v[i], expected[i], 1e-12 * std::max(1.0, std::abs(expected[i]))) << i << " at " << at;
+    }
+}
+
+// Algebra: E1 = (A + B Q)^2 expanded, E2 = E1 + (A + B) Q, E3 = dE1/dQ + d(A U^2)/dU =
+// 2 B (A + B Q) + 2 A U (U is Q'), E4 = E2 sin Q.
+TEST(AutolevAcceptanceFiles, AlgebraFunctionsAgreeWithTheHandResults) {
+    AutolevTranslation t = import("algebra_functions.al");
+    ASSERT_TRUE(t.ok());
+    std::mt19937 rng(2028);
+    auto uniform = [&](double a, double b) { return std::uniform_real_distribution<double>(a, b)(rng); };
+    for (int trial = 0; trial < 3; ++trial) {
+        double a = uniform(-2, 2), b = uniform(-2, 2), q = uniform(-3, 3), u = uniform(-3, 3);
+        std::string at = "A = " + num(a) + ", B = " + num(b) + ", Q = " + num(q) + ", Q' = " + num(u);
+        Vec v = evaluate(t, {"E1", "E2", "E3", "E4"}, at);
+        double e1 = (a + b * q) * (a + b * q), e2 = e1 + (a + b) * q;
+        Vec expected{e1, e2, 2 * b * (a + b * q) + 2 * a * u, e2 * std::sin(q)};
+        for (std::size_t i = 0; i < expected.size(); ++i)
+            EXPECT_NEAR(v[i], expected[i], 1e-12 * std::max(1.0, std::abs(expected[i]))) << i << " at " << at;
     }
 }
 
