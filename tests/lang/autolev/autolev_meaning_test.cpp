@@ -652,6 +652,20 @@ INPUT M = 2, K = 50, C = 3
     EXPECT_TRUE(contains(twice.diagnostics[0].message, "assigned a second time")) << messages(twice);
 }
 
+// A model given by its differential equation generates code like any other: CODE DYNAMICS()
+// becomes codegen, which writes the C files.
+TEST(AutolevMeaning, DifferentialEquationsGenerateCode) {
+    AutolevTranslation t = translate_autolev("CONSTANTS K\nVARIABLES X''\nX'' = -K*X\nINPUT K = 4, X = 1\n"
+                                             "CODE DYNAMICS() oscillator_ode.c\n",
+                                             "ode.al");
+    ASSERT_TRUE(t.ok()) << messages(t);
+    EXPECT_TRUE(contains(t.script, "codegen c name oscillator_ode\n")) << t.script;
+    ScriptRun r = run(t.script);
+    ASSERT_EQ(r.status, RunStatus::ok) << r.err << t.script;
+    std::ifstream c(::testing::TempDir() + "/oscillator_ode.c");
+    EXPECT_TRUE(c.good()) << r.out;
+}
+
 TEST(AutolevMeaning, CodeDynamicsArgumentsAreReported) {
     AutolevTranslation t = translate_autolev(std::string(kSpecifiedSpring) + "CODE DYNAMICS(X) spring.c\n", "code.al");
     ASSERT_TRUE(t.ok()) << messages(t);
