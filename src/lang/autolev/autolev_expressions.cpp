@@ -40,6 +40,7 @@ Text Translator::expr(const Expr& e) {
         }
         case Expr::Kind::call: return call(e);
         case Expr::Kind::index:
+            if (const Entry* m = find(e.text); m && m->kind == Kind::matrix) return matrix_element(e, *m);
             fail(e.where, "the array element '" + e.text + "[...]' is not translated",
                  "Alembert arrays hold equations; name the value as a scalar instead");
         case Expr::Kind::unary: {
@@ -50,8 +51,8 @@ Text Translator::expr(const Expr& e) {
         case Expr::Kind::binary: return binary(e);
         case Expr::Kind::matrix:
         case Expr::Kind::row:
-            fail(e.where, "a matrix is translated only as a direction cosine matrix (N_A = [...])",
-                 "write the matrix as N_A = [...] or with SIMPROT");
+            fail(e.where, "a matrix inside an expression is not translated",
+                 "assign it to a name (M = [...]) and use its elements M[i, j]");
     }
     fail(e.where, "an expression that is not translated");
 }
@@ -223,6 +224,8 @@ Text Translator::call_text(const Expr& e, bool& numeric) {
         numeric = v.numeric;
         return v;
     }
+    static const std::string kMatrices =
+        "the script uses matrices through their elements (M[i, j]); matrix operations have no counterpart";
     static const std::map<std::string, std::string> missing{
         {"COEF", "Alembert has no coefficient extraction; diff(e, x) is the coefficient of a term linear in x "
                  "(D(e, X) in Autolev)"},
@@ -237,15 +240,15 @@ Text Translator::call_text(const Expr& e, bool& numeric) {
         {"EXCLUDE", "Alembert keeps every term"},
         {"INCLUDE", "Alembert keeps every term"},
         {"FLOOR", "Alembert has no floor()"},
-        {"TRANSPOSE", "the translation has matrices only as direction cosine matrices (N_A = [...])"},
+        {"TRANSPOSE", kMatrices},
         {"EIG", "eigenvalues are printed by Alembert's 'linearize', not computed inside an expression"},
-        {"DIAGMAT", "the translation has matrices only as direction cosine matrices (N_A = [...])"},
-        {"INV", "the translation has matrices only as direction cosine matrices (N_A = [...])"},
-        {"DET", "the translation has matrices only as direction cosine matrices (N_A = [...])"},
-        {"ELEMENT", "the translation has matrices only as direction cosine matrices (N_A = [...])"},
-        {"COLS", "the translation has matrices only as direction cosine matrices (N_A = [...])"},
-        {"ROWS", "the translation has matrices only as direction cosine matrices (N_A = [...])"},
-        {"MATRIX", "the translation has matrices only as direction cosine matrices (N_A = [...])"},
+        {"DIAGMAT", kMatrices},
+        {"INV", kMatrices},
+        {"DET", kMatrices},
+        {"ELEMENT", kMatrices},
+        {"COLS", kMatrices},
+        {"ROWS", kMatrices},
+        {"MATRIX", kMatrices},
         {"VECTOR", "write the vector from unit vectors: X*N1> + Y*N2>"},
         {"CM", "Alembert has no point for the mass centre of a set of bodies"},
         {"MASS", "Alembert's mass(S) takes a system declared with 'system S = A, B'"},
@@ -260,6 +263,26 @@ Text Translator::call_text(const Expr& e, bool& numeric) {
     fail(e.where, "the Autolev function '" + e.text + "' is not translated",
          "the translator knows SIN, COS, TAN, ASIN, ACOS, ATAN, SQRT, EXP, LOG, ABS, DOT, CROSS, MAG, "
          "UNITVEC, EXPRESS, DT, D, EXPAND, EXPLICIT, ARRANGE and RHS");
+}
+
+Text Translator::matrix_element(const Expr& e, const Entry& m) {
+    std::vector<int> at;
+    for (const Expr& a : e.args) {
+        if (a.kind != Expr::Kind::number || a.text.find_first_not_of("0123456789") != std::string::npos ||
+            a.text.size() > 6)
+            fail(a.where, "the index of matrix '" + e.text + "' must be a whole number",
+                 "write " + e.text + "[1, 2]");
+        at.push_back(std::stoi(a.text));
+    }
+    if (at.size() == 1 && (m.rows == 1 || m.cols == 1)) at = m.rows == 1 ? std::vector<int>{1, at[0]} : std::vector<int>{at[0], 1};
+    if (at.size() != 2)
+        fail(e.where, "matrix '" + e.text + "' is " + std::to_string(m.rows) + " by " + std::to_string(m.cols) +
+                          ": give its row and column", "write " + e.text + "[i, j]");
+    if (at[0] < 1 || at[0] > m.rows || at[1] < 1 || at[1] > m.cols)
+        fail(e.where, "[" + std::to_string(at[0]) + ", " + std::to_string(at[1]) + "] is outside matrix '" + e.text +
+                          "', which is " + std::to_string(m.rows) + " by " + std::to_string(m.cols),
+             "rows run from 1 to " + std::to_string(m.rows) + " and columns from 1 to " + std::to_string(m.cols));
+    return {m.name + "[" + std::to_string(at[0]) + ", " + std::to_string(at[1]) + "]", false, 5, false};
 }
 
 std::string Translator::scalar_name(const Expr& e) {
@@ -302,6 +325,9 @@ std::string Translator::scalar_name(const Expr& e) {
             }
             return en->name + primes;
         }
+        case Kind::matrix:
+            fail(e.where, "the matrix '" + e.text + "' is translated only through its elements",
+                 "use " + e.text + "[i, j]; matrix arithmetic has no counterpart in the script");
         default:
             fail(e.where, "'" + e.text + "' is " + kind_word(en->kind) + ", not a value",
                  "a vector needs '>' (A1>, V_P_N>); points and frames are arguments of V2PTS, SIMPROT, ...");

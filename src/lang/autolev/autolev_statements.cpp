@@ -257,6 +257,12 @@ void Translator::assignment(const Statement& st) {
         return;
     }
     if (en) {
+        if (en->kind == Kind::matrix) {
+            if (st.rhs.kind != Expr::Kind::matrix)
+                fail(st.rhs.where, "'" + lhs.text + "' is a matrix and is assigned only a matrix [...]",
+                     "give the expression another name");
+            return matrix_assignment(st);
+        }
         if (en->kind == Kind::variable) return kinematical_assignment(st, *en);
         if (en->kind == Kind::scalar) {
             Text r = scalar(st.rhs);
@@ -273,8 +279,7 @@ void Translator::assignment(const Statement& st) {
     if (st.rhs.kind == Expr::Kind::matrix) {
         auto fr = [this](std::string_view n) { return frame_of(n); };
         auto s = split(std::string_view(lhs.text), fr, fr);
-        if (!s) fail(lhs.where, "'" + lhs.text + "' is not a direction cosine matrix name",
-                     "write N_A = [...] with two declared frames, or use SIMPROT");
+        if (!s) return matrix_assignment(st);
         parent_[s->second] = s->first;
         return emit("rotate " + s->second + " from " + s->first + " dcm " + matrix(st.rhs));
     }
@@ -373,6 +378,27 @@ std::string Translator::matrix(const Expr& m) {
     return "[" + join(rows, "; ") + "]";
 }
 
+void Translator::matrix_assignment(const Statement& st) {
+    const Expr& m = st.rhs;
+    std::vector<std::string> rows;
+    const std::size_t cols = m.args.empty() ? 0 : m.args.front().args.size();
+    for (const Expr& row : m.args) {
+        if (row.args.size() != cols)
+            fail(row.where, "the rows of matrix '" + st.lhs.text + "' have different lengths",
+                 "give every row " + std::to_string(cols) + " elements");
+        std::vector<std::string> cells;
+        for (const Expr& c : row.args) cells.push_back(scalar(c).s);
+        rows.push_back(join(cells));
+    }
+    if (rows.empty() || cols == 0) fail(m.where, "an empty matrix", "give its elements: [a, b; c, d]");
+    const Entry* old = find(st.lhs.text);
+    const Entry& e = old ? *old : add(st.lhs.text, Kind::matrix, st.lhs.where);
+    Entry& stored = names_[e.key];
+    stored.rows = static_cast<int>(rows.size());
+    stored.cols = static_cast<int>(cols);
+    emit(e.name + " = [" + join(rows, "; ") + "]");
+}
+
 void Translator::array_assignment(const Statement& st) {
     const Expr& lhs = st.lhs;
     std::string key = upper(lhs.text);
@@ -386,6 +412,9 @@ void Translator::array_assignment(const Statement& st) {
     if (key == "AUXILIARY")
         fail(lhs.where, "auxiliary speeds (AUXILIARY[...]) are not translated",
              "Alembert's kane statement takes them as 'auxiliary u...'; add them by hand");
+    if (const Entry* en = find(lhs.text); en && en->kind == Kind::matrix)
+        fail(lhs.where, "an element of matrix '" + lhs.text + "' is not assigned alone",
+             "assign the whole matrix: " + lhs.text + " = [...]");
     fail(lhs.where, "the array '" + lhs.text + "[...]' is not translated",
          "name each element as a scalar of its own");
 }

@@ -21,7 +21,7 @@
 namespace alembert::lang::autolev {
 
 // What an Autolev name stands for.
-enum class Kind { newtonian, frame, body, particle, point, constant, variable, specified, scalar, vector };
+enum class Kind { newtonian, frame, body, particle, point, constant, variable, specified, scalar, vector, matrix };
 
 inline const char* kind_word(Kind k) {
     switch (k) {
@@ -35,6 +35,7 @@ inline const char* kind_word(Kind k) {
         case Kind::specified: return "a specified quantity";
         case Kind::scalar: return "a scalar";
         case Kind::vector: return "a vector";
+        case Kind::matrix: return "a matrix";
     }
     return "a name";
 }
@@ -45,6 +46,7 @@ struct Entry {
     Location where{};
     bool numeric = false;  // a scalar or vector the file assigned from numbers alone
     std::string key{};     // the Autolev name in upper case
+    int rows = 0, cols = 0;  // a matrix's size
 };
 
 // Frames, bodies, particles and points are named apart from values (constants, variables,
@@ -264,6 +266,11 @@ private:
     void check_differential_model();
 
     std::string matrix(const Expr& m);
+
+    // M = [a, b; c, d] with M no direction cosine matrix: a matrix value, used by its
+    // elements M[i, j] (M[i] of a row or a column)
+    void matrix_assignment(const Statement& st);
+    Text matrix_element(const Expr& e, const Entry& m);
 
     static bool is_call(const Expr& e, const char* f) {
         return e.kind == Expr::Kind::call && e.args.empty() && upper(e.text) == f;

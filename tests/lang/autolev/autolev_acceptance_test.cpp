@@ -387,7 +387,8 @@ INSTANTIATE_TEST_SUITE_P(Files, AutolevAcceptance, ::testing::ValuesIn(cases()),
 // Every file of the folder has a case (the kinematics file its own test below), and there are
 // at least twenty.
 TEST(AutolevAcceptanceFiles, EveryFileIsChecked) {
-    std::vector<std::string> checked{"vector_algebra.al", "no_newtonian_kinematics.al", "algebra_functions.al"};
+    std::vector<std::string> checked{"vector_algebra.al", "no_newtonian_kinematics.al", "algebra_functions.al",
+                                     "matrix_values.al"};
     for (const Case& c : cases()) checked.push_back(c.file);
     int files = 0;
     for (const auto& e : std::filesystem::directory_iterator(kDir)) {
@@ -477,6 +478,23 @@ TEST(AutolevAcceptanceFiles, AlgebraFunctionsAgreeWithTheHandResults) {
         Vec v = evaluate(t, {"E1", "E2", "E3", "E4"}, at);
         double e1 = (a + b * q) * (a + b * q), e2 = e1 + (a + b) * q;
         Vec expected{e1, e2, 2 * b * (a + b * q) + 2 * a * u, e2 * std::sin(q)};
+        for (std::size_t i = 0; i < expected.size(); ++i)
+            EXPECT_NEAR(v[i], expected[i], 1e-12 * std::max(1.0, std::abs(expected[i]))) << i << " at " << at;
+    }
+}
+
+// Matrices as values: M = [cos Q, -sin Q; sin Q, cos Q] times the column [A; B] by elements,
+// X = A cos Q - B sin Q, Y = A sin Q + B cos Q, and R = X^2 + Y^2 = A^2 + B^2.
+TEST(AutolevAcceptanceFiles, MatrixElementsAgreeWithTheHandResults) {
+    AutolevTranslation t = import("matrix_values.al");
+    ASSERT_TRUE(t.ok());
+    std::mt19937 rng(2029);
+    auto uniform = [&](double a, double b) { return std::uniform_real_distribution<double>(a, b)(rng); };
+    for (int trial = 0; trial < 3; ++trial) {
+        double a = uniform(-2, 2), b = uniform(-2, 2), q = uniform(-3, 3);
+        std::string at = "A = " + num(a) + ", B = " + num(b) + ", Q = " + num(q);
+        Vec v = evaluate(t, {"X", "Y", "R"}, at);
+        Vec expected{a * std::cos(q) - b * std::sin(q), a * std::sin(q) + b * std::cos(q), a * a + b * b};
         for (std::size_t i = 0; i < expected.size(); ++i)
             EXPECT_NEAR(v[i], expected[i], 1e-12 * std::max(1.0, std::abs(expected[i]))) << i << " at " << at;
     }

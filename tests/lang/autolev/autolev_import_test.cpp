@@ -319,6 +319,12 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"d_by_number", kHead + "X = D(L*Q, 2)\n", 6, 12, "D() differentiates by a constant"},
         BadInput{"rhs_of_variable", kHead + "X = RHS(Q)\n", 6, 9, "RHS() is translated for a name the file assigns"},
         BadInput{"degrees_on", "DEGREES ON\n" + kHead, 1, 1, "DEGREES ON is not translated"},
+        // matrices: values used by their elements
+        BadInput{"matrix_ragged", kHead + "M = [1, 2; 3]\n", 6, 12, "the rows of matrix 'M' have different lengths"},
+        BadInput{"matrix_arithmetic", kHead + "M = [1, 2]\nX = M + 1\n", 7, 5, "translated only through its elements"},
+        BadInput{"matrix_outside", kHead + "M = [1, 2]\nX = M[3]\n", 7, 5, "[1, 3] is outside matrix 'M'"},
+        BadInput{"matrix_element_assigned", kHead + "M = [1, 2]\nM[1] = 2\n", 7, 1, "an element of matrix 'M'"},
+        BadInput{"matrix_in_expression", kHead + "X = 2*[1, 2]\n", 6, 7, "a matrix inside an expression"},
         BadInput{"non_ascii", kHead + "X = 2\xC2\xB7L\n", 6, 6, "unexpected character"},
         BadInput{"nesting", kHead + "X = " + std::string(80, '(') + "L" + std::string(80, ')') + "\n", 6, 69,
                  "nested more than 64 levels"},
