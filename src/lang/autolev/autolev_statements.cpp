@@ -154,10 +154,19 @@ std::string Translator::unit(const std::string& words, Location where) {
 void Translator::command(const Statement& st) {
     const std::string& w = st.keyword;
     if (w == "CODE") return code(st);
+    std::string on = upper(st.text.substr(st.text.find_first_not_of(" \t") == std::string::npos
+                                               ? st.text.size() : st.text.find_first_not_of(" \t")));
+    while (!on.empty() && (on.back() == ' ' || on.back() == '\t')) on.pop_back();
+    if (w == "COMPLEX") {
+        if (on == "OFF") {
+            report(Severity::note, st.where, "COMPLEX OFF: the script's numbers are real; nothing to translate");
+            return;
+        }
+        fail(st.where, "COMPLEX " + (on.empty() ? std::string("") : on + " ") +
+                           "is not translated: Alembert has no complex numbers",
+             "remove it; the script's constants and variables are real");
+    }
     if (w == "DEGREES" || w == "DEGREE") {
-        std::string on = upper(st.text.substr(st.text.find_first_not_of(" \t") == std::string::npos
-                                                   ? st.text.size() : st.text.find_first_not_of(" \t")));
-        while (!on.empty() && (on.back() == ' ' || on.back() == '\t')) on.pop_back();
         if (on == "OFF") {  // angles without a unit are radians: as the translation reads them
             report(Severity::note, st.where,
                    "DEGREES OFF: angles without a unit are radians, as the script reads them; nothing to translate");

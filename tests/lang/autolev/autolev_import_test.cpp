@@ -319,6 +319,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"d_by_number", kHead + "X = D(L*Q, 2)\n", 6, 12, "D() differentiates by a constant"},
         BadInput{"rhs_of_variable", kHead + "X = RHS(Q)\n", 6, 9, "RHS() is translated for a name the file assigns"},
         BadInput{"degrees_on", "DEGREES ON\n" + kHead, 1, 1, "DEGREES ON is not translated"},
+        BadInput{"complex_on", kHead + "COMPLEX ON\n", 6, 1, "COMPLEX ON is not translated: Alembert has no complex"},
         // matrices: values used by their elements
         BadInput{"matrix_ragged", kHead + "M = [1, 2; 3]\n", 6, 12, "the rows of matrix 'M' have different lengths"},
         BadInput{"matrix_arithmetic", kHead + "M = [1, 2]\nX = M + 1\n", 7, 5, "translated only through its elements"},
