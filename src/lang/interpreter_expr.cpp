@@ -642,6 +642,18 @@ Value Interpreter::Impl::eval_call(const Expr& e) {
         return matrix_value(static_cast<int>(fe.residuals.size()), static_cast<int>(acc.size()), std::move(entries),
                             Dimension::open());
     }
+    if (f == "diff") {
+        // the partial derivative by a symbol (q, q' and q'' are symbols of their own)
+        want(2, "diff(s, x)");
+        Value x = eval(*a[0]), by = eval(*a[1]);
+        if (x.kind != Kind::scalar) throw ScriptError(a[0]->location, "diff() takes a scalar", "");
+        SymbolTable& table = model(e.location).symbols();
+        if (by.kind != Kind::scalar || !GiNaC::is_a<GiNaC::symbol>(by.s) || !table.owns(by.s))
+            throw ScriptError(a[1]->location, "diff() differentiates by a declared symbol",
+                              "write diff(s, q) with a coordinate, speed, constant or specified quantity");
+        return scalar_value(guarded([&] { return table.expand_intermediates(x.s).diff(GiNaC::ex_to<GiNaC::symbol>(by.s)); }),
+                            x.dim / by.dim);
+    }
     if (f == "jacobian") {
         if (a.size() != 2 && a.size() != 3)
             throw ScriptError(e.location, "jacobian() takes 2 or 3 arguments, not " + std::to_string(a.size()),
@@ -683,7 +695,7 @@ Value Interpreter::Impl::eval_call(const Expr& e) {
     throw ScriptError(e.location, "unknown function '" + f + "'",
                       "functions: sin cos tan asin acos atan sqrt exp log abs dot cross express dt "
                       "mag unit simplify expand angvel angacc vel acc pos rotation mass momentum "
-                      "angmomentum kinetic potential resultant moment massmatrix jacobian");
+                      "angmomentum kinetic potential resultant moment massmatrix jacobian diff");
 }
 
 // ---- output ----------------------------------------------------------------------------

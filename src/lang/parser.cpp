@@ -18,7 +18,7 @@ const std::set<std::string, std::less<>>& function_words() {
         "sin", "cos", "tan", "asin", "acos", "atan", "sqrt", "exp", "log", "abs", "dot", "cross",
         "express", "dt", "mag", "unit", "simplify", "expand", "angvel", "angacc", "vel", "acc",
         "pos", "rotation", "mass", "momentum", "angmomentum", "kinetic", "potential",
-        "resultant", "moment", "pi", "minimum_jerk", "massmatrix", "jacobian"};
+        "resultant", "moment", "pi", "minimum_jerk", "massmatrix", "jacobian", "diff"};
     return w;
 }
 

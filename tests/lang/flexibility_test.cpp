@@ -13,6 +13,7 @@
 #include <numbers>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <unistd.h>
 
 #include "alembert/lang/interpreter.hpp"
@@ -280,6 +281,23 @@ TEST(Matrices, MassMatrixAndJacobianAreTheHandDerivedOnes) {
     EXPECT_TRUE(has(e, "'X' is a matrix: give its row and column")) << e;
     e = r.fails("frame C\nrotate C from N dcm X");
     EXPECT_TRUE(has(e, "must be 3 by 3")) << e;
+}
+
+// diff(s, x): Bcm's x coordinate 2L cos q1 + L cos(q1 + q2) by q2 is -L sin(q1 + q2); its
+// velocity along Nx>, -(2L sin q1 + L sin(q1 + q2)) q1' - L sin(q1 + q2) q2', by q1' is
+// -2L sin q1 - L sin(q1 + q2) (q1' a symbol of its own); L = 1 m.
+TEST(Functions, DiffIsThePartialDerivativeBySymbol) {
+    ScriptSession r;
+    r.ok(std::string(kTwoLinks) + "digits 15\nx = dot(pos(Bcm, N_o), Nx>)\n");
+    for (auto [q1, q2] : {std::pair{0.3, -1.1}, std::pair{-2.4, 0.7}}) {
+        const std::string at = " at q1 = " + std::to_string(q1) + ", q2 = " + std::to_string(q2);
+        const double a = std::stod(std::to_string(q1)), b = std::stod(std::to_string(q2));
+        EXPECT_NEAR(number_after(r.ok("evaluate diff(x, q2)" + at), "= "), -std::sin(a + b), 1e-12);
+        EXPECT_NEAR(number_after(r.ok("evaluate diff(dot(vel(Bcm, N), Nx>), q1')" + at), "= "),
+                    -2 * std::sin(a) - std::sin(a + b), 1e-12);
+    }
+    EXPECT_TRUE(has(r.fails("diff(x, 2)"), "diff() differentiates by a declared symbol"));
+    EXPECT_TRUE(has(r.fails("diff(Nx>, q1)"), "diff() takes a scalar"));
 }
 
 TEST(Matrices, MatricesAreOutputsAColumnPerEntry) {

@@ -40,6 +40,7 @@ Text Translator::expr(const Expr& e) {
         }
         case Expr::Kind::call: return call(e);
         case Expr::Kind::index:
+            if (const Entry* m = find(e.text); m && m->kind == Kind::matrix) return matrix_element(e, *m);
             fail(e.where, "the array element '" + e.text + "[...]' is not translated",
                  "Alembert arrays hold equations; name the value as a scalar instead");
         case Expr::Kind::unary: {
@@ -50,8 +51,8 @@ Text Translator::expr(const Expr& e) {
         case Expr::Kind::binary: return binary(e);
         case Expr::Kind::matrix:
         case Expr::Kind::row:
-            fail(e.where, "a matrix is translated only as a direction cosine matrix (N_A = [...])",
-                 "write the matrix as N_A = [...] or with SIMPROT");
+            fail(e.where, "a matrix inside an expression is not translated",
+                 "assign it to a name (M = [...]) and use its elements M[i, j]");
     }
     fail(e.where, "an expression that is not translated");
 }
@@ -175,12 +176,113 @@ Text Translator::call_text(const Expr& e, bool& numeric) {
         if (e.args.size() == 2) fail(e.args[1].where, "DT of a scalar takes no frame", "write DT(s)");
         return {"dt(" + v.s + ")", false, 5};
     }
+    if (f == "EXPAND") {
+        if (e.args.size() != 1)
+            fail(e.where, "EXPAND() with a range of terms is not translated",
+                 "Alembert's expand() keeps every term: write EXPAND(e)");
+        Text v = expr(e.args[0]);
+        numeric = v.numeric;
+        return {"expand(" + v.s + ")", v.vector, 5};
+    }
+    if (f == "EXPLICIT" || f == "ARRANGE") {
+        // the same value, printed another way: EXPLICIT writes intermediates out, ARRANGE
+        // collects terms; Alembert prints its own way
+        if (f == "EXPLICIT" ? e.args.size() != 1 : e.args.empty())
+            fail(e.where, e.text + "() takes " + (f == "EXPLICIT" ? "one argument" : "the expression first"));
+        Text v = expr(e.args[0]);
+        numeric = v.numeric;
+        return v;
+    }
+    if (f == "D") {
+        // the partial derivative by a constant, variable (or one of its derivatives) or
+        // specified quantity
+        args(2, 2);
+        Text v = expr(e.args[0]);
+        if (v.vector)
+            fail(e.args[0].where, "D() of a vector is not translated",
+                 "take its measures first: D(DOT(v>, N1>), Q1)");
+        const Expr& x = e.args[1];
+        const Entry* en = x.kind == Expr::Kind::name && !x.vector ? find(x.text) : nullptr;
+        if (x.kind == Expr::Kind::name && !x.vector && upper(x.text) == "T" && !en)
+            fail(x.where, "D() by time is not translated", "write DT(e) for the time derivative");
+        if (!en || (en->kind != Kind::constant && en->kind != Kind::variable && en->kind != Kind::specified))
+            fail(x.where, "D() differentiates by a constant, variable or specified quantity",
+                 "write D(e, Q1) or D(e, U1)");
+        // a speed written as a rate (U1 is Q1') is differentiated by that rate, as it is the same
+        numeric = false;
+        return {"diff(" + v.s + ", " + scalar(x).s + ")", false, 5};
+    }
+    if (f == "RHS") {
+        // the right side of X = ...: the value of X itself
+        args(1, 1);
+        const Expr& x = e.args[0];
+        const Entry* en = x.kind == Expr::Kind::name && x.primes == 0 ? find(x.text) : nullptr;
+        if (!en || (en->kind != Kind::scalar && en->kind != Kind::vector))
+            fail(x.where, "RHS() is translated for a name the file assigns (X = ..., V> = ...)",
+                 "RHS of an equation other than an assignment has no counterpart; write the expression");
+        Text v = expr(x);
+        numeric = v.numeric;
+        return v;
+    }
+    static const std::string kMatrices =
+        "the script uses matrices through their elements (M[i, j]); matrix operations have no counterpart";
+    static const std::map<std::string, std::string> missing{
+        {"COEF", "Alembert has no coefficient extraction; diff(e, x) is the coefficient of a term linear in x "
+                 "(D(e, X) in Autolev)"},
+        {"FACTOR", "Alembert's simplify() takes common factors out, but not a factor chosen by name"},
+        {"EVALUATE", "Alembert evaluates with the statement 'evaluate e at x = v' (printed), not inside an "
+                     "expression"},
+        {"REPLACE", "Alembert has no substitution inside an expression; 'evaluate e at x = v' prints the value"},
+        {"TAYLOR", "Alembert has no series expansion"},
+        {"SOLVE", "Alembert solves equations with the statement 'solve E for x' (printed), not as values"},
+        {"POLYNOMIAL", "Alembert has no polynomials as values"},
+        {"ROOTS", "Alembert has no polynomial roots"},
+        {"EXCLUDE", "Alembert keeps every term"},
+        {"INCLUDE", "Alembert keeps every term"},
+        {"FLOOR", "Alembert has no floor()"},
+        {"TRANSPOSE", kMatrices},
+        {"EIG", "eigenvalues are printed by Alembert's 'linearize', not computed inside an expression"},
+        {"DIAGMAT", kMatrices},
+        {"INV", kMatrices},
+        {"DET", kMatrices},
+        {"ELEMENT", kMatrices},
+        {"COLS", kMatrices},
+        {"ROWS", kMatrices},
+        {"MATRIX", kMatrices},
+        {"VECTOR", "write the vector from unit vectors: X*N1> + Y*N2>"},
+        {"CM", "Alembert has no point for the mass centre of a set of bodies"},
+        {"MASS", "Alembert's mass(S) takes a system declared with 'system S = A, B'"},
+        {"ANGVEL", "write the angular velocity's name: W_B_N>"},
+        {"NICHECK", "the translation has no nonholonomic checks"}};
+    if (auto it = missing.find(f); it != missing.end())
+        fail(e.where, "the Autolev function " + f + "() is not translated: " + it->second,
+             "docs/autolev.md lists each Autolev function with its translation or the reason it has none");
     if (f == "FR" || f == "FRSTAR")
         fail(e.where, e.text + "() is translated only in ZERO = FR() + FRSTAR()",
              "write ZERO = FR() + FRSTAR() and then KANE()");
     fail(e.where, "the Autolev function '" + e.text + "' is not translated",
          "the translator knows SIN, COS, TAN, ASIN, ACOS, ATAN, SQRT, EXP, LOG, ABS, DOT, CROSS, MAG, "
-         "UNITVEC, EXPRESS and DT");
+         "UNITVEC, EXPRESS, DT, D, EXPAND, EXPLICIT, ARRANGE and RHS");
+}
+
+Text Translator::matrix_element(const Expr& e, const Entry& m) {
+    std::vector<int> at;
+    for (const Expr& a : e.args) {
+        if (a.kind != Expr::Kind::number || a.text.find_first_not_of("0123456789") != std::string::npos ||
+            a.text.size() > 6)
+            fail(a.where, "the index of matrix '" + e.text + "' must be a whole number",
+                 "write " + e.text + "[1, 2]");
+        at.push_back(std::stoi(a.text));
+    }
+    if (at.size() == 1 && (m.rows == 1 || m.cols == 1)) at = m.rows == 1 ? std::vector<int>{1, at[0]} : std::vector<int>{at[0], 1};
+    if (at.size() != 2)
+        fail(e.where, "matrix '" + e.text + "' is " + std::to_string(m.rows) + " by " + std::to_string(m.cols) +
+                          ": give its row and column", "write " + e.text + "[i, j]");
+    if (at[0] < 1 || at[0] > m.rows || at[1] < 1 || at[1] > m.cols)
+        fail(e.where, "[" + std::to_string(at[0]) + ", " + std::to_string(at[1]) + "] is outside matrix '" + e.text +
+                          "', which is " + std::to_string(m.rows) + " by " + std::to_string(m.cols),
+             "rows run from 1 to " + std::to_string(m.rows) + " and columns from 1 to " + std::to_string(m.cols));
+    return {m.name + "[" + std::to_string(at[0]) + ", " + std::to_string(at[1]) + "]", false, 5, false};
 }
 
 std::string Translator::scalar_name(const Expr& e) {
@@ -223,6 +325,9 @@ std::string Translator::scalar_name(const Expr& e) {
             }
             return en->name + primes;
         }
+        case Kind::matrix:
+            fail(e.where, "the matrix '" + e.text + "' is translated only through its elements",
+                 "use " + e.text + "[i, j]; matrix arithmetic has no counterpart in the script");
         default:
             fail(e.where, "'" + e.text + "' is " + kind_word(en->kind) + ", not a value",
                  "a vector needs '>' (A1>, V_P_N>); points and frames are arguments of V2PTS, SIMPROT, ...");

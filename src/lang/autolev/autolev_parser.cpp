@@ -277,6 +277,12 @@ public:
                         e.args.push_back(expression());
                     }
                 }
+                // TAYLOR(e, 0:3, Q = 0), EVALUATE(e, Q = 1): ranges and substitutions, which
+                // no translated function takes
+                if (is_symbol(":") || is_symbol("="))
+                    fail(t, "the arguments of " + upper(t.text) + "() hold '" + peek().text +
+                                "' (a range or a substitution), which no translated function takes",
+                         "docs/autolev.md lists each Autolev function with its translation or the reason it has none");
                 expect(")");
                 return e;
             }
@@ -395,31 +401,43 @@ void parse_declarators(Parser& p, Statement& st) {
         d.where = t.where;
         if (p.is_symbol("{")) {
             p.take();
-            const Token& a = p.peek();
-            if (a.kind != Token::Kind::number || a.text.find_first_not_of("0123456789") != std::string::npos)
-                p.fail(a, "expected a whole number of names in '" + d.name + "{...}' but found " + p.describe(a),
-                       "write Q{3} for Q1, Q2, Q3 or Q{2:4} for Q2, Q3, Q4");
-            p.take();
-            if (a.text.size() > 6) p.fail(a, "too many indexed names in '" + d.name + "{...}'", "declare at most 1000");
-            int first = 1, last = std::stoi(a.text);
-            if (p.is_symbol(":")) {
+            // one range: n (1..n) or a:b
+            auto range = [&](int& first, int& last) -> const Token& {
+                const Token& a = p.peek();
+                if (a.kind != Token::Kind::number || a.text.find_first_not_of("0123456789") != std::string::npos)
+                    p.fail(a, "expected a whole number of names in '" + d.name + "{...}' but found " + p.describe(a),
+                           "write Q{3} for Q1, Q2, Q3, Q{2:4} for Q2, Q3, Q4 or C{2,3} for C11, ..., C23");
                 p.take();
-                const Token& b = p.peek();
-                if (b.kind != Token::Kind::number || b.text.find_first_not_of("0123456789") != std::string::npos ||
-                    b.text.size() > 6)
-                    p.fail(b, "expected the last index of '" + d.name + "{" + a.text + ":...}' but found " + p.describe(b));
+                if (a.text.size() > 6) p.fail(a, "too many indexed names in '" + d.name + "{...}'", "declare at most 1000");
+                first = 1;
+                last = std::stoi(a.text);
+                if (p.is_symbol(":")) {
+                    p.take();
+                    const Token& b = p.peek();
+                    if (b.kind != Token::Kind::number || b.text.find_first_not_of("0123456789") != std::string::npos ||
+                        b.text.size() > 6)
+                        p.fail(b, "expected the last index of '" + d.name + "{" + a.text + ":...}' but found " + p.describe(b));
+                    p.take();
+                    first = last;
+                    last = std::stoi(b.text);
+                }
+                return a;
+            };
+            int first = 1, last = 0;
+            const Token& a = range(first, last);
+            std::size_t count = last < first ? 0 : static_cast<std::size_t>(last - first + 1);
+            if (p.is_symbol(",")) {  // C{2,3}: C11, C12, C13, C21, C22, C23
                 p.take();
-                first = last;
-                last = std::stoi(b.text);
-            }
-            if (p.is_symbol(",")) {
-                p.fail(p.peek(), "two-dimensional indexed names such as '" + d.name + "{" + a.text + ",...}' are not translated",
-                       "declare the names one by one");
+                range(d.first2, d.last2);
+                count *= d.last2 < d.first2 ? 0 : static_cast<std::size_t>(d.last2 - d.first2 + 1);
+                if (p.is_symbol(","))
+                    p.fail(p.peek(), "indexed names of more than two dimensions ('" + d.name + "{...,...,...}') are not "
+                                     "translated", "declare them as names of two indices or one by one");
             }
             p.expect("}");
-            if (last < first || static_cast<std::size_t>(last - first + 1) > kMaxIndexed)
+            if (count == 0 || count > kMaxIndexed)
                 p.fail(a, "'" + d.name + "{...}' declares no names or more than 1000",
-                       "write Q{3} for Q1, Q2, Q3 or Q{2:4} for Q2, Q3, Q4");
+                       "write Q{3} for Q1, Q2, Q3, Q{2:4} for Q2, Q3, Q4 or C{2,3} for C11, ..., C23");
             d.first = first;
             d.last = last;
             while (p.is_symbol("'")) {

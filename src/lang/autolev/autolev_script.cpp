@@ -11,7 +11,13 @@ std::string Translator::kane_statement() {
         coordinates.push_back(k.coordinate);
         residuals.push_back(k.residual);
     }
-    if (coordinates.empty()) {
+    if (!odes_.empty()) {  // a model given by its equations X'' = f
+        coordinates.clear();
+        residuals.clear();
+        for (const std::string& v : variables_)
+            for (const auto& [x, where] : odes_)
+                if (x == v) coordinates.push_back(v);
+    } else if (coordinates.empty()) {
         for (const std::string& v : variables_)
             if (!rate_of_.count(v) && !given_.count(v)) coordinates.push_back(v);
     } else {
@@ -82,6 +88,8 @@ void Translator::find_given_variables() {
 }
 
 void Translator::assemble() {
+    check_differential_model();
+    if (!odes_.empty() && !kane_at_) kane_at_ = model_.size(), emit("");
     find_given_variables();
     for (const auto& [p, where] : forced_points_) {
         auto it = point_body_.find(p);
@@ -113,7 +121,8 @@ void Translator::assemble() {
     for (const std::string& r : renames_) s += "# renamed: " + r + "\n";
     if (!newtonian_.empty()) s += "newtonian " + newtonian_ + "\n";
     for (const std::string& l : frames_lines_) {
-        if (l.empty() || l[0] != '\x01') {
+        if (l.empty()) continue;  // a frame line emptied by frame_as_newtonian
+        if (l[0] != '\x01') {
             s += l + "\n";
             continue;
         }

@@ -154,6 +154,28 @@ std::string Translator::unit(const std::string& words, Location where) {
 void Translator::command(const Statement& st) {
     const std::string& w = st.keyword;
     if (w == "CODE") return code(st);
+    std::string on = upper(st.text.substr(st.text.find_first_not_of(" \t") == std::string::npos
+                                               ? st.text.size() : st.text.find_first_not_of(" \t")));
+    while (!on.empty() && (on.back() == ' ' || on.back() == '\t')) on.pop_back();
+    if (w == "COMPLEX") {
+        if (on == "OFF") {
+            report(Severity::note, st.where, "COMPLEX OFF: the script's numbers are real; nothing to translate");
+            return;
+        }
+        fail(st.where, "COMPLEX " + (on.empty() ? std::string("") : on + " ") +
+                           "is not translated: Alembert has no complex numbers",
+             "remove it; the script's constants and variables are real");
+    }
+    if (w == "DEGREES" || w == "DEGREE") {
+        if (on == "OFF") {  // angles without a unit are radians: as the translation reads them
+            report(Severity::note, st.where,
+                   "DEGREES OFF: angles without a unit are radians, as the script reads them; nothing to translate");
+            return;
+        }
+        fail(st.where, "DEGREES " + (on.empty() ? std::string("") : on + " ") +
+                           "is not translated: the script reads angles without a unit as radians",
+             "give each angle its unit (INPUT Q = 30 DEG) and remove DEGREES ON");
+    }
     static const char* const ignored[] = {"PAUSE", "SAVE", "AUTOZ", "AUTORHS", "AUTOEPS", "AUTOLEV", "OVERWRITE",
                                           "UNITSYSTEM", "UNITS", "DISPLAY", "ANIMATE", "ENCODE", "EXPLICIT",
                                           "PRINT", "RUN", "SHOW", "CLEAR", "DIGITS", "WRITE"};
@@ -222,9 +244,11 @@ void Translator::assignment(const Statement& st) {
         if (!en || en->kind != Kind::variable)
             fail(lhs.where, "'" + lhs.text + "' is not a variable, so '" + lhs.text + "'' cannot be assigned",
                  "declare it with VARIABLES or MOTIONVARIABLES");
+        if (lhs.primes == 2 || (lhs.primes == 1 && rate_of_.count(en->name)))
+            return differential_equation(st, *en);  // X'' = f, or V' = f with X' = V
         if (lhs.primes != 1)
             fail(lhs.where, "an equation for '" + lhs.text + std::string(static_cast<std::size_t>(lhs.primes), '\'') +
-                                "' is not translated", "kinematical equations give first derivatives: Q1' = U1");
+                                "' is not translated", "give equations for first or second derivatives: X' = V, X'' = f");
         if (aliased_coordinates_.count(en->name)) return;  // Q1' = U1: U1 is written Q1'
         Text r = scalar(st.rhs);
         for (const KinematicEquation& k : kinematics_)
@@ -242,6 +266,12 @@ void Translator::assignment(const Statement& st) {
         return;
     }
     if (en) {
+        if (en->kind == Kind::matrix) {
+            if (st.rhs.kind != Expr::Kind::matrix)
+                fail(st.rhs.where, "'" + lhs.text + "' is a matrix and is assigned only a matrix [...]",
+                     "give the expression another name");
+            return matrix_assignment(st);
+        }
         if (en->kind == Kind::variable) return kinematical_assignment(st, *en);
         if (en->kind == Kind::scalar) {
             Text r = scalar(st.rhs);
@@ -258,8 +288,7 @@ void Translator::assignment(const Statement& st) {
     if (st.rhs.kind == Expr::Kind::matrix) {
         auto fr = [this](std::string_view n) { return frame_of(n); };
         auto s = split(std::string_view(lhs.text), fr, fr);
-        if (!s) fail(lhs.where, "'" + lhs.text + "' is not a direction cosine matrix name",
-                     "write N_A = [...] with two declared frames, or use SIMPROT");
+        if (!s) return matrix_assignment(st);
         parent_[s->second] = s->first;
         return emit("rotate " + s->second + " from " + s->first + " dcm " + matrix(st.rhs));
     }
@@ -285,6 +314,67 @@ void Translator::kinematical_assignment(const Statement& st, const Entry& speed)
     kinematics_.push_back({q->name, q->name + "' - " + speed.name, st.where});
 }
 
+void Translator::differential_equation(const Statement& st, const Entry& v) {
+    auto r = rate_of_.find(v.name);
+    const std::string q = r == rate_of_.end() ? v.name : r->second;
+    for (const auto& [x, where] : odes_)
+        if (x == q)
+            fail(st.lhs.where, "a second equation for " + q + "'' (the first is at line " + std::to_string(where.line) + ")",
+                 "give one equation for each variable");
+    Text f = scalar(st.rhs);
+    if (newtonian_.empty()) {  // a file of equations alone: the particles need a frame to move in
+        newtonian_ = "N";
+        for (int k = 2; find(newtonian_) || object_spelt(newtonian_); ++k) newtonian_ = "N" + std::to_string(k);
+        report(Severity::note, st.where,
+               "the model is given by its differential equations; each variable is the coordinate of a particle "
+               "of unit mass in a Newtonian frame '" + newtonian_ + "'");
+    }
+    if (ode_mass_.empty()) ode_mass_ = dimensioned(Text{"1", false, 5, true}, "m_ode");
+    std::string p = q + "_ode";
+    for (int k = 2; find(p) || object_spelt(p) || labels_.count(p); ++k) p = q + "_ode" + std::to_string(k);
+    labels_.insert({p, 0});
+    ode_particles_.insert(p);
+    frames_lines_.push_back("particle " + p);
+    odes_.emplace_back(q, st.where);
+    const std::string x = newtonian_ + "x>";
+    emit("# " + q + "'' = " + f.s + ": a particle of unit mass moved along " + x + " by that force");
+    emit("translate " + p + " from " + newtonian_ + "_o by " + q + "*" + x);
+    emit("mass " + p + " = " + ode_mass_);
+    Text push{paren(f, 2) + "*" + x, true, 2, f.numeric};
+    force(p, std::nullopt, dimensioned(push, "f_" + p));
+}
+
+void Translator::check_differential_model() {
+    if (odes_.empty()) return;
+    const Location at = odes_.front().second;
+    const std::string first = odes_.front().first;
+    auto refuse = [&](const std::string& why, const std::string& hint) {
+        report(Severity::error, at, "the equation for " + first + "'' is not translated: " + why, hint);
+    };
+    for (const auto& [k, e] : objects_)
+        if ((e.kind == Kind::body || e.kind == Kind::particle) && !ode_particles_.count(e.name))
+            return refuse("the model also has " + std::string(kind_word(e.kind)) + " '" + e.name + "'",
+                          "a file is either a model of bodies and particles (KANE()) or a set of differential "
+                          "equations X'' = ...; give " + first + " a particle and forces instead");
+    if (kane_at_) return refuse("the file also forms Kane's equations (ZERO = FR() + FRSTAR())", "write either one");
+    if (has_gravity_) return refuse("GRAVITY would act on the equations' particles", "leave GRAVITY out");
+    for (const KinematicEquation& k : kinematics_)
+        report(Severity::error, k.where,
+               "the first-order equation " + k.coordinate + "' = ... is not translated: Alembert simulates "
+               "equations for second derivatives",
+               "write it as a second-order equation, or as " + k.coordinate + "' = V with a variable V and V' = ...");
+    for (const std::string& v : variables_) {
+        if (rate_of_.count(v)) continue;
+        bool has = false;
+        for (const auto& [x, where] : odes_) has = has || x == v;
+        const Entry* en = find(v);
+        if (!has)
+            report(Severity::error, en ? en->where : at,
+                   "the variable '" + v + "' has no equation (" + v + "'' = ...) among the model's differential equations",
+                   "give it one, or declare it SPECIFIED and give its value with INPUT");
+    }
+}
+
 std::string Translator::matrix(const Expr& m) {
     if (m.args.size() != 3) fail(m.where, "a direction cosine matrix has 3 rows", "write [a, b, c; d, e, f; g, h, i]");
     std::vector<std::string> rows;
@@ -295,6 +385,27 @@ std::string Translator::matrix(const Expr& m) {
         rows.push_back(join(cells));
     }
     return "[" + join(rows, "; ") + "]";
+}
+
+void Translator::matrix_assignment(const Statement& st) {
+    const Expr& m = st.rhs;
+    std::vector<std::string> rows;
+    const std::size_t cols = m.args.empty() ? 0 : m.args.front().args.size();
+    for (const Expr& row : m.args) {
+        if (row.args.size() != cols)
+            fail(row.where, "the rows of matrix '" + st.lhs.text + "' have different lengths",
+                 "give every row " + std::to_string(cols) + " elements");
+        std::vector<std::string> cells;
+        for (const Expr& c : row.args) cells.push_back(scalar(c).s);
+        rows.push_back(join(cells));
+    }
+    if (rows.empty() || cols == 0) fail(m.where, "an empty matrix", "give its elements: [a, b; c, d]");
+    const Entry* old = find(st.lhs.text);
+    const Entry& e = old ? *old : add(st.lhs.text, Kind::matrix, st.lhs.where);
+    Entry& stored = names_[e.key];
+    stored.rows = static_cast<int>(rows.size());
+    stored.cols = static_cast<int>(cols);
+    emit(e.name + " = [" + join(rows, "; ") + "]");
 }
 
 void Translator::array_assignment(const Statement& st) {
@@ -310,6 +421,9 @@ void Translator::array_assignment(const Statement& st) {
     if (key == "AUXILIARY")
         fail(lhs.where, "auxiliary speeds (AUXILIARY[...]) are not translated",
              "Alembert's kane statement takes them as 'auxiliary u...'; add them by hand");
+    if (const Entry* en = find(lhs.text); en && en->kind == Kind::matrix)
+        fail(lhs.where, "an element of matrix '" + lhs.text + "' is not assigned alone",
+             "assign the whole matrix: " + lhs.text + " = [...]");
     fail(lhs.where, "the array '" + lhs.text + "[...]' is not translated",
          "name each element as a scalar of its own");
 }
@@ -452,6 +566,7 @@ void Translator::expression_statement(const Statement& st) {
         if (e.args.size() > 1)
             fail(e.args[1].where, "GRAVITY on some bodies only is not translated",
                  "Alembert's gravity acts on every body and particle; apply FORCE() to these instead");
+        has_gravity_ = true;
         return emit("gravity " + dimensioned(vec(e.args[0]), "g_" + newtonian_));
     }
     if (f == "FORCE" || f == "TORQUE") {

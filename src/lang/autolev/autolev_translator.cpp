@@ -31,7 +31,12 @@ AutolevTranslation Translator::run(std::string_view source) {
             pending_.push_back({Severity::error, file_, e.where(), e.what(), e.hint()});
         }
     }
-    // MASS A = MA and INERTIA B, I1, I2, I3 declare their undeclared names as constants
+    // MASS A = MA and INERTIA B, I1, I2, I3 declare their undeclared names as constants,
+    // unless the file assigns them (MA = 2*M)
+    for (const Statement& st : parsed.statements)
+        if (st.kind == Statement::Kind::assignment && st.lhs.kind == Expr::Kind::name && !st.lhs.vector &&
+            st.lhs.primes == 0)
+            assigned_.insert(upper(st.lhs.text));
     for (const Statement& st : parsed.statements)
         if (st.kind == Statement::Kind::list && (st.keyword == "MASS" || st.keyword == "INERTIA")) {
             try {
@@ -41,6 +46,7 @@ AutolevTranslation Translator::run(std::string_view source) {
             }
         }
     find_rate_speeds(parsed);
+    if (newtonian_.empty()) frame_as_newtonian(parsed);
     std::vector<Diagnostic> declaration_problems = std::move(pending_);
     pending_.clear();
     std::size_t next_declaration_problem = 0;
@@ -67,6 +73,42 @@ AutolevTranslation Translator::run(std::string_view source) {
                                                   : a.location.column < b.location.column;
     });
     return std::move(out_);
+}
+
+void Translator::frame_as_newtonian(const ParsedFile& parsed) {
+    // masses, loads and Kane's equations need the Newtonian frame: those files keep the error
+    for (const Statement& st : parsed.statements) {
+        if (st.kind == Statement::Kind::list && (st.keyword == "MASS" || st.keyword == "INERTIA")) return;
+        if (st.kind == Statement::Kind::expression && st.expr.kind == Expr::Kind::call) {
+            std::string f = upper(st.expr.text);
+            if (f == "GRAVITY" || f == "FORCE" || f == "TORQUE" || f == "KANE") return;
+        }
+        if (st.kind == Statement::Kind::assignment && st.lhs.kind == Expr::Kind::name) {
+            std::string k = upper(st.lhs.text);
+            if (k == "ZERO" || k.rfind("FORCE_", 0) == 0 || k.rfind("TORQUE_", 0) == 0) return;
+            const Entry* en = st.lhs.vector ? nullptr : find(st.lhs.text);
+            if (en && en->kind == Kind::variable && (st.lhs.primes == 2 || (st.lhs.primes == 1 && rate_of_.count(en->name))))
+                return;  // a differential equation: the model has a frame of its own
+        }
+    }
+    for (std::string& l : frames_lines_) {
+        if (l.rfind("frame ", 0) != 0) continue;
+        const std::string rest = l.substr(6);
+        const std::size_t comma = rest.find(", ");
+        const std::string name = rest.substr(0, comma);
+        const Entry* spelt = object_spelt(name);
+        if (!spelt) return;
+        Entry& e = objects_.at(spelt->key);
+        e.kind = Kind::newtonian;
+        newtonian_ = e.name;
+        implicit_points_[e.key + "O"] = e.name + "_o";
+        l = comma == std::string::npos ? "" : "frame " + rest.substr(comma + 2);
+        report(Severity::note, e.where,
+               "the file declares no NEWTONIAN frame and forms no equations of motion; its first frame '" + e.name +
+                   "' is the script's Newtonian frame (positions, velocities and accelerations name their frames, "
+                   "so they do not depend on which frame that is)");
+        return;
+    }
 }
 
 std::string Translator::alembert_spelling(const std::string& name, Location where) {
@@ -111,7 +153,7 @@ const Entry& Translator::add(const std::string& name, Kind kind, Location where)
             {Kind::newtonian, "frame"}, {Kind::frame, "frame"},  {Kind::body, "body"},
             {Kind::particle, "particle"}, {Kind::point, "point"}, {Kind::constant, "const"},
             {Kind::variable, "var"},     {Kind::specified, "spec"}, {Kind::scalar, "val"},
-            {Kind::vector, "vec"}};
+            {Kind::vector, "vec"},       {Kind::matrix, "mat"}};
         std::string base = name + "_" + suffix.at(kind), renamed = base;
         for (int k = 2; find(renamed) || object_spelt(renamed); ++k) renamed = base + std::to_string(k);
         e.name = renamed;
@@ -261,6 +303,7 @@ void Translator::implicit_constants(const Statement& st) {
     for (const Expr* v : values) {
         if (v->kind != Expr::Kind::name || v->vector || v->primes || find(v->text)) continue;
         std::string key = upper(v->text);
+        if (assigned_.count(key)) continue;  // MA = 2*M: a scalar of the file
         if (key == "T" || key == "PI") continue;
         if (!implicit_group_) {
             constants_.emplace_back();
@@ -277,6 +320,7 @@ void Translator::implicit_constants(const Statement& st) {
 void Translator::find_rate_speeds(const ParsedFile& parsed) {
     std::map<std::string, std::string> rate_of;  // speed -> coordinate
     std::set<std::string> coordinates;
+    std::vector<std::string> derivative_equations;  // X of X' = f, f not a variable
     auto variable = [this](const Expr& e, int primes) -> const Entry* {
         if (e.kind != Expr::Kind::name || e.vector || e.primes != primes) return nullptr;
         const Entry* en = find(e.text);
@@ -296,7 +340,10 @@ void Translator::find_rate_speeds(const ParsedFile& parsed) {
         if (variable(st.lhs, 1)) {  // Q' = U
             q = variable(st.lhs, 1);
             u = variable(st.rhs, 0);
-            if (!u) return;  // a kinematical equation of another form
+            if (!u) {  // a kinematical equation of another form, or U' = f for a speed U (below)
+                derivative_equations.push_back(q->name);
+                continue;
+            }
         } else if (variable(st.lhs, 0) && variable(st.rhs, 1)) {  // U = Q'
             u = variable(st.lhs, 0);
             q = variable(st.rhs, 1);
@@ -309,6 +356,10 @@ void Translator::find_rate_speeds(const ParsedFile& parsed) {
     }
     for (const auto& [u, q] : rate_of)
         if (coordinates.count(u) || rate_of.count(q)) return;  // chains such as Q' = U, U' = W
+    // U' = f is a differential equation for Q'' when Q' = U; for anything else, Q' = f is a
+    // kinematical equation of another form, and the speeds stay speeds
+    for (const std::string& x : derivative_equations)
+        if (!rate_of.count(x)) return;
     rate_of_ = std::move(rate_of);
     aliased_coordinates_ = std::move(coordinates);
 }

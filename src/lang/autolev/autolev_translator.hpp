@@ -21,7 +21,7 @@
 namespace alembert::lang::autolev {
 
 // What an Autolev name stands for.
-enum class Kind { newtonian, frame, body, particle, point, constant, variable, specified, scalar, vector };
+enum class Kind { newtonian, frame, body, particle, point, constant, variable, specified, scalar, vector, matrix };
 
 inline const char* kind_word(Kind k) {
     switch (k) {
@@ -35,6 +35,7 @@ inline const char* kind_word(Kind k) {
         case Kind::specified: return "a specified quantity";
         case Kind::scalar: return "a scalar";
         case Kind::vector: return "a vector";
+        case Kind::matrix: return "a matrix";
     }
     return "a name";
 }
@@ -45,6 +46,7 @@ struct Entry {
     Location where{};
     bool numeric = false;  // a scalar or vector the file assigned from numbers alone
     std::string key{};     // the Autolev name in upper case
+    int rows = 0, cols = 0;  // a matrix's size
 };
 
 // Frames, bodies, particles and points are named apart from values (constants, variables,
@@ -128,11 +130,17 @@ private:
         return nullptr;
     }
 
-    // the expanded names of a declarator: Q{3} -> Q1, Q2, Q3
+    // the expanded names of a declarator: Q{3} -> Q1, Q2, Q3; C{2,2} -> C11, C12, C21, C22
     static std::vector<std::string> expand(const Declarator& d) {
         if (d.last < d.first) return {d.name};
         std::vector<std::string> v;
-        for (int i = d.first; i <= d.last; ++i) v.push_back(d.name + std::to_string(i));
+        for (int i = d.first; i <= d.last; ++i) {
+            if (d.last2 < d.first2) {
+                v.push_back(d.name + std::to_string(i));
+                continue;
+            }
+            for (int j = d.first2; j <= d.last2; ++j) v.push_back(d.name + std::to_string(i) + std::to_string(j));
+        }
         return v;
     }
 
@@ -147,6 +155,10 @@ private:
     // Alembert's simulate and codegen take them. Only when every kinematical equation has this
     // form and the model has no constraints; otherwise the speeds stay speeds.
     void find_rate_speeds(const ParsedFile& parsed);
+
+    // A file of kinematics alone (no NEWTONIAN, no masses, loads or equations of motion): its
+    // first frame becomes the script's Newtonian frame, which Alembert needs first.
+    void frame_as_newtonian(const ParsedFile& parsed);
 
     static std::string join(const std::vector<std::string>& v, const char* sep = ", ") {
         std::string s;
@@ -245,7 +257,20 @@ private:
     // OMEGA = THETA': a kinematical equation written as an assignment, THETA' - OMEGA = 0
     void kinematical_assignment(const Statement& st, const Entry& speed);
 
+    // X'' = f (or V' = f with X' = V): a model given by its differential equations. Each such
+    // X is the coordinate of a particle of unit mass on the Newtonian x axis pushed by the
+    // force f*Nx>, whose Kane equation f - 1*X'' = 0 is the file's equation itself.
+    void differential_equation(const Statement& st, const Entry& v);
+    // a model given by differential equations has no bodies, particles, gravity or KANE()
+    // of its own, and every variable has its equation
+    void check_differential_model();
+
     std::string matrix(const Expr& m);
+
+    // M = [a, b; c, d] with M no direction cosine matrix: a matrix value, used by its
+    // elements M[i, j] (M[i] of a row or a column)
+    void matrix_assignment(const Statement& st);
+    Text matrix_element(const Expr& e, const Entry& m);
 
     static bool is_call(const Expr& e, const char* f) {
         return e.kind == Expr::Kind::call && e.args.empty() && upper(e.text) == f;
@@ -322,7 +347,8 @@ private:
     std::vector<std::string> frames_lines_{};
     std::vector<std::vector<ConstantDecl>> constants_{};
     std::map<std::string, std::pair<std::size_t, std::size_t>> constant_index_{};
-    std::optional<std::size_t> implicit_group_{};  // the constants MASS and INERTIA declare
+    std::optional<std::size_t> implicit_group_{};
+    std::set<std::string> assigned_{};  // names the file assigns (upper case): no implicit constants  // the constants MASS and INERTIA declare
     std::vector<std::string> variables_{};
     std::set<std::string> given_{};
     std::map<std::string, std::string> rate_of_{};  // a speed that is a coordinate's rate -> the coordinate
@@ -335,6 +361,10 @@ private:
     Location kane_where_{};
     std::string kane_name_{};
     std::vector<KinematicEquation> kinematics_{};
+    std::vector<std::pair<std::string, Location>> odes_{};  // X of X'' = f, in the file's order
+    std::set<std::string> ode_particles_{};
+    std::string ode_mass_{};
+    bool has_gravity_ = false;
     std::vector<std::string> constraints_{}, dependent_{};
     std::optional<Location> constraints_where_{};  // the first DEPENDENT[i] = ...
     std::map<std::string, std::string> initial_{};

@@ -350,7 +350,16 @@ TEST(AutolevMeaning, PartsThatCannotBeTranslatedAreErrors) {
                          Bad{head + "VARIABLES U\nU = 2*X\n", 4, 1, "is assigned only as a coordinate's rate"},
                          Bad{head + "CONSTANTS' K\n", 3, 1, "CONSTANTS is written with primes"},
                          Bad{head + "VARIABLES U\nX' += U\n", 4, 1, "'+=' on a derivative is not translated"},
-                         Bad{head + "X'' = -X\n", 3, 1, "an equation for 'X''' is not translated"}}) {
+                         Bad{head + "X''' = -X\n", 3, 1, "an equation for 'X'''' is not translated"},
+                         // a differential equation beside bodies, KANE() or a first-order one
+                         Bad{head + "BODIES B\nX'' = -X\n", 4, 1, "the model also has a body 'B'"},
+                         Bad{head + "X'' = -X\nZERO = FR() + FRSTAR()\nKANE()\n", 3, 1,
+                             "the file also forms Kane's equations"},
+                         Bad{head + "GRAVITY(-N2>)\nX'' = -X\n", 4, 1, "GRAVITY would act on"},
+                         Bad{head + "VARIABLES Y'\nX'' = -X\nY' = -Y\n", 5, 1,
+                             "the first-order equation Y' = ... is not translated"},
+                         Bad{head + "VARIABLES Y''\nX'' = -X\n", 3, 11, "the variable 'Y' has no equation"},
+                         Bad{head + "X'' = -X\nX'' = X\n", 4, 1, "a second equation for X''"}}) {
         AutolevTranslation t = translate_autolev(b.source, "bad.al");
         EXPECT_FALSE(t.ok()) << b.source;
         bool found = false;
@@ -641,6 +650,20 @@ INPUT M = 2, K = 50, C = 3
     ASSERT_EQ(twice.diagnostics.size(), 1u) << messages(twice);
     EXPECT_EQ(twice.diagnostics[0].location.line, 9);
     EXPECT_TRUE(contains(twice.diagnostics[0].message, "assigned a second time")) << messages(twice);
+}
+
+// A model given by its differential equation generates code like any other: CODE DYNAMICS()
+// becomes codegen, which writes the C files.
+TEST(AutolevMeaning, DifferentialEquationsGenerateCode) {
+    AutolevTranslation t = translate_autolev("CONSTANTS K\nVARIABLES X''\nX'' = -K*X\nINPUT K = 4, X = 1\n"
+                                             "CODE DYNAMICS() oscillator_ode.c\n",
+                                             "ode.al");
+    ASSERT_TRUE(t.ok()) << messages(t);
+    EXPECT_TRUE(contains(t.script, "codegen c name oscillator_ode\n")) << t.script;
+    ScriptRun r = run(t.script);
+    ASSERT_EQ(r.status, RunStatus::ok) << r.err << t.script;
+    std::ifstream c(::testing::TempDir() + "/oscillator_ode.c");
+    EXPECT_TRUE(c.good()) << r.out;
 }
 
 TEST(AutolevMeaning, CodeDynamicsArgumentsAreReported) {

@@ -1,0 +1,10 @@
+% Algebra: EXPAND, EXPLICIT, ARRANGE, D and RHS, with angles in radians (DEGREES OFF).
+DEGREES OFF
+NEWTONIAN N
+CONSTANTS A, B
+VARIABLES Q', U'
+Q' = U
+E1 = EXPAND((A + B*Q)^2)
+E2 = EXPLICIT(E1) + ARRANGE(A*Q + B*Q, 1, Q)
+E3 = D(E1, Q) + D(A*U^2, U)
+E4 = RHS(E2)*SIN(Q)

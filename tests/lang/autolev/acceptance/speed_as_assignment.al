@@ -1,0 +1,16 @@
+% A particle pendulum whose speed OMEGA is given as an assignment OMEGA = THETA'.
+NEWTONIAN N
+FRAMES A
+PARTICLES P
+CONSTANTS L, M, G
+VARIABLES THETA', OMEGA'
+OMEGA = THETA'
+SIMPROT(N, A, 3, THETA)
+W_A_N> = OMEGA*N3>
+P_NO_P> = -L*A2>
+V_P_N> = CROSS(W_A_N>, P_NO_P>)
+MASS P = M
+GRAVITY(-G*N2>)
+ZERO = FR() + FRSTAR()
+KANE()
+INPUT L = 1.3, M = 0.2, G = 9.81, THETA = 60 DEG, OMEGA = 0

@@ -1,0 +1,503 @@
+// SPDX-License-Identifier: MIT
+// alembert import on the Autolev files of tests/lang/autolev/acceptance/, one or more for each
+// family of statements: each file is imported unchanged, its equations of motion are solved at
+// random states and compared with the hand derivation written below (to 1e-12), and each
+// dynamics model is simulated and its end state compared with a fourth-order Runge-Kutta
+// integration of the hand-derived equations, its energy checked where it is conserved. The
+// kinematics file is checked against the arm's hand-derived positions and velocities.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <map>
+#include <numbers>
+#include <random>
+#include <regex>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "alembert/lang/autolev_import.hpp"
+#include "alembert/lang/interpreter.hpp"
+
+namespace autolev_acceptance_test {
+
+using alembert::lang::AutolevTranslation;
+using alembert::lang::Interpreter;
+using alembert::lang::RunStatus;
+using alembert::lang::Severity;
+using alembert::lang::translate_autolev;
+
+const std::string kDir = std::string(ALEMBERT_SOURCE_DIR) + "/tests/lang/autolev/acceptance/";
+constexpr double kG = 9.81;
+constexpr double kDeg = std::numbers::pi / 180;
+
+std::string read_file(const std::string& path) {
+    std::ifstream f(path, std::ios::binary);
+    EXPECT_TRUE(f.good()) << path;
+    std::ostringstream s;
+    s << f.rdbuf();
+    return s.str();
+}
+
+std::string num(double v) {
+    char buf[40];
+    std::snprintf(buf, sizeof buf, "%.17g", v);
+    return buf;
+}
+
+struct ScriptRun {
+    RunStatus status = RunStatus::ok;
+    std::string out, err;
+    std::vector<double> values;  // the numbers printed as `name = value` or `= value`, in order
+    std::map<std::string, double> named;
+};
+
+ScriptRun run(const std::string& script, const std::string& extra) {
+    std::ostringstream out, err;
+    Interpreter interp(out, err, false);
+    interp.set_output_dir(::testing::TempDir());
+    ScriptRun r;
+    r.status = interp.run(script + "\ndigits 17\n" + extra + "\n", "imported.alb");
+    r.out = out.str();
+    r.err = err.str();
+    std::istringstream lines(r.out);
+    std::string line;
+    std::smatch m;
+    static const std::regex assignment(R"(^(\S*) ?= (\S+)( .*)?$)");
+    while (std::getline(lines, line))
+        if (std::regex_match(line, m, assignment)) {
+            try {
+                double v = std::stod(m[2]);
+                r.values.push_back(v);
+                if (!m[1].str().empty()) r.named[m[1]] = v;
+            } catch (const std::exception&) {
+                // a symbolic line
+            }
+        }
+    return r;
+}
+
+AutolevTranslation import(const std::string& file) {
+    AutolevTranslation t = translate_autolev(read_file(kDir + file), file);
+    for (const auto& d : t.diagnostics)
+        if (d.severity != Severity::note)  // notes tell of names declared or renamed
+            ADD_FAILURE() << file << ":" << d.location.line << ":" << d.location.column << ": " << d.message;
+    return t;
+}
+
+std::string kane_name(const std::string& script) {
+    std::smatch m;
+    EXPECT_TRUE(std::regex_search(script, m, std::regex(R"(\bkane (\w+) for)"))) << script;
+    return m.size() > 1 ? m[1].str() : "K";
+}
+
+using Vec = std::vector<double>;
+// the accelerations q'' at time t and state (q, q'), by hand
+using Accelerations = std::function<Vec(double t, const Vec& q, const Vec& qd)>;
+// the energy at (q, q'), by hand; empty where it is not conserved
+using Energy = std::function<double(const Vec& q, const Vec& qd)>;
+
+struct Case {
+    std::string file;
+    std::vector<std::string> q;  // the coordinates as the imported script names them
+    Accelerations accelerations;
+    Vec q0, qd0;  // the file's initial values, in SI
+    Energy energy{};
+    std::string given{};  // values of given quantities for `solve ... at`
+};
+
+void PrintTo(const Case& c, std::ostream* os) { *os << c.file; }
+
+Vec solve2(double a11, double a12, double a21, double a22, double b1, double b2) {
+    double det = a11 * a22 - a12 * a21;
+    return {(b1 * a22 - a12 * b2) / det, (a11 * b2 - a21 * b1) / det};
+}
+
+std::vector<Case> cases() {
+    std::vector<Case> c;
+    // X'' = -K/M X with K = 4, M = 1
+    c.push_back({"ode_oscillator.al", {"X"}, [](double, const Vec& q, const Vec&) { return Vec{-4 * q[0]}; },
+                 {1}, {0}, [](const Vec& q, const Vec& qd) { return qd[0] * qd[0] / 2 + 4 * q[0] * q[0] / 2; }});
+    // X'' = -W^2 X + A sin(t), W = 2, A = 0.5 (V is X')
+    c.push_back({"ode_first_order_pair.al", {"X"},
+                 [](double t, const Vec& q, const Vec&) { return Vec{-4 * q[0] + 0.5 * std::sin(t)}; }, {0.5}, {0}});
+    // two masses of 1 between three springs K = 3: V = K (x1^2 - x1 x2 + x2^2)
+    c.push_back({"ode_coupled.al", {"X1", "X2"},
+                 [](double, const Vec& q, const Vec&) {
+                     return Vec{-6 * q[0] + 3 * q[1], 3 * q[0] - 6 * q[1]};
+                 },
+                 {0.2, -0.1}, {0, 0.4},
+                 [](const Vec& q, const Vec& qd) {
+                     return (qd[0] * qd[0] + qd[1] * qd[1]) / 2 + 3 * (q[0] * q[0] - q[0] * q[1] + q[1] * q[1]);
+                 }});
+    // Y'' = MU (1 - Y^2) Y' - Y, MU = 1.5
+    c.push_back({"ode_van_der_pol.al", {"Y"},
+                 [](double, const Vec& q, const Vec& qd) { return Vec{1.5 * (1 - q[0] * q[0]) * qd[0] - q[0]}; }, {2},
+                 {0}});
+    // TH'' = -G/L sin(TH), L = 0.6: E = TH'^2/2 - G/L cos(TH)
+    c.push_back({"ode_pendulum.al", {"TH"}, [](double, const Vec& q, const Vec&) { return Vec{-kG / 0.6 * std::sin(q[0])}; },
+                 {40 * kDeg}, {0}, [](const Vec& q, const Vec& qd) { return qd[0] * qd[0] / 2 - kG / 0.6 * std::cos(q[0]); }});
+    // a particle m at L on a massless rod: Q'' = -G/L sin(Q), L = 0.9, M = 0.5
+    c.push_back({"continuation.al", {"Q"}, [](double, const Vec& q, const Vec&) { return Vec{-kG / 0.9 * std::sin(q[0])}; },
+                 {25 * kDeg}, {0},
+                 [](const Vec& q, const Vec& qd) {
+                     return 0.5 * (0.5 * 0.81 * qd[0] * qd[0]) - 0.5 * kG * 0.9 * std::cos(q[0]);
+                 }});
+    // a uniform rod of length LEN = L0 + D = 0.8 and mass MA = 2 M = 1.5 about its end:
+    // (MA LEN^2/3) Q'' = -MA G LEN/2 sin(Q)
+    c.push_back({"compound_assignment.al", {"Q"},
+                 [](double, const Vec& q, const Vec&) { return Vec{-3 * kG * std::sin(q[0]) / (2 * 0.8)}; }, {1}, {0},
+                 [](const Vec& q, const Vec& qd) {
+                     return 0.5 * (1.5 * 0.64 / 3) * qd[0] * qd[0] - 1.5 * kG * 0.4 * std::cos(q[0]);
+                 }});
+    // a compound pendulum: (I3 + MB H^2) Q'' = -MB G H sin(Q), MB = 3, H = 0.4, I3 = 0.05
+    c.push_back({"implicit_constants.al", {"Q"},
+                 [](double, const Vec& q, const Vec&) { return Vec{-3 * kG * 0.4 * std::sin(q[0]) / (0.05 + 3 * 0.16)}; },
+                 {0.5}, {0},
+                 [](const Vec& q, const Vec& qd) {
+                     return 0.5 * (0.05 + 3 * 0.16) * qd[0] * qd[0] - 3 * kG * 0.4 * std::cos(q[0]);
+                 }});
+    // a rod (M, L) and a particle M at its end: (M L^2/3 + M L^2) A'' = -(M G L/2 + M G L) sin(A),
+    // A'' = -9 G sin(A) / (8 L), L = 0.8, M = 1.1; the variable A is A_var in the script
+    c.push_back({"kind_clash.al", {"A_var"},
+                 [](double, const Vec& q, const Vec&) { return Vec{-9 * kG * std::sin(q[0]) / (8 * 0.8)}; }, {0.3}, {0},
+                 [](const Vec& q, const Vec& qd) {
+                     return 0.5 * (4.0 / 3 * 1.1 * 0.64) * qd[0] * qd[0] - 1.5 * 1.1 * kG * 0.8 * std::cos(q[0]);
+                 }});
+    // a particle pendulum, OMEGA = THETA' written as the rate: THETA'' = -G/L sin(THETA), L = 1.3
+    c.push_back({"speed_as_assignment.al", {"THETA"},
+                 [](double, const Vec& q, const Vec&) { return Vec{-kG / 1.3 * std::sin(q[0])}; }, {60 * kDeg}, {0},
+                 [](const Vec& q, const Vec& qd) {
+                     return 0.5 * 0.2 * 1.69 * qd[0] * qd[0] - 0.2 * kG * 1.3 * std::cos(q[0]);
+                 }});
+    // M X'' = -K (X - L0) - C X', M = 2, K = 30, C = 0.5, L0 = 0.4
+    c.push_back({"specified_definition.al", {"X"},
+                 [](double, const Vec& q, const Vec& qd) { return Vec{(-30 * (q[0] - 0.4) - 0.5 * qd[0]) / 2}; }, {0.6},
+                 {0}});
+    // M X'' = O cos(2 t) - C X', M = 3, C = 0.2, O = 1.5 (given)
+    c.push_back({"given_variable.al", {"X"},
+                 [](double t, const Vec&, const Vec& qd) { return Vec{(1.5 * std::cos(2 * t) - 0.2 * qd[0]) / 3}; }, {0},
+                 {0.1}, {}, ", O = 1.5"});
+    // M X'' = -K X - C X' - F0 + F0/2, M = 1.5, K = 20, C = 0.7, F0 = 2
+    c.push_back({"force_added.al", {"X"},
+                 [](double, const Vec& q, const Vec& qd) { return Vec{(-20 * q[0] - 0.7 * qd[0] - 1) / 1.5}; }, {0.1}, {0}});
+    // a uniform rod about its end, L = 1.1, M = 2: Q'' = -3 G sin(Q) / (2 L)
+    c.push_back({"dcm_pendulum.al", {"Q"},
+                 [](double, const Vec& q, const Vec&) { return Vec{-3 * kG * std::sin(q[0]) / (2 * 1.1)}; }, {0.7}, {0},
+                 [](const Vec& q, const Vec& qd) {
+                     return 0.5 * (2 * 1.21 / 3) * qd[0] * qd[0] - 2 * kG * 0.55 * std::cos(q[0]);
+                 }});
+    // the point-mass double pendulum (L1 = 1, L2 = 0.8, M1 = 1.2, M2 = 0.7), d = Q1 - Q2:
+    //   (M1 + M2) L1 Q1'' + M2 L2 cos(d) Q2'' = -M2 L2 Q2'^2 sin(d) - (M1 + M2) G sin(Q1)
+    //   L1 cos(d) Q1'' + L2 Q2'' = L1 Q1'^2 sin(d) - G sin(Q2)
+    c.push_back({"particle_double_pendulum.al", {"Q1", "Q2"},
+                 [](double, const Vec& q, const Vec& qd) {
+                     const double L1 = 1, L2 = 0.8, M1 = 1.2, M2 = 0.7, d = q[0] - q[1];
+                     return solve2((M1 + M2) * L1, M2 * L2 * std::cos(d), L1 * std::cos(d), L2,
+                                   -M2 * L2 * qd[1] * qd[1] * std::sin(d) - (M1 + M2) * kG * std::sin(q[0]),
+                                   L1 * qd[0] * qd[0] * std::sin(d) - kG * std::sin(q[1]));
+                 },
+                 {40 * kDeg, -20 * kDeg}, {0, 1},
+                 [](const Vec& q, const Vec& qd) {
+                     const double L1 = 1, L2 = 0.8, M1 = 1.2, M2 = 0.7;
+                     double T = 0.5 * (M1 + M2) * L1 * L1 * qd[0] * qd[0] + 0.5 * M2 * L2 * L2 * qd[1] * qd[1] +
+                                M2 * L1 * L2 * qd[0] * qd[1] * std::cos(q[0] - q[1]);
+                     return T - (M1 + M2) * kG * L1 * std::cos(q[0]) - M2 * kG * L2 * std::cos(q[1]);
+                 }});
+    // IA Q'' = TM - B Q', IA = 0.02, TM = 0.3, B = 0.05
+    c.push_back({"motor_torque.al", {"Q"},
+                 [](double, const Vec&, const Vec& qd) { return Vec{(0.3 - 0.05 * qd[0]) / 0.02}; }, {0}, {0}});
+    // a rod about its end pushed by F N1> at its tip (L sin Q, -L cos Q): moment F L cos(Q);
+    // (M L^2/3) Q'' = F L cos(Q) - M G L/2 sin(Q), L = 1, M = 1.5, F = 2; the constant force's
+    // potential is -F L sin(Q)
+    c.push_back({"two_points.al", {"Q"},
+                 [](double, const Vec& q, const Vec&) {
+                     return Vec{(2 * std::cos(q[0]) - 1.5 * kG * 0.5 * std::sin(q[0])) / (1.5 / 3)};
+                 },
+                 {0}, {0},
+                 [](const Vec& q, const Vec& qd) {
+                     return 0.5 * (1.5 / 3) * qd[0] * qd[0] - 1.5 * kG * 0.5 * std::cos(q[0]) - 2 * std::sin(q[0]);
+                 }});
+    // a particle pendulum, L = 0.7, M = 1: Q'' = -G/L sin(Q) (OUTPUT gives Q in degrees)
+    c.push_back({"sign_and_units.al", {"Q"}, [](double, const Vec& q, const Vec&) { return Vec{-kG / 0.7 * std::sin(q[0])}; },
+                 {30 * kDeg}, {0},
+                 [](const Vec& q, const Vec& qd) { return 0.5 * 0.49 * qd[0] * qd[0] - kG * 0.7 * std::cos(q[0]); }});
+    // a rod about its end driven by T0 sin(W t): (M L^2/3) Q'' = T0 sin(W t) - M G L/2 sin(Q),
+    // L = 0.6, M = 1, T0 = 0.4, W = 3
+    c.push_back({"time_forcing.al", {"Q"},
+                 [](double t, const Vec& q, const Vec&) {
+                     return Vec{(0.4 * std::sin(3 * t) - kG * 0.3 * std::sin(q[0])) / (0.36 / 3)};
+                 },
+                 {0}, {0}});
+    // X'' = -K X with the symmetric K = [5, -2; -2, 3]: V = (5 X1^2 - 4 X1 X2 + 3 X2^2) / 2
+    c.push_back({"indexed_2d.al", {"X1", "X2"},
+                 [](double, const Vec& q, const Vec&) {
+                     return Vec{-5 * q[0] + 2 * q[1], 2 * q[0] - 3 * q[1]};
+                 },
+                 {0.1, 0}, {0, 0.2},
+                 [](const Vec& q, const Vec& qd) {
+                     return (qd[0] * qd[0] + qd[1] * qd[1]) / 2 + (5 * q[0] * q[0] - 4 * q[0] * q[1] + 3 * q[1] * q[1]) / 2;
+                 }});
+    // V = K X^2/2 + C X^4/4, the force -dV/dX: M X'' = -K X - C X^3, M = 0.5, K = 2, C = 8
+    c.push_back({"potential_force.al", {"X"},
+                 [](double, const Vec& q, const Vec&) { return Vec{(-2 * q[0] - 8 * q[0] * q[0] * q[0]) / 0.5}; },
+                 {0.4}, {0},
+                 [](const Vec& q, const Vec& qd) {
+                     return 0.25 * qd[0] * qd[0] + q[0] * q[0] + 2 * q[0] * q[0] * q[0] * q[0];
+                 }});
+    return c;
+}
+
+// A fourth-order Runge-Kutta integration of the hand-derived equations to t_end.
+std::pair<Vec, Vec> integrate(const Accelerations& f, Vec q, Vec qd, double t_end) {
+    const int n = static_cast<int>(std::lround(t_end / 1e-4));
+    const double h = t_end / n;
+    const std::size_t m = q.size();
+    auto add = [m](const Vec& a, const Vec& b, double s) {
+        Vec r(m);
+        for (std::size_t i = 0; i < m; ++i) r[i] = a[i] + s * b[i];
+        return r;
+    };
+    for (int k = 0; k < n; ++k) {
+        double t = k * h;
+        Vec k1q = qd, k1v = f(t, q, qd);
+        Vec k2q = add(qd, k1v, h / 2), k2v = f(t + h / 2, add(q, k1q, h / 2), add(qd, k1v, h / 2));
+        Vec k3q = add(qd, k2v, h / 2), k3v = f(t + h / 2, add(q, k2q, h / 2), add(qd, k2v, h / 2));
+        Vec k4q = add(qd, k3v, h), k4v = f(t + h, add(q, k3q, h), add(qd, k3v, h));
+        for (std::size_t i = 0; i < m; ++i) {
+            q[i] += h / 6 * (k1q[i] + 2 * k2q[i] + 2 * k3q[i] + k4q[i]);
+            qd[i] += h / 6 * (k1v[i] + 2 * k2v[i] + 2 * k3v[i] + k4v[i]);
+        }
+    }
+    return {q, qd};
+}
+
+// simulation.csv: the columns by name (units dropped, degrees turned into radians)
+std::map<std::string, Vec> read_table(const std::string& path) {
+    std::istringstream in(read_file(path));
+    std::string header, line;
+    std::getline(in, header);
+    std::vector<std::string> names;
+    std::vector<double> scale;
+    std::istringstream h(header);
+    for (std::string cell; std::getline(h, cell, ',');) {
+        std::string unit;
+        if (auto b = cell.find(" ["); b != std::string::npos) {
+            unit = cell.substr(b + 2, cell.size() - b - 3);
+            cell = cell.substr(0, b);
+        }
+        names.push_back(cell);
+        scale.push_back(unit == "deg" || unit == "deg/s" ? kDeg : 1.0);
+    }
+    std::map<std::string, Vec> table;
+    while (std::getline(in, line)) {
+        std::istringstream l(line);
+        std::size_t i = 0;
+        for (std::string cell; std::getline(l, cell, ',') && i < names.size(); ++i)
+            table[names[i]].push_back(std::stod(cell) * scale[i]);
+    }
+    return table;
+}
+
+class AutolevAcceptance : public ::testing::TestWithParam<Case> {};
+
+// The equations of the imported file, solved for the accelerations at random states, equal
+// the hand derivation.
+TEST_P(AutolevAcceptance, EquationsAgreeWithTheHandDerivation) {
+    const Case& c = GetParam();
+    AutolevTranslation t = import(c.file);
+    ASSERT_TRUE(t.ok());
+    const std::string k = kane_name(t.script);
+    std::mt19937 rng(20261127);
+    auto uniform = [&](double a, double b) { return std::uniform_real_distribution<double>(a, b)(rng); };
+    for (int trial = 0; trial < 3; ++trial) {
+        Vec q, qd;
+        std::string at, unknowns;
+        double time = uniform(0, 5);
+        for (const std::string& n : c.q) {
+            q.push_back(uniform(-2, 2));
+            qd.push_back(uniform(-3, 3));
+            at += n + " = " + num(q.back()) + ", " + n + "' = " + num(qd.back()) + ", ";
+            unknowns += (unknowns.empty() ? "" : ", ") + n + "''";
+        }
+        ScriptRun r = run(t.script, "solve " + k + " for " + unknowns + " at " + at + "t = " + num(time) + c.given);
+        ASSERT_EQ(r.status, RunStatus::ok) << r.err << t.script;
+        Vec expected = c.accelerations(time, q, qd);
+        for (std::size_t i = 0; i < c.q.size(); ++i) {
+            ASSERT_TRUE(r.named.count(c.q[i] + "''")) << r.out;
+            EXPECT_NEAR(r.named[c.q[i] + "''"], expected[i], 1e-12 * std::max(1.0, std::abs(expected[i])))
+                << c.file << " " << c.q[i] << "'' at " << at << "t = " << time;
+        }
+    }
+}
+
+// The imported file simulates: its end state equals the hand-derived equations integrated
+// alike, and the energy is kept where it is conserved.
+TEST_P(AutolevAcceptance, SimulatesAsTheHandDerivation) {
+    const Case& c = GetParam();
+    AutolevTranslation t = import(c.file);
+    ASSERT_TRUE(t.ok());
+    const std::string dir = "acceptance_" + c.file.substr(0, c.file.size() - 3);
+    // the file's OUTPUT lists some columns: the rates the energy needs are added
+    std::string rates;
+    if (t.script.find("\noutput ") != std::string::npos)
+        for (const std::string& n : c.q) rates += "output " + n + "'\n";
+    ScriptRun r = run(t.script, rates + "tolerance abs 1e-12 rel 1e-12\nintegrator rkf78\nsimulate plot none to \"" + dir + "\"");
+    ASSERT_EQ(r.status, RunStatus::ok) << r.err << t.script;
+    auto table = read_table((std::filesystem::path(::testing::TempDir()) / dir / "simulation.csv").string());
+    ASSERT_TRUE(table.count("t")) << t.script;
+    const Vec& time = table["t"];
+    ASSERT_GE(time.size(), 2u);
+    auto [q, qd] = integrate(c.accelerations, c.q0, c.qd0, time.back());
+    int compared = 0;
+    for (std::size_t i = 0; i < c.q.size(); ++i) {
+        if (table.count(c.q[i])) {
+            EXPECT_NEAR(table[c.q[i]].back(), q[i], 1e-8 * std::max(1.0, std::abs(q[i]))) << c.file << " " << c.q[i];
+            ++compared;
+        }
+        if (table.count(c.q[i] + "'")) {
+            EXPECT_NEAR(table[c.q[i] + "'"].back(), qd[i], 1e-8 * std::max(1.0, std::abs(qd[i]))) << c.file;
+            ++compared;
+        }
+    }
+    EXPECT_GT(compared, 0) << c.file << ": no coordinate among the columns";
+    if (!c.energy) return;
+    double e0 = 0, drift = 0;
+    for (std::size_t row = 0; row < time.size(); ++row) {
+        Vec qs, qds;
+        for (const std::string& n : c.q) {
+            qs.push_back(table.at(n)[row]);
+            qds.push_back(table.at(n + "'")[row]);
+        }
+        double e = c.energy(qs, qds);
+        if (row == 0) e0 = e;
+        drift = std::max(drift, std::abs(e - e0));
+    }
+    EXPECT_LE(drift, 1e-9 * std::max(1.0, std::abs(e0))) << c.file;
+}
+
+INSTANTIATE_TEST_SUITE_P(Files, AutolevAcceptance, ::testing::ValuesIn(cases()), [](const auto& p) {
+    return p.param.file.substr(0, p.param.file.size() - 3);
+});
+
+// Every file of the folder has a case (the kinematics file its own test below), and there are
+// at least twenty.
+TEST(AutolevAcceptanceFiles, EveryFileIsChecked) {
+    std::vector<std::string> checked{"vector_algebra.al", "no_newtonian_kinematics.al", "algebra_functions.al",
+                                     "matrix_values.al"};
+    for (const Case& c : cases()) checked.push_back(c.file);
+    int files = 0;
+    for (const auto& e : std::filesystem::directory_iterator(kDir)) {
+        if (e.path().extension() != ".al") continue;
+        ++files;
+        const std::string name = e.path().filename().string();
+        EXPECT_NE(std::find(checked.begin(), checked.end(), name), checked.end()) << name << " has no test";
+    }
+    EXPECT_GE(files, 20);
+}
+
+// A file without dynamics: the two-link arm's tip R> = L1 A1> + L2 B1>, its measures, velocity
+// and angular momentum measure against the hand derivation (s1 = sin Q1, s12 = sin(Q1 + Q2)):
+//   X = L1 c1 + L2 c12, Y = L1 s1 + L2 s12, D = sqrt(L1^2 + L2^2 + 2 L1 L2 c2),
+//   VX = -L1 s1 Q1' - L2 s12 (Q1' + Q2'), VY = L1 c1 Q1' + L2 c12 (Q1' + Q2'),
+//   H = X VY - Y VX, C = R>.A1> / D = (L1 + L2 c2) / D.
+TEST(AutolevAcceptanceFiles, KinematicsAgreeWithTheHandDerivation) {
+    AutolevTranslation t = import("vector_algebra.al");
+    ASSERT_TRUE(t.ok());
+    std::mt19937 rng(27);
+    auto uniform = [&](double a, double b) { return std::uniform_real_distribution<double>(a, b)(rng); };
+    for (int trial = 0; trial < 3; ++trial) {
+        double q1 = uniform(-3, 3), q2 = uniform(-3, 3), u1 = uniform(-4, 4), u2 = uniform(-4, 4);
+        double l1 = uniform(0.2, 2), l2 = uniform(0.2, 2);
+        std::string at = " at Q1 = " + num(q1) + ", Q2 = " + num(q2) + ", Q1' = " + num(u1) + ", Q2' = " + num(u2) +
+                         ", L1 = " + num(l1) + ", L2 = " + num(l2);
+        std::string extra;
+        for (const char* n : {"X", "Y", "D", "VX", "H", "C"}) extra += std::string("evaluate ") + n + at + "\n";
+        ScriptRun r = run(t.script, extra);
+        ASSERT_EQ(r.status, RunStatus::ok) << r.err << t.script;
+        ASSERT_GE(r.values.size(), 6u) << r.out;
+        Vec v(r.values.end() - 6, r.values.end());
+        double c1 = std::cos(q1), s1 = std::sin(q1), c12 = std::cos(q1 + q2), s12 = std::sin(q1 + q2);
+        double x = l1 * c1 + l2 * c12, y = l1 * s1 + l2 * s12;
+        double d = std::sqrt(l1 * l1 + l2 * l2 + 2 * l1 * l2 * std::cos(q2));
+        double vx = -l1 * s1 * u1 - l2 * s12 * (u1 + u2), vy = l1 * c1 * u1 + l2 * c12 * (u1 + u2);
+        Vec expected{x, y, d, vx, x * vy - y * vx, (l1 + l2 * std::cos(q2)) / d};
+        for (std::size_t i = 0; i < 6; ++i)
+            EXPECT_NEAR(v[i], expected[i], 1e-12 * std::max(1.0, std::abs(expected[i]))) << i << at << "\n" << r.out;
+    }
+}
+
+// The values `evaluate` prints for each name of `names` at `at`, in order.
+Vec evaluate(const AutolevTranslation& t, const std::vector<std::string>& names, const std::string& at) {
+    std::string extra;
+    for (const std::string& n : names) extra += "evaluate " + n + " at " + at + "\n";
+    ScriptRun r = run(t.script, extra);
+    EXPECT_EQ(r.status, RunStatus::ok) << r.err << t.script;
+    if (r.values.size() < names.size()) {
+        ADD_FAILURE() << r.out;
+        return Vec(names.size(), NAN);
+    }
+    return Vec(r.values.end() - static_cast<std::ptrdiff_t>(names.size()), r.values.end());
+}
+
+// A file without NEWTONIAN: the slider at R B1> on the arm B turning by Q in A has
+//   v = R' B1> + R Q' B2>,  a = (R'' - R Q'^2) B1> + (2 R' Q' + R Q'') B2>,
+// and a.A1> = (R'' - R Q'^2) cos Q - (2 R' Q' + R Q'') sin Q.
+TEST(AutolevAcceptanceFiles, KinematicsWithoutNewtonianAgreeWithTheHandDerivation) {
+    AutolevTranslation t = import("no_newtonian_kinematics.al");
+    ASSERT_TRUE(t.ok());
+    std::mt19937 rng(2027);
+    auto uniform = [&](double a, double b) { return std::uniform_real_distribution<double>(a, b)(rng); };
+    for (int trial = 0; trial < 3; ++trial) {
+        double q = uniform(-3, 3), r = uniform(-2, 2), qd = uniform(-3, 3), rd = uniform(-3, 3);
+        double qdd = uniform(-5, 5), rdd = uniform(-5, 5);
+        std::string at = "Q = " + num(q) + ", R = " + num(r) + ", Q' = " + num(qd) + ", R' = " + num(rd) +
+                         ", Q'' = " + num(qdd) + ", R'' = " + num(rdd);
+        Vec v = evaluate(t, {"VR", "VT", "AR", "AT", "AX"}, at);
+        double ar = rdd - r * qd * qd, at_ = 2 * rd * qd + r * qdd;
+        Vec expected{rd, r * qd, ar, at_, ar * std::cos(q) - at_ * std::sin(q)};
+        for (std::size_t i = 0; i < expected.size(); ++i)
+            EXPECT_NEAR(v[i], expected[i], 1e-12 * std::max(1.0, std::abs(expected[i]))) << i << " at " << at;
+    }
+}
+
+// Algebra: E1 = (A + B Q)^2 expanded, E2 = E1 + (A + B) Q, E3 = dE1/dQ + d(A U^2)/dU =
+// 2 B (A + B Q) + 2 A U (U is Q'), E4 = E2 sin Q.
+TEST(AutolevAcceptanceFiles, AlgebraFunctionsAgreeWithTheHandResults) {
+    AutolevTranslation t = import("algebra_functions.al");
+    ASSERT_TRUE(t.ok());
+    std::mt19937 rng(2028);
+    auto uniform = [&](double a, double b) { return std::uniform_real_distribution<double>(a, b)(rng); };
+    for (int trial = 0; trial < 3; ++trial) {
+        double a = uniform(-2, 2), b = uniform(-2, 2), q = uniform(-3, 3), u = uniform(-3, 3);
+        std::string at = "A = " + num(a) + ", B = " + num(b) + ", Q = " + num(q) + ", Q' = " + num(u);
+        Vec v = evaluate(t, {"E1", "E2", "E3", "E4"}, at);
+        double e1 = (a + b * q) * (a + b * q), e2 = e1 + (a + b) * q;
+        Vec expected{e1, e2, 2 * b * (a + b * q) + 2 * a * u, e2 * std::sin(q)};
+        for (std::size_t i = 0; i < expected.size(); ++i)
+            EXPECT_NEAR(v[i], expected[i], 1e-12 * std::max(1.0, std::abs(expected[i]))) << i << " at " << at;
+    }
+}
+
+// Matrices as values: M = [cos Q, -sin Q; sin Q, cos Q] times the column [A; B] by elements,
+// X = A cos Q - B sin Q, Y = A sin Q + B cos Q, and R = X^2 + Y^2 = A^2 + B^2.
+TEST(AutolevAcceptanceFiles, MatrixElementsAgreeWithTheHandResults) {
+    AutolevTranslation t = import("matrix_values.al");
+    ASSERT_TRUE(t.ok());
+    std::mt19937 rng(2029);
+    auto uniform = [&](double a, double b) { return std::uniform_real_distribution<double>(a, b)(rng); };
+    for (int trial = 0; trial < 3; ++trial) {
+        double a = uniform(-2, 2), b = uniform(-2, 2), q = uniform(-3, 3);
+        std::string at = "A = " + num(a) + ", B = " + num(b) + ", Q = " + num(q);
+        Vec v = evaluate(t, {"X", "Y", "R"}, at);
+        Vec expected{a * std::cos(q) - b * std::sin(q), a * std::sin(q) + b * std::cos(q), a * a + b * b};
+        for (std::size_t i = 0; i < expected.size(); ++i)
+            EXPECT_NEAR(v[i], expected[i], 1e-12 * std::max(1.0, std::abs(expected[i]))) << i << " at " << at;
+    }
+}
+
+}  // namespace autolev_acceptance_test
