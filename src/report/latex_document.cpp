@@ -325,7 +325,7 @@ std::string report_detail::render_latex(const ReportContent& c,
         t += "\\subsection*{Rows: free-body diagrams and equations}\n";
         t += "Unknown loads in red, known in blue, gravity in green; $O$ is the about point and "
              "$\\hat u$ the direction. Drawn at " +
-             configuration_words(c) + ".\n\n";
+             tex_text(configuration_words(c)) + ".\n\n";
     }
     Evaluation ev(sys, c.configuration);
     const std::vector<const Point*> placed = placed_points(sys);
