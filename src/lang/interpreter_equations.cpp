@@ -371,6 +371,9 @@ void Interpreter::Impl::methods(const Statement& s) {
     values[n.text] = array_value(eqs);
     formed_here.residuals = eqs;
     formed[n.text] = std::move(formed_here);
+    std::erase_if(formed_sets, [&](const ReportEquationSet& e) { return e.name == n.text; });
+    formed_sets.push_back({n.text, s.keyword == "lagrange" ? "Lagrange's method" : "Kane's method",
+                           s.location.line, eqs});
     // what the equations are in: the accelerations, or the rates of the independent speeds
     std::vector<ex> accelerations;
     if (formed[n.text].kane && !formed[n.text].kane->independent_speeds.empty())

@@ -176,6 +176,9 @@ struct Interpreter::Impl {
     std::vector<PendingSymbol> pending_symbols{};  ///< declared before newtonian
     /// What simulate and inverse computed, in run order, for the report.
     std::vector<ReportHistory> histories{};
+    /// The equations kane and lagrange formed, in run order (a name formed again replaces its
+    /// earlier set), for the report.
+    std::vector<ReportEquationSet> formed_sets{};
     /// What solve, evaluate and linearize printed, in run order, for the report.
     std::vector<ReportResult> results{};
     /// The coordinates the last solve found or was given (its `at` values and the

@@ -114,6 +114,7 @@ std::string Interpreter::Impl::write_report_to(const std::string& dir, const exm
     c.coordinates = default_coordinates();
     c.histories = histories;
     c.results = results;
+    c.equation_sets = formed_sets;
     // the road-map: the last the script formed, else the planner's
     if (!last_roadmap.empty()) {
         c.rows = roadmaps.at(last_roadmap).rows;

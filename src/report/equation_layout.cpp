@@ -139,13 +139,16 @@ std::vector<std::string> report_detail::typeset_equations(const ReportContent& c
     if (!c.system) return out;
     out.reserve(c.rows.size());
     Simplifier simplifier;  // the rows share their kinematics: each node is simplified once
-    for (const RoadmapRow& r : c.rows)
-        out.push_back(breakable_tex(
-            count_ops(r.equation) > kAbbreviateOps
-                ? abbreviated_equation_tex("0", r.equation)
-                : relation_tex(c.system->symbols(),
-                               calc_solved_equation(*c.system, r.equation, r.variable, simplifier),
-                               r.variable)));
+    const auto typeset = [&](const ex& e, const ex& variable) {
+        return breakable_tex(count_ops(e) > kAbbreviateOps
+                                 ? abbreviated_equation_tex("0", e)
+                                 : relation_tex(c.system->symbols(),
+                                                calc_solved_equation(*c.system, e, variable, simplifier),
+                                                variable));
+    };
+    for (const RoadmapRow& r : c.rows) out.push_back(typeset(r.equation, r.variable));
+    for (const ReportEquationSet& set : c.equation_sets)
+        for (const ex& e : set.equations) out.push_back(typeset(e, ex()));
     return out;
 }
 

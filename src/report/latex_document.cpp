@@ -379,6 +379,21 @@ std::string report_detail::render_latex(const ReportContent& c,
             t += "\\eqline{" + line + "}\n";
         t += "\\end{eqlines}\n";
     }
+    // the equations kane and lagrange formed, typeset after the rows'
+    std::size_t next = c.rows.size();
+    for (const ReportEquationSet& set : c.equation_sets) {
+        t += "\\subsection*{" + tex_text(set.method) + ": " + tex_text(set.name) + " (line " +
+             std::to_string(set.line) + ")}\n\\begin{eqlines}\n";
+        for (std::size_t k = 0; k < set.equations.size(); ++k) {
+            const std::vector<std::string> lines = tex_lines(equations.at(next++));
+            for (std::size_t j = 0; j < lines.size(); ++j)
+                t += "\\eqline{" +
+                     (j ? std::string()
+                        : "\\mathrm{" + tex_text(set.name) + "}[" + std::to_string(k + 1) + "]\\colon\\ ") +
+                     lines[j] + "}\n";
+        }
+        t += "\\end{eqlines}\n";
+    }
     if (!c.results.empty()) {
         t += "\\subsection*{Results}\n";
         for (const ReportResult& r : c.results)

@@ -35,6 +35,8 @@ std::vector<std::string> tex_lines(const std::string& tex);
 /// on the following lines), written breakable (breakable_tex). Simplifying an equation for the reader
 /// is the costly part of a report (seconds for a 42-row arm), so write_report typesets once
 /// and hands the result to both the page and roadmap.tex.
+/// After the rows', the equations of content.equation_sets, set after set, typeset alike
+/// (0 = ..., readable or abbreviated).
 std::vector<std::string> typeset_equations(const ReportContent& content);
 
 /// render_report_json / render_report_latex / render_report_html with the rows' equations

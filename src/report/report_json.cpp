@@ -785,6 +785,19 @@ std::string report_detail::render_json(const ReportContent& c,
                               .add("statement", str(r.statement))
                               .add("text", str(r.text))
                               .done());
+    // the equations kane and lagrange formed, typeset after the rows'
+    std::vector<std::string> sets;
+    std::size_t next = c.rows.size();
+    for (const ReportEquationSet& set : c.equation_sets) {
+        std::vector<std::string> tex;
+        for (std::size_t k = 0; k < set.equations.size(); ++k) tex.push_back(equations.at(next++));
+        sets.push_back(Obj()
+                           .add("name", str(set.name))
+                           .add("method", str(set.method))
+                           .add("line", std::to_string(set.line))
+                           .add("equations", str_arr(tex))
+                           .done());
+    }
     Obj o;
     o.add("format", "1")
         .add("title", str(c.title))
@@ -795,6 +808,7 @@ std::string report_detail::render_json(const ReportContent& c,
         .add("closure", arr(closure))
         .add("geometry", geometry)
         .add("roadmap", arr(rows));
+    o.add("equation_sets", arr(sets));
     o.add("results", arr(results));
     o.add("intermediates", str_arr(zs.tex));
     o.add("histories", arr(histories)).add("animation", animation_json(c, placed));

@@ -179,6 +179,33 @@ TEST(ReportPage, LongResultLinesAreBrokenInTheLatexDocument) {
     EXPECT_GE(count, 4);  // \begin, the statement over two lines at least, the result
 }
 
+TEST(ReportPage, TheEquationsKaneAndLagrangeFormedAreOnThePageAndInTheLatex) {
+    // a mass on a spring: Kane's and Lagrange's one equation each, 0 = -k x - m x''
+    TempDir dir;
+    ScriptInDir r(dir.path);
+    r.run("newtonian N\nparticle P\nconstant m = 2 kg, k = 50 N/m\nvariable x''\n"
+          "translate P from N_o by x*Nx>\nmass P = m\nspring s between P and N_o stiffness k length 0\n"
+          "kane K for x\nlagrange L for x\nkane K for x\nreport to \"rep\"\n");
+    const std::string page = read_text(dir.path / "rep" / "index.html");
+    // in run order, a name formed again in its later place, each with its line
+    const std::size_t L = page.find("{\"name\":\"L\",\"method\":\"Lagrange's method\",\"line\":9,\"equations\":[\"");
+    const std::size_t K = page.find("{\"name\":\"K\",\"method\":\"Kane's method\",\"line\":10,\"equations\":[\"");
+    ASSERT_NE(L, std::string::npos);
+    ASSERT_NE(K, std::string::npos);
+    EXPECT_LT(L, K);
+    EXPECT_EQ(page.find("\"line\":8,\"equations\""), std::string::npos) << "K's first forming is replaced";
+    // each equation holds the spring's k x and the inertia m x''
+    for (std::size_t at : {L, K}) {
+        const std::string set = page.substr(at, page.find("]}", at) - at);
+        EXPECT_NE(set.find("k"), std::string::npos) << set;
+        EXPECT_NE(set.find("{x}''"), std::string::npos) << set;
+    }
+    const std::string tex = read_text(dir.path / "rep" / "roadmap.tex");
+    EXPECT_NE(tex.find("\\subsection*{Lagrange's method: L (line 9)}"), std::string::npos);
+    EXPECT_NE(tex.find("\\subsection*{Kane's method: K (line 10)}"), std::string::npos);
+    EXPECT_NE(tex.find("\\eqline{\\mathrm{K}[1]\\colon\\ "), std::string::npos);
+}
+
 TEST(ReportPage, APositionIsNoStickAndASlidingConnectionNoJointForce) {
     // a cart C on a rail at x Nx> from the origin, a rod A pinned to it at C_o: the vector from
     // N_o to C_o is where the cart is, not a body, and the rail lets C slide along Nx> (no

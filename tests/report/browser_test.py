@@ -84,6 +84,7 @@ class Dom(html.parser.HTMLParser):
         self.matrices_tables = 0  # matrices KaTeX laid out inside it (span.mtable)
         self.results = []        # per div.result: [statement line, output text]
         self.configuration = ""  # the note saying where the diagrams are drawn
+        self.equation_sets = 0   # div.equation-set: the equations of a kane or lagrange
         self.title = ""          # the page's <title>
         self.h1 = ""
         self.figures = []        # per figure.plot: its unit, title, y axis label and series (unit, colour)
@@ -111,6 +112,8 @@ class Dom(html.parser.HTMLParser):
             self.in_pre = a.get("id")
         if tag == "div" and "row" in c:
             self.rows += 1
+        if tag == "div" and "equation-set" in c:
+            self.equation_sets += 1
         if tag == "div" and "result" in c:
             self.results.append(["", ""])
         if tag == "pre" and self.inside("div", "result"):
@@ -509,6 +512,11 @@ def examples(cli, source, work, browser):
               and all(r[1].strip() for r in dom.results),
               "%s: every solve, evaluate and linearize result shown under its statement (lines %s, page %s)"
               % (name, printing, [r[0][:40] for r in dom.results]))
+        # the equations kane and lagrange formed, each statement's under its name
+        formed = [i + 1 for i, l in enumerate(lines) if re.match(r"(kane|lagrange)\b", l)]
+        check([s["line"] for s in data["equation_sets"]] == formed and dom.equation_sets == len(formed),
+              "%s: the equations of every kane and lagrange statement on the page (lines %s, %d sections)"
+              % (name, formed, dom.equation_sets))
         # drawn at a configuration the model takes: its loops closed, and the page says where
         closure = [abs(k["residual"]) for k in data["closure"]]
         check(all(r <= 1e-9 for r in closure) and data["configuration_source"]

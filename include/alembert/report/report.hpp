@@ -41,6 +41,15 @@ struct ReportResult {
     std::string text{};        ///< what it printed
 };
 
+/// Equations of motion the script formed besides the road-map (`kane`, `lagrange`), shown
+/// on the page and in roadmap.tex under their name.
+struct ReportEquationSet {
+    std::string name{};               ///< the script's name for them ("K")
+    std::string method{};             ///< "Kane's method", "Lagrange's method"
+    int line = 0;                     ///< the statement's line in the script
+    std::vector<ex> equations{};      ///< each 0 = equations[i]
+};
+
 /// Everything a report shows. The page is a function of this alone (no clock, no paths), so
 /// the same content gives the same bytes.
 struct ReportContent {
@@ -60,6 +69,8 @@ struct ReportContent {
     /// a name missing here is shown in SI.
     std::map<std::string, double> unit_scales{};
     std::vector<ReportHistory> histories{};
+    /// The equations of motion the script formed with kane and lagrange, in run order.
+    std::vector<ReportEquationSet> equation_sets{};
     /// The results the script printed, in run order.
     std::vector<ReportResult> results{};
     /// Remarks shown at the top of the page (why there is no road-map, ...).

@@ -683,6 +683,25 @@
   }
 
   // ---- the page ---------------------------------------------------------------------------
+  // ---- the equations of motion kane and lagrange formed -----------------------------------
+  function equationSets(main, data) {
+    if (!data.equation_sets || !data.equation_sets.length) return;
+    var sec = el("section", {id: "equations"}, main);
+    el("h2", {}, sec, "Equations of motion");
+    data.equation_sets.forEach(function (set) {
+      var box = el("div", {"class": "equation-set", "data-line": set.line}, sec);
+      el("h3", {}, box, set.method + ": " + set.name + " (line " + set.line + ")");
+      set.equations.forEach(function (eq, k) {
+        el("div", {"class": "eq-name"}, box, set.name + "[" + (k + 1) + "]");
+        if (eq.length > LONG_TEX)
+          folded(box, "equation-folded", "0 = ... (" + eq.length + " characters of TeX: open to typeset)",
+                 function (d) { tex(d, eq, true); });
+        else
+          tex(box, eq, true);
+      });
+    });
+  }
+
   // ---- what the script printed: solve, evaluate, linearize --------------------------------
   function results(main, data) {
     if (!data.results || !data.results.length) return;
@@ -714,6 +733,7 @@
     data.notes.forEach(function (n) { el("p", {"class": "warning"}, main, n); });
     diagrams = [];
     if (data.roadmap.length) roadmap(main, data);
+    equationSets(main, data);
     results(main, data);
     if (data.matrices) matrices(main, data);
     animation(main, data);
