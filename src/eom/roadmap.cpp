@@ -11,6 +11,7 @@
 #include "alembert/error.hpp"
 #include "alembert/sym/print.hpp"
 #include "alembert/sym/simplify.hpp"
+#include "accumulated_moment.hpp"
 #include "free_body_rows.hpp"
 #include "alembert/eom/zero_test.hpp"
 
@@ -52,6 +53,10 @@ ex form_roadmap_equation(const System& sys, const RoadmapRow& row) {
     if (!row.about)
         throw ArgumentError("form_roadmap_equation(): the rotate row for '" +
                             to_string(row.variable) + "' has no about point; give one");
+    // large systems: the moments accumulated along the point tree (each row a few terms per
+    // acceleration beyond the intermediates the rows share)
+    if (row.system.size() > detail::kAccumulatedRowBodies)
+        if (auto E = detail::form_accumulated_moment_row(sys, row)) return *E;
     // u . (M^{S/O} - d/dt H^{S/O} - v^O x L^S), the inertial part as sum I.alpha + w x I.w + r x m a
     Vector M = sys.calc_resultant(row.system, *row.about).moment;
     if (row.analysis == Analysis::dynamics) M -= calc_inertial_moment(row.system, *row.about, N);

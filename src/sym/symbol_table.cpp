@@ -148,6 +148,7 @@ ex SymbolTable::make_symbol(const std::string& name, Info i, bool positive) {
     info_.emplace(s, std::move(i));
     by_name_.emplace(name, s);
     order_.push_back(s);
+    by_kind_.at(static_cast<std::size_t>(info_.at(s).kind)).push_back(s);
     return s;
 }
 
@@ -287,10 +288,7 @@ const ex& SymbolTable::definition(const ex& z) const {
 }
 
 std::vector<ex> SymbolTable::symbols(SymbolKind k) const {
-    std::vector<ex> out;
-    for (const ex& s : order_)
-        if (info_.at(s).kind == k) out.push_back(s);
-    return out;
+    return by_kind_.at(static_cast<std::size_t>(k));
 }
 
 ex SymbolTable::dt(const ex& e) {

@@ -4,6 +4,7 @@
 
 #include <ginac/ginac.h>
 
+#include <array>
 #include <cstddef>
 #include <map>
 #include <optional>
@@ -208,6 +209,7 @@ private:
     std::map<ex, Info, GiNaC::ex_is_less> info_;
     std::unordered_map<std::string, ex> by_name_;
     std::vector<ex> order_;          // every symbol in declaration order
+    std::array<std::vector<ex>, 6> by_kind_{};  // the same, one list per SymbolKind
     std::vector<ex> intermediates_;  // dependency order
     std::map<ex, ex, GiNaC::ex_is_less> z_dt_;
     std::map<ex, std::map<ex, ex, GiNaC::ex_is_less>, GiNaC::ex_is_less> z_diff_;  // dz/ds
