@@ -127,8 +127,14 @@ std::string Interpreter::Impl::write_report_to(const std::string& dir, const exm
             c.rows = plan_roadmap(sys, c.coordinates, unknowns);
         } catch (const Error& e) {
             // the rest of the report stands without it
-            c.notes.push_back(std::string("No road-map: the script forms none and planning one failed: ") + in_script_words(e.what()) +
-                              "; form one in the script (roadmap E for ...) to see it here.");
+            std::string formed;
+            for (const ReportEquationSet& set : formed_sets) formed += (formed.empty() ? "" : ", ") + set.name;
+            c.notes.push_back(
+                formed.empty()
+                    ? std::string("No road-map: the script forms none and planning one failed: ") +
+                          in_script_words(e.what()) + "; form one in the script (roadmap E for ...) to see it here."
+                    : "No road-map: the script forms none; its equations of motion (" + formed +
+                          ") are below. Planning one for the accelerations failed: " + in_script_words(e.what()) + ".");
         }
     }
     // the configuration of the diagrams: as given, else where the later of the last solve and
