@@ -105,6 +105,65 @@ TEST(SilentAnswers, ASwingingPendulumWritesThePinForceOfNewtonsLawAtEverySample)
     EXPECT_GT(largest_speed, 2.0);  // it swings: the q'^2 term is tested, not only the weight
 }
 
+TEST(SilentAnswers, ATubeTurnedAtAPrescribedRateWritesTheWallsPushOnTheBead) {
+    // a bead P (mass mP) free in a tube A turned by theta = w t about the vertical Nz>: from
+    // rest at r0 along the tube, r = r0 cosh(w t), r' = r0 w sinh(w t); across the tube the
+    // wall pushes N_y = mP (r theta'' + 2 r' theta') = 2 mP w r' (Coriolis), and up N_z = mP g
+    // (both were written as 0 by simulate)
+    TempDir dir;
+    Script r(dir.path);
+    r.run("newtonian N\nbody A\nparticle P\nvariable r''\nspecified theta''\n"
+          "constant mP = 0.3 kg, IA = 0.1 kg*m^2, w = 2 rad/s, g = 9.81 m/s^2\nunknown N_y N, N_z N\n"
+          "rotate A from N about z by theta\ntranslate Acm from N_o by 0>\ntranslate P from N_o by r*Ax>\n"
+          "mass A = 1 kg\ninertia A = 0, 0, IA\nmass P = mP\ngravity -g*Nz>\n"
+          "force wall on P = N_y*Ay> + N_z*Nz>\nmotion theta = w*t\ninitial r = 0.1\nfinal time 1 s\n"
+          "output step 0.125 s\ntolerance abs 1e-12 rel 1e-12\noutput r, r', N_y, N_z\nsimulate\n");
+    alembert::Table t = alembert::read_csv((dir.path / "simulation.csv").string());
+    ASSERT_EQ(t.row_count(), 9u);
+    const double mP = 0.3, w = 2, r0 = 0.1;
+    for (std::size_t k = 0; k < t.row_count(); ++k) {
+        const double time = t.columns[0][k];
+        SCOPED_TRACE("t = " + std::to_string(time));
+        const double rd = r0 * w * std::sinh(w * time);
+        EXPECT_NEAR(t.columns[t.column_index("r")][k], r0 * std::cosh(w * time), 1e-9);
+        EXPECT_NEAR(t.columns[t.column_index("r'")][k], rd, 1e-9);
+        // the wall's push from the row's own r' (the integrator's, not the exact one)
+        EXPECT_NEAR(t.columns[t.column_index("N_y")][k], 2 * mP * w * t.columns[t.column_index("r'")][k], 1e-12);
+        EXPECT_NEAR(t.columns[t.column_index("N_z")][k], mP * g, 1e-12);
+    }
+    EXPECT_GT(t.columns[t.column_index("N_y")].back(), 0.8);  // the Coriolis push is tested, not 0
+}
+
+TEST(SilentAnswers, APendulumOnADrivenPivotWritesThePinForceOfNewtonsLaw) {
+    // a particle pendulum (mass m, length L) hanging from a cart C whose position x = A sin(W t)
+    // is prescribed; with the bob at (x + L sin q, -L cos q):
+    //   q'' = -(g sin q + x'' cos q)/L,
+    //   R = m a + m g Ny:  Rx = m (x'' + L (q'' cos q - q'^2 sin q)),
+    //                      Ry = m L (q'' sin q + q'^2 cos q) + m g
+    TempDir dir;
+    Script r(dir.path);
+    r.run("newtonian N\nbody C, A\nvariable q''\nspecified x''\n"
+          "constant m = 2 kg, L = 1 m, g = 9.81 m/s^2, Am = 0.1 m, W = 3 rad/s\nunknown Rx N, Ry N\n"
+          "rotate C from N about z by 0\nrotate A from N about z by q\ntranslate C_o from N_o by x*Nx>\n"
+          "translate Ccm from C_o by 0>\ntranslate A_o from C_o by 0>\ntranslate Acm from A_o by -L*Ay>\n"
+          "mass C = 5 kg; mass A = m\ninertia C = 0, 0, 0; inertia A = 0, 0, 0\ngravity -g*Ny>\n"
+          "reaction pin between C and A at A_o force Rx along Nx>, Ry along Ny>\nmotion x = Am*sin(W*t)\n"
+          "initial q = 30 deg\nfinal time 2 s\noutput step 0.1 s\noutput q, q', Rx, Ry\nsimulate\n");
+    alembert::Table t = alembert::read_csv((dir.path / "simulation.csv").string());
+    ASSERT_EQ(t.row_count(), 21u);
+    const double Am = 0.1, W = 3;
+    for (std::size_t k = 0; k < t.row_count(); ++k) {
+        const double time = t.columns[0][k], q = t.columns[t.column_index("q")][k],
+                     qd = t.columns[t.column_index("q'")][k];
+        SCOPED_TRACE("t = " + std::to_string(time));
+        const double xdd = -Am * W * W * std::sin(W * time), qdd = -(g * std::sin(q) + xdd * std::cos(q)) / L;
+        EXPECT_NEAR(t.columns[t.column_index("Rx")][k], m * (xdd + L * (qdd * std::cos(q) - qd * qd * std::sin(q))),
+                    1e-10);
+        EXPECT_NEAR(t.columns[t.column_index("Ry")][k], m * L * (qdd * std::sin(q) + qd * qd * std::cos(q)) + m * g,
+                    1e-10);
+    }
+}
+
 // ---- output columns ---------------------------------------------------------------------
 
 TEST(SilentAnswers, AnOutputNamedLikeACoordinateMustHoldThatCoordinate) {
