@@ -373,9 +373,72 @@ std::vector<std::vector<std::size_t>> solve_order(
 
 }  // namespace
 
-std::vector<RoadmapRow> plan_roadmap(const System& sys,
-                                     const std::vector<TimeVariable>& coordinates,
-                                     const std::vector<ex>& unknowns, Analysis analysis) {
+namespace {
+
+// The accelerations that fill the rows the unknowns leave free (see plan_default_roadmap):
+// agents are the free rows or the candidate accelerations, whichever are fewer; an
+// acceleration takes its own coordinate's row at no cost, or a constraint row whose equation
+// holds it (the later coordinates first, as the dependent ones). Without a complete
+// assignment, only the accelerations whose own rows are free. In the coordinates' order.
+std::vector<ex> calc_completing_accelerations(const System& sys,
+                                              const std::vector<TimeVariable>& coordinates,
+                                              const std::vector<ex>& unknowns,
+                                              const std::vector<std::size_t>& free_rows,
+                                              const std::vector<ex>& row_equations) {
+    const std::size_t n_coordinates = coordinates.size();
+    std::vector<std::size_t> own;  // the coordinate of each candidate
+    std::vector<ex> candidates;
+    for (std::size_t j = 0; j < n_coordinates; ++j) {
+        const TimeVariable& q = coordinates[j];
+        bool listed = false;
+        for (int d = 0; d <= q.order() && !listed; ++d)
+            for (const ex& x : unknowns) listed = listed || x.is_equal(q.d(d));
+        if (listed) continue;
+        own.push_back(j);
+        candidates.push_back(q.d(std::min(2, q.order())));
+    }
+    if (candidates.empty() || free_rows.empty()) return {};
+    // cost[row][candidate]
+    const std::size_t m = free_rows.size(), p = candidates.size();
+    std::vector<std::vector<double>> cost(m, std::vector<double>(p, kInfeasible));
+    for (std::size_t a = 0; a < m; ++a) {
+        const std::size_t i = free_rows[a];
+        if (i < n_coordinates) {
+            for (std::size_t b = 0; b < p; ++b)
+                if (own[b] == i) cost[a][b] = 0;
+            continue;
+        }
+        const std::vector<bool> changes =
+            calc_changes_with_at_random_states(sys.symbols(), row_equations[i], candidates);
+        for (std::size_t b = 0; b < p; ++b)
+            if (changes[b])
+                cost[a][b] = 1 + 0.5 * static_cast<double>(p - b) / static_cast<double>(p + 1);
+    }
+    std::vector<bool> chosen(p, false);
+    if (m <= p) {
+        for (int b : assign_min_cost(cost))
+            if (b >= 0) chosen[static_cast<std::size_t>(b)] = true;
+    } else {
+        std::vector<std::vector<double>> by_candidate(p, std::vector<double>(m));
+        for (std::size_t a = 0; a < m; ++a)
+            for (std::size_t b = 0; b < p; ++b) by_candidate[b][a] = cost[a][b];
+        if (!assign_min_cost(by_candidate).empty()) chosen.assign(p, true);
+    }
+    if (std::none_of(chosen.begin(), chosen.end(), [](bool c) { return c; }))
+        for (std::size_t a = 0; a < m; ++a)
+            for (std::size_t b = 0; b < p; ++b)
+                if (cost[a][b] == 0) chosen[b] = true;
+    std::vector<ex> out;
+    for (std::size_t b = 0; b < p; ++b)
+        if (chosen[b]) out.push_back(candidates[b]);
+    return out;
+}
+
+// plan_roadmap; with `completion`, when the unknowns leave coordinate or constraint rows free
+// (dynamics), it receives the accelerations that fill them and no rows are planned
+std::vector<RoadmapRow> plan_rows(const System& sys, const std::vector<TimeVariable>& coordinates,
+                                  const std::vector<ex>& unknowns, Analysis analysis,
+                                  std::vector<ex>* completion) {
     // the constraint rows the model declares (motion constraints restrict speeds only, so
     // statics has none of them)
     std::vector<RoadmapRow> constraint_rows;
@@ -583,6 +646,27 @@ std::vector<RoadmapRow> plan_roadmap(const System& sys,
         }
     }
 
+    // the rows no unknown took (the coordinates' rows that can be formed, the constraint
+    // rows): the degrees of freedom the unknown loads leave undetermined
+    if (completion && refusal.empty() && analysis == Analysis::dynamics) {
+        std::vector<bool> taken(n_rows, false);
+        for (int i : row_of) taken[static_cast<std::size_t>(i)] = true;
+        std::vector<std::size_t> free_rows;
+        std::vector<ex> row_equations(n_coordinates + n_constraints);
+        for (std::size_t i = 0; i < n_coordinates + n_constraints; ++i) {
+            if (taken[i]) continue;
+            if (is_constraint(i)) {
+                row_equations[i] = constraint_rows[i - n_coordinates].equation;
+            } else {
+                const Plan& p = plans[i];
+                if (p.S.empty() || (p.motion == Motion::rotate && !p.O)) continue;
+            }
+            free_rows.push_back(i);
+        }
+        *completion = calc_completing_accelerations(sys, coordinates, unknowns, free_rows, row_equations);
+        if (!completion->empty()) return {};
+    }
+
     // the free-body rows: contact forces as unknowns in minimal coordinates (the road-map's
     // column 4: release the contact along u, S is what would move), about points chosen so
     // that each row holds as few unknowns as possible
@@ -728,6 +812,28 @@ std::vector<RoadmapRow> plan_roadmap(const System& sys,
     for (const std::vector<std::size_t>& block : blocks)
         for (std::size_t i : block) ordered.push_back(std::move(rows[i]));
     return ordered;
+}
+
+}  // namespace
+
+std::vector<RoadmapRow> plan_roadmap(const System& sys,
+                                     const std::vector<TimeVariable>& coordinates,
+                                     const std::vector<ex>& unknowns, Analysis analysis) {
+    return plan_rows(sys, coordinates, unknowns, analysis, nullptr);
+}
+
+std::vector<RoadmapRow> plan_default_roadmap(const System& sys,
+                                             const std::vector<TimeVariable>& coordinates) {
+    std::vector<ex> unknowns = sys.symbols().symbols(SymbolKind::unknown);
+    if (unknowns.empty()) {
+        for (const TimeVariable& q : coordinates) unknowns.push_back(q.d(std::min(2, q.order())));
+        return plan_roadmap(sys, coordinates, unknowns);
+    }
+    std::vector<ex> completion;
+    std::vector<RoadmapRow> rows = plan_rows(sys, coordinates, unknowns, Analysis::dynamics, &completion);
+    if (completion.empty()) return rows;
+    unknowns.insert(unknowns.end(), completion.begin(), completion.end());
+    return plan_roadmap(sys, coordinates, unknowns);
 }
 
 }  // namespace alembert

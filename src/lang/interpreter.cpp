@@ -187,12 +187,9 @@ std::string Interpreter::roadmap_text(bool json) {
         rows = m.roadmaps.at(m.last_roadmap).rows;
     } else {
         std::vector<TimeVariable> q = m.default_coordinates();
-        std::vector<ex> unknowns = sys.symbols().symbols(SymbolKind::unknown);
-        if (unknowns.empty())
-            for (const TimeVariable& v : q) unknowns.push_back(v.d(std::min(2, v.order())));
         if (q.empty()) throw ScriptError({1, 1}, "the model declares no variables to plan a road-map for",
                                          "declare coordinates with 'variable q''' and orient or locate with them");
-        rows = m.guard({1, 1}, [&] { return plan_roadmap(sys, q, unknowns); });
+        rows = m.guard({1, 1}, [&] { return plan_default_roadmap(sys, q); });
     }
     return json ? format_roadmap_json(sys, rows) : format_roadmap_table(sys, rows);
 }

@@ -119,12 +119,8 @@ std::string Interpreter::Impl::write_report_to(const std::string& dir, const exm
     if (!last_roadmap.empty()) {
         c.rows = roadmaps.at(last_roadmap).rows;
     } else if (!c.coordinates.empty()) {
-        std::vector<ex> unknowns = sys.symbols().symbols(SymbolKind::unknown);
-        if (unknowns.empty())
-            for (const TimeVariable& v : c.coordinates)
-                unknowns.push_back(v.d(std::min(2, v.order())));
         try {
-            c.rows = plan_roadmap(sys, c.coordinates, unknowns);
+            c.rows = plan_default_roadmap(sys, c.coordinates);
         } catch (const Error& e) {
             // the rest of the report stands without it
             std::string formed;

@@ -68,6 +68,21 @@ std::vector<RoadmapRow> plan_roadmap(const System& sys,
                                      const std::vector<ex>& unknowns,
                                      Analysis analysis = Analysis::dynamics);
 
+/// Plans the road-map of a model whose unknowns are not listed: one row per degree of
+/// freedom, as in forward dynamics, where the accelerations are the unknowns. With no unknown
+/// load measures declared, the rows of the accelerations q'' of `coordinates`. Else the rows of
+/// the model's unknown load measures (SymbolKind::unknown, in their order, as plan_roadmap
+/// plans them), and when those take fewer coordinate and constraint rows than there are (an
+/// under-actuated model: a cart-pole pushed at the cart, an acrobot driven at the elbow), the
+/// accelerations of the coordinates whose motion no unknown load's row determines, after
+/// them: each on its own coordinate's row (S = what moves when only it changes, as for any
+/// coordinate), or on a free constraint row that holds it (the later, dependent coordinates
+/// first). When the unknown loads take every such row (a motor at each joint), the rows are
+/// theirs alone.
+/// @throws as plan_roadmap.
+std::vector<RoadmapRow> plan_default_roadmap(const System& sys,
+                                             const std::vector<TimeVariable>& coordinates);
+
 /// The system S of a joint reaction's rows: the child and every body whose mass centre is
 /// placed (through located-from points) from a point of the child, or whose frame is
 /// oriented (through parent frames) from the child's frame.
