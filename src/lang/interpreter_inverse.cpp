@@ -223,7 +223,7 @@ void Interpreter::Impl::run_inverse(const InverseRequest& r, Location where) {
         write_inverse_results(id, samples, r, opts, q, where,
                               marker_residuals.names.empty() ? nullptr : &marker_residuals);
     const InverseAnalysisReport& rep = results.report;
-    record_history("inverse", r.line, rep.csv, rep.loads, r.motion_file.empty() ? &samples : nullptr);
+    record_history("inverse", r.line, rep.csv, rep.loads, &samples);
     const Table& t = rep.loads;
     std::ostringstream out;
     out << "inverse dynamics over " << span << ", t = " << transcript.number(t.columns[0].front())

@@ -23,8 +23,14 @@ void Interpreter::Impl::record_history(const std::string& statement, int line,
     h.title = report_history_title(statement, line, h.file);
     h.table = table;
     h.coordinates = default_coordinates();
-    if (motion && motion->q.size() == h.coordinates.size()) {
-        h.motion = motion->q;
+    if (motion && motion->t.size() == table.row_count()) {
+        // the samples of the motion, prescribed or read from a file, each coordinate by name
+        for (const TimeVariable& q : h.coordinates) {
+            auto it = std::find(motion->coordinates.begin(), motion->coordinates.end(), q.name());
+            if (it == motion->coordinates.end()) break;
+            h.motion.push_back(motion->q[static_cast<std::size_t>(it - motion->coordinates.begin())]);
+        }
+        if (h.motion.size() != h.coordinates.size()) h.motion.clear();
     } else {
         // a table holding every coordinate (simulate's default outputs): back to SI
         for (const TimeVariable& q : h.coordinates) {

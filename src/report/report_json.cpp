@@ -591,15 +591,23 @@ std::string inertia_ellipsoid_json(const System& sys, const Evaluation& ev, cons
 }
 
 // the positions of the placed points at each sample of the first history with a motion,
-// thinned to at most 400 frames, through one compiled tape
-std::string animation_json(const ReportContent& c, const std::vector<const Point*>& placed) {
+// thinned to at most 400 frames, through one compiled tape; a point placed by more than the
+// coordinates (a force plate's centre of pressure, read with the plate's data) is left out
+std::string animation_json(const ReportContent& c, const std::vector<const Point*>& all_placed) {
     const System& sys = *c.system;
     for (const ReportHistory& h : c.histories) {
         if (h.motion.empty() || h.table.columns.empty()) continue;
         std::vector<ex> inputs, outputs;
         for (const TimeVariable& q : h.coordinates) inputs.push_back(q.symbol());
-        for (const Point* p : placed) {
+        std::vector<const Point*> placed;
+        for (const Point* p : all_placed) {
             Col3 x = p->pos_from(sys.origin()).components_in(sys.newtonian());
+            try {
+                (void)CompiledExpressions(sys.symbols(), inputs, {x[0], x[1], x[2]});
+            } catch (const Error&) {
+                continue;
+            }
+            placed.push_back(p);
             for (int i = 0; i < 3; ++i) outputs.push_back(x[i]);
         }
         // then each rigid body's axes in N (the 3D view turns a triad with the body)

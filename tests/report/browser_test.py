@@ -376,6 +376,59 @@ def three_d(cli, source, work, browser):
             check(kinds.count("methods") >= 3, "%s: Kane, Lagrange and Newton-Euler compared (%s)" % (name, kinds))
 
 
+def motion_from_file(cli, source, work, browser):
+    """A script whose inverse reads its motion from a file (tests/report/motion_file_inverse.alb
+    over motion_file_inverse.csv, unfiltered): the report animates that motion as it does a
+    simulated one, the animation plays, and the diagrams are drawn at the file's first row."""
+    import csv
+    name = "motion_file_inverse"
+    out = os.path.join(work, name)
+    shutil.rmtree(out, ignore_errors=True)
+    os.makedirs(out)
+    script = os.path.join(source, "tests", "report", name + ".alb")
+    r = subprocess.run([cli, "run", "-q", script, "--out", out], capture_output=True, text=True, timeout=300)
+    check(r.returncode == 0, "%s: the script writes its report (stderr: %s)" % (name, r.stderr.strip()[:300]))
+    index = os.path.join(out, "index.html")
+    if r.returncode != 0 or not os.path.isfile(index):
+        return
+    with open(os.path.join(source, "tests", "report", name + ".csv"), newline="") as f:
+        table = list(csv.reader(f))
+    times = [float(row[0]) for row in table[1:]]
+    q1, q2 = (math.radians(float(v)) for v in table[1][1:3])
+    # the arm by hand at the first row: links along their x axes, L_A = 0.4 m, L_B = 0.3 m
+    a_tip = [0.4 * math.cos(q1), 0.4 * math.sin(q1), 0]
+    b_tip = [a_tip[0] + 0.3 * math.cos(q1 + q2), a_tip[1] + 0.3 * math.sin(q1 + q2), 0]
+    want = {"A_o": [0, 0, 0], "Acm": [v / 2 for v in a_tip], "A_tip": a_tip, "B_o": a_tip,
+            "Bcm": [(a + b) / 2 for a, b in zip(a_tip, b_tip)], "B_tip": b_tip}
+    data = page_data(index)
+    anim = data["animation"]
+    check(anim is not None and anim["source"].startswith("inverse"),
+          "%s: the motion read from the file is animated (%s)" % (name, anim and anim["source"]))
+    if anim is None:
+        return
+    check(len(anim["time"]) == len(times) and abs(anim["time"][0] - times[0]) <= 1e-9
+          and abs(anim["time"][-1] - times[-1]) <= 1e-9,
+          "%s: a frame per row of the file, t = %g to %g s (%d frames)" % (name, times[0], times[-1], len(anim["time"])))
+
+    def gap(at):
+        return max(math.dist(at[n], p) for n, p in want.items())
+    first = {n: anim["frames"][0][3 * i:3 * i + 3] for i, n in enumerate(anim["points"])}
+    drawn = {p["name"]: p["at"] for p in data["geometry"]["points"]}
+    check(gap(first) <= 1e-5, "%s: the animation's first frame is the file's first row (off by %.3g m)"
+          % (name, gap(first)))
+    check(gap(drawn) <= 1e-5 and "first sample" in data["configuration_source"],
+          "%s: the diagrams are drawn at the file's first row (off by %.3g m; %r)"
+          % (name, gap(drawn), data["configuration_source"]))
+    dom, console = open_page(browser, "file://" + os.path.abspath(index) + "#exercise")
+    check(dom.status == "ready" and not dom.errors.strip() and not console,
+          "%s: the viewer finished without errors (%r %s)" % (name, dom.errors.strip()[:200], console[:2]))
+    check(dom.anim == 1 and dom.play and dom.slider and dom.anim_sticks >= 2,
+          "%s: the animation with its sticks, play and the time slider" % name)
+    check(data["configuration_source"] in dom.configuration,
+          "%s: the page says where the diagrams are drawn (%r)" % (name, dom.configuration[-120:]))
+    check_exercise(dom.exercise.strip().splitlines(), EXERCISE_MOTION + ["the cursor moves the animation"], name)
+
+
 # appended to a copy of a report's page: once the viewer has drawn and KaTeX's fonts are in,
 # opens the folded equations as printing does (the viewer's beforeprint), then writes on
 # <body> how many .equation boxes there are and those whose content is wider than the box
@@ -721,6 +774,7 @@ def main():
     options(cli, source, work, browser)
     spatial(cli, source, work, browser)
     three_d(cli, source, work, browser)
+    motion_from_file(cli, source, work, browser)
     examples(cli, source, work, browser)
     print("report: %s" % index)
     return 1 if failures else 0

@@ -450,7 +450,7 @@
     var reach = bodies.map(function (b) {
       var c = at(frames[0], b.cm), r = 0;
       geo.segments.forEach(function (seg) {
-        if (seg.body !== b.name) return;
+        if (seg.body !== b.name || !(seg.from in index) || !(seg.to in index)) return;
         r = Math.max(r, at(frames[0], seg.from).distanceTo(c), at(frames[0], seg.to).distanceTo(c));
       });
       return Math.max(r, 0.06 * (extent || size));
@@ -618,9 +618,14 @@
       var o = el("option", {value: v}, speed, v + "\u00d7" + (v === 1 ? " (real time)" : ""));
       if (v === 1) o.selected = true;
     });
+    // a segment with an end the motion does not place (a plate's centre of pressure) is not drawn
+    geo.segments.forEach(function (seg, j) {
+      if (!(seg.from in index) || !(seg.to in index)) lines[j].style.display = "none";
+    });
     function show(k, fromCursor) {
       var f = a.frames[k];
       geo.segments.forEach(function (seg, j) {
+        if (!(seg.from in index) || !(seg.to in index)) return;
         var p = project(pointAt(f, seg.from)), q = project(pointAt(f, seg.to));
         lines[j].setAttribute("x1", p[0]); lines[j].setAttribute("y1", p[1]);
         lines[j].setAttribute("x2", q[0]); lines[j].setAttribute("y2", q[1]);
