@@ -506,6 +506,7 @@ def diagram_checks(browser, index, who):
             load_on.setdefault(l["label"], []).append((l["on"], l["from"]))
     load_vector = {l["label"]: l["vector"] for l in data["model"]["loads"]}
     bodies = {b["name"]: b for b in data["model"]["bodies"]}
+    unknowns = set(u["name"] for u in data["model"]["unknowns"])
     bad = {"on": [], "at": [], "overlap": [], "direction": [], "named": [], "weight": [], "own": [], "drops": []}
     for row, d in zip(rows, drawn):
         dia, S, var = row["diagram"], set(row["diagram"]["system"]), row["variable"]
@@ -587,10 +588,12 @@ def diagram_checks(browser, index, who):
                 mass = bodies.get(load["on"], {}).get("mass", "(no body)")
                 if mass not in load["label"] or load["label"] == load["on"] + " g":
                     bad["weight"].append("%s: %r for mass %r" % (var, load["label"], mass))
-        # the row's own unknown apart: the loads whose vector holds the row's variable
+        # the row's own unknown apart: the loads whose vector holds the row's variable, a load
+        # measure (a statics row's coordinate in a spring's force is no load's own)
         word = re.compile(r"(?<![A-Za-z0-9_])" + re.escape(var) + r"(?![A-Za-z0-9_'])")
         for load in d["loads"]:
-            own = load["kind"] in ("force", "torque") and bool(word.search(load_vector.get(load["label"], "")))
+            own = load["kind"] in ("force", "torque") and var in unknowns and \
+                bool(word.search(load_vector.get(load["label"], "")))
             if own != (load["role"] == "own"):
                 bad["own"].append("%s: %s role %s" % (var, load["label"], load["role"]))
         owns = [l for l in d["loads"] if l["role"] == "own"]
