@@ -157,9 +157,91 @@ private:
     std::array<double, 3> u_{}, h_{}, w_{};
 };
 
+// labels placed so that none covers another: each is tried at offsets around its anchor,
+// nearest first, in the eight directions starting with the one it prefers; the first place
+// that meets no label placed before (nor, where one is free of them, a point or an arrowhead)
+// is kept. Sizes are estimated for \scriptsize (cm).
+class LabelPlacer {
+public:
+    struct Box {
+        double x, y, w, h;  // lower left corner, TikZ axes
+    };
+    static constexpr double kHeight = 0.32;
+    static double width(const std::string& text) {
+        return 0.13 * static_cast<double>(text.size()) + 0.1;
+    }
+    void obstacle(double x, double y, double half) {
+        obstacles_.push_back({x - half, y - half, 2 * half, 2 * half});
+    }
+    void fix(const Box& b) { placed_.push_back(b); }
+    // the centre of the label's box
+    std::array<double, 2> place(const std::string& text, std::array<double, 2> anchor,
+                                std::array<double, 2> prefer) {
+        static const int dirs[8][2] = {{1, 0},  {1, 1},   {0, 1},  {-1, 1},
+                                       {-1, 0}, {-1, -1}, {0, -1}, {1, -1}};
+        const double w = width(text), h = kHeight;
+        int start = 0;
+        double best = -1e300;
+        for (int i = 0; i < 8; ++i) {
+            const double c = (dirs[i][0] * prefer[0] + dirs[i][1] * prefer[1]) /
+                             std::hypot(dirs[i][0], dirs[i][1]);
+            if (c > best + 1e-9) best = c, start = i;
+        }
+        const auto at = [&](double gap, int k) {
+            const int* d = dirs[(start + k) % 8];
+            const double cx = anchor[0] + d[0] * (gap + w / 2);
+            const double cy = anchor[1] + d[1] * (gap + h / 2);
+            return Box{cx - w / 2, cy - h / 2, w, h};
+        };
+        const auto meets = [](const Box& a, const Box& b) {
+            return a.x < b.x + b.w && b.x < a.x + a.w && a.y < b.y + b.h && b.y < a.y + a.h;
+        };
+        const auto free = [&](const Box& b, bool strict) {
+            const Box grown{b.x - 0.03, b.y - 0.03, b.w + 0.06, b.h + 0.06};
+            for (const Box& o : placed_)
+                if (meets(grown, o)) return false;
+            if (strict)
+                for (const Box& o : obstacles_)
+                    if (meets(b, o)) return false;
+            return true;
+        };
+        for (bool strict : {true, false})
+            for (int r = 0; r < 40; ++r)
+                for (int k = 0; k < 8; ++k) {
+                    const Box b = at(0.06 + 0.15 * r, k);
+                    if (free(b, strict)) {
+                        placed_.push_back(b);
+                        return {b.x + w / 2, b.y + h / 2};
+                    }
+                }
+        const Box b = at(7, 0);
+        placed_.push_back(b);
+        return {b.x + w / 2, b.y + h / 2};
+    }
+
+private:
+    std::vector<Box> placed_, obstacles_;
+};
+
+// the row's variable without its primes: the coordinate whose acceleration it is
+std::string coordinate_of(const ex& variable) {
+    std::string v = to_string(variable);
+    while (!v.empty() && v.back() == '\'') v.pop_back();
+    return v;
+}
+
+std::string degrees(double a) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.1f", std::abs(a) < 0.05 ? 0.0 : a);
+    return buf;
+}
+
+// the free-body diagram as the page draws it: S in ink, the loads on S (the row's own unknown
+// highlighted, loads the equation does not hold dashed), S's points named, a planar model's
+// angles of S marked, u below; *legend says what the styles used mean
 std::string tikz_diagram(const System& sys, const Evaluation& ev,
                          const std::vector<const Point*>& placed, bool planar,
-                         const RoadmapRow& r) {
+                         const RoadmapRow& r, std::string* legend) {
     const Projection project(view_up(sys, ev, planar), planar);
     std::map<const Point*, std::array<double, 2>> at;
     std::vector<const Point*> order;  // the model's order, for the same output run to run
@@ -174,90 +256,223 @@ std::string tikz_diagram(const System& sys, const Evaluation& ev,
     if (at.empty()) return "";
     const double size = std::max({hi[0] - lo[0], hi[1] - lo[1], 1e-9});
     const double scale = 5.0 / size, arrow = 1.3;  // the model 5 cm across; arrows 1.3 cm
-    auto xy = [&](const std::array<double, 2>& q) {
-        return "(" + cm(scale * (q[0] - lo[0])) + "," + cm(scale * (q[1] - lo[1])) + ")";
+    // a point of the model in the picture's centimetres
+    const auto cmxy = [&](const std::array<double, 2>& q) {
+        return std::array<double, 2>{scale * (q[0] - lo[0]), scale * (q[1] - lo[1])};
     };
-    auto shifted = [&](const std::array<double, 2>& q, double dx, double dy) {
-        return "(" + cm(scale * (q[0] - lo[0]) + dx) + "," + cm(scale * (q[1] - lo[1]) + dy) + ")";
+    const auto pt = [&](const std::array<double, 2>& c) {
+        return "(" + cm(c[0]) + "," + cm(c[1]) + ")";
     };
-    auto unit = [&](const std::vector<double>& v, double* ux, double* uy) {
+    const auto xy = [&](const std::array<double, 2>& q) { return pt(cmxy(q)); };
+    const auto unit = [&](const std::vector<double>& v, double* ux, double* uy) {
         std::array<double, 2> d = project(v);
         const double n = std::hypot(d[0], d[1]);
         if (!(n > 1e-12) || !std::isfinite(n)) return false;
         *ux = d[0] / n, *uy = d[1] / n;
         return true;
     };
-    auto find = [&](const std::string& name) -> const Point* {
+    const auto find = [&](const std::string& name) -> const Point* {
         for (const Point* p : order)
             if (p->name() == name) return p;
         return nullptr;
+    };
+    const auto in_s = [&](const Body* b) {
+        return std::find(r.system.begin(), r.system.end(), b) != r.system.end();
+    };
+    LabelPlacer labels;
+    // the labels, written last (over everything), the row's own first, the points' last
+    struct Pending {
+        std::string tex, text;  // what is written; its characters, for its size
+        std::array<double, 2> anchor, prefer;
+        std::string style;
+        int rank;
+    };
+    std::vector<Pending> pending;
+    double box_lo[2] = {0, 0};  // the lower left of what is drawn, for u below it
+    const auto grow = [&](const std::array<double, 2>& c) {
+        for (int k = 0; k < 2; ++k) box_lo[k] = std::min(box_lo[k], c[k]);
     };
     std::string t = "\\begin{tikzpicture}[>=stealth, every node/.style={font=\\scriptsize}]\n";
     for (const Segment& seg : segments_of(sys, placed)) {
         const Point *a = find(seg.from), *b = find(seg.to);
         if (!a || !b) continue;
-        const bool in_s = std::any_of(r.system.begin(), r.system.end(),
-                                      [&](const Body* x) { return x->name() == seg.body; });
-        t += "\\draw[" + std::string(in_s ? "line width=1.6pt" : "line width=1.2pt, black!25") +
+        const bool ink = std::any_of(r.system.begin(), r.system.end(),
+                                     [&](const Body* x) { return x->name() == seg.body; });
+        t += "\\draw[" + std::string(ink ? "line width=1.6pt" : "line width=1.2pt, black!25") +
              ", line cap=round] " + xy(at[a]) + " -- " + xy(at[b]) + ";\n";
     }
-    for (const Point* p : order) t += "\\fill " + xy(at[p]) + " circle (0.8pt);\n";
-    for (const DiagramLoad& l : diagram_loads(sys, ev, r)) {
+    for (const Point* p : order) {
+        t += "\\fill " + xy(at[p]) + " circle (0.8pt);\n";
+        const auto c = cmxy(at[p]);
+        labels.obstacle(c[0], c[1], 0.06);
+        grow(c);
+    }
+    // the angles of S's rotations (planar models): a dotted line along the parent's axis, an
+    // arc from it to the body's axis, the coordinate's name
+    const std::string own_name = coordinate_of(r.variable);
+    bool own_angle = false;
+    if (planar)
+        for (const DiagramAngle& a : planar_angles(sys, ev)) {
+            if (!in_s(a.body) || !at.count(a.at)) continue;
+            double fx = 0, fy = 0, tx = 0, ty = 0, gx = 0, gy = 0;
+            if (!unit(a.from, &fx, &fy) || !unit(a.to, &tx, &ty)) continue;
+            const auto c = cmxy(at[a.at]);
+            // a turn about +z on the picture: the parent's axis turned +90 deg about z, projected
+            const bool turned = unit({-a.from[1], a.from[0], 0}, &gx, &gy);
+            const double sense = !turned || fx * gy - fy * gx >= 0 ? 1 : -1;
+            const double a0 = std::atan2(fy, fx) * 180 / M_PI;
+            const double sweep =
+                std::atan2(std::sin(a.value), std::cos(a.value)) * 180 / M_PI * sense;
+            const bool own = a.name == own_name;
+            own_angle = own_angle || own;
+            t += "% angle: " + tex_text(a.name) + " of " + tex_text(a.body->name()) + " at " +
+                 tex_text(a.at->name()) + "\n";
+            t += "\\draw[densely dotted, black!50] " + pt(c) + " -- ++(" + cm(0.9 * fx) + "," +
+                 cm(0.9 * fy) + ");\n";
+            t += "\\draw[" + std::string(own ? "red!75!black, line width=1.2pt" : "black!70") +
+                 "] " + pt({c[0] + 0.45 * fx, c[1] + 0.45 * fy}) + " arc[start angle=" +
+                 degrees(a0) + ", end angle=" + degrees(a0 + sweep) + ", radius=0.45];\n";
+            const double mid = (a0 + sweep / 2) * M_PI / 180;
+            pending.push_back({"$" + to_latex(GiNaC::symbol(a.name)) + "$", a.name,
+                               {c[0] + 0.45 * std::cos(mid), c[1] + 0.45 * std::sin(mid)},
+                               {std::cos(mid), std::sin(mid)},
+                               own ? "red!75!black, font=\\scriptsize\\bfseries" : "black!70", 3});
+        }
+    const std::vector<DiagramLoad> loads = diagram_loads(sys, ev, r);
+    bool own_load = false, drops = false, held = false;
+    for (const DiagramLoad& l : loads) {
         auto it = at.find(l.at);
         if (it == at.end()) continue;
-        const std::array<double, 2> p = it->second;
+        const std::array<double, 2> p = cmxy(it->second);
         const std::string colour = l.kind == "gravity" ? "green!50!black"
                                    : l.unknown         ? "red!75!black"
                                                        : "blue!70!black";
-        const std::string label = "{" + tex_text(l.label) + "}";
+        // the row's own unknown highlighted; a load the equation does not hold dashed, faded
+        std::string style = colour;
+        if (l.role == LoadRole::own)
+            style += ", line width=1.2pt, preaction={draw, yellow!80!orange, line width=3.6pt, "
+                     "opacity=0.6, -}";
+        if (l.role == LoadRole::drops_out) style += ", densely dashed, opacity=0.55";
+        own_load = own_load || l.role == LoadRole::own;
+        drops = drops || l.role == LoadRole::drops_out;
+        held = held || l.role == LoadRole::held;
+        const std::string label = l.tex.empty() ? tex_text(l.label) : "$" + l.tex + "$";
+        const std::string text_style =
+            colour + (l.role == LoadRole::own ? ", font=\\scriptsize\\bfseries" : "") +
+            (l.role == LoadRole::drops_out ? ", text opacity=0.7" : "");
         t += "% load: " + tex_text(l.label) + "\n";
+        std::array<double, 2> anchor = p, prefer{1, 1};
+        const auto tip = [&](double x, double y) {
+            labels.obstacle(x, y, 0.1);
+            grow({x, y});
+        };
         double ux = 0, uy = 0;
         if (l.kind == "joint") {
             std::vector<std::vector<double>> axes{{1, 0, 0}, {0, 1, 0}};
             if (!planar) axes.push_back({0, 0, 1});
             for (const auto& e : axes)
-                if (unit(e, &ux, &uy))
-                    t += "\\draw[->, " + colour + "] " + xy(p) + " -- ++(" + cm(0.7 * arrow * ux) +
-                         "," + cm(0.7 * arrow * uy) + ");\n";
-            t += "\\node[" + colour + ", below right] at " + xy(p) + " " + label + ";\n";
+                if (unit(e, &ux, &uy)) {
+                    t += "\\draw[->, " + style + "] " + pt(p) + " -- ++(" +
+                         cm(0.7 * arrow * ux) + "," + cm(0.7 * arrow * uy) + ");\n";
+                    tip(p[0] + 0.7 * arrow * ux, p[1] + 0.7 * arrow * uy);
+                }
+            anchor = {p[0] + 0.35 * arrow, p[1] - 0.05};
+            prefer = {1, -1};
         } else if (l.kind == "torque" && planar) {
             // an arc about the point, counterclockwise for a +z torque
             const bool ccw = l.vector.size() < 3 || l.vector[2] >= 0;
-            const double a0 = ccw ? -1.0 : 2.6;
-            t += "\\draw[->, " + colour + "] " +
-                 shifted(p, 0.45 * std::cos(a0), 0.45 * std::sin(a0)) +
+            const double a0 = ccw ? -1.0 : 2.6, a1 = ccw ? 2.6 : -1.0;
+            t += "\\draw[->, " + style + "] " +
+                 pt({p[0] + 0.45 * std::cos(a0), p[1] + 0.45 * std::sin(a0)}) +
                  " arc[start angle=" + (ccw ? "-57" : "149") +
-                 ", end angle=" + (ccw ? "149" : "-57") + ", radius=0.45] node[above] " + label +
-                 ";\n";
+                 ", end angle=" + (ccw ? "149" : "-57") + ", radius=0.45];\n";
+            tip(p[0] + 0.45 * std::cos(a1), p[1] + 0.45 * std::sin(a1));
+            anchor = {p[0] + 0.32, p[1] + 0.32};
         } else if (unit(l.vector, &ux, &uy)) {
-            const std::string tip = "++(" + cm(arrow * ux) + "," + cm(arrow * uy) + ")";
-            if (l.kind == "gravity")
-                t += "\\draw[->, " + colour + "] " + xy(p) + " -- " + tip + " node[right] " +
-                     label + ";\n";
-            else if (l.kind == "torque")  // in space: a double-headed arrow along the torque
-                t += "\\draw[->>, " + colour + "] " + xy(p) + " -- " + tip + " node[right] " +
-                     label + ";\n";
-            else
-                t += "\\draw[->, " + colour + "] " + shifted(p, -arrow * ux, -arrow * uy) +
-                     " node[above] " + label + " -- " + xy(p) + ";\n";
+            const std::array<double, 2> end{p[0] + arrow * ux, p[1] + arrow * uy};
+            if (l.kind == "gravity") {
+                t += "\\draw[->, " + style + "] " + pt(p) + " -- ++(" + cm(arrow * ux) + "," +
+                     cm(arrow * uy) + ");\n";
+                tip(end[0], end[1]);
+                anchor = {p[0] + 0.6 * arrow * ux, p[1] + 0.6 * arrow * uy};
+                prefer = {1, 0};
+            } else if (l.kind == "torque") {  // in space: a double-headed arrow along the torque
+                t += "\\draw[->>, " + style + "] " + pt(p) + " -- " + pt(end) + ";\n";
+                tip(end[0], end[1]);
+                anchor = end;
+                prefer = {ux, uy};
+            } else {
+                const std::array<double, 2> tail{p[0] - arrow * ux, p[1] - arrow * uy};
+                t += "\\draw[->, " + style + "] " + pt(tail) + " -- " + pt(p) + ";\n";
+                tip(p[0], p[1]);
+                grow(tail);
+                anchor = tail;
+                prefer = {-ux, -uy};
+            }
         } else {
-            t += "\\draw[" + colour + "] " + xy(p) + " circle (0.2) node[above right] " + label +
-                 ";\n";
+            t += "\\draw[" + style + "] " + pt(p) + " circle (0.2);\n";
         }
+        pending.push_back(
+            {label, l.label, anchor, prefer, text_style, l.role == LoadRole::own ? 0 : 1});
     }
-    if (r.about && at.count(r.about))
-        t += "\\draw " + xy(at[r.about]) + " circle (2.5pt) node[below left] {$O$};\n";
+    if (r.about && at.count(r.about)) {
+        t += "\\draw " + xy(at[r.about]) + " circle (2.5pt);\n";
+        pending.push_back({"$O$ = " + tex_text(r.about->name()), "O = " + r.about->name(),
+                           cmxy(at[r.about]), {-1, -1}, "black", 2});
+    }
+    // S's points named (O's already is)
+    for (const Point* p : diagram_points(sys, r, loads))
+        if (p != r.about && at.count(p))
+            pending.push_back(
+                {tex_text(p->name()), p->name(), cmxy(at[p]), {-1, -1}, "black!80", 4});
+    // the direction u below the drawing, wholly in its box, its label right of the arrow
     double ux = 0, uy = 0;
     const std::vector<double> u = ev.in_newtonian(r.direction);
     const bool in_plane = unit(u, &ux, &uy) && (!planar || std::hypot(u[0], u[1]) > 0.2);
-    if (in_plane)
-        t += "\\draw[->, violet] (-0.8,-0.8) -- ++(" + cm(0.8 * ux) + "," + cm(0.8 * uy) +
-             ") node[right] {$\\hat u$};\n";
-    else
-        t += "\\draw[violet] (-0.8,-0.8) circle (0.12) node[right=3pt] {$\\hat u$ out of the "
-             "page};\n"
-             "\\fill[violet] (-0.8,-0.8) circle (0.03);\n";
+    const std::array<double, 2> corner{std::min(box_lo[0], -0.8), box_lo[1] - 0.5};  // top left
+    double right = 0, middle = 0;
+    if (in_plane) {
+        const double ax = std::abs(0.8 * ux), ay = std::abs(0.8 * uy);
+        const std::array<double, 2> from{corner[0] + (ux < 0 ? ax : 0),
+                                         corner[1] - (uy > 0 ? ay : 0)};
+        t += "\\draw[->, violet] " + pt(from) + " -- ++(" + cm(0.8 * ux) + "," + cm(0.8 * uy) +
+             ");\n";
+        right = corner[0] + ax + 0.1;
+        middle = corner[1] - ay / 2;
+        labels.fix({corner[0] - 0.1, corner[1] - ay - 0.1, ax + 0.2, ay + 0.2});
+    } else {
+        const std::array<double, 2> c{corner[0] + 0.12, corner[1] - 0.12};
+        t += "\\draw[violet] " + pt(c) + " circle (0.12);\n\\fill[violet] " + pt(c) +
+             " circle (0.03);\n";
+        right = corner[0] + 0.3;
+        middle = c[1];
+        labels.fix({corner[0], corner[1] - 0.24, 0.24, 0.24});
+    }
+    const std::string uword = in_plane ? "u" : "u out of the page";
+    t += "\\node[violet, anchor=west] at " + pt({right, middle}) + " {$\\hat u$" +
+         (in_plane ? "" : " out of the page") + "};\n";
+    labels.fix({right, middle - LabelPlacer::kHeight / 2, LabelPlacer::width(uword),
+                LabelPlacer::kHeight});
+    std::stable_sort(pending.begin(), pending.end(),
+                     [](const Pending& a, const Pending& b) { return a.rank < b.rank; });
+    for (const Pending& p : pending) {
+        const std::array<double, 2> c = labels.place(p.text, p.anchor, p.prefer);
+        t += "\\node[" + p.style + ", fill=white, fill opacity=0.7, text opacity=1, " +
+             "inner sep=0.5pt] at " + pt(c) + " {" + p.tex + "};\n";
+    }
     t += "\\end{tikzpicture}\n";
+    if (legend) {
+        legend->clear();
+        if (own_load || own_angle)
+            *legend += " Highlighted: solved for in this row ($" + to_latex(r.variable) + "$).";
+        if (held) *legend += " Red: unknowns the equation also holds.";
+        if (drops)
+            *legend += " Dashed: loads $E_{" + to_latex(r.variable) + "}$ does not hold (" +
+                       (r.motion == Motion::rotate
+                            ? "through $O$, or their moment about $O$ square to $\\hat u$"
+                            : "square to $\\hat u$") +
+                       ").";
+    }
     return t;
 }
 
@@ -350,10 +565,11 @@ std::string report_detail::render_latex(const ReportContent& c,
                  "$ for $" + to_latex(r.variable) + "$.}";
             for (std::size_t k = 0; k < r.fbd.size(); ++k)
                 t += (k ? "; " : " ") + tex_text(r.fbd[k]);
-            t += ".\n\n\\begin{center}\n" + tikz_diagram(sys, ev, placed, planar, r) +
-                 "\\par\\smallskip\\small Figure " + std::to_string(++figure) +
-                 ": free-body diagram of $S = " + set_words(r.system) + "$ for $" +
-                 to_latex(r.variable) + "$.\n\\end{center}\n";
+            std::string legend;
+            const std::string picture = tikz_diagram(sys, ev, placed, planar, r, &legend);
+            t += ".\n\n\\begin{center}\n" + picture + "\\par\\smallskip\\small Figure " +
+                 std::to_string(++figure) + ": free-body diagram of $S = " + set_words(r.system) +
+                 "$ for $" + to_latex(r.variable) + "$." + legend + "\n\\end{center}\n";
         }
         t += "\\begin{eqlines}\n";
         for (std::size_t k = 0; k < kept; ++k)

@@ -119,17 +119,54 @@ std::vector<double> view_up(const System& sys, const Evaluation& ev, bool planar
 std::string geometry_json(const System& sys, const Evaluation& ev,
                           const std::vector<const Point*>& placed, bool* planar);
 
+/// A load's part in the row's equation: it holds the row's own unknown; it holds another
+/// unknown the equation keeps; it is known and the equation holds it; or the equation does not
+/// hold it (it passes through O, is square to u, or is a joint's force the planner left out).
+enum class LoadRole { own, held, known, drops_out };
+
+/// "own", "held", "known", "drops" (the page's classes)
+std::string role_word(LoadRole r);
+
 /// One arrow of a free-body diagram: a load external to S at its point.
 struct DiagramLoad {
     std::string kind, label;  ///< kind: force, torque, gravity, joint
+    std::string tex{};        ///< the label as TeX math (a weight's), empty: the label as text
     const Point* at = nullptr;
+    const Body* on = nullptr;      ///< the body of S it acts on
     std::vector<double> vector{};  ///< in N at the configuration (empty for a joint)
     bool unknown = false;
+    LoadRole role = LoadRole::known;
 };
 
 /// The loads of one free-body diagram, as the viewer and the TikZ picture draw them.
 std::vector<DiagramLoad> diagram_loads(const System& sys, const Evaluation& ev,
                                        const RoadmapRow& r);
+
+/// A body's weight as a diagram labels it: its mass times the gravity constant, as the model
+/// writes them ("m_A g"; "(m_1 + m_2) g"; "2*g").
+struct WeightLabel {
+    std::string text, tex;
+};
+WeightLabel weight_label(const System& sys, const Evaluation& ev, const Body& b);
+
+/// The points a diagram names: O, the joints of S's bodies (with the outside and between
+/// them), and the points the loads act at (mass centres among them), once each.
+std::vector<const Point*> diagram_points(const System& sys, const RoadmapRow& r,
+                                         const std::vector<DiagramLoad>& loads);
+
+/// A rotation coordinate's angle in a planar model: body's frame turned from its parent's
+/// about z by `name`, drawn at `at` (where the body is joined to the rest) between the
+/// parent's axis `from` and the body's `to` (axis x or y: the one the body's stick from `at`
+/// lies along), both in N; `value` the angle (radians, about +z) at the configuration.
+struct DiagramAngle {
+    const Body* body = nullptr;
+    std::string name;
+    const Point* at = nullptr;
+    int axis = 0;
+    std::vector<double> from{}, to{};
+    double value = 0;
+};
+std::vector<DiagramAngle> planar_angles(const System& sys, const Evaluation& ev);
 
 /// "translate", "rotate" or "constraint"
 std::string motion_word(Motion m);

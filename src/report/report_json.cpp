@@ -66,10 +66,6 @@ std::string num_arr(const std::vector<double>& v) {
     return arr(q);
 }
 
-bool member(const BodySet& S, const Body* b) {
-    return b && std::find(S.begin(), S.end(), b) != S.end();
-}
-
 std::string ground_or(const System& sys, const Body* b) {
     return b ? b->name() : sys.newtonian().name();
 }
@@ -97,22 +93,6 @@ std::vector<const Point*> placed_points(const System& sys) {
 }  // namespace report_detail
 
 namespace {
-
-// the point a torque on B is drawn at: where B is joined to what is outside B, else Bcm
-const Point* torque_point(const System& sys, const Body* B) {
-    for (const Point* p : sys.points())
-        if (p->owner() == B && p->located_from() && p->located_from()->owner() != B) return p;
-    return B ? &B->cm() : &sys.origin();
-}
-
-bool has_unknown(const System& sys, const Vector& v) {
-    const SymbolTable& st = sys.symbols();
-    for (const auto& part : v.components())
-        for (int i = 0; i < 3; ++i)
-            for (const ex& s : symbols_of(part.second[i]))
-                if (st.owns(s) && st.kind(s) == SymbolKind::unknown) return true;
-    return false;
-}
 
 // ---- the parts of the page's data ----------------------------------------------------------
 
@@ -285,6 +265,19 @@ std::string geometry_json(const System& sys, const Evaluation& ev,
     Obj o;
     o.add("planar", *planar ? "true" : "false").add("points", arr(pts)).add("segments", arr(segs));
     o.add("up", num_arr(up));
+    // a planar model's rotation angles, each drawn where its body is in a row's S
+    std::vector<std::string> angles;
+    if (*planar)
+        for (const DiagramAngle& a : planar_angles(sys, ev))
+            angles.push_back(Obj()
+                                 .add("body", str(a.body->name()))
+                                 .add("name", str(a.name))
+                                 .add("at", str(a.at->name()))
+                                 .add("from", num_arr(a.from))
+                                 .add("to", num_arr(a.to))
+                                 .add("value", num(a.value))
+                                 .done());
+    o.add("angles", arr(angles));
     return o.done();
 }
 
@@ -292,60 +285,24 @@ std::string geometry_json(const System& sys, const Evaluation& ev,
 
 namespace {
 
-
-}  // namespace
-
-namespace report_detail {
-
-/// The loads of one free-body diagram, as the viewer and the TikZ picture draw them.
-std::vector<DiagramLoad> diagram_loads(const System& sys, const Evaluation& ev,
-                                       const RoadmapRow& r) {
-    std::vector<DiagramLoad> loads;
-    const BodySet& S = r.system;
-    for (const Load& l : sys.loads()) {
-        if (!member(S, l.on) || member(S, l.from)) continue;
-        std::string label = l.label.empty() ? (l.kind == LoadKind::force ? "F" : "T") : l.label;
-        if (l.kind == LoadKind::force)
-            loads.push_back(
-                {"force", label, l.point, ev.in_newtonian(l.vector), has_unknown(sys, l.vector)});
-        else
-            loads.push_back({"torque", label, torque_point(sys, l.on), ev.in_newtonian(l.vector),
-                             has_unknown(sys, l.vector)});
-    }
-    if (!sys.gravity().is_zero())
-        for (const Body* b : S)
-            if (b->has_mass())
-                loads.push_back(
-                    {"gravity", b->name() + " g", &b->cm(), ev.in_newtonian(sys.gravity()), false});
-    // joints where S meets the rest (a point placed at an offset that changes with the
-    // coordinates is no joint: a cart on a rail, a rolling disk's centre); a declared
-    // reaction's measures, drawn above, stand for the joint's force
-    for (const Point* p : sys.points()) {
-        const Body* from = nullptr;
-        if (!member(S, p->owner()) || !is_joint_point(sys, *p, &from)) continue;
-        if (member(S, from) || sys.find_joint_reaction(*p, from, p->owner())) continue;
-        loads.push_back({"joint", "from " + ground_or(sys, from), p, {}, true});
-    }
-    return loads;
-}
-
-}  // namespace report_detail
-
-namespace {
-
 std::string diagram_json(const System& sys, const Evaluation& ev, const RoadmapRow& r) {
-    std::vector<std::string> loads;
-    for (const DiagramLoad& l : diagram_loads(sys, ev, r)) {
+    std::vector<std::string> loads, points;
+    const std::vector<DiagramLoad> drawn = diagram_loads(sys, ev, r);
+    for (const DiagramLoad& l : drawn) {
         Obj o;
         o.add("kind", str(l.kind)).add("label", str(l.label)).add("at", str(l.at->name()));
+        o.add("on", str(l.on ? l.on->name() : ""));
         o.add("vector", num_arr(l.vector)).add("unknown", l.unknown ? "true" : "false");
+        o.add("role", str(role_word(l.role)));
         loads.push_back(o.done());
     }
+    for (const Point* p : diagram_points(sys, r, drawn)) points.push_back(p->name());
     std::vector<std::string> names;
     for (const Body* b : r.system) names.push_back(b->name());
     Obj o;
     o.add("system", str_arr(names)).add("about", str(r.about ? r.about->name() : ""));
     o.add("direction", num_arr(ev.in_newtonian(r.direction))).add("loads", arr(loads));
+    o.add("points", str_arr(points));
     return o.done();
 }
 

@@ -458,6 +458,239 @@ window.addEventListener("load", function () {
 </script>"""
 
 
+# appended to a copy of a report's page: once the viewer has drawn, writes what each free-body
+# diagram drew into <pre id="fbd-measure"> as JSON: its viewBox, every label's text and laid
+# out box, each load arrow's data attributes, lines, arrowhead tips, arcs and computed stroke,
+# the points' drawn places and the u arrow's lines
+FBD_MEASURE = """<script>
+window.addEventListener("load", function () {
+  document.fonts.ready.then(function () {
+    setTimeout(function () {
+      function box(n) { var b = n.getBBox(); return [b.x, b.y, b.width, b.height]; }
+      function lines(g) {
+        return Array.prototype.map.call(g.querySelectorAll("line.shaft"), function (l) {
+          return ["x1", "y1", "x2", "y2"].map(function (c) { return Number(l.getAttribute(c)); }); });
+      }
+      function tips(g) {
+        return Array.prototype.map.call(g.querySelectorAll("path.head"), function (h) {
+          return h.getAttribute("d").slice(1).split(" ")[0].split(",").map(Number); });
+      }
+      var out = Array.prototype.map.call(document.querySelectorAll("svg.fbd"), function (s) {
+        var points = {};
+        s.querySelectorAll("circle[data-point]").forEach(function (c) {
+          points[c.getAttribute("data-point")] = [Number(c.getAttribute("cx")), Number(c.getAttribute("cy"))]; });
+        var dir = s.querySelector("g.direction");
+        return {
+          view: s.getAttribute("viewBox").split(" ").map(Number),
+          points: points,
+          labels: Array.prototype.map.call(s.querySelectorAll("text.label"), function (t) {
+            return {text: t.textContent, cls: t.getAttribute("class"), box: box(t)}; }),
+          loads: Array.prototype.map.call(s.querySelectorAll("g.load"), function (g) {
+            var shaft = g.querySelector(".shaft"), st = shaft ? getComputedStyle(shaft) : null;
+            return {kind: g.classList[1], label: g.getAttribute("data-label"), on: g.getAttribute("data-on"),
+                    at: g.getAttribute("data-at"), role: g.getAttribute("data-role"), lines: lines(g), tips: tips(g),
+                    arcs: Array.prototype.map.call(g.querySelectorAll("polyline.shaft"), function (p) {
+                      return p.getAttribute("points").split(" ").map(function (q) { return q.split(",").map(Number); }); }),
+                    stroke: st ? st.stroke : "", width: st ? parseFloat(st.strokeWidth) : 0,
+                    dash: st ? st.strokeDasharray : "", halo: g.querySelector(".halo") !== null}; }),
+          direction: {lines: lines(dir), tips: tips(dir), circles: Array.prototype.map.call(dir.querySelectorAll("circle"), box),
+                      label: box(dir.querySelector("text"))},
+          legend: Array.prototype.map.call(s.parentNode.querySelectorAll(".fbd-legend li"), function (li) { return li.className; })
+        };
+      });
+      var pre = document.createElement("pre");
+      pre.id = "fbd-measure";
+      pre.textContent = JSON.stringify(out);
+      document.body.appendChild(pre);
+    }, 100);
+  });
+});
+</script>"""
+
+
+def segment_meets_box(a, b, box):
+    """Whether the segment a-b passes through the box [x, y, w, h] (sampled finely)."""
+    for k in range(201):
+        x, y = a[0] + (b[0] - a[0]) * k / 200, a[1] + (b[1] - a[1]) * k / 200
+        if box[0] < x < box[0] + box[2] and box[1] < y < box[1] + box[3]:
+            return True
+    return False
+
+
+def diagram_checks(browser, index, who):
+    """Each free-body diagram as drawn, against the page's data: every load arrow acts on a body
+    of S (its data attributes, checked against the model's tables) and starts or ends at its
+    point's drawn place (a torque's arc is centred there); no two labels overlap; the u arrow
+    lies inside the picture and its label clear of its shaft; the points of S and a planar
+    model's angles of S are named; a weight is labelled with its mass times g; the row's own
+    unknown is drawn apart (thicker, highlighted); a load whose part in the row's equation (u . F,
+    or u . (r_OP x F) about O) is clearly not zero at the drawn configuration is never dashed,
+    a dashed one's is zero there, and the unknown loads the road-map's list says drop out are
+    dashed."""
+    import html
+    import json
+    data = page_data(index)
+    with open(index, encoding="utf-8") as f:
+        page = f.read()
+    at = page.rindex("</body>")
+    measure = os.path.join(os.path.dirname(index), "fbd_measure.html")
+    with open(measure, "w", encoding="utf-8") as f:
+        f.write(page[:at] + FBD_MEASURE + page[at:])
+    profile = tempfile.mkdtemp(prefix="alembert-chromium-")
+    try:
+        r = subprocess.run([browser, "--headless", "--disable-gpu", "--no-sandbox", "--user-data-dir=" + profile,
+                            "--hide-scrollbars", "--virtual-time-budget=10000", "--window-size=1280,1600"] + WEBGL +
+                           ["--dump-dom", "file://" + os.path.abspath(measure)], capture_output=True, text=True, timeout=300)
+    finally:
+        shutil.rmtree(profile, ignore_errors=True)
+    m = re.search(r'<pre id="fbd-measure">(.*?)</pre>', r.stdout, re.S)
+    check(m is not None, "%s: the diagrams were measured" % who)
+    if not m:
+        return
+    drawn = json.loads(html.unescape(m.group(1)))
+    rows = [row for row in data["roadmap"] if row["diagram"]]
+    check(len(drawn) == len(rows), "%s: a measured diagram per row with one (%d of %d)" % (who, len(drawn), len(rows)))
+    geo = data["geometry"]
+    place = {p["name"]: p["at"] for p in geo["points"]}
+    owner = {p["name"]: p["on"] for p in data["model"]["points"]}
+    load_on = {}  # a load's label: (on, from) of each load so labelled (a reaction's two)
+    for l in data["model"]["loads"]:
+        if l["kind"] != "gravity":
+            load_on.setdefault(l["label"], []).append((l["on"], l["from"]))
+    load_vector = {l["label"]: l["vector"] for l in data["model"]["loads"]}
+    bodies = {b["name"]: b for b in data["model"]["bodies"]}
+    unknowns = set(u["name"] for u in data["model"]["unknowns"])
+    bad = {"on": [], "at": [], "overlap": [], "direction": [], "named": [], "weight": [], "own": [], "drops": []}
+    for row, d in zip(rows, drawn):
+        dia, S, var = row["diagram"], set(row["diagram"]["system"]), row["variable"]
+        vb = d["view"]
+        L = max(vb[2], vb[3])
+        tol = 1e-6 * L
+        # the drawn points where the data puts them (planar: the page's plane, up the page)
+        if geo["planar"] and d["points"]:
+            up = geo["up"][:2]
+            n = math.hypot(*up) or 1
+            ux, uy = up[0] / n, up[1] / n
+            proj = {k: (uy * p[0] - ux * p[1], -(ux * p[0] + uy * p[1])) for k, p in place.items()}
+            ref = next(iter(d["points"]))
+            off = (d["points"][ref][0] - proj[ref][0], d["points"][ref][1] - proj[ref][1])
+            for k, q in d["points"].items():
+                if math.dist(q, (proj[k][0] + off[0], proj[k][1] + off[1])) > 1e-4 * L:
+                    bad["at"].append("%s: point %s drawn off its place" % (var, k))
+        for load in d["loads"]:
+            # acts on a body of S, the body the model says it acts on
+            if load["on"] not in S:
+                bad["on"].append("%s: %s on %s, not in S %s" % (var, load["label"], load["on"], sorted(S)))
+            if load["kind"] == "gravity":
+                want = [b for b in S if bodies[b]["cm"] == load["at"]]
+            elif load["kind"] == "joint":
+                want = [owner.get(load["at"])]
+            else:
+                want = [on for on, frm in load_on.get(load["label"], []) if frm not in S]
+            if load["on"] not in want:
+                bad["on"].append("%s: %s drawn on %s, the model's %s" % (var, load["label"], load["on"], want))
+            # starts or ends at its point
+            p = d["points"].get(load["at"])
+            if p is None:
+                bad["at"].append("%s: %s at %s, a point not drawn" % (var, load["label"], load["at"]))
+                continue
+            ends = [q for l in load["lines"] for q in ((l[0], l[1]), (l[2], l[3]))] + [tuple(t) for t in load["tips"]]
+            if load["arcs"]:
+                radii = [math.dist(q, p) for q in load["arcs"][0]]
+                ok = max(radii) - min(radii) <= 1e-4 * L
+            else:
+                ok = any(math.dist(q, p) <= tol for q in ends)
+            if not ok:
+                bad["at"].append("%s: %s not drawn at %s" % (var, load["label"], load["at"]))
+        # no two labels overlap
+        boxes = [(l["text"], l["box"]) for l in d["labels"]]
+        for i in range(len(boxes)):
+            for j in range(i + 1, len(boxes)):
+                a, b = boxes[i][1], boxes[j][1]
+                e = 1e-3 * L
+                if a[0] + e < b[0] + b[2] and b[0] + e < a[0] + a[2] and a[1] + e < b[1] + b[3] and b[1] + e < a[1] + a[3]:
+                    bad["overlap"].append("%s: %r over %r" % (var, boxes[i][0], boxes[j][0]))
+        # the u arrow inside the picture, its label clear of its shaft
+        u = d["direction"]
+        xs = [c for l in u["lines"] for c in (l[0], l[2])] + [t[0] for t in u["tips"]] + [c[0] for c in u["circles"]] + \
+             [c[0] + c[2] for c in u["circles"]]
+        ys = [c for l in u["lines"] for c in (l[1], l[3])] + [t[1] for t in u["tips"]] + [c[1] for c in u["circles"]] + \
+             [c[1] + c[3] for c in u["circles"]]
+        lb = u["label"]
+        if not (xs and min(xs) >= vb[0] and max(xs) <= vb[0] + vb[2] and min(ys) >= vb[1] and max(ys) <= vb[1] + vb[3]
+                and lb[0] >= vb[0] and lb[0] + lb[2] <= vb[0] + vb[2] and lb[1] >= vb[1] and lb[1] + lb[3] <= vb[1] + vb[3]):
+            bad["direction"].append("%s: u outside the viewBox %s (x %s, y %s)" % (var, vb, xs, ys))
+        for l in u["lines"]:
+            if segment_meets_box((l[0], l[1]), (l[2], l[3]), lb):
+                bad["direction"].append("%s: u's label on its shaft" % var)
+        # S's points and angles named
+        texts = set(l["text"] for l in d["labels"])
+        if "points" not in dia:
+            bad["named"].append("%s: the data lists no points to name" % var)
+        for name in dia.get("points", []):
+            if name not in texts and "O = " + name not in texts:
+                bad["named"].append("%s: %s" % (var, name))
+        if dia["about"] and "O = " + dia["about"] not in texts:
+            bad["named"].append("%s: O = %s" % (var, dia["about"]))
+        for an in geo.get("angles", []):
+            if an["body"] in S and an["name"] not in texts:
+                bad["named"].append("%s: angle %s" % (var, an["name"]))
+        # a weight: its mass times g
+        for load in d["loads"]:
+            if load["kind"] == "gravity":
+                mass = bodies.get(load["on"], {}).get("mass", "(no body)")
+                if mass not in load["label"] or load["label"] == load["on"] + " g":
+                    bad["weight"].append("%s: %r for mass %r" % (var, load["label"], mass))
+        # the row's own unknown apart: the loads whose vector holds the row's variable, a load
+        # measure (a statics row's coordinate in a spring's force is no load's own)
+        word = re.compile(r"(?<![A-Za-z0-9_])" + re.escape(var) + r"(?![A-Za-z0-9_'])")
+        for load in d["loads"]:
+            own = load["kind"] in ("force", "torque") and var in unknowns and \
+                bool(word.search(load_vector.get(load["label"], "")))
+            if own != (load["role"] == "own"):
+                bad["own"].append("%s: %s role %s" % (var, load["label"], load["role"]))
+        owns = [l for l in d["loads"] if l["role"] == "own"]
+        others = [l for l in d["loads"] if l["role"] != "own"]
+        for o in owns:
+            if not o["halo"] or any(o["width"] <= x["width"] for x in others) or "own" not in d["legend"]:
+                bad["own"].append("%s: %s not drawn apart (width %s, halo %s, legend %s)"
+                                  % (var, o["label"], o["width"], o["halo"], d["legend"]))
+        # dashed exactly where the load's part in the equation is zero
+        U = dia["direction"]
+        O = place.get(dia["about"]) if row["motion"] == "rotate" else None
+        for load, spec in zip(d["loads"], dia["loads"]):
+            dashed = load["dash"] not in ("", "none")
+            if (load["role"] == "drops") != dashed or (dashed and "drops" not in d["legend"]):
+                bad["drops"].append("%s: %s role %s, dash %r" % (var, load["label"], load["role"], load["dash"]))
+            if spec["kind"] == "joint":
+                if load["role"] != "drops" or (O is not None and spec["at"] != dia["about"]):
+                    bad["drops"].append("%s: joint at %s (O %s) role %s" % (var, spec["at"], dia["about"], load["role"]))
+                continue
+            F = spec["vector"] if row["motion"] == "rotate" or spec["kind"] != "torque" else [0, 0, 0]
+            if O is not None and spec["kind"] != "torque":
+                rr = [a - b for a, b in zip(place[spec["at"]], O)]
+                F = [rr[1] * F[2] - rr[2] * F[1], rr[2] * F[0] - rr[0] * F[2], rr[0] * F[1] - rr[1] * F[0]]
+            part = sum(a * b for a, b in zip(U, F))
+            size = math.sqrt(sum(a * a for a in spec["vector"])) * (1 + (L if O is not None else 0))
+            if load["role"] == "drops" and abs(part) > 1e-6 * size:
+                bad["drops"].append("%s: %s dashed, its part %.3g" % (var, load["label"], part))
+            if load["role"] != "drops" and abs(part) > 1e-6 * size:
+                continue
+            # zero here: the road-map's own list says whether it drops out at every state
+            listed = [f for f in row["fbd"] if f.startswith(spec["label"] + " ")]
+            if listed and "drops out" in listed[0] and load["role"] != "drops":
+                bad["drops"].append("%s: %s listed as dropping out, not dashed" % (var, spec["label"]))
+    for what, text in (("on", "every load arrow on a body of S, the one the model says it acts on"),
+                       ("at", "every load arrow at its point's drawn place"),
+                       ("overlap", "no two labels overlap"),
+                       ("direction", "the u arrow inside the picture, its label clear of its shaft"),
+                       ("named", "S's points, O and S's angles named"),
+                       ("weight", "each weight labelled with its mass times g"),
+                       ("own", "the row's own unknown drawn apart"),
+                       ("drops", "loads the equation does not hold dashed, others not")):
+        check(not bad[what], "%s: %s (%d diagrams; %s)" % (who, text, len(drawn), bad[what][:3]))
+
+
 WIDTHS = (("screen", 1280), ("print", 720))
 
 
@@ -597,6 +830,7 @@ def examples(cli, source, work, browser):
         if data["animation"]:
             check(dom.anim == 1 and dom.play and dom.slider and (dom.canvas is not None or data["geometry"]["planar"]),
                   "%s: the animation with play and the time slider" % name)
+        diagram_checks(browser, index, name)
         # in print too where the rows are longest (the arm); the sit-to-stand page and the
         # mass matrix's are measured in print below
         equation_widths(browser, index, name, widths=WIDTHS if name == "kuka_iiwa" else WIDTHS[:1])
@@ -744,6 +978,7 @@ def main():
     check(all(f[0] == f[1] for f in dom.fbds), "every load of the data is drawn")
     check(dom.equations == 9, "one equation per row (%d)" % dom.equations)
     equation_widths(browser, index, "sit_to_stand", print_pdf=True)
+    diagram_checks(browser, index, "sit_to_stand")
     check(dom.katex == dom.equations, "every equation typeset by KaTeX (%d of %d)" % (dom.katex, dom.equations))
     check(dom.raw == 0 and dom.text_backslashes == 0,
           "no raw TeX left (%d raw boxes, %d texts with backslashes)" % (dom.raw, dom.text_backslashes))

@@ -74,16 +74,50 @@ TEST(Report, EachRowsFreeBodyDiagramHoldsTheLoadsExternalToItsSystem) {
     EXPECT_NE(c.find("\"system\":[\"C\"],\"about\":\"C_o\""), std::string::npos);
     EXPECT_EQ(count(c, "\"kind\":"), 3u);
     // the torque on S is unknown, drawn at the joint, positive about +Nz
-    EXPECT_NE(c.find("{\"kind\":\"torque\",\"label\":\"T_C\",\"at\":\"C_o\",\"vector\":[0,0,1],"
-                     "\"unknown\":true}"),
+    EXPECT_NE(c.find("{\"kind\":\"torque\",\"label\":\"T_C\",\"at\":\"C_o\",\"on\":\"C\","
+                     "\"vector\":[0,0,1],\"unknown\":true,\"role\":\"own\"}"),
               std::string::npos)
         << c;
+    // about C_o: C's weight m_C g at Ccm has a moment about Nz (C leans at qA + qB + qC =
+    // 0.15 rad), B's force at C_o passes through O and drops out; the points named are O and
+    // where the loads act
+    EXPECT_NE(c.find("{\"kind\":\"gravity\",\"label\":\"m_C g\",\"at\":\"Ccm\",\"on\":\"C\","),
+              std::string::npos)
+        << c;
+    EXPECT_NE(c.find("\"unknown\":false,\"role\":\"known\"}"), std::string::npos) << c;
+    EXPECT_NE(c.find("{\"kind\":\"joint\",\"label\":\"from B\",\"at\":\"C_o\",\"on\":\"C\","
+                     "\"vector\":[],\"unknown\":true,\"role\":\"drops\"}"),
+              std::string::npos)
+        << c;
+    EXPECT_NE(c.find("\"points\":[\"C_o\",\"Ccm\"]"), std::string::npos) << c;
+    // {A, B, C}: the joints at B_o and C_o between S's bodies are named too
+    EXPECT_NE(a.find("\"points\":[\"A_o\",\"B_o\",\"C_o\",\"Acm\",\"Bcm\",\"Ccm\"]"),
+              std::string::npos)
+        << a;
     // the direction u = Nz, and the equation as TeX with the torque in it
     EXPECT_NE(c.find("\"direction\":[0,0,1]"), std::string::npos);
     // the row solved for its unknown (T_C enters with coefficient 1), written breakable: no
     // \left( ... \right) group that KaTeX or TeX could not break a line inside
     EXPECT_NE(c.find("\"equation\":\"T_{C} = "), std::string::npos) << c;
     EXPECT_EQ(c.find("\\\\left("), std::string::npos) << c;
+}
+
+TEST(Report, APlanarModelsAnglesAreMarkedFromTheParentsAxisToTheBodys) {
+    // qA turns A from N about z, qB B from A, qC C from B (the chain's links along their
+    // frames' axes): each angle at its body's joint, from the parent's axis to the body's,
+    // its value the coordinate's at the configuration
+    SitToStand s;
+    const std::string json = render_report_json(s.content);
+    const std::size_t at = json.find("\"angles\":[");
+    ASSERT_NE(at, std::string::npos);
+    const std::string angles = json.substr(at, json.find("]}", json.find("\"name\":\"qC\"", at)) - at);
+    for (const char* q : {"\"body\":\"A\",\"name\":\"qA\",\"at\":\"A_o\"",
+                          "\"body\":\"B\",\"name\":\"qB\",\"at\":\"B_o\"",
+                          "\"body\":\"C\",\"name\":\"qC\",\"at\":\"C_o\""})
+        EXPECT_NE(angles.find(q), std::string::npos) << q << " in " << angles;
+    EXPECT_NE(angles.find("\"value\":0.35}"), std::string::npos) << angles;
+    EXPECT_NE(angles.find("\"value\":-1.2}"), std::string::npos) << angles;
+    EXPECT_NE(angles.find("\"value\":1}"), std::string::npos) << angles;
 }
 
 TEST(Report, PointsArePlacedAtTheConfiguration) {
@@ -546,7 +580,14 @@ TEST(ReportLatex, TheRoadmapTableTheLoadsAndTheEquationsForAPaper) {
          at = tex.find("\\begin{tikzpicture}", at + 1))
         loads.push_back(count(tex.substr(at, tex.find("\\end{tikzpicture}", at) - at), "% load: "));
     EXPECT_EQ(loads, (std::vector<std::size_t>{5, 4, 3}));
-    EXPECT_EQ(count(tex, "node[below left] {$O$}"), 3u);  // each about point marked
+    EXPECT_EQ(count(tex, "{$O$ = "), 3u);  // each about point marked and named
+    // the weights labelled m g as the model names them; the row's torque highlighted, the
+    // joint's force through O dashed, the caption saying so
+    EXPECT_EQ(count(tex, "{$m_{A} \\, g$}"), 1u) << tex;
+    EXPECT_EQ(count(tex, "{$m_{C} \\, g$}"), 3u);
+    EXPECT_EQ(count(tex, "Highlighted: solved for in this row"), 3u);
+    EXPECT_EQ(count(tex, "Dashed: loads $E_{"), 3u);
+    EXPECT_EQ(count(tex, "% angle: "), 3u + 2u + 1u);  // S's rotations: qA, qB, qC; qB, qC; qC
     // each row's diagram, its caption and its equation (solved for the torque) in one box that
     // does not float away from them
     EXPECT_EQ(count(tex, "\\begin{minipage}{\\linewidth}"), 3u);

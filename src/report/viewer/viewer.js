@@ -144,25 +144,108 @@
     if (n < 1e-12) return;
     var u = [d[0] / n, d[1] / n], h = Math.min(0.35 * n, g.head), w = 0.45 * h;
     var b = [to[0] - u[0] * h, to[1] - u[1] * h];
+    // the row's own unknown: a highlight under its arrow
+    if (g.halo) svg("line", {x1: from[0], y1: from[1], x2: to[0], y2: to[1], "class": "halo"}, g);
     svg("line", {x1: from[0], y1: from[1], x2: b[0], y2: b[1], "class": "shaft " + (cls || "")}, g);
     svg("path", {d: "M" + to[0] + "," + to[1] + " L" + (b[0] - u[1] * w) + "," + (b[1] + u[0] * w) +
                  " L" + (b[0] + u[1] * w) + "," + (b[1] - u[0] * w) + " Z", "class": "head " + (cls || "")}, g);
   }
 
-  // one free-body diagram: the model faded, S in ink, each load on S as an arrow
+  // ---- labels placed so that none covers another -----------------------------------------
+  // Each label is tried at offsets around its anchor, nearest first, in the eight directions
+  // starting with the one it prefers; the first place that meets no label placed before (nor,
+  // where one is free of them, the diagram's points, arrowheads and the u arrow) is kept.
+  // Deterministic: the same diagram places its labels alike every time.
+  var DIRECTIONS = [[1, 0], [1, -1], [0, -1], [-1, -1], [-1, 0], [-1, 1], [0, 1], [1, 1]];
+  function overlaps(a, b) {
+    return a.x < b.x + b.w && b.x < a.x + a.w && a.y < b.y + b.h && b.y < a.y + a.h;
+  }
+  function labelPlacer(L, fontSize) {
+    var placed = [], obstacles = [];
+    function size(t) {
+      var bb = null;
+      try { bb = t.getBBox(); } catch (e) { bb = null; }
+      // not laid out (a hidden box): sized from its characters
+      if (!bb || !(bb.width > 0)) {
+        var w = 0.6 * fontSize * t.textContent.length, h = 1.2 * fontSize;
+        bb = {x: Number(t.getAttribute("x")), y: Number(t.getAttribute("y")) - 0.9 * fontSize, width: w, height: h};
+      }
+      return bb;
+    }
+    return {
+      obstacle: function (x, y, w, h) { obstacles.push({x: x, y: y, w: w, h: h}); },
+      boxes: placed,
+      // a text at a fixed place (the u label)
+      fix: function (t) {
+        var bb = size(t);
+        placed.push({x: bb.x, y: bb.y, w: bb.width, h: bb.height});
+      },
+      // moves text t near anchor, preferring direction prefer ([dx, dy], page axes)
+      place: function (t, anchor, prefer) {
+        t.setAttribute("x", 0);
+        t.setAttribute("y", 0);
+        var bb = size(t), w = bb.width, h = bb.height, ox = bb.x, oy = bb.y;
+        var start = 0, best = -Infinity;
+        DIRECTIONS.forEach(function (d, i) {
+          var c = ((d[0] * prefer[0] + d[1] * prefer[1]) / Math.hypot(d[0], d[1])) || 0;
+          if (c > best + 1e-9) { best = c; start = i; }
+        });
+        var pad = 0.004 * L;
+        function at(ring, k) {
+          var d = DIRECTIONS[(start + k) % 8], gap = ring;
+          var cx = anchor[0] + d[0] * (gap + w / 2), cy = anchor[1] + d[1] * (gap + h / 2);
+          return {x: cx - w / 2, y: cy - h / 2, w: w, h: h};
+        }
+        function free(b, strict) {
+          var grown = {x: b.x - pad, y: b.y - pad, w: b.w + 2 * pad, h: b.h + 2 * pad};
+          for (var i = 0; i < placed.length; ++i) if (overlaps(grown, placed[i])) return false;
+          if (strict) for (var j = 0; j < obstacles.length; ++j) if (overlaps(b, obstacles[j])) return false;
+          return true;
+        }
+        var chosen = null;
+        [true, false].forEach(function (strict) {
+          for (var r = 0; !chosen && r < 40; ++r) {
+            var ring = L * (0.012 + 0.03 * r);
+            for (var k = 0; k < 8 && !chosen; ++k) {
+              var b = at(ring, k);
+              if (free(b, strict)) chosen = b;
+            }
+          }
+        });
+        if (!chosen) chosen = at(L * 1.3, 0);
+        t.setAttribute("x", chosen.x - ox);
+        t.setAttribute("y", chosen.y - oy);
+        placed.push(chosen);
+      }
+    };
+  }
+
+  // one free-body diagram: the model faded, S in ink, each load on S as an arrow (the row's
+  // own unknown highlighted, loads its equation does not hold dashed), S's points named, a
+  // planar model's angles of S marked, then a legend
   function drawDiagram(parent, data, row) {
-    var geo = data.geometry, project = projector(geo);
+    var geo = data.geometry, project = projector(geo), dia = row.diagram;
     var at = {};
     geo.points.forEach(function (p) { at[p.name] = p.at; });
     var box = bounds(geo.points.map(function (p) { return p.at; }), project);
-    var L = box.size, pad = 0.45 * L;
-    var view = [box.x - pad, box.y - pad, box.w + 2 * pad, box.h + 2 * pad];
-    var s = svg("svg", {"class": "fbd", viewBox: view.join(" "), width: 340, height: 340 * view[3] / view[2],
-                        "data-variable": row.variable, "data-loads": row.diagram.loads.length}, parent);
-    var g = svg("g", {"class": "scene", "font-size": 0.055 * L}, s);
+    var L = box.size, pad = 0.45 * L, fontSize = 0.055 * L;
+    var figure = el("div", {"class": "fbd-figure"}, parent);
+    var view0 = [box.x - pad, box.y - pad, box.w + 2 * pad, box.h + 2 * pad];
+    var s = svg("svg", {"class": "fbd", viewBox: view0.join(" "), width: 340, height: 340 * view0[3] / view0[2],
+                        "data-variable": row.variable, "data-loads": dia.loads.length}, figure);
+    var g = svg("g", {"class": "scene", "font-size": fontSize}, s);
     g.head = 0.06 * L;
+    // the labels are drawn over everything else, each with a halo of the background
+    var labelLayer = svg("g", {"class": "labels"}, g);
+    var labels = labelPlacer(L, fontSize), pending = [];  // [text, anchor, preferred direction]
+    function label(text, anchor, prefer, cls, attrs) {
+      var t = svg("text", {x: anchor[0], y: anchor[1], "class": "label" + (cls ? " " + cls : "")}, labelLayer, text);
+      for (var k in attrs || {}) t.setAttribute(k, attrs[k]);
+      pending.push([t, anchor, prefer]);
+      return t;
+    }
     var inS = {};
-    row.diagram.system.forEach(function (b) { inS[b] = true; });
+    dia.system.forEach(function (b) { inS[b] = true; });
     geo.segments.forEach(function (seg) {
       var a = project(at[seg.from]), b = project(at[seg.to]);
       svg("line", {x1: a[0], y1: a[1], x2: b[0], y2: b[1],
@@ -170,23 +253,53 @@
     });
     geo.points.forEach(function (p) {
       var q = project(p.at);
-      svg("circle", {cx: q[0], cy: q[1], r: 0.012 * L, "class": "point"}, g);
+      svg("circle", {cx: q[0], cy: q[1], r: 0.012 * L, "class": "point", "data-point": p.name}, g);
+      labels.obstacle(q[0] - 0.015 * L, q[1] - 0.015 * L, 0.03 * L, 0.03 * L);
+    });
+    // the row's own unknown: a load measure, or the acceleration of a coordinate
+    var ownName = row.variable.replace(/'+$/, "");
+    // the angles of S's rotations (planar models): from the parent's axis to the body's
+    var ownAngle = false;
+    if (geo.planar) (geo.angles || []).forEach(function (an) {
+      if (!inS[an.body] || !at[an.at]) return;
+      var p = project(at[an.at]), f = unit2(project(an.from)), t2 = unit2(project(an.to));
+      if (!f || !t2) return;
+      var own = an.name === ownName;
+      ownAngle = ownAngle || own;
+      var ag = svg("g", {"class": "angle" + (own ? " own" : ""), "data-angle": an.name, "data-at": an.at}, g);
+      var r = 0.075 * L;
+      svg("line", {x1: p[0], y1: p[1], x2: p[0] + 0.15 * L * f[0], y2: p[1] + 0.15 * L * f[1], "class": "reference"}, ag);
+      // a turn about +z seen on the page: which way from the parent's axis
+      var f90 = unit2(project([-an.from[1], an.from[0], 0])), sense = f90 ? (f[0] * f90[1] - f[1] * f90[0] >= 0 ? 1 : -1) : 1;
+      var a0 = Math.atan2(f[1], f[0]), sweep = Math.atan2(Math.sin(an.value), Math.cos(an.value)) * sense, pts = [];
+      for (var k = 0; k <= 24; ++k) {
+        var th = a0 + sweep * k / 24;
+        pts.push([p[0] + r * Math.cos(th), p[1] + r * Math.sin(th)]);
+      }
+      svg("polyline", {points: pts.map(function (q) { return q.join(","); }).join(" "), fill: "none", "class": "arc"}, ag);
+      var mid = a0 + sweep / 2, m = [p[0] + r * Math.cos(mid), p[1] + r * Math.sin(mid)];
+      label(an.name, m, [Math.cos(mid), Math.sin(mid)], "angle-name" + (own ? " own" : ""), {"data-angle": an.name});
     });
     var arrowLength = 0.28 * L;
-    row.diagram.loads.forEach(function (load) {
-      var lg = svg("g", {"class": "load " + load.kind + (load.unknown ? " unknown" : " known"),
-                         "data-label": load.label}, g);
+    dia.loads.forEach(function (load) {
+      var role = load.role || (load.unknown ? "held" : "known");
+      var lg = svg("g", {"class": "load " + load.kind + (load.unknown ? " unknown" : " known") + " role-" + role,
+                         "data-label": load.label, "data-on": load.on, "data-at": load.at, "data-role": role}, g);
       lg.head = g.head;
+      lg.halo = role === "own";
       var p = project(at[load.at] || [0, 0, 0]);
-      var labelAt = [p[0] + 0.05 * L, p[1] - 0.05 * L];
+      var anchor = [p[0], p[1]], prefer = [1, -1];
+      function head(q) { labels.obstacle(q[0] - 0.4 * g.head, q[1] - 0.4 * g.head, 0.8 * g.head, 0.8 * g.head); }
       if (load.kind === "torque" && !geo.planar) {
         // in space: a double-headed arrow along the torque
         var tu = unit2(project(load.vector.length ? load.vector : [0, 0, 1]));
         if (tu) {
           var tip = [p[0] + tu[0] * arrowLength, p[1] + tu[1] * arrowLength];
           arrow(lg, p, tip);
+          lg.halo = false;
           arrow(lg, p, [tip[0] - tu[0] * g.head, tip[1] - tu[1] * g.head]);
-          labelAt = [tip[0] + 0.03 * L, tip[1]];
+          head(tip);
+          anchor = tip; prefer = tu;
         }
       } else if (load.kind === "torque") {
         // an arc about the point, counterclockwise in the plane for a +z torque
@@ -196,55 +309,127 @@
           var th = th0 + (th1 - th0) * k / 24;
           pts.push([p[0] + r * Math.cos(th), p[1] - r * Math.sin(th)]);
         }
-        svg("polyline", {points: pts.map(function (q) { return q.join(","); }).join(" "), "class": "shaft arc", fill: "none"}, lg);
+        var line = pts.map(function (q) { return q.join(","); }).join(" ");
+        if (lg.halo) svg("polyline", {points: line, "class": "halo", fill: "none"}, lg);
+        svg("polyline", {points: line, "class": "shaft arc", fill: "none"}, lg);
         var end1 = pts[24], tan = [-Math.sin(th1) * sense, -Math.cos(th1) * sense];
+        lg.halo = false;
         arrow(lg, [end1[0] - tan[0] * 0.9 * g.head, end1[1] - tan[1] * 0.9 * g.head], end1);
-        labelAt = [p[0] + r, p[1] - r];
+        head(end1);
+        anchor = [p[0] + 0.72 * r, p[1] - 0.72 * r];
       } else if (load.kind === "joint") {
         // a joint's force: unknown components along Nx and Ny
         (geo.planar ? [[1, 0, 0], [0, 1, 0]] : [[1, 0, 0], [0, 1, 0], [0, 0, 1]]).forEach(function (axis) {
-          var a = project(axis);
-          arrow(lg, p, [p[0] + 0.6 * arrowLength * a[0], p[1] + 0.6 * arrowLength * a[1]]);
+          var a = project(axis), q = [p[0] + 0.6 * arrowLength * a[0], p[1] + 0.6 * arrowLength * a[1]];
+          arrow(lg, p, q);
+          head(q);
         });
-        labelAt = [p[0] + 0.62 * arrowLength, p[1] + 0.06 * L];
+        anchor = [p[0] + 0.3 * arrowLength, p[1] + 0.03 * L];
+        prefer = [1, 1];
       } else {
         var u = unit2(project(load.vector));
         if (u) {
           var tail = load.kind === "gravity" ? p : [p[0] - u[0] * arrowLength, p[1] - u[1] * arrowLength];
-          var head = load.kind === "gravity" ? [p[0] + u[0] * arrowLength, p[1] + u[1] * arrowLength] : p;
-          arrow(lg, tail, head);
-          labelAt = load.kind === "gravity" ? [head[0] + 0.03 * L, head[1]] : [tail[0], tail[1] - 0.03 * L];
+          var tipp = load.kind === "gravity" ? [p[0] + u[0] * arrowLength, p[1] + u[1] * arrowLength] : p;
+          arrow(lg, tail, tipp);
+          head(tipp);
+          anchor = load.kind === "gravity" ? [p[0] + 0.6 * u[0] * arrowLength, p[1] + 0.6 * u[1] * arrowLength] : tail;
+          prefer = load.kind === "gravity" ? [1, 0] : [-u[0], -u[1]];
         } else {
           svg("circle", {cx: p[0], cy: p[1], r: 0.04 * L, "class": "shaft", fill: "none"}, lg);
         }
       }
-      svg("text", {x: labelAt[0], y: labelAt[1], "class": "label"}, lg, load.label);
+      label(load.label, anchor, prefer, "load-label " + load.kind + (load.unknown ? " unknown" : " known") + " role-" + role,
+            {"data-label": load.label, "data-at": load.at});
     });
-    // the about point O and the direction u
-    if (row.diagram.about && at[row.diagram.about]) {
-      var o = project(at[row.diagram.about]);
-      var og = svg("g", {"class": "about"}, g);
+    // the about point O
+    if (dia.about && at[dia.about]) {
+      var o = project(at[dia.about]);
+      var og = svg("g", {"class": "about", "data-at": dia.about}, g);
       svg("circle", {cx: o[0], cy: o[1], r: 0.03 * L, fill: "none"}, og);
       svg("line", {x1: o[0] - 0.045 * L, y1: o[1], x2: o[0] + 0.045 * L, y2: o[1]}, og);
       svg("line", {x1: o[0], y1: o[1] - 0.045 * L, x2: o[0], y2: o[1] + 0.045 * L}, og);
-      svg("text", {x: o[0] - 0.05 * L, y: o[1] + 0.1 * L, "text-anchor": "end", "class": "label"}, og,
-          "O = " + row.diagram.about);
+      label("O = " + dia.about, o, [-1, 1], "point-name about-name", {"data-point": dia.about});
     }
-    var dir = row.diagram.direction;
+    // S's points named (O's already is)
+    (dia.points || []).forEach(function (name) {
+      if (name === dia.about || !at[name]) return;
+      label(name, project(at[name]), [-1, 1], "point-name", {"data-point": name});
+    });
+    // the direction u, below all that is drawn, wholly inside the picture, its label beside it
+    var drawn;
+    pending.forEach(function (p) { p[0].style.display = "none"; });
+    try { drawn = g.getBBox(); } catch (e) { drawn = null; }
+    pending.forEach(function (p) { p[0].style.display = ""; });
+    if (!drawn || !(drawn.width > 0)) drawn = {x: box.x - 0.3 * L, y: box.y - 0.3 * L, width: box.w + 0.6 * L, height: box.h + 0.6 * L};
+    var dir = dia.direction;
     var dg = svg("g", {"class": "direction"}, g);
     dg.head = g.head;
     var du = unit2(project(dir));
     var inPlane = du && (!geo.planar || Math.hypot(dir[0], dir[1]) > 0.2);
-    var base = [box.x - 0.3 * L, box.y + box.h + 0.3 * L];
+    var ulen = 0.22 * L, corner = [Math.min(drawn.x, box.x - 0.3 * L), drawn.y + drawn.height + 0.08 * L];
+    var right, middle;
     if (inPlane) {
-      arrow(dg, base, [base[0] + du[0] * 0.25 * L, base[1] + du[1] * 0.25 * L]);
+      var ax = Math.abs(du[0]) * ulen, ay = Math.abs(du[1]) * ulen, w = 0.5 * g.head;
+      var from = [corner[0] + w + (du[0] < 0 ? ax : 0), corner[1] + w + (du[1] < 0 ? ay : 0)];
+      arrow(dg, from, [from[0] + du[0] * ulen, from[1] + du[1] * ulen]);
+      right = corner[0] + ax + 2 * w;
+      middle = corner[1] + w + ay / 2;
+      labels.obstacle(corner[0], corner[1], ax + 2 * w, ay + 2 * w);
     } else {
-      svg("circle", {cx: base[0], cy: base[1], r: 0.04 * L, fill: "none"}, dg);
-      svg("circle", {cx: base[0], cy: base[1], r: 0.01 * L, "class": "dot"}, dg);
+      var c = [corner[0] + 0.04 * L, corner[1] + 0.04 * L];
+      svg("circle", {cx: c[0], cy: c[1], r: 0.04 * L, fill: "none"}, dg);
+      svg("circle", {cx: c[0], cy: c[1], r: 0.01 * L, "class": "dot"}, dg);
+      right = c[0] + 0.04 * L;
+      middle = c[1];
+      labels.obstacle(corner[0], corner[1], 0.08 * L, 0.08 * L);
     }
-    svg("text", {x: base[0] + 0.07 * L, y: base[1] + 0.02 * L, "class": "label"}, dg,
-        "\u00fb = " + row.direction + (inPlane ? "" : " (out of the page)"));
+    var ut = svg("text", {x: right + 0.04 * L, y: middle + 0.35 * fontSize, "class": "label"}, dg,
+                 "\u00fb = " + row.direction + (inPlane ? "" : " (out of the page)"));
+    labels.fix(ut);
+    // the labels, in the order they matter: the loads' (the row's own first), O's, the angles', the points'
+    function rank(t) {
+      var cls = t.getAttribute("class");
+      return /role-own/.test(cls) ? 0 : /load-label/.test(cls) ? 1 : /about-name/.test(cls) ? 2 :
+             /angle-name/.test(cls) ? 3 : 4;
+    }
+    pending.forEach(function (p, i) { p.push(rank(p[0]), i); });
+    pending.sort(function (a, b) { return a[3] - b[3] || a[4] - b[4]; });
+    pending.forEach(function (p) { labels.place(p[0], p[1], p[2]); });
+    g.appendChild(labelLayer);
+    // the picture holds everything drawn, with a margin
+    var all;
+    try { all = g.getBBox(); } catch (e) { all = null; }
+    if (all && all.width > 0) {
+      var m = 0.04 * L, v = [all.x - m, all.y - m, all.width + 2 * m, all.height + 2 * m];
+      s.setAttribute("viewBox", v.join(" "));
+      s.setAttribute("height", 340 * v[3] / v[2]);
+    }
+    legend(figure, row, dia, ownAngle);
     return s;
+  }
+
+  // what the diagram's styles mean, for the styles it uses
+  function legend(parent, row, dia, ownAngle) {
+    var roles = {};
+    dia.loads.forEach(function (l) { roles[l.role] = true; });
+    var ul = el("ul", {"class": "fbd-legend"}, parent);
+    if (roles.own || ownAngle) {
+      var li = el("li", {"class": "own"}, ul);
+      el("span", {"class": "swatch own"}, li);
+      el("span", {}, li, "solved for in this row: " + row.variable);
+    }
+    if (roles.held) {
+      var lh = el("li", {"class": "held"}, ul);
+      el("span", {"class": "swatch held"}, lh);
+      el("span", {}, lh, "unknown the equation also holds: " + row.additional_unknowns.join(", "));
+    }
+    if (roles.drops) {
+      var ld = el("li", {"class": "drops"}, ul);
+      el("span", {"class": "swatch drops"}, ld);
+      el("span", {}, ld, "not in E_" + row.variable + (row.motion === "rotate" ? ": through O, or its moment about O square to \u00fb" :
+                                                     ": square to \u00fb"));
+    }
   }
 
   // ---- sections ---------------------------------------------------------------------------
@@ -269,7 +454,7 @@
   var diagrams = [];
   function redrawDiagrams(data) {
     diagrams.forEach(function (d) {
-      var old = d[0].querySelector("svg.fbd");
+      var old = d[0].querySelector(".fbd-figure");
       if (old) d[0].removeChild(old);
       drawDiagram(d[0], data, d[1]);
     });
