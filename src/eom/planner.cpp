@@ -13,6 +13,7 @@
 #include "alembert/error.hpp"
 #include "alembert/sym/print.hpp"
 #include "alembert/sym/simplify.hpp"
+#include "accumulated_moment.hpp"
 #include "free_body_rows.hpp"
 #include "unknown_rows.hpp"
 #include "alembert/eom/zero_test.hpp"
@@ -565,6 +566,7 @@ std::vector<RoadmapRow> plan_roadmap(const System& sys,
     // each coordinate's S, direction and about point, tested at random states, symbolically
     // where the kinematics cannot be evaluated there
     PlannerKinematics kinematics(sys);
+    detail::InertiaLoadsMemo inertia_loads;  // the rows below meet the same bodies
     auto plan = [&](const TimeVariable& q) {
         std::optional<Plan> p = plan_coordinate_at_random_states(sys, q, constraint_forces_are_loads, kinematics);
         return p ? std::move(*p) : plan_coordinate(sys, q, constraint_forces_are_loads);
