@@ -10,7 +10,13 @@
 
 namespace alembert::detail {
 
+struct InertiaLoadsMemo::Entry {
+    InertiaLoads loads, at_zero;  // as formed, and with the solve-level symbols at zero
+};
+
 namespace {
+
+thread_local InertiaLoadsMemo* active_memo = nullptr;
 
 using GiNaC::is_a;
 
@@ -125,6 +131,10 @@ private:
 
 }  // namespace
 
+InertiaLoadsMemo::InertiaLoadsMemo() : outer_(active_memo) { active_memo = this; }
+
+InertiaLoadsMemo::~InertiaLoadsMemo() { active_memo = outer_; }
+
 std::optional<ex> form_accumulated_moment_row(const System& sys, const RoadmapRow& row) {
     if (row.motion != Motion::rotate || !row.about || row.system.empty()) return std::nullopt;
     const Frame& N = sys.newtonian();
@@ -164,13 +174,26 @@ std::optional<ex> form_accumulated_moment_row(const System& sys, const RoadmapRo
             add(*l.point, l.vector, Vector(), l.vector, Vector());
         }
     }
-    // each body's weight, and its inertia force and torque (R* = -m a, T*)
+    // each body's weight, and its inertia force and torque (R* = -m a, T*), formed once per
+    // memo
+    InertiaLoadsMemo::Entry formed;
+    auto inertia_loads = [&](const Body& b) -> const InertiaLoadsMemo::Entry& {
+        if (active_memo)
+            if (auto it = active_memo->entries_.find(&b); it != active_memo->entries_.end()) return *it->second;
+        InertiaLoadsMemo::Entry e;
+        e.loads = calc_inertia_loads(b, N);
+        e.at_zero = {at_zero(e.loads.force), at_zero(e.loads.torque)};
+        if (!active_memo) return formed = std::move(e);
+        auto& kept = active_memo->entries_[&b];
+        kept = std::make_unique<InertiaLoadsMemo::Entry>(std::move(e));
+        return *kept;
+    };
     for (const Body* b : S) {
         Vector f = b->mass() * sys.gravity(), c, f0 = f, c0;
         if (dynamics) {
-            const InertiaLoads r = calc_inertia_loads(*b, N);
-            f += r.force, c += r.torque;
-            f0 += at_zero(r.force), c0 += at_zero(r.torque);
+            const InertiaLoadsMemo::Entry& r = inertia_loads(*b);
+            f += r.loads.force, c += r.loads.torque;
+            f0 += r.at_zero.force, c0 += r.at_zero.torque;
         }
         add(b->cm(), f, c, f0, c0);
     }

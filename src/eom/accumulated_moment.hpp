@@ -3,7 +3,9 @@
 #pragma once
 
 #include <cstddef>
+#include <memory>
 #include <optional>
+#include <unordered_map>
 
 #include "alembert/eom/roadmap.hpp"
 
@@ -31,5 +33,25 @@ inline constexpr std::size_t kAccumulatedRowBodies = 8;
 /// Nothing (std::nullopt) if the row is not a rotate row or its items are not visibly linear in
 /// the solve-level symbols (the caller forms it as written then).
 std::optional<ex> form_accumulated_moment_row(const System& sys, const RoadmapRow& row);
+
+/// While one is alive on this thread, form_accumulated_moment_row forms each body's inertia
+/// force and torque, and their values with the accelerations at zero, once and remembers them
+/// (a plan's rows meet the same bodies: a chain's n rows formed each body's loads up to n
+/// times, each holding the accelerations of every joint inward of it). The model must not
+/// change while one lives: plan_roadmap keeps one for the rows it forms.
+class InertiaLoadsMemo {
+public:
+    InertiaLoadsMemo();
+    ~InertiaLoadsMemo();
+    InertiaLoadsMemo(const InertiaLoadsMemo&) = delete;
+    InertiaLoadsMemo& operator=(const InertiaLoadsMemo&) = delete;
+
+    struct Entry;
+
+private:
+    InertiaLoadsMemo* outer_;
+    std::unordered_map<const Body*, std::unique_ptr<Entry>> entries_;
+    friend std::optional<ex> form_accumulated_moment_row(const System&, const RoadmapRow&);
+};
 
 }  // namespace alembert::detail

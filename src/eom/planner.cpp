@@ -6,12 +6,14 @@
 #include <cctype>
 #include <functional>
 #include <limits>
+#include <map>
 #include <memory>
 #include <optional>
 
 #include "alembert/error.hpp"
 #include "alembert/sym/print.hpp"
 #include "alembert/sym/simplify.hpp"
+#include "accumulated_moment.hpp"
 #include "free_body_rows.hpp"
 #include "unknown_rows.hpp"
 #include "alembert/eom/zero_test.hpp"
@@ -72,6 +74,159 @@ void locate_instantaneous_centre(const System& sys, const TimeVariable& q, const
     p.own = std::make_shared<Point>("IC_" + q.name());
     p.own->set_pos(sys.origin(), r);
     p.O = p.own.get();
+}
+
+// The model's kinematics as the planner tests it: each body's angular velocity and mass
+// centre's velocity, and each point's velocity and position, measured in N once (not once per
+// coordinate), with their values at the zero tests' random states
+class PlannerKinematics {
+public:
+    explicit PlannerKinematics(const System& sys) : sys_(sys), at_(sys.symbols()) {
+        const Frame& N = sys.newtonian();
+        for (const Body* b : sys.bodies()) {
+            w_.push_back(b->frame() ? b->frame()->ang_vel_in(N).components_in(N) : Col3{});
+            v_.push_back(b->cm().vel_in(N).components_in(N));
+        }
+    }
+
+    MeasuresAtRandomStates& at() { return at_; }
+    const Col3& w(std::size_t body) const { return w_[body]; }
+    const Col3& v(std::size_t body) const { return v_[body]; }
+
+    /// P's velocity in N, measured in N; nothing for a point never located
+    const std::optional<Col3>& velocity(const Point& P) {
+        auto [it, added] = point_v_.try_emplace(&P);
+        if (added) {
+            try {
+                it->second = P.vel_in(sys_.newtonian()).components_in(sys_.newtonian());
+            } catch (const ModelError&) {
+            }
+        }
+        return it->second;
+    }
+
+    /// P's position from N_o at the random states; nothing for a point never located
+    const std::optional<MeasuresAtRandomStates::Values>& position(const Point& P) {
+        auto [it, added] = point_r_.try_emplace(&P);
+        if (added) {
+            Vector r;
+            if (position_of(sys_, P, r)) it->second = at_.calc_values(r.components_in(sys_.newtonian()));
+        }
+        return it->second;
+    }
+
+private:
+    const System& sys_;
+    MeasuresAtRandomStates at_;
+    std::vector<Col3> w_, v_;
+    std::map<const Point*, std::optional<Col3>> point_v_;
+    std::map<const Point*, std::optional<MeasuresAtRandomStates::Values>> point_r_;
+};
+
+MeasuresAtRandomStates::Values cross_at(const MeasuresAtRandomStates::Values& a,
+                                        const MeasuresAtRandomStates::Values& b) {
+    MeasuresAtRandomStates::Values c{};
+    for (std::size_t k = 0; k < c.size(); ++k) {
+        c[k][0] = a[k][1] * b[k][2] - a[k][2] * b[k][1];
+        c[k][1] = a[k][2] * b[k][0] - a[k][0] * b[k][2];
+        c[k][2] = a[k][0] * b[k][1] - a[k][1] * b[k][0];
+    }
+    return c;
+}
+
+MeasuresAtRandomStates::Values minus_at(MeasuresAtRandomStates::Values a,
+                                        const MeasuresAtRandomStates::Values& b) {
+    for (std::size_t k = 0; k < a.size(); ++k)
+        for (std::size_t i = 0; i < 3; ++i) a[k][i] -= b[k][i];
+    return a;
+}
+
+// The same plan as plan_coordinate below, its tests made on the kinematics' values at the
+// random states: which bodies move and how, by the change of each velocity when q' alone moves
+// by 1 (a partial velocity, one walk of the kinematics for all bodies), and S turning as one
+// body about O by those partials and the points' positions, with no symbolic derivative but
+// the direction's. Nothing where a measure cannot be evaluated at the states (the symbolic
+// tests decide then).
+std::optional<Plan> plan_coordinate_at_random_states(
+    const System& sys, const TimeVariable& q, const std::function<bool()>& constraint_forces_are_loads,
+    PlannerKinematics& kin) {
+    using Values = MeasuresAtRandomStates::Values;
+    const Frame& N = sys.newtonian();
+    const ex& qd = q.d(1);
+    MeasuresAtRandomStates& at = kin.at();
+    try {
+        Plan p;
+        std::vector<std::size_t> index;  // each body of S's place in sys.bodies()
+        std::vector<Values> pw, pv;      // their partial angular and mass centres' velocities
+        std::vector<bool> turns;
+        const std::vector<const Body*>& bodies = sys.bodies();
+        for (std::size_t i = 0; i < bodies.size(); ++i) {
+            const bool w_moves = !kin.w(i).is_zero() && at.calc_changes_with(kin.w(i), qd);
+            const bool v_moves = !kin.v(i).is_zero() && at.calc_changes_with(kin.v(i), qd);
+            if (!w_moves && !v_moves) continue;
+            p.S.push_back(bodies[i]);
+            index.push_back(i);
+            pw.push_back(w_moves ? at.calc_changes(kin.w(i), qd) : Values{});
+            pv.push_back(v_moves ? at.calc_changes(kin.v(i), qd) : Values{});
+            turns.push_back(w_moves);
+        }
+        if (p.S.empty()) {
+            p.note = "nothing moves when only " + q.name() + " changes";
+            return p;
+        }
+        // the direction: the first turning (else sliding) body's partial velocity, symbolic
+        // and in the frames the model writes it in
+        auto partial_w = [&](const Body& b) { return b.frame()->ang_vel_in(N).diff(qd).simplify(); };
+        auto partial_v = [&](const Body& b) { return b.cm().vel_in(N).diff(qd).simplify(); };
+        const auto turning = std::find(turns.begin(), turns.end(), true);
+        if (turning == turns.end()) {
+            p.motion = Motion::translate;
+            p.u = partial_v(*p.S.front()).unit();
+            for (std::size_t i = 0; i < p.S.size(); ++i)
+                if (!MeasuresAtRandomStates::agree(pv[i], pv.front()))
+                    p.note = "S does not slide as one body when only " + q.name() +
+                             " changes; constraint forces may remain";
+            return p;
+        }
+        const std::size_t t = static_cast<std::size_t>(turning - turns.begin());
+        p.motion = Motion::rotate;
+        const Vector w0 = partial_w(*p.S[t]);
+        p.u = w0.unit();
+        // the about point: a point of S that stays put when only q changes (the joint)
+        for (const Point* P : sys.points()) {
+            if (!P->owner() || std::find(p.S.begin(), p.S.end(), P->owner()) == p.S.end()) continue;
+            const std::optional<Col3>& v = kin.velocity(*P);
+            if (!v) continue;  // a point never located cannot serve as the about point
+            if (!at.calc_changes_with(*v, qd)) {
+                p.O = P;
+                break;
+            }
+        }
+        if (!p.O && constraint_forces_are_loads())
+            locate_instantaneous_centre(sys, q, *p.S[t], w0, partial_v(*p.S[t]), p);
+        if (!p.O) {
+            p.note = "no point of S stays fixed when only " + q.name() +
+                     " changes; no about point eliminates the constraint forces";
+            return p;
+        }
+        // check: S turns as one body about O (partials w0 and w0 x r^{cm/O})
+        const std::optional<Values>& r_O = kin.position(*p.O);
+        for (std::size_t i = 0; i < p.S.size(); ++i) {
+            const std::optional<Values>& r_cm = kin.position(p.S[i]->cm());
+            if (!r_O || !r_cm) return std::nullopt;
+            // (a particle has no orientation: only its velocity counts)
+            const bool rigid = (!p.S[i]->frame() || MeasuresAtRandomStates::agree(pw[i], pw[t])) &&
+                               MeasuresAtRandomStates::agree(pv[i], cross_at(pw[t], minus_at(*r_cm, *r_O)));
+            if (!rigid) {
+                p.note = "S does not turn as one body about " + p.O->name() + " when only " +
+                         q.name() + " changes; constraint forces may remain";
+                break;
+            }
+        }
+        return p;
+    } catch (const std::exception&) {
+        return std::nullopt;
+    }
 }
 
 // `constraint_forces_are_loads` tells (when asked: it costs an evaluation of the generalized
@@ -471,15 +626,22 @@ std::vector<RoadmapRow> plan_rows(const System& sys, const std::vector<TimeVaria
             forces_declared = detail::constraint_forces_declared(sys, coordinates, unknowns);
         return *forces_declared;
     };
+    // each coordinate's S, direction and about point, tested at random states, symbolically
+    // where the kinematics cannot be evaluated there
+    PlannerKinematics kinematics(sys);
+    detail::InertiaLoadsMemo inertia_loads;  // the rows below meet the same bodies
+    auto plan = [&](const TimeVariable& q) {
+        std::optional<Plan> p = plan_coordinate_at_random_states(sys, q, constraint_forces_are_loads, kinematics);
+        return p ? std::move(*p) : plan_coordinate(sys, q, constraint_forces_are_loads);
+    };
     std::vector<Plan> plans;
-    for (const TimeVariable& q : coordinates)
-        plans.push_back(plan_coordinate(sys, q, constraint_forces_are_loads));
+    for (const TimeVariable& q : coordinates) plans.push_back(plan(q));
     // the rows of the specified motions something moves with, after the constraint rows: the
     // loads that drive them are found there (column 4: treat the specified quantity as a
     // coordinate and see what moves); plans[coordinates.size() + d] is the d-th one's
     std::vector<TimeVariable> driven;
     for (const TimeVariable& v : detail::calc_driven_quantities(sys, coordinates)) {
-        Plan p = plan_coordinate(sys, v, constraint_forces_are_loads);
+        Plan p = plan(v);
         if (p.S.empty() || (p.motion == Motion::rotate && !p.O)) continue;
         driven.push_back(v);
         plans.push_back(std::move(p));

@@ -88,6 +88,11 @@ RememberedValues& remembered_for(const SymbolTable& st) {
     return r;
 }
 
+}  // namespace
+
+// the values at one state (a named namespace: MeasuresAtRandomStates keeps some)
+namespace zero_test_detail {
+
 class StateValues {
 public:
     StateValues(const SymbolTable& st, int state) : st_(st), state_(state) {}
@@ -199,6 +204,12 @@ private:
     std::unordered_map<const GiNaC::basic*, long double> memo_;
     std::vector<ex> keep_;
 };
+
+}  // namespace zero_test_detail
+
+namespace {
+
+using zero_test_detail::StateValues;
 
 // the same test through a compiled tape, for expressions the walk above cannot evaluate; it
 // falls back in turn to a symbolic test
@@ -426,6 +437,83 @@ bool calc_changes_with_others_zero_at_random_states(const SymbolTable& st, const
 bool is_zero_at_random_states(const SymbolTable& st, const Vector& v, const Frame& F) {
     Col3 c = v.components_in(F);
     return all_zero(st, {c[0], c[1], c[2]});
+}
+
+using zero_test_detail::StateValues;
+
+struct MeasuresAtRandomStates::Impl {
+    explicit Impl(const SymbolTable& table)
+        : st(table), base{StateValues(table, 0), StateValues(table, 1)} {}
+    const SymbolTable& st;
+    std::array<StateValues, kStates> base;
+    ex moved = 0;
+    std::vector<StateValues> at_moved;  // for `moved`, one per state
+
+    long double value(StateValues& v, const ex& e) {
+        const long double x = v.at(e);
+        if (!std::isfinite(static_cast<double>(x))) throw std::domain_error("not finite");
+        return x;
+    }
+    StateValues& moved_state(const ex& s, int state) {
+        if (at_moved.empty() || !moved.is_equal(s)) {
+            at_moved.clear();
+            for (int k = 0; k < kStates; ++k) {
+                at_moved.emplace_back(st, k);
+                at_moved.back().move(s);
+            }
+            moved = s;
+        }
+        return at_moved[static_cast<std::size_t>(state)];
+    }
+};
+
+static_assert(MeasuresAtRandomStates::kStates == kStates);
+
+MeasuresAtRandomStates::MeasuresAtRandomStates(const SymbolTable& st)
+    : impl_(std::make_unique<Impl>(st)) {
+    remembered_for(st);
+}
+
+MeasuresAtRandomStates::~MeasuresAtRandomStates() = default;
+
+MeasuresAtRandomStates::Values MeasuresAtRandomStates::calc_values(const Col3& c) {
+    Values out{};
+    for (int k = 0; k < kStates; ++k)
+        for (int i = 0; i < 3; ++i)
+            out[static_cast<std::size_t>(k)][static_cast<std::size_t>(i)] =
+                impl_->value(impl_->base[static_cast<std::size_t>(k)], c[i]);
+    return out;
+}
+
+MeasuresAtRandomStates::Values MeasuresAtRandomStates::calc_changes(const Col3& c, const ex& moved) {
+    Values out = calc_values(c);
+    for (int k = 0; k < kStates; ++k)
+        for (int i = 0; i < 3; ++i) {
+            long double& x = out[static_cast<std::size_t>(k)][static_cast<std::size_t>(i)];
+            x = impl_->value(impl_->moved_state(moved, k), c[i]) - x;
+        }
+    return out;
+}
+
+bool MeasuresAtRandomStates::calc_changes_with(const Col3& c, const ex& moved) {
+    const Values before = calc_values(c);
+    const Values change = calc_changes(c, moved);
+    for (std::size_t k = 0; k < kStates; ++k)
+        for (std::size_t i = 0; i < 3; ++i) {
+            const long double scale =
+                std::max({1.0L, std::abs(before[k][i]), std::abs(before[k][i] + change[k][i])});
+            if (std::abs(change[k][i]) > 1e-11L * scale) return true;
+        }
+    return false;
+}
+
+bool MeasuresAtRandomStates::agree(const Values& a, const Values& b) {
+    for (std::size_t k = 0; k < kStates; ++k)
+        for (std::size_t i = 0; i < 3; ++i) {
+            const long double scale = std::max({1.0L, std::abs(a[k][i]), std::abs(b[k][i])});
+            if (std::abs(a[k][i] - b[k][i]) > 1e-11L * scale) return false;
+        }
+    return true;
 }
 
 }  // namespace alembert

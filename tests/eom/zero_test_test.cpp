@@ -80,3 +80,29 @@ TEST(ZeroTest, ADeepChainOfSharedIntermediatesIsEvaluatedOncePerIntermediate) {
     EXPECT_TRUE(c[0]);
     EXPECT_FALSE(c[2]);
 }
+
+TEST(ZeroTest, MeasuresChangeByTheirPartialsWhenOneSymbolMoves) {
+    // a velocity's measures, linear in the speeds u and w, with coefficients through an
+    // intermediate: moving u by 1 changes them by their partials with respect to u, which
+    // are the values of the symbolic derivative at the same states
+    Table x;
+    const ex u = x.st.add_variable("u"), w = x.st.add_variable("w");
+    const ex z = x.st.add_intermediate(x.m * x.L * sin(x.q), "zq");
+    const Col3 c{{x.L * cos(x.q) * u, z * u + w, (pow(sin(x.q), 2) + pow(cos(x.q), 2) - 1) * w}};
+    MeasuresAtRandomStates at(x.st);
+    const Col3 by_u = c.map([&](const ex& e) { return e.diff(GiNaC::ex_to<GiNaC::symbol>(u)); });
+    EXPECT_TRUE(MeasuresAtRandomStates::agree(at.calc_changes(c, u), at.calc_values(by_u)));
+    EXPECT_FALSE(MeasuresAtRandomStates::agree(at.calc_changes(c, w), at.calc_values(by_u)));
+    EXPECT_TRUE(at.calc_changes_with(c, u));
+    EXPECT_TRUE(at.calc_changes_with(c, w));
+    EXPECT_TRUE(at.calc_changes_with(c, x.m));  // inside zq
+    EXPECT_FALSE(at.calc_changes_with(c, x.T1));
+    // the third measure's coefficient of w is zero though it does not look it
+    const Col3 third{{0, 0, c[2]}};
+    EXPECT_FALSE(at.calc_changes_with(third, w));
+    // asked again after another symbol moved: the same partials
+    EXPECT_TRUE(MeasuresAtRandomStates::agree(at.calc_changes(c, u), at.calc_values(by_u)));
+    // not evaluable at the states: an error, for the caller's symbolic test
+    const Col3 bad{{GiNaC::log(-pow(x.q, 2) - 1), 0, 0}};
+    EXPECT_THROW(at.calc_values(bad), std::exception);
+}

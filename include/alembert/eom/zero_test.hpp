@@ -3,6 +3,8 @@
 // by expanding it (the positions of a long chain expand exponentially).
 #pragma once
 
+#include <array>
+#include <memory>
 #include <vector>
 
 #include "alembert/sym/symbol_table.hpp"
@@ -40,5 +42,39 @@ bool calc_changes_with_others_zero_at_random_states(const SymbolTable& st, const
 
 /// The same for every measure of v in frame F.
 bool is_zero_at_random_states(const SymbolTable& st, const Vector& v, const Frame& F);
+
+/// Vectors' measures (their components in some frame, Col3) at the random states of the zero
+/// tests above, and their changes when one symbol alone moves by 1: for a velocity, which is
+/// linear in each speed, that change is its partial velocity. The evaluation with a symbol
+/// moved is kept until another symbol is asked for, so the partials of every body's velocity
+/// with respect to one speed cost one walk of the kinematics that speed reaches, not one per
+/// body (a chain's planner asked n symbolic derivatives and zero tests of n bodies for each of
+/// its n coordinates). Throws std::domain_error where a measure cannot be evaluated there.
+class MeasuresAtRandomStates {
+public:
+    static constexpr int kStates = 2;
+    using Values = std::array<std::array<long double, 3>, kStates>;  ///< [state][component]
+
+    explicit MeasuresAtRandomStates(const SymbolTable& st);
+    ~MeasuresAtRandomStates();
+    MeasuresAtRandomStates(const MeasuresAtRandomStates&) = delete;
+    MeasuresAtRandomStates& operator=(const MeasuresAtRandomStates&) = delete;
+
+    /// c at each state
+    Values calc_values(const Col3& c);
+    /// c with `moved` moved by 1, less c, at each state
+    Values calc_changes(const Col3& c, const ex& moved);
+    /// Whether c changes with `moved`: a change over 1e-11 times the largest of 1 and the
+    /// measures before and after, as the zero tests compare
+    bool calc_changes_with(const Col3& c, const ex& moved);
+
+    /// a and b agree at every state, component by component, to 1e-11 times the largest of 1
+    /// and their magnitudes
+    static bool agree(const Values& a, const Values& b);
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+};
 
 }  // namespace alembert
