@@ -36,6 +36,7 @@
 #include "alembert/eom/newton_euler.hpp"
 #include "alembert/eom/planner.hpp"
 #include "alembert/eom/roadmap.hpp"
+#include "alembert/eom/row_derivation.hpp"
 #include "alembert/eom/statics.hpp"
 #include "alembert/codegen/c_emitter.hpp"
 #include "alembert/codegen/code_plan.hpp"

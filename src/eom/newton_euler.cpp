@@ -321,23 +321,22 @@ std::vector<const Frame*> naming_frames(const Frame& parent, const Body& b,
     return out;
 }
 
-}  // namespace
+// one per body: its joint, free slides and rotations, and the directions its joint
+// transmits a force and a torque along (planar: in the plane, about the normal)
+struct Inferred {
+    NewtonEulerJoint joint;
+    std::vector<Vector> slides, rotations;
+    const Frame* force_frame = nullptr;
+    const Frame* torque_frame = nullptr;
+    std::vector<Direction> forces, torques;
+};
 
-NewtonEulerEquations form_newton_euler_equations(const System& sys,
-                                                 const std::vector<TimeVariable>& q,
-                                                 const std::vector<ex>& unknowns,
-                                                 const NewtonEulerOptions& options) {
+// the model's joints and whether it is planar (k: the normal's axis, -1 when spatial);
+// creates no symbol
+std::vector<Inferred> infer_joints(const System& sys, const std::vector<TimeVariable>& q,
+                                   const NewtonEulerOptions& options, int& k) {
     const Frame& N = sys.newtonian();
-    SymbolTable& st = N.symbols();
-    NewtonEulerEquations ne;
-
-    // joints: one per body, with its free slides and rotations
-    struct Inferred {
-        NewtonEulerJoint joint;
-        std::vector<Vector> slides, rotations;
-        const Frame* force_frame = nullptr;
-        const Frame* torque_frame = nullptr;
-    };
+    const SymbolTable& st = N.symbols();
     GenericState at(st);
     std::vector<Inferred> inferred;
     for (const Body* b : sys.bodies()) {
@@ -351,7 +350,7 @@ NewtonEulerEquations form_newton_euler_equations(const System& sys,
     }
 
     // planar or spatial
-    int k = -1;
+    k = -1;
     if (options.mode != NewtonEulerMode::spatial) {
         std::string why;
         std::optional<int> normal = plane_normal(sys, why);
@@ -362,6 +361,67 @@ NewtonEulerEquations form_newton_euler_equations(const System& sys,
                              "not planar: " + why + "; use NewtonEulerMode::spatial");
         }
     }
+    const bool planar = k >= 0;
+
+    // the directions each joint constrains
+    for (Inferred& i : inferred) {
+        const Body* b = i.joint.body;
+        std::vector<const Frame*> fr = naming_frames(*i.force_frame, *b, i.slides, N);
+        std::vector<const Frame*> tr = naming_frames(*i.torque_frame, *b, i.rotations, N);
+        if (planar) {
+            i.forces = complement_in_plane(i.slides, fr, N, k);
+            if (b->frame() && i.rotations.empty())
+                i.torques = {{N.unit(static_cast<Axis>(k)), kAxisLetter[k]}};
+        } else {
+            i.forces = complement_in_space(i.slides, fr, *i.force_frame, st, at);
+            if (b->frame()) i.torques = complement_in_space(i.rotations, tr, *i.torque_frame, st, at);
+        }
+    }
+    return inferred;
+}
+
+}  // namespace
+
+NewtonEulerCount count_newton_euler_equations(const System& sys,
+                                              const std::vector<TimeVariable>& q,
+                                              std::size_t caller_unknowns,
+                                              const NewtonEulerOptions& options) {
+    int k = -1;
+    const std::vector<Inferred> inferred = infer_joints(sys, q, options, k);
+    NewtonEulerCount c;
+    c.planar = k >= 0;
+    c.caller_unknowns = caller_unknowns;
+    for (const Body* b : sys.bodies()) {
+        const bool rigid = b->frame() != nullptr;
+        (rigid ? c.rigid_bodies : c.particles) += 1;
+        c.equations += c.planar ? (rigid ? 3 : 2) : (rigid ? 6 : 3);
+    }
+    for (const Inferred& i : inferred) {
+        NewtonEulerJointCount j;
+        j.body = i.joint.body;
+        j.parent = i.joint.parent;
+        j.at = i.joint.at;
+        j.free_slides = i.joint.free_slides;
+        j.free_rotations = i.joint.free_rotations;
+        j.forces = i.forces.size();
+        j.torques = i.torques.size();
+        c.force_reactions += j.forces;
+        c.torque_reactions += j.torques;
+        c.joints.push_back(j);
+    }
+    c.unknowns = c.caller_unknowns + c.force_reactions + c.torque_reactions;
+    return c;
+}
+
+NewtonEulerEquations form_newton_euler_equations(const System& sys,
+                                                 const std::vector<TimeVariable>& q,
+                                                 const std::vector<ex>& unknowns,
+                                                 const NewtonEulerOptions& options) {
+    const Frame& N = sys.newtonian();
+    SymbolTable& st = N.symbols();
+    NewtonEulerEquations ne;
+    int k = -1;
+    std::vector<Inferred> inferred = infer_joints(sys, q, options, k);
     ne.planar = k >= 0;
     if (ne.planar) ne.normal = N.unit(static_cast<Axis>(k));
 
@@ -370,20 +430,8 @@ NewtonEulerEquations form_newton_euler_equations(const System& sys,
     for (Inferred& i : inferred) {
         NewtonEulerJoint& j = i.joint;
         const Body* b = j.body;
-        const std::vector<Vector>& slides = i.slides;
-        const std::vector<Vector>& rotations = i.rotations;
-        const Frame* force_frame = i.force_frame;
-        const Frame* torque_frame = i.torque_frame;
-        std::vector<Direction> forces, torques;
-        std::vector<const Frame*> fr = naming_frames(*force_frame, *b, slides, N);
-        std::vector<const Frame*> tr = naming_frames(*torque_frame, *b, rotations, N);
-        if (ne.planar) {
-            forces = complement_in_plane(slides, fr, N, k);
-            if (b->frame() && rotations.empty()) torques = {{ne.normal, kAxisLetter[k]}};
-        } else {
-            forces = complement_in_space(slides, fr, *force_frame, st, at);
-            if (b->frame()) torques = complement_in_space(rotations, tr, *torque_frame, st, at);
-        }
+        const std::vector<Direction>& forces = i.forces;
+        const std::vector<Direction>& torques = i.torques;
         std::string fname = "F_" + name_of(sys, j.parent) + b->name() + "_";
         std::string tname = "M_" + name_of(sys, j.torque_parent) + b->name() + "_";
         for (const Direction& d : forces) {

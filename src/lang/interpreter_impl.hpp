@@ -245,6 +245,8 @@ struct Interpreter::Impl {
     /// "angle" if it turns a frame of the model (a rotation), "length" if it turns none (a
     /// translation); "" where its declared unit says.
     std::vector<std::string> coordinate_quantities(const std::vector<TimeVariable>& q, Location where);
+    std::vector<ReportUnitCheck> row_unit_checks(const System& sys, const std::vector<RoadmapRow>& rows,
+                                                 const std::vector<TimeVariable>& q, Location where);
     /// The motion table of an OpenSim storage file (.mot, .sto) for the coordinates q: time and
     /// the coordinates' columns, inDegrees applied to the rotational ones only, short gaps filled
     /// and the time base checked (regularize_time_base); `note` says what was done, if anything.

@@ -3,9 +3,11 @@
 #include <algorithm>
 #include <filesystem>
 #include <numbers>
+#include <set>
 #include <sstream>
 
 #include "alembert/eom/statics.hpp"
+#include "alembert/lang/equation_units.hpp"
 #include "interpreter_impl.hpp"
 
 namespace alembert::lang {
@@ -106,6 +108,38 @@ void close_loops(const System& sys, const std::vector<TimeVariable>& q, const ex
 
 }  // namespace
 
+// each road-map row's equation checked term by term in the units the script declares: N for
+// a translate row, N*m for a rotate row, one unit for a constraint row; a coordinate declared
+// without a unit that turns a frame is an angle (its rates in rad/s, rad/s^2)
+std::vector<ReportUnitCheck> Interpreter::Impl::row_unit_checks(const System& sys,
+                                                                const std::vector<RoadmapRow>& rows,
+                                                                const std::vector<TimeVariable>& q,
+                                                                Location where) {
+    std::set<std::string> angles;
+    try {
+        const std::vector<std::string> kinds = coordinate_quantities(q, where);
+        for (std::size_t k = 0; k < q.size() && k < kinds.size(); ++k)
+            if (kinds[k] == "angle") angles.insert(q[k].name());
+    } catch (const ScriptError&) {
+        // a coordinate whose kind cannot be told stays without a unit
+    }
+    const SymbolTable& st = sys.symbols();
+    EquationUnitChecker checker(st, [&](const ex& s) {
+        const std::string printed = st.owns(s) ? st.name(s) : to_string(s);
+        const Dimension d = symbol_dimension(printed);
+        if (d.known) return d;
+        const std::string base = printed.substr(0, printed.find('\''));
+        if (!angles.count(base)) return d;
+        return Dimension::none() / pow(Dimension::time(), static_cast<int>(printed.size() - base.size()));
+    });
+    std::vector<ReportUnitCheck> out;
+    for (const RoadmapRow& r : rows)
+        out.push_back(checker.check(r.equation, r.motion == Motion::translate ? Dimension::force()
+                                                : r.motion == Motion::rotate  ? Dimension::torque()
+                                                                              : Dimension::open()));
+    return out;
+}
+
 std::string Interpreter::Impl::write_report_to(const std::string& dir, const exmap& configuration,
                                                Location where, const ReportSettings& settings) {
     System& sys = model(where);
@@ -184,6 +218,7 @@ std::string Interpreter::Impl::write_report_to(const std::string& dir, const exm
     } catch (const ScriptError&) {
         // a coordinate whose kind cannot be told keeps SI
     }
+    c.unit_checks = row_unit_checks(sys, c.rows, c.coordinates, where);
     c.plot_histories = settings.plots;
     c.plotted = settings.plotted;
     for (const std::string& name : settings.plotted) {

@@ -23,13 +23,12 @@ namespace {
 // arm's report 2 of its 3.6 s while leaving a wall of a hundred terms)
 constexpr std::size_t kAbbreviateOps = 1500;
 
-// the longest piece of an equation's TeX that may stand unbroken on a line (about 300 pt of a
-// 450 pt line): a longer one is abbreviated
-constexpr std::size_t kUnbreakableChars = 160;
+using report_detail::kUnbreakableChars;
+using report_detail::longest_unbreakable;
 
-// the longest stretch of `tex` (breakable_tex's form) with no place to break a line: between
-// the + - = at its outer brace level (a \\frac, a \\sqrt, a power's exponent is one piece)
-std::size_t longest_unbreakable(const std::string& tex) {
+}  // namespace
+
+std::size_t report_detail::longest_unbreakable(const std::string& tex) {
     std::size_t longest = 0, start = 0;
     int depth = 0;
     for (std::size_t i = 0; i < tex.size(); ++i) {
@@ -43,6 +42,8 @@ std::size_t longest_unbreakable(const std::string& tex) {
     }
     return std::max(longest, tex.size() - start);
 }
+
+namespace {
 
 // whether the term holds an acceleration of the model
 bool holds_acceleration(const SymbolTable& st, const ex& term) {

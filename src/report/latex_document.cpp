@@ -507,8 +507,44 @@ std::string render_report_latex(const ReportContent& c) {
     return report_detail::render_latex(c, report_detail::typeset_equations(c));
 }
 
+namespace {
+
+// text for LaTeX: û as $\hat u$, the en dash as --, the rest as tex_text writes it
+std::string step_text(const std::string& s) {
+    std::string t = tex_text(s);
+    for (const auto& [from, to] : {std::pair<std::string, std::string>{"\u00fb", "$\\hat u$"},
+                                   {"\u2013", "--"}, {"\u2713", "$\\surd$"}, {"\u00b7", "$\\cdot$"}}) {
+        for (std::size_t at = t.find(from); at != std::string::npos; at = t.find(from, at + to.size()))
+            t.replace(at, from.size(), to);
+    }
+    return t;
+}
+
+// each row's derivation as an enumerated list, an appendix to the rows
+std::string derivations_tex(const ReportContent& c, const std::vector<report_detail::RowSteps>& steps) {
+    std::string t = "\\subsection*{Derivations, row by row}\\label{derivations}\nEach row's equation "
+                    "formed step by step: the quantities it is formed from, then their projection on "
+                    "$\\hat u$.\n\n";
+    for (std::size_t i = 0; i < c.rows.size() && i < steps.size(); ++i) {
+        t += "\\paragraph{Row " + std::to_string(i + 1) + ": $E_{" + to_latex(c.rows[i].variable) +
+             "}$.}\n\\begin{enumerate}\n";
+        for (const report_detail::DerivationStep& d : steps[i].steps) {
+            t += "\\item \\textbf{" + step_text(d.label) + "}" + (d.text.empty() ? "" : ": " + step_text(d.text)) + ".\n";
+            if (d.tex.empty()) continue;
+            t += "\\begin{eqlines}\n";
+            for (const std::string& line : report_detail::tex_lines(d.tex)) t += "\\eqline{" + line + "}\n";
+            t += "\\end{eqlines}\n";
+        }
+        t += "\\end{enumerate}\n";
+    }
+    return t;
+}
+
+}  // namespace
+
 std::string report_detail::render_latex(const ReportContent& c,
-                                        const std::vector<std::string>& equations) {
+                                        const std::vector<std::string>& equations,
+                                        const std::vector<RowSteps>* given_steps) {
     if (!c.system)
         throw ArgumentError(
             "render_report_latex(): the report has no model; build one (newtonian N, ...) before "
@@ -537,6 +573,8 @@ std::string report_detail::render_latex(const ReportContent& c,
              "$0 = E$; accelerations are collected. The free-body diagram of $S$ lists the loads "
              "external to $S$.\n\n";
         t += table_tex(sys, c.rows);
+        const std::string bf = brute_force_words(calc_brute_force_count(c), c.rows.size());
+        if (!bf.empty()) t += step_text(bf) + "\n\n";
         t += "\\subsection*{Rows: free-body diagrams and equations}\n";
         t += "Unknown loads in red, known in blue, gravity in green; $O$ is the about point and "
              "$\\hat u$ the direction. Drawn at " +
@@ -580,9 +618,20 @@ std::string report_detail::render_latex(const ReportContent& c,
             for (std::size_t k = kept; k < lines.size(); ++k) t += "\\eqline{" + lines[k] + "}\n";
             t += "\\end{eqlines}\n";
         }
+        if (i < c.unit_checks.size()) {
+            const ReportUnitCheck& u = c.unit_checks[i];
+            t += "\\noindent\\small " + step_text(u.summary) +
+                 (u.verdict == ReportUnitCheck::Verdict::consistent ? " $\\surd$"
+                  : u.verdict == ReportUnitCheck::Verdict::inconsistent ? " $\\times$" : "") +
+                 "\\normalsize\n\n";
+        }
     }
-    // the intermediates the equations name, once for all of them
-    const PageIntermediates zs = page_intermediates(sys, c.rows);
+    const std::vector<RowSteps> formed_steps =
+        given_steps ? std::vector<RowSteps>{} : calc_rows_steps(c, equations);
+    const std::vector<RowSteps>& steps = given_steps ? *given_steps : formed_steps;
+    if (!c.rows.empty()) t += derivations_tex(c, steps);
+    // the intermediates the equations and derivations name, once for all of them
+    const PageIntermediates zs = page_intermediates(sys, c.rows, &steps);
     if (!zs.tex.empty()) {
         t += "\\subsection*{Intermediates}\nThe equations use\n\\begin{eqlines}\n";
         for (const std::string& d : zs.tex) t += "\\eqline{" + d + "}\n";

@@ -72,8 +72,9 @@ std::string render_report_html(const ReportContent& content, const std::string& 
 std::string report_detail::render_html(const ReportContent& content,
                                        const std::vector<std::string>& equations,
                                        const std::string& katex_dir,
-                                       const std::string& three_dir) {
-    const std::string json = render_json(content, equations);
+                                       const std::string& three_dir,
+                                       const std::vector<RowSteps>* steps) {
+    const std::string json = render_json(content, equations, steps);
     const fs::path katex(katex_dir);
     const std::string katex_js = katex_dir.empty() ? "" : read_text(katex / "katex.min.js");
     const std::string katex_css = katex_dir.empty() ? "" : read_text(katex / "katex.min.css");
@@ -137,9 +138,10 @@ std::string write_report(const ReportContent& content, const std::string& dir) {
     const bool have_three = fs::is_regular_file(fs::path(three) / "three.min.js", ec);
     // the equations are typeset once, for the page and roadmap.tex
     const std::vector<std::string> equations = report_detail::typeset_equations(content);
+    const std::vector<report_detail::RowSteps> steps = report_detail::calc_rows_steps(content, equations);
     const std::string page = report_detail::render_html(content, equations,
                                                         have_katex ? katex : "",
-                                                        have_three ? three : "");
+                                                        have_three ? three : "", &steps);
     // KaTeX's stylesheet names its fonts relative to the page: fonts/KaTeX_*.woff2
     if (have_katex) {
         fs::create_directories(out / "fonts", ec);
@@ -149,7 +151,7 @@ std::string write_report(const ReportContent& content, const std::string& dir) {
                              "write_report()");
         }
     }
-    write_file_atomically(out / "roadmap.tex", report_detail::render_latex(content, equations),
+    write_file_atomically(out / "roadmap.tex", report_detail::render_latex(content, equations, &steps),
                      "write_report()");
     const fs::path index = out / "index.html";
     write_file_atomically(index, page, "write_report()");

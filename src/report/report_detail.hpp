@@ -9,8 +9,10 @@
 #include <vector>
 
 #include "alembert/eom/equations.hpp"
+#include "alembert/eom/newton_euler.hpp"
 #include "alembert/eom/roadmap.hpp"
 #include "alembert/mech/system.hpp"
+#include "alembert/sym/simplify.hpp"
 
 namespace alembert {
 struct ReportContent;
@@ -27,6 +29,14 @@ inline constexpr const char* kTexLineBreak = " \\newline ";
 /// text style after a + or - at its outer level, never inside a \left ... \right group.
 std::string breakable_tex(std::string tex);
 
+/// The longest piece of an equation's TeX that may stand unbroken on a line (about 300 pt of a
+/// 450 pt line): a longer one is abbreviated.
+inline constexpr std::size_t kUnbreakableChars = 160;
+
+/// The longest stretch of `tex` (breakable_tex's form) with no place to break a line: between
+/// the + - = at its outer brace level (a \frac, a \sqrt, a power's exponent is one piece).
+std::size_t longest_unbreakable(const std::string& tex);
+
 /// The lines of a typeset equation (split at kTexLineBreak).
 std::vector<std::string> tex_lines(const std::string& tex);
 
@@ -41,10 +51,15 @@ std::vector<std::string> typeset_equations(const ReportContent& content);
 
 /// render_report_json / render_report_latex / render_report_html with the rows' equations
 /// already typeset (`equations`, one per row of `content`).
-std::string render_json(const ReportContent& content, const std::vector<std::string>& equations);
-std::string render_latex(const ReportContent& content, const std::vector<std::string>& equations);
+/// `steps`: the rows' derivations (calc_rows_steps), formed here when null.
+struct RowSteps;
+std::string render_json(const ReportContent& content, const std::vector<std::string>& equations,
+                        const std::vector<RowSteps>* steps = nullptr);
+std::string render_latex(const ReportContent& content, const std::vector<std::string>& equations,
+                         const std::vector<RowSteps>* steps = nullptr);
 std::string render_html(const ReportContent& content, const std::vector<std::string>& equations,
-                        const std::string& katex_dir, const std::string& three_dir);
+                        const std::string& katex_dir, const std::string& three_dir,
+                        const std::vector<RowSteps>* steps = nullptr);
 
 /// The viewer's script and style (src/report/viewer), compiled in.
 extern const char* const kViewerScript;
@@ -177,9 +192,11 @@ std::string motion_word(Motion m);
 struct PageIntermediates {
     std::vector<std::string> names, tex;
     std::vector<std::vector<std::size_t>> of_row;
+    std::vector<std::vector<std::size_t>> of_steps;  ///< those of each row's derivation
 };
 
-PageIntermediates page_intermediates(const System& sys, const std::vector<RoadmapRow>& rows);
+PageIntermediates page_intermediates(const System& sys, const std::vector<RoadmapRow>& rows,
+                                     const std::vector<RowSteps>* steps = nullptr);
 
 /// The direction as the road-map table writes it: in N when it is constant there.
 std::string direction_words(const System& sys, const Vector& u);
@@ -192,5 +209,43 @@ std::string direction_words(const System& sys, const Vector& u);
 /// kReadableSimplifyOps operations.
 inline constexpr std::size_t kMatrixRowChars = 90;
 std::string matrices_tex(const SymbolTable& st, const LinearSystem& m);
+
+// ---- a row's derivation step by step (row_steps.cpp) --------------------------------------
+
+/// One step of a row's derivation: what it is, a sentence, and its formula (TeX, breakable;
+/// empty: none).
+struct DerivationStep {
+    std::string label, text, tex;
+};
+
+/// A row's steps (alembert::calc_row_derivation typeset) and the measures of the quantities
+/// they show, whose intermediates the page defines.
+struct RowSteps {
+    std::vector<DerivationStep> steps;
+    std::vector<ex> quantities;
+};
+
+/// The steps of row `r`, ending with its typeset `equation`.
+RowSteps calc_row_steps(const System& sys, const RoadmapRow& r, const std::string& equation,
+                        Simplifier& simplifier);
+
+/// Every row's steps (a row whose derivation cannot be formed says why in one step).
+std::vector<RowSteps> calc_rows_steps(const ReportContent& c, const std::vector<std::string>& equations);
+
+/// Brute-force Newton–Euler counted for the model (alembert::count_newton_euler_equations)
+/// with the rows' unknowns other than declared joint reactions' measures as those asked for.
+struct BruteForceCount {
+    bool formed = false;
+    NewtonEulerCount count{};
+    std::vector<std::string> asked{};
+    std::size_t reaction_rows = 0;  ///< rows for declared joint reactions' measures
+    std::size_t constraints = 0;    ///< the model's declared constraints
+    std::size_t constraint_rows = 0;  ///< the road-map's constraint rows (counted as equations)
+    std::string why{};              ///< why not formed
+};
+BruteForceCount calc_brute_force_count(const ReportContent& c);
+
+/// The count in a paragraph, beside the road-map's `rows` rows.
+std::string brute_force_words(const BruteForceCount& b, std::size_t rows);
 
 }  // namespace alembert::report_detail

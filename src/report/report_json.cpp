@@ -347,14 +347,24 @@ std::set<std::string> intermediates_used(const System& sys, const ex& e) {
 
 namespace report_detail {
 
-PageIntermediates page_intermediates(const System& sys, const std::vector<RoadmapRow>& rows) {
+PageIntermediates page_intermediates(const System& sys, const std::vector<RoadmapRow>& rows,
+                                     const std::vector<RowSteps>* steps) {
     const SymbolTable& st = sys.symbols();
-    std::vector<std::set<std::string>> used;
+    std::vector<std::set<std::string>> used, used_by_steps;
     std::set<std::string> all;
     for (const RoadmapRow& r : rows) {
         used.push_back(intermediates_used(sys, r.equation));
         all.insert(used.back().begin(), used.back().end());
     }
+    if (steps)
+        for (const RowSteps& s : *steps) {
+            used_by_steps.emplace_back();
+            for (const ex& q : s.quantities) {
+                const std::set<std::string> u = intermediates_used(sys, q);
+                used_by_steps.back().insert(u.begin(), u.end());
+            }
+            all.insert(used_by_steps.back().begin(), used_by_steps.back().end());
+        }
     PageIntermediates p;
     std::map<std::string, std::size_t> position;
     for (const ex& z : st.intermediates())
@@ -363,12 +373,17 @@ PageIntermediates page_intermediates(const System& sys, const std::vector<Roadma
             p.names.push_back(st.name(z));
             p.tex.push_back(breakable_tex(to_latex(z) + " = " + to_latex(st.definition(z))));
         }
-    for (const auto& u : used) {
-        std::vector<std::size_t> idx;
-        for (const std::string& n : u) idx.push_back(position.at(n));
-        std::sort(idx.begin(), idx.end());
-        p.of_row.push_back(std::move(idx));
-    }
+    const auto positions = [&](const std::vector<std::set<std::string>>& from,
+                               std::vector<std::vector<std::size_t>>& into) {
+        for (const auto& u : from) {
+            std::vector<std::size_t> idx;
+            for (const std::string& n : u) idx.push_back(position.at(n));
+            std::sort(idx.begin(), idx.end());
+            into.push_back(std::move(idx));
+        }
+    };
+    positions(used, p.of_row);
+    positions(used_by_steps, p.of_steps);
     return p;
 }
 
@@ -458,6 +473,34 @@ std::string matrices_json(const System& sys, const LinearSystem& m) {
         .add("M", arr(M))
         .add("f", str_arr(f))
         .add("tex", str(matrices_tex(st, m)))
+        .done();
+}
+
+// a row's derivation, closed on the page until asked for
+std::string steps_json(const RowSteps& steps, const std::vector<std::size_t>& intermediates) {
+    std::vector<std::string> items;
+    for (const DerivationStep& d : steps.steps)
+        items.push_back(Obj().add("label", str(d.label)).add("text", str(d.text)).add("tex", str(d.tex)).done());
+    std::string idx = "[";
+    for (std::size_t i = 0; i < intermediates.size(); ++i) idx += (i ? "," : "") + std::to_string(intermediates[i]);
+    return Obj().add("steps", arr(items)).add("intermediates", idx + "]").done();
+}
+
+std::string verdict_word(ReportUnitCheck::Verdict v) {
+    switch (v) {
+        case ReportUnitCheck::Verdict::consistent: return "consistent";
+        case ReportUnitCheck::Verdict::inconsistent: return "inconsistent";
+        case ReportUnitCheck::Verdict::unchecked: return "unchecked";
+    }
+    return "";
+}
+
+std::string units_json(const ReportUnitCheck& u) {
+    return Obj()
+        .add("verdict", str(verdict_word(u.verdict)))
+        .add("unit", str(u.unit))
+        .add("summary", str(u.summary))
+        .add("terms", str_arr(u.terms))
         .done();
 }
 
@@ -671,6 +714,19 @@ std::vector<ReportCheck> calc_report_checks(const ReportContent& c) {
             if (k > 0 || c.methods->methods.size() == 1)
                 compare("methods", c.methods->methods[k], c.methods->differences[k],
                         c.methods->states, c.methods->methods[k] + " vs the road-map (q'')");
+    // each row's units, as the script declares them
+    for (std::size_t i = 0; i < c.unit_checks.size() && i < c.rows.size(); ++i) {
+        const ReportUnitCheck& u = c.unit_checks[i];
+        ReportCheck r{"units", "E_" + to_string(c.rows[i].variable), "declared units",
+                      static_cast<double>(u.terms.size()), "",
+                      u.verdict == ReportUnitCheck::Verdict::consistent, u.summary};
+        r.checked = u.verdict != ReportUnitCheck::Verdict::unchecked;
+        r.measure = u.verdict == ReportUnitCheck::Verdict::consistent ? u.unit
+                    : u.verdict == ReportUnitCheck::Verdict::inconsistent
+                        ? std::to_string(u.terms.size()) + (u.terms.size() == 1 ? " term off" : " terms off")
+                        : "-";
+        out.push_back(r);
+    }
     if (c.reactions)
         for (std::size_t k = 0;
              k < c.reactions->measures.size() && k < c.reactions->differences.size(); ++k)
@@ -693,6 +749,8 @@ std::string checks_json(const ReportContent& c) {
                             .add("value", num(r.value))
                             .add("unit", str(r.unit))
                             .add("passed", r.passed ? "true" : "false")
+                            .add("checked", r.checked ? "true" : "false")
+                            .add("measure", str(r.measure))
                             .add("summary", str(r.summary))
                             .done());
     return arr(items);
@@ -705,7 +763,8 @@ std::string render_report_json(const ReportContent& c) {
 }
 
 std::string report_detail::render_json(const ReportContent& c,
-                                       const std::vector<std::string>& equations) {
+                                       const std::vector<std::string>& equations,
+                                       const std::vector<RowSteps>* given_steps) {
     if (!c.system)
         throw ArgumentError(
             "render_report_json(): the report has no model; build one (newtonian N, ...) before "
@@ -716,9 +775,18 @@ std::string report_detail::render_json(const ReportContent& c,
     bool planar = true;
     std::string geometry = geometry_json(sys, ev, placed, &planar);
     std::vector<std::string> rows, histories, config;
-    const PageIntermediates zs = page_intermediates(sys, c.rows);
-    for (std::size_t i = 0; i < c.rows.size(); ++i)
-        rows.push_back(row_json(sys, ev, c.rows[i], equations.at(i), zs.of_row[i]));
+    const std::vector<RowSteps> formed_steps =
+        given_steps ? std::vector<RowSteps>{} : calc_rows_steps(c, equations);
+    const std::vector<RowSteps>& steps = given_steps ? *given_steps : formed_steps;
+    const PageIntermediates zs = page_intermediates(sys, c.rows, &steps);
+    for (std::size_t i = 0; i < c.rows.size(); ++i) {
+        std::string row = row_json(sys, ev, c.rows[i], equations.at(i), zs.of_row[i]);
+        row.pop_back();  // the closing brace: the derivation and the unit check follow
+        row += "," + str("derivation") + ":" + steps_json(steps.at(i), zs.of_steps.at(i));
+        row += "," + str("units") + ":" +
+               (i < c.unit_checks.size() ? units_json(c.unit_checks[i]) : std::string("null")) + "}";
+        rows.push_back(row);
+    }
     if (c.plot_histories)
         for (const ReportHistory& h : c.histories) {
             std::string one = history_json(c, h);
@@ -773,6 +841,19 @@ std::string report_detail::render_json(const ReportContent& c,
         .add("closure", arr(closure))
         .add("geometry", geometry)
         .add("roadmap", arr(rows));
+    // free-body diagrams of every body separately, counted beside the road-map's rows
+    const BruteForceCount bf = calc_brute_force_count(c);
+    if (!c.rows.empty())
+        o.add("brute_force", Obj()
+                                 .add("formed", bf.formed ? "true" : "false")
+                                 .add("planar", bf.count.planar ? "true" : "false")
+                                 .add("equations", std::to_string(bf.count.equations + bf.constraint_rows))
+                                 .add("unknowns", std::to_string(bf.count.unknowns))
+                                 .add("reactions", std::to_string(bf.count.force_reactions + bf.count.torque_reactions))
+                                 .add("asked", std::to_string(bf.asked.size()))
+                                 .add("rows", std::to_string(c.rows.size() - bf.reaction_rows))
+                                 .add("text", str(brute_force_words(bf, c.rows.size())))
+                                 .done());
     o.add("equation_sets", arr(sets));
     o.add("results", arr(results));
     o.add("intermediates", str_arr(zs.tex));

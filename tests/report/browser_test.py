@@ -29,6 +29,11 @@ EXERCISE = ["unticking a series hides it", "ticking it shows it again", "the cur
             "dragging turns the 3D view", "the time slider moves the model", "the time slider moves the 3D view",
             "play starts the animation", "pause stops it", "the cursor moves the animation", "the speed control offers",
             "play at 1\u00d7", "play at 0.5\u00d7", "play at 2\u00d7", "play at 0.25\u00d7"]
+# what it does with the teaching aids on every page with road-map rows: each row's derivation
+# opened and typeset, the brute-force Newton-Euler count and each row's unit check shown
+EXERCISE_TEACHING = ["derivations are closed until opened", "each derivation opens and typesets its steps",
+                     "no derivation formula wider than its column", "the brute-force count is shown",
+                     "each row shows its unit check"]
 # what it does with the plots and the animation on every example's page
 EXERCISE_PLOTS = ["the cursor reads values", "dragging zooms into a time range", "show all zooms out again"]
 EXERCISE_MOTION = ["the time slider moves the model", "play starts the animation", "the speed control offers",
@@ -370,6 +375,7 @@ def three_d(cli, source, work, browser):
         else:
             check(False, "%s: the 3D view's picture was written" % name)
         kinds = [k for k, _ in dom.checks]
+        kinds_expected = kinds_expected + (["units"] if data["roadmap"] else [])
         check(set(kinds) == set(kinds_expected), "%s: the checks shown are %s (%s)" % (name, kinds_expected, kinds))
         check(all(ok for _, ok in dom.checks) and len(dom.checks) > 0, "%s: every check passes (%s)" % (name, dom.checks))
         if "methods" in kinds_expected:
@@ -822,6 +828,7 @@ def examples(cli, source, work, browser):
         check_plots(dom, data, name, name)
         # the controls worked: the plots' cursor and zoom, the animation's slider, play and speed
         want = (EXERCISE_PLOTS if data["histories"] else []) + (EXERCISE_MOTION if data["animation"] else [])
+        want += EXERCISE_TEACHING if data["roadmap"] else []
         if data["histories"] and data["animation"]:
             want.append("the cursor moves the animation")
         check_exercise(dom.exercise.strip().splitlines(), want, name)
@@ -913,6 +920,15 @@ def spatial(cli, source, work, browser):
     check([f[1] for f in dom.fbds] == [5, 5, 4, 4], "spatial: arrows per diagram %s" % dom.fbds)
     check(dom.equations >= 4 and dom.katex == dom.equations and dom.raw == 0, "spatial: every equation typeset")
     check('id="view-turn"' in dump.stdout and 'id="view-tilt"' in dump.stdout, "spatial: the view can be turned")
+    # by hand: 2 rods x 6 equations; each two-axis joint forbids 3 slides and 1 turn (4
+    # reaction components each) and the 4 torques asked: 12 equations in 12 unknowns, 4 rows
+    bf = page_data(os.path.join(out, "index.html"))["brute_force"]
+    check((bf["equations"], bf["unknowns"], bf["reactions"], bf["rows"]) == (12, 12, 8, 4) and not bf["planar"],
+          "spatial: brute force takes 12 equations in 12 unknowns beside 4 road-map rows (%s)" % bf["text"])
+    dom, console = open_page(browser, "file://" + os.path.abspath(os.path.join(out, "index.html")) + "#exercise")
+    check(dom.status == "ready" and not dom.errors.strip() and not console,
+          "spatial: the derivations open without errors (%r %s)" % (dom.errors.strip()[:200], console[:2]))
+    check_exercise(dom.exercise.strip().splitlines(), EXERCISE_TEACHING, "spatial")
 
 
 def main():
@@ -996,7 +1012,18 @@ def main():
     # the time slider, play and pause
     start = worked.stdout.find('<pre id="alembert-exercise">')
     steps = worked.stdout[start:worked.stdout.find("</pre>", start)].split(">", 1)[-1].splitlines() if start >= 0 else []
-    check_exercise(steps, EXERCISE, "sit-to-stand")
+    check_exercise(steps, EXERCISE + EXERCISE_TEACHING, "sit-to-stand")
+    # the seed's count: 3 bodies x 3 equations in the plane, in 6 joint-force components and the
+    # 3 torques, beside the road-map's 3 rows for the torques; every row's units consistent
+    # (torques in N*m, joint forces in N)
+    bf = page_data(index)["brute_force"]
+    check((bf["equations"], bf["unknowns"], bf["reactions"], bf["rows"]) == (9, 9, 6, 3) and bf["planar"]
+          and "9 equations" in bf["text"] and "9 unknowns" in bf["text"] and "3 rows for T_A, T_B, T_C" in bf["text"],
+          "sit-to-stand: brute force takes 9 equations in 9 unknowns beside 3 road-map rows (%s)" % bf["text"])
+    units = [ok for k, ok in dom.checks if k == "units"]
+    check(len(units) == 9 and all(units), "sit-to-stand: every row's units consistent in the checks (%s)" % units)
+    check('class="unit-check consistent"' in dump.stdout and "units: N\u00b7m \u2713" in dump.stdout,
+          "sit-to-stand: each row marked with its units")
 
     check(os.path.isfile(shot) and os.path.getsize(shot) > 20000, "a screenshot was taken")
     if os.path.isfile(shot):

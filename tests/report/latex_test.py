@@ -104,6 +104,20 @@ def main():
             (not r["diagram"] or ("\\begin{tikzpicture}" in b and ": free-body diagram of" in b))
             for r, b in zip(rows, boxes))
         check(together, "%s: each row's diagram, caption and equation in one box" % name)
+        if rows:
+            # each row's derivation, enumerated after the rows; the brute-force count after the
+            # table; each row's unit check under its equation
+            part = tex[tex.find("\\subsection*{Derivations, row by row}"):]
+            derived = re.findall(r"\\paragraph\{Row \d+: \$E_\{(.*?)\}\$\.\}\n\\begin\{enumerate\}", part)
+            check(derived == [r["variable_tex"] for r in rows] and part.count("\\end{enumerate}") == len(rows)
+                  and part.count("\\item \\textbf{equation}") == len(rows),
+                  "%s: each row's derivation enumerated, ending in its equation (%d of %d)" % (name, len(derived), len(rows)))
+            after_table = tex[tex.find("\\end{tabular}"):tex.find("\\subsection*{Rows")]
+            check("Free-body diagrams of every body separately" in after_table
+                  and ("%d equations" % data["brute_force"]["equations"]) in after_table,
+                  "%s: the brute-force Newton--Euler count beside the table" % name)
+            check(tex.count("\\small units: ") == len(rows), "%s: each row's unit check (%d of %d)"
+                  % (name, tex.count("\\small units: "), len(rows)))
         if "matrices" in data:
             check("\\subsection*{Mass matrix and forcing}" in tex and "\\eqline{" in
                   tex[tex.find("\\subsection*{Mass matrix and forcing}"):],

@@ -97,6 +97,41 @@ NewtonEulerEquations form_newton_euler_equations(const System& sys,
                                                  const std::vector<ex>& unknowns,
                                                  const NewtonEulerOptions& options = {});
 
+/// The joint of one body as count_newton_euler_equations counts it.
+struct NewtonEulerJointCount {
+    const Body* body = nullptr;    ///< B
+    const Body* parent = nullptr;  ///< the body B is joined to (nullptr: the ground)
+    const Point* at = nullptr;     ///< J, the joint point of B
+    int free_slides = 0;           ///< independent partial velocities of J relative to the parent
+    int free_rotations = 0;        ///< independent partial angular velocities of B (0: particle)
+    std::size_t forces = 0;        ///< reaction force components: the slides it forbids
+    std::size_t torques = 0;       ///< reaction torque components: the rotations it forbids
+};
+
+/// How many equations and unknowns brute-force Newton–Euler takes, counted as
+/// form_newton_euler_equations forms them, without forming them (no symbol is created).
+/// Equations: per rigid body 3 in the plane (2 force, 1 moment) and 6 in space, per particle
+/// 2 and 3. Unknowns: `caller_unknowns` (the accelerations or driving loads asked for) and, per
+/// joint, a force component along each direction its point may not slide relative to the
+/// parent and a torque component about each direction the body may not turn relative to it:
+/// a pin in the plane 2 + 0, a hinge in space 3 + 2, a ball joint 3 + 0, a two-axis joint
+/// 3 + 1, a slider in the plane 1 + 1. Constraints the model declares (loops, rolling) are not
+/// counted: they add equations and forces of their own.
+struct NewtonEulerCount {
+    bool planar = false;
+    std::size_t rigid_bodies = 0, particles = 0;
+    std::size_t equations = 0;
+    std::size_t unknowns = 0;  ///< caller_unknowns + force_reactions + torque_reactions
+    std::size_t caller_unknowns = 0, force_reactions = 0, torque_reactions = 0;
+    std::vector<NewtonEulerJointCount> joints{};
+};
+
+/// @throws alembert::ModelError as form_newton_euler_equations does (a body located from nothing).
+NewtonEulerCount count_newton_euler_equations(const System& sys,
+                                              const std::vector<TimeVariable>& q,
+                                              std::size_t caller_unknowns,
+                                              const NewtonEulerOptions& options = {});
+
 /// One line comparing the counts with the road-map (one equation per caller unknown):
 /// "brute-force Newton–Euler (planar): 9 equations in 9 unknowns (6 joint reactions: 6 force,
 /// 0 torque) vs 3 road-map equations".

@@ -50,6 +50,18 @@ struct ReportEquationSet {
     std::vector<ex> equations{};      ///< each 0 = equations[i]
 };
 
+/// The units of one road-map row's equation checked term by term, from the units the script
+/// declares (the script's interpreter checks them; a report made without one has none).
+struct ReportUnitCheck {
+    enum class Verdict { consistent, inconsistent, unchecked };
+    Verdict verdict = Verdict::unchecked;
+    std::string unit{};     ///< what each term must be in: "N" (translate), "N*m" (rotate)
+    /// For the reader: "units: N*m", "the term T_A is in N, not N*m", "not checked (no units
+    /// declared for qA)"
+    std::string summary{};
+    std::vector<std::string> terms{};  ///< the terms that are off, as printed
+};
+
 /// Everything a report shows. The page is a function of this alone (no clock, no paths), so
 /// the same content gives the same bytes.
 struct ReportContent {
@@ -86,6 +98,9 @@ struct ReportContent {
     /// accelerations the unknowns, when asked (alembert::form_forward_equations: as simulate
     /// forms them); typeset on the page and in roadmap.tex.
     std::optional<LinearSystem> matrices{};
+    /// Each row's unit check, one per row of `rows` (empty: the units are not known, nothing
+    /// is said about them).
+    std::vector<ReportUnitCheck> unit_checks{};
 };
 
 /// One line of the report's checks panel.
@@ -97,13 +112,16 @@ struct ReportCheck {
     std::string unit{};     ///< the measure's unit ("" for relative measures)
     bool passed = false;    ///< value within the bound below
     std::string summary{};  ///< one sentence for the reader
+    bool checked = true;    ///< false: could not be checked (a unit not declared); not a pass
+    std::string measure{};  ///< shown in place of the value when not empty ("N*m")
 };
 
 /// The checks a report shows, from what was computed: for each history with an `energy`
 /// column, its largest change from the start relative to its largest magnitude (passed below
 /// 1e-6); for each `drift_*` column, the largest |residual| (passed below 1e-6 in its unit);
 /// for the method and reaction comparisons when run, each method's or measure's largest
-/// scaled difference (passed below 1e-8).
+/// scaled difference (passed below 1e-8); for each row with a unit check (content.unit_checks),
+/// its verdict (kind "units").
 std::vector<ReportCheck> calc_report_checks(const ReportContent& content);
 
 /// The report as one HTML page: the content as JSON inside the page and the fixed viewer

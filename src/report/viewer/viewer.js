@@ -487,12 +487,13 @@
     var t = table(sec, ["check", "of", "from", "measure", "verdict"], [], "data checks");
     var body = t.querySelector("tbody");
     data.checks.forEach(function (c) {
-      var tr = el("tr", {"class": c.passed ? "passed" : "failed", "data-kind": c.kind}, body);
+      var unchecked = c.checked === false;
+      var tr = el("tr", {"class": unchecked ? "unchecked" : c.passed ? "passed" : "failed", "data-kind": c.kind}, body);
       el("td", {}, tr, c.kind);
       el("td", {}, tr, c.name);
       el("td", {}, tr, c.source);
-      el("td", {}, tr, fmt(c.value) + (c.unit ? " " + c.unit : ""));
-      el("td", {title: c.summary}, tr, (c.passed ? "\u2713 " : "\u2717 ") + c.summary);
+      el("td", {}, tr, c.measure ? c.measure : fmt(c.value) + (c.unit ? " " + c.unit : ""));
+      el("td", {title: c.summary}, tr, (unchecked ? "\u2013 " : c.passed ? "\u2713 " : "\u2717 ") + c.summary);
     });
   }
 
@@ -504,6 +505,7 @@
       (data.configuration_source ? " (" + data.configuration_source + ")" : "") +
       ". Unknown loads in red, known in blue, gravity in green; each equation is E = applied \u2212 inertial = 0, " +
       "shown solved for the row's unknown where it holds it linearly with a constant coefficient.");
+    bruteForce(sec, data);
     var head = ["variable", "translate/rotate", "direction", "system S", "FBD of S", "about point", "additional unknowns"];
     data.roadmap.forEach(function (row, i) {
       var card = el("div", {"class": "row", id: "row-" + (i + 1)}, sec);
@@ -531,7 +533,46 @@
         });
       }
       if (row.note) el("p", {"class": "note"}, eq, row.note);
+      unitMark(eq, row);
+      derivation(card, data, row);
     });
+  }
+
+  // ---- teaching aids: a row's derivation, its unit check, the brute-force count -----------
+  // the row's derivation step by step, closed until asked for: each step's name, a sentence
+  // and its formula (long ones folded, as long equations are)
+  function derivation(card, data, row) {
+    if (!row.derivation || !row.derivation.steps.length) return;
+    folded(card, "derivation", "Derivation of E_" + row.variable + ", step by step", function (d) {
+      var list = el("ol", {"class": "derivation-steps"}, d);
+      row.derivation.steps.forEach(function (step) {
+        var li = el("li", {"data-step": step.label}, list);
+        el("span", {"class": "step-label"}, li, step.label);
+        if (step.text) el("span", {"class": "step-text"}, li, ": " + step.text);
+        if (!step.tex) return;
+        if (step.tex.length <= LONG_TEX) tex(li, step.tex, true);
+        else folded(li, "equation-folded", Math.round(step.tex.length / 1000) +
+                    "k characters of TeX: open to typeset it", function (f) { tex(f, step.tex, true); });
+      });
+      if (row.derivation.intermediates.length)
+        folded(d, "", row.derivation.intermediates.length + " named intermediates the steps use", function (f) {
+          row.derivation.intermediates.forEach(function (k) { tex(f, data.intermediates[k], true); });
+        });
+    });
+  }
+
+  // the row's units: every term in N (translate) or N*m (rotate), from the declared units
+  function unitMark(eq, row) {
+    if (!row.units) return;
+    var mark = row.units.verdict === "consistent" ? " \u2713" : row.units.verdict === "inconsistent" ? " \u2717" : "";
+    el("p", {"class": "unit-check " + row.units.verdict}, eq, row.units.summary + mark);
+  }
+
+  // free-body diagrams of every body separately, counted beside the road-map's rows
+  function bruteForce(sec, data) {
+    if (!data.brute_force || !data.brute_force.text) return;
+    el("p", {"class": "note", id: "brute-force", "data-equations": data.brute_force.equations,
+             "data-unknowns": data.brute_force.unknowns, "data-rows": data.brute_force.rows}, sec, data.brute_force.text);
   }
 
   // the mass matrix and forcing, when the report was asked for them
@@ -1042,6 +1083,7 @@
       speed.value = "1";
       speed.dispatchEvent(new Event("change"));
     }
+    exerciseTeaching(expect);
     el("pre", {id: "alembert-exercise"}, document.body, out.join("\n"));
     // the 3D view as drawn at the start (the browser test saves and checks it)
     if (canvas) {
@@ -1049,6 +1091,38 @@
       if (slider0) { slider0.value = 0; slider0.dispatchEvent(new Event("input")); }
       el("pre", {id: "alembert-3d"}, document.body, canvas.toDataURL("image/png"));
     }
+  }
+  // the teaching aids worked as a reader would: every row's derivation opened (closed until
+  // then), its formulas typeset by KaTeX and none wider than its column; the brute-force count
+  // and each row's unit check shown
+  function exerciseTeaching(expect) {
+    if (!data.roadmap.length) return;
+    var all = document.querySelectorAll("details.derivation"), closed = 0, formulas = 0, typeset = 0, wide = [];
+    Array.prototype.forEach.call(all, function (d) {
+      if (!d.open) closed++;
+      d.open = true;
+      d.dispatchEvent(new Event("toggle"));
+    });
+    Array.prototype.forEach.call(all, function (d) {
+      Array.prototype.forEach.call(d.querySelectorAll("ol.derivation-steps div.equation"), function (b) {
+        formulas++;
+        if (b.querySelector(".katex") && !b.querySelector(".katex-error")) typeset++;
+        if (b.scrollWidth > b.clientWidth + 1) wide.push(b.scrollWidth + ">" + b.clientWidth);
+      });
+    });
+    expect(all.length === data.roadmap.length && closed === all.length,
+           "derivations are closed until opened (" + closed + " of " + all.length + " rows)");
+    expect(formulas > 0 && typeset === formulas && !failed,
+           "each derivation opens and typesets its steps (" + all.length + " rows, " + typeset + " of " + formulas + " formulas by KaTeX)");
+    expect(wide.length === 0, "no derivation formula wider than its column (" + wide.slice(0, 3).join(", ") + ")");
+    var bf = document.getElementById("brute-force");
+    expect(bf && Number(bf.getAttribute("data-equations")) > 0 && /equations? .* in \d+ unknowns?/.test(bf.textContent),
+           "the brute-force count is shown (" + (bf ? bf.getAttribute("data-equations") + " equations, " +
+           bf.getAttribute("data-unknowns") + " unknowns, " + bf.getAttribute("data-rows") + " rows" : "none") + ")");
+    var marks = document.querySelectorAll("p.unit-check"), kinds = document.querySelectorAll("tr[data-kind=units]");
+    expect(marks.length === data.roadmap.length && kinds.length === data.roadmap.length,
+           "each row shows its unit check (" + marks.length + " marks, " + kinds.length + " lines in the checks)");
+    Array.prototype.forEach.call(all, function (d) { d.open = false; });
   }
   if (!failed && window.location.hash === "#exercise") {
     try { exercise(); } catch (e) { fail("exercising the controls failed: " + e); }
