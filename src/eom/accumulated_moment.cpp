@@ -3,6 +3,7 @@
 #include "accumulated_moment.hpp"
 
 #include <algorithm>
+#include <map>
 #include <unordered_map>
 #include <vector>
 
@@ -204,8 +205,21 @@ std::optional<ex> form_accumulated_moment_row(const System& sys, const RoadmapRo
     for (const ex& s : st.calc_leaf_symbols(E_acc))
         if (st.is_solve_level(s)) xs.push_back(s);
     if (xs.empty()) return E + E_acc;
-    // E_acc = sum_x (dE_acc/dx) x + E_acc|x=0 where E_acc is linear in the x: each coefficient
-    // free of them, and the items with x = 0 free of them
+    // E_acc = sum_x c_x x + E_acc|x=0, split through the accumulated intermediates (each
+    // split once and shared by the rows that meet it)
+    {
+        std::map<ex, ex, GiNaC::ex_is_less> coeffs;
+        ex rest = 0;
+        if (st.calc_linear_form(E_acc, coeffs, rest)) {
+            for (const auto& [x, c] : coeffs) {
+                if (zero.find(x) == zero.end()) return std::nullopt;
+                E += c * x;
+            }
+            return E + rest;
+        }
+    }
+    // else by differentiation: each coefficient free of them, and the items with x = 0 free of
+    // them
     for (const ex& x : xs) {
         if (zero.find(x) == zero.end()) return std::nullopt;
         const ex c = st.diff(E_acc, x);

@@ -212,6 +212,17 @@ namespace {
 std::string direction_text(const System& sys, const Vector& u) {
     // prefer the Newtonian frame when the direction is constant there
     Col3 c = u.components_in(sys.newtonian());
+    // values that differ between two random states: not constant, and no simplification of
+    // a long chain's composed rotations to say so
+    try {
+        MeasuresAtRandomStates at(sys.symbols());
+        const MeasuresAtRandomStates::Values v = at.calc_values(c);
+        MeasuresAtRandomStates::Values first = v;
+        for (auto& state : first) state = v[0];
+        if (!MeasuresAtRandomStates::agree(v, first)) return u.to_string();
+    } catch (const std::exception&) {
+        // not evaluable there: simplify decides
+    }
     bool constant = true;
     for (int i = 0; i < 3; ++i) {
         c[i] = simplify(c[i]);

@@ -441,6 +441,77 @@ bool SymbolTable::collect_linear(const ex& e, const ex& factor,
     return true;
 }
 
+bool SymbolTable::calc_linear_form(const ex& e, std::map<ex, ex, GiNaC::ex_is_less>& coeffs, ex& rest) {
+    return collect_linear_through(e, 1, coeffs, rest);
+}
+
+// collect_linear, with the intermediates that hold solve-level symbols split by their
+// remembered linear forms
+bool SymbolTable::collect_linear_through(const ex& e, const ex& factor,
+                                         std::map<ex, ex, GiNaC::ex_is_less>& coeffs, ex& rest) {
+    auto holds_x = [&](const ex& f) {
+        for (const ex& s : symbols_of(f))
+            if (is_solve_level(s)) return true;
+        return false;
+    };
+    if (GiNaC::is_a<GiNaC::symbol>(e)) {
+        if (!is_solve_level(e)) {
+            rest += factor * e;
+        } else if (info_.at(e).kind == SymbolKind::intermediate) {
+            const LinearForm* f = linear_form_of(e);
+            if (!f) return false;
+            for (const auto& [x, c] : f->coeffs) coeffs[x] += factor * c;
+            rest += factor * f->rest;
+        } else {
+            coeffs[e] += factor;
+        }
+        return true;
+    }
+    if (GiNaC::is_a<GiNaC::add>(e)) {
+        for (std::size_t i = 0; i < e.nops(); ++i)
+            if (!collect_linear_through(e.op(i), factor, coeffs, rest)) return false;
+        return true;
+    }
+    if (GiNaC::is_a<GiNaC::mul>(e)) {
+        std::size_t holder = e.nops();
+        for (std::size_t i = 0; i < e.nops(); ++i) {
+            if (!holds_x(e.op(i))) continue;
+            if (holder != e.nops()) return false;  // x in two factors
+            holder = i;
+        }
+        if (holder == e.nops()) {
+            rest += factor * e;
+            return true;
+        }
+        ex others = factor;
+        for (std::size_t i = 0; i < e.nops(); ++i)
+            if (i != holder) others *= e.op(i);
+        return collect_linear_through(e.op(holder), others, coeffs, rest);
+    }
+    if (holds_x(e)) return false;
+    rest += factor * e;
+    return true;
+}
+
+// z = sum_x c_x x + rest, split once; nothing if z is not visibly linear in the x
+const SymbolTable::LinearForm* SymbolTable::linear_form_of(const ex& z) {
+    if (auto it = z_linear_.find(z); it != z_linear_.end()) return it->second ? &*it->second : nullptr;
+    constexpr std::size_t kNameOps = 4;
+    std::map<ex, ex, GiNaC::ex_is_less> coeffs;
+    ex rest = 0;
+    std::optional<LinearForm> form;
+    if (collect_linear_through(info_.at(z).definition, 1, coeffs, rest)) {
+        form.emplace();
+        for (const auto& [x, c] : coeffs)
+            if (!c.is_zero()) form->coeffs.emplace(x, name_if_large(c, kNameOps));
+        form->rest = name_if_large(rest, kNameOps);
+    }
+    // (the recursion above may have added other entries: a map's entries stay where they are)
+    auto& kept = z_linear_[z];
+    kept = std::move(form);
+    return kept ? &*kept : nullptr;
+}
+
 // e = sum_k c_k x_k + r over the solve-level symbols x_k of e, with c_k named when larger
 // than min_ops and r named `rest_name` (or by its definition when rest_name is empty and r is
 // large); e itself if it is not linear in the x_k

@@ -236,3 +236,54 @@ TEST(SymbolTable, LeafSymbolsLookThroughIntermediatesToTheirDefinitions) {
     EXPECT_EQ(leaves, (GiNaC::exset{a, b, c, q.symbol()}));
     EXPECT_EQ(s.calc_leaf_symbols(ex(3)), GiNaC::exset{});
 }
+
+TEST(SymbolTable, LinearFormSplitsAccumulatedIntermediatesByTheirAccelerations) {
+    // z_k = z_(k-1) + (coefficient) q_k'' + (rest), as a chain's accumulated sums are: the
+    // coefficients of every q'' and the rest through the intermediates, equal by meaning to the
+    // derivative and to e at q'' = 0
+    SymbolTable s;
+    const int n = 6;
+    std::vector<TimeVariable> q;
+    for (int k = 0; k < n; ++k) q.push_back(s.add_variable("q" + std::to_string(k), 2));
+    const ex L = s.add_constant("L", 0.4), T = s.add_unknown("T");
+    ex z = 0;
+    for (int k = 0; k < n; ++k)
+        z = s.add_intermediate(z * cos(q[k]) + L * sin(q[k]) * q[k].d(2) + pow(q[k].d(1), 2) * L,
+                               "acc" + std::to_string(k));
+    const ex e = 3 * z + T * L;
+    std::map<ex, ex, GiNaC::ex_is_less> coeffs;
+    ex rest = 0;
+    ASSERT_TRUE(s.calc_linear_form(e, coeffs, rest));
+    EXPECT_EQ(coeffs.size(), static_cast<std::size_t>(n + 1));  // each q'' and T
+    GiNaC::exmap at_zero{{T, 0}};
+    for (int k = 0; k < n; ++k) at_zero[q[k].d(2)] = 0;
+    const ex full = s.expand_intermediates(e);
+    for (int k = 0; k < n; ++k)
+        EXPECT_TRUE(same(s.expand_intermediates(coeffs.at(q[k].d(2))),
+                         full.diff(GiNaC::ex_to<GiNaC::symbol>(q[k].d(2)))));
+    EXPECT_TRUE(same(s.expand_intermediates(coeffs.at(T)), L));
+    EXPECT_TRUE(same(s.expand_intermediates(rest), full.subs(at_zero)));
+    // the coefficients and rest hold no solve-level symbol
+    for (const auto& [x, c] : coeffs)
+        for (const ex& leaf : s.calc_leaf_symbols(c)) EXPECT_FALSE(s.is_solve_level(leaf));
+    // not linear: q'' squared inside an intermediate
+    const ex w = s.add_intermediate(pow(q[0].d(2), 2) + L, "w");
+    std::map<ex, ex, GiNaC::ex_is_less> c2;
+    ex r2 = 0;
+    EXPECT_FALSE(s.calc_linear_form(w * L + z, c2, r2));
+}
+
+TEST(SymbolTable, LinearFormOfALongChainOfIntermediatesIsSplitOncePerIntermediate) {
+    // 2,000 nested sums, each a few terms on the previous one: each split once
+    SymbolTable s;
+    const TimeVariable q = s.add_variable("q", 2);
+    const ex L = s.add_constant("L", 0.4);
+    ex z = q.d(2);
+    for (int k = 0; k < 2000; ++k) z = s.add_intermediate(z + L * q.d(2) + L, "chain" + std::to_string(k));
+    std::map<ex, ex, GiNaC::ex_is_less> coeffs;
+    ex rest = 0;
+    ASSERT_TRUE(s.calc_linear_form(z, coeffs, rest));
+    ASSERT_EQ(coeffs.size(), 1u);
+    EXPECT_NEAR(s.evaluate(coeffs.at(q.d(2))), 1 + 2000 * 0.4, 1e-9);
+    EXPECT_NEAR(s.evaluate(rest), 2000 * 0.4, 1e-9);
+}

@@ -158,6 +158,14 @@ public:
     /// the coefficients c_k and the rest r named where large; an `e` not linear in them is
     /// returned unchanged.
     ex name_if_large(const ex& e, std::size_t min_ops);
+    /// Splits `e` into sum_x c_x x + rest over the solve-level symbols x (is_solve_level)
+    /// through the intermediates: an intermediate that holds them is split once, its
+    /// coefficients and rest named where large and remembered, so the coefficients of a sum of
+    /// accumulated intermediates (each a few terms on the previous one) cost one pass over the
+    /// new terms, not a derivative per symbol over every term below. `coeffs` and `rest` are
+    /// added to; the c_x and rest are free of solve-level symbols. False (and the outputs left
+    /// partial) when `e` or an intermediate it reaches is not visibly linear in them.
+    bool calc_linear_form(const ex& e, std::map<ex, ex, GiNaC::ex_is_less>& coeffs, ex& rest);
     /// True if `s` is a symbol equations are solved for: an unknown, the highest declared
     /// derivative of a variable or specified quantity, or an intermediate that depends on one.
     bool is_solve_level(const ex& s) const;
@@ -202,6 +210,13 @@ private:
     ex name_parts(const ex& e, std::size_t min_ops, const std::string& rest_name);
     bool collect_linear(const ex& e, const ex& factor, std::map<ex, ex, GiNaC::ex_is_less>& coeffs,
                         ex& rest) const;
+    struct LinearForm {
+        std::map<ex, ex, GiNaC::ex_is_less> coeffs;
+        ex rest;
+    };
+    bool collect_linear_through(const ex& e, const ex& factor,
+                                std::map<ex, ex, GiNaC::ex_is_less>& coeffs, ex& rest);
+    const LinearForm* linear_form_of(const ex& z);
     const Info& info(const ex& s, const char* caller) const;
     const ex& expanded_definition(const ex& z) const;
 
@@ -214,6 +229,7 @@ private:
     std::map<ex, ex, GiNaC::ex_is_less> z_dt_;
     std::map<ex, std::map<ex, ex, GiNaC::ex_is_less>, GiNaC::ex_is_less> z_diff_;  // dz/ds
     std::map<ex, ex, GiNaC::ex_is_less> z_by_definition_;
+    std::map<ex, std::optional<LinearForm>, GiNaC::ex_is_less> z_linear_;  // calc_linear_form
     mutable std::map<ex, ex, GiNaC::ex_is_less> z_expanded_;
     std::size_t next_z_ = 1;
 };
