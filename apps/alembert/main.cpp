@@ -61,7 +61,7 @@ bool read_script(const std::string& path, std::string& text) {
         }
         // a lab or motion file given where the script goes: say what reads it
         const std::string ext = std::filesystem::path(path).extension().string();
-        if (ext == ".trc" || ext == ".mot" || ext == ".sto" || ext == ".csv") {
+        if (ext == ".trc" || ext == ".mot" || ext == ".sto" || ext == ".csv" || ext == ".c3d") {
             std::cerr << "alembert: '" << path << "' is a data file (" << ext
                       << "), not a script; a script reads it: inverse for T_A from \"" << path
                       << "\" (or alembert inverse SCRIPT --motion " << path << ")\n";

@@ -13,6 +13,7 @@
 #include <fstream>
 #include <limits>
 
+#include "alembert/biomech/c3d_file.hpp"
 #include "alembert/cleanup.hpp"
 #include "alembert/error.hpp"
 #include "text_cells.hpp"
@@ -375,9 +376,10 @@ Table read_lab_table(const std::string& path) {
     if (ext == ".trc") return read_trc(path).table;
     if (ext == ".sto" || ext == ".mot") return read_storage(path).table;
     if (ext == ".csv") return read_csv(path);
+    if (ext == ".c3d") return read_c3d(path).markers.table;
     throw ArgumentError("read_lab_table(): '" + path + "' has the extension '" + ext +
                         "'; known lab files are .trc (markers), .sto and .mot (OpenSim "
-                        "storage) and .csv (\"name [unit]\" headers)");
+                        "storage), .c3d (C3D trials: their markers) and .csv (\"name [unit]\" headers)");
 }
 
 }  // namespace alembert

@@ -174,8 +174,9 @@ void Interpreter::Impl::run_inverse(const InverseRequest& r, Location where) {
                                         opts.filter);
         });
         span = "the motion table " + std::filesystem::path(r.motion_file).filename().string();
-    } else if (ext == ".trc") {
-        // a marker trial: the coordinates from the script's markers, then as a motion table
+    } else if (ext == ".trc" || ext == ".c3d") {
+        // a marker trial (.trc, or a C3D file's markers): the coordinates from the script's
+        // markers, then as a motion table
         std::string note;
         const MarkerCoordinates mc =
             guard(where, [&] { return coordinates_from_markers(r.motion_file, q, where, note); });

@@ -15,14 +15,15 @@ namespace {
 
 constexpr const char* kMotionFormats =
     ".csv (a header row 't [s],qA [deg]' and rows of numbers), .mot and .sto (OpenSim storage "
-    "files) and .trc (OpenSim marker files, with the script's markers)";
+    "files), .trc (OpenSim marker files, with the script's markers) and .c3d (C3D trials: their "
+    "markers, with the script's markers)";
 
 }  // namespace
 
 std::string Interpreter::Impl::motion_format(const std::string& path) const {
     std::string ext = std::filesystem::path(path).extension().string();
     for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    if (ext == ".csv" || ext == ".mot" || ext == ".sto" || ext == ".trc") return ext;
+    if (ext == ".csv" || ext == ".mot" || ext == ".sto" || ext == ".trc" || ext == ".c3d") return ext;
     throw ArgumentError(
         "'" + path + "' is " +
         (ext.empty() ? "a file without an extension" : "a '" + ext + "' file") +

@@ -2,10 +2,12 @@
 // Lab files in a script's model: `marker NAME on B at P` declares a point of the model as the
 // marker a .trc file names, so a marker trial gives the model's coordinates.
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <sstream>
 
+#include "alembert/biomech/c3d_file.hpp"
 #include "alembert/biomech/inverse_kinematics.hpp"
 #include "alembert/biomech/lab_files.hpp"
 #include "alembert/biomech/model_markers.hpp"
@@ -54,7 +56,7 @@ void parse_plate(StatementParser& p, Statement& s) {
     p.expect_word("on", "(plate chair on B from \"trial.mot\")");
     s.words["on"] = p.name("the body the plate's force acts on");
     p.expect_word("from", "(plate chair on B from \"trial.mot\")");
-    s.words["from"] = p.text("the force record's path (.mot or .sto)");
+    s.words["from"] = p.text("the force record's path (.mot, .sto or .c3d)");
     while (!p.at_end()) {
         if (p.accept_word("columns")) s.words["columns"] = p.text("the prefix of the plate's columns (\"ground_force\")");
         else if (p.accept_word("threshold")) s.quantities["threshold"] = p.quantity();
@@ -91,10 +93,23 @@ void run_plate(Interpreter::Impl& m, const Statement& s) {
     // the record: an OpenSim storage file, not a marker file
     if (std::filesystem::path(file.text).extension() == ".trc")
         throw ScriptError(file.location, "'" + file.text + "' is a marker file (.trc); a plate reads a force record",
-                          "give the force plate's OpenSim file (.mot or .sto); the markers drive the model through "
+                          "give the force plate's OpenSim file (.mot or .sto) or the trial's C3D file; the markers drive the model through "
                           "inverse for ... from \"" + file.text + "\"");
     ScriptPlate plate{label, {}, {}};
+    // a C3D trial: its plates' ground reactions, named as OpenSim's columns (plate 1
+    // "ground_force", plate 2 "1_ground_force", ...), at its marker frames
+    std::string ext = std::filesystem::path(path).extension().string();
+    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    std::vector<std::string> notes;
     plate.record = m.guard(file.location, [&] {
+        if (ext == ".c3d") {
+            const C3dFile c3d = read_c3d(path);
+            notes = c3d.notes;
+            if (c3d.plates.empty())
+                throw ArgumentError(path + ": the C3D file has no force plates (FORCE_PLATFORM:USED is 0); give "
+                                    "the trial's force record as a .mot, or export the plates with the trial");
+            return force_plate_from_table(c3d.forces, prefix, threshold, path);
+        }
         return force_plate_from_table(read_storage(path).table, prefix, threshold, path);
     });
     std::size_t on_samples = 0;
@@ -131,6 +146,7 @@ void run_plate(Interpreter::Impl& m, const Statement& s) {
                         " (force of " + m.transcript.number(threshold) + " N or more)\n  force " + names[0] +
                         "*Nx> + " + names[1] + "*Ny> at " + cop + " = " + names[2] + "*Nx> + " + names[3] +
                         "*Ny> from N_o, free moment " + names[4] + "*Nz>");
+    for (const std::string& n : notes) m.transcript.result("  " + n);
     m.plates.push_back(std::move(plate));
 }
 
@@ -141,7 +157,7 @@ MarkerCoordinates Interpreter::Impl::coordinates_from_markers(const std::string&
                                                               std::string& note) {
     System& sys = model(where);
     if (markers.empty())
-        throw ScriptError(where, "the script declares no markers, so a marker file (.trc) cannot drive it",
+        throw ScriptError(where, "the script declares no markers, so a marker file (.trc, .c3d) cannot drive it",
                           "declare the model's markers with the names the file uses: marker KNEE on A at B_o");
     // the markers' positions from N_o in N
     const Frame& N = sys.newtonian();
@@ -152,8 +168,11 @@ MarkerCoordinates Interpreter::Impl::coordinates_from_markers(const std::string&
         model_markers.push_back({k.name.text, k.body, p[0], p[1]});
         for (const TimeVariable& v : q) spatial = spatial || sys.symbols().depends_on(p[2], v.symbol());
     }
-    // the trial: read, gaps filled, coordinates from the segments' angles
-    MarkerTable trial = read_trc(path);
+    // the trial (a .trc, or a C3D file's markers): read, gaps filled, coordinates from the
+    // segments' angles
+    std::string ext = std::filesystem::path(path).extension().string();
+    for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    MarkerTable trial = ext == ".c3d" ? read_c3d(path).markers : read_trc(path);
     // every marker the script declares is in the file, under the same name
     for (const ScriptMarker& k : markers) {
         if (std::find(trial.markers.begin(), trial.markers.end(), k.name.text) != trial.markers.end()) continue;
@@ -281,17 +300,17 @@ std::shared_ptr<PlateInputs> Interpreter::Impl::plate_inputs() const {
 std::vector<StatementSpec> lab_statements() {
     return {
         {.keyword = "marker", .family = "Kinematics",
-         .help = "a model point as a marker of .trc files, so a marker trial drives the model's coordinates",
+         .help = "a model point as a marker of .trc (or .c3d) files, so a marker trial drives the model's coordinates",
          .forms = {{"`marker` *name* \\| *\"name\"* `on` *B* `at` *P*",
                     "marker KNEE on A at B_o",
-                    "`calc_coordinates_from_markers` when `inverse` reads a `.trc`: segment angles from each body's markers, joint angles by the model's own signs, checked against the model's marker points"}},
+                    "`calc_coordinates_from_markers` when `inverse` reads a `.trc` (or a `.c3d` trial's markers): segment angles from each body's markers, joint angles by the model's own signs, checked against the model's marker points"}},
          .clauses = {"on", "at"},
          .parse = parse_marker, .run = run_marker},
         {.keyword = "plate", .family = "Mass and loads",
          .help = "a force plate's record (force, centre of pressure, free moment) as a known load on a body",
          .forms = {{"`plate` *name* `on` *B* `from` *\"file.mot\"* [`columns` *\"prefix\"*] [`threshold` *F*]",
                     "plate chair on B from \"lab/rise.mot\" columns \"1_ground_force\"",
-                    "`force_plate_from_table` (OpenSim's ground-reaction columns, default `ground_force`) + `System::add_force` at the point of B at the centre of pressure, `System::add_torque` (free moment); known data symbols name_Fx, _Fy, _px, _py, _Tz, given their values by `with_plate_inputs` in `inverse`, zero out of contact (force below the threshold, default 20 N); a file written `\"{trial}_grf.mot\"` is each trial's own record in `alembert inverse SCRIPT --motion TRIAL` (a batch)"}},
+                    "`force_plate_from_table` (OpenSim's ground-reaction columns, default `ground_force`) + `System::add_force` at the point of B at the centre of pressure, `System::add_torque` (free moment); known data symbols name_Fx, _Fy, _px, _py, _Tz, given their values by `with_plate_inputs` in `inverse`, zero out of contact (force below the threshold, default 20 N); a file written `\"{trial}_grf.mot\"` is each trial's own record in `alembert inverse SCRIPT --motion TRIAL` (a batch); a `.c3d` trial's plates (`read_c3d`) go by the same names: plate 1 `ground_force`, plate 2 `1_ground_force`"}},
          .clauses = {"on", "from", "columns", "threshold"},
          .parse = parse_plate, .run = run_plate},
     };

@@ -196,8 +196,8 @@ TEST(ReadLabTable, ChoosesTheReaderByExtension) {
     Table csv = read_lab_table(test::biomech_data("irregular.csv"));
     EXPECT_EQ(csv.units[0], "ms");
     EXPECT_EQ(csv.units[1], "deg");
-    EXPECT_THROW_MSG(read_lab_table("trial.c3d"), ArgumentError,
-                     "has the extension '.c3d'; known lab files are .trc");
+    EXPECT_THROW_MSG(read_lab_table("trial.xlsx"), ArgumentError,
+                     "has the extension '.xlsx'; known lab files are .trc");
 }
 
 }  // namespace

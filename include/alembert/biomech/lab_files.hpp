@@ -90,8 +90,8 @@ Table motion_table_from_storage(const StorageFile& storage,
 void write_storage(const Table& table, const std::string& path, const std::string& name);
 
 /// A table from a lab file chosen by its extension: .trc (read_trc's table), .sto/.mot
-/// (read_storage's table, units as the file gives them) or .csv (read_csv: "name [unit]"
-/// headers).
+/// (read_storage's table, units as the file gives them), .c3d (read_c3d's marker table) or
+/// .csv (read_csv: "name [unit]" headers).
 /// @throws alembert::ArgumentError for another extension (listing the known ones), or as the
 ///         reader.
 Table read_lab_table(const std::string& path);
