@@ -262,17 +262,28 @@ std::string derivative_solvers(const CodePlan& plan, const Dialect& d) {
               "    }\n"
               "    return 0;\n"
               "}\n\n"
-              "/* Solves L L^T x = b in place (x holds b on entry), L from cholesky_factor. */\n"
-           << st << "void " << prefix << "cholesky_back(int n, const double* L, double* x) {\n"
-              "    for (int i = 0; i < n; ++i) { /* L y = b */\n"
-              "        double s = x[i];\n"
-              "        for (int k = 0; k < i; ++k) s -= L[i * n + k] * x[k];\n"
-              "        x[i] = s / L[i * n + i];\n"
+              "/* Solves L L^T X = B in place for m right sides (X n x m, row by row, holds B on\n"
+              "   entry), L from cholesky_factor: row operations, the inner loops over the m. */\n"
+           << st << "void " << prefix << "cholesky_back(int n, int m, const double* L, double* X) {\n"
+              "    for (int i = 0; i < n; ++i) { /* L Y = B */\n"
+              "        double* x = X + i * m;\n"
+              "        for (int k = 0; k < i; ++k) {\n"
+              "            const double l = L[i * n + k];\n"
+              "            const double* y = X + k * m;\n"
+              "            for (int j = 0; j < m; ++j) x[j] -= l * y[j];\n"
+              "        }\n"
+              "        const double d = 1.0 / L[i * n + i];\n"
+              "        for (int j = 0; j < m; ++j) x[j] *= d;\n"
               "    }\n"
-              "    for (int i = n - 1; i >= 0; --i) { /* L^T x = y */\n"
-              "        double s = x[i];\n"
-              "        for (int k = i + 1; k < n; ++k) s -= L[k * n + i] * x[k];\n"
-              "        x[i] = s / L[i * n + i];\n"
+              "    for (int i = n - 1; i >= 0; --i) { /* L^T X = Y */\n"
+              "        double* x = X + i * m;\n"
+              "        for (int k = i + 1; k < n; ++k) {\n"
+              "            const double l = L[k * n + i];\n"
+              "            const double* y = X + k * m;\n"
+              "            for (int j = 0; j < m; ++j) x[j] -= l * y[j];\n"
+              "        }\n"
+              "        const double d = 1.0 / L[i * n + i];\n"
+              "        for (int j = 0; j < m; ++j) x[j] *= d;\n"
               "    }\n"
               "}\n";
     } else {
@@ -301,20 +312,34 @@ std::string derivative_solvers(const CodePlan& plan, const Dialect& d) {
               "    }\n"
               "    return 0;\n"
               "}\n\n"
-              "/* Solves A x = b in place (x holds b on entry), A and p from lu_factor. */\n"
-           << st << "void " << prefix << "lu_back(int n, const double* A, const int* p, double* x) {\n"
+              "/* Solves A X = B in place for m right sides (X n x m, row by row, holds B on\n"
+              "   entry), A and p from lu_factor: row operations, the inner loops over the m. */\n"
+           << st << "void " << prefix << "lu_back(int n, int m, const double* A, const int* p, double* X) {\n"
               "    for (int k = 0; k < n; ++k) {\n"
+              "        double* x = X + k * m;\n"
               "        if (p[k] != k) {\n"
-              "            const double s = x[k];\n"
-              "            x[k] = x[p[k]];\n"
-              "            x[p[k]] = s;\n"
+              "            double* y = X + p[k] * m;\n"
+              "            for (int j = 0; j < m; ++j) {\n"
+              "                const double s = x[j];\n"
+              "                x[j] = y[j];\n"
+              "                y[j] = s;\n"
+              "            }\n"
               "        }\n"
-              "        for (int i = k + 1; i < n; ++i) x[i] -= A[i * n + k] * x[k];\n"
+              "        for (int i = k + 1; i < n; ++i) {\n"
+              "            const double l = A[i * n + k];\n"
+              "            double* y = X + i * m;\n"
+              "            for (int j = 0; j < m; ++j) y[j] -= l * x[j];\n"
+              "        }\n"
               "    }\n"
               "    for (int i = n - 1; i >= 0; --i) {\n"
-              "        double s = x[i];\n"
-              "        for (int j = i + 1; j < n; ++j) s -= A[i * n + j] * x[j];\n"
-              "        x[i] = s / A[i * n + i];\n"
+              "        double* x = X + i * m;\n"
+              "        for (int k = i + 1; k < n; ++k) {\n"
+              "            const double u = A[i * n + k];\n"
+              "            const double* y = X + k * m;\n"
+              "            for (int j = 0; j < m; ++j) x[j] -= u * y[j];\n"
+              "        }\n"
+              "        const double d = 1.0 / A[i * n + i];\n"
+              "        for (int j = 0; j < m; ++j) x[j] *= d;\n"
               "    }\n"
               "}\n";
     }
@@ -339,18 +364,19 @@ std::string forward_derivatives(const CodePlan& plan, const Dialect& d, const Co
     const bool need_f = !aba || plan.mass_matrix.empty();
     std::string factor = chol ? prefix + "cholesky_factor(" + nq + ", M)"
                               : prefix + "lu_factor(" + nq + ", M, p)";
-    auto back = [&](const std::string& x) {
-        return chol ? prefix + "cholesky_back(" + nq + ", M, " + x + ")"
-                    : prefix + "lu_back(" + nq + ", M, p, " + x + ")";
+    // M^-1 on m right sides, row by row in X
+    auto back = [&](const std::string& m, const std::string& X) {
+        return chol ? prefix + "cholesky_back(" + nq + ", " + m + ", M, " + X + ")"
+                    : prefix + "lu_back(" + nq + ", " + m + ", M, p, " + X + ")";
     };
+    const bool negated = plan.negated_identity_loads();
     os << "\n" << (d.cpp ? "bool " : "int ") << owner << d.function("forward_dynamics_derivatives")
        << "(" << ctx
        << "double t, const double* q, const double* qp, const double* u, double* qpp,\n"
        << "    double* dqpp_dq, double* dqpp_dqp)" << cnst << " {\n"
-       << "    double M[" << nq << " * " << nq << "], " << (need_f ? "f[" + nq + "], " : "")
-       << "x[" << nq << "];\n";
+       << "    double M[" << nq << " * " << nq << "]" << (need_f ? ", f[" + nq + "]" : "")
+       << (negated ? "" : ", T[" + nq + " * " + nq + "]") << ";\n";
     if (!chol) os << "    int p[" << nq << "];\n";
-    const bool negated = plan.negated_identity_loads();
     if (!negated) {
         // A of E = b - A u, row by row
         os << "    static const double A[" << nq << " * " << nq << "] = {";
@@ -358,13 +384,13 @@ std::string forward_derivatives(const CodePlan& plan, const Dialect& d, const Co
             os << (k ? ", " : "") << pr.number(plan.load_coefficients[k]);
         os << "};\n";
     }
-    os << "    int i, j, k;\n";
+    os << "    int i, k;\n";
     if (!aba)
         os << "    /* qpp = M^-1 f, M factored for the derivatives too */\n"
            << "    " << d.function("mass_forcing") << "(" << c_arg << "t, q, qp, u, M, f);\n"
            << "    if (" << factor << " != 0) return " << fail << ";\n"
            << "    for (i = 0; i < " << nq << "; ++i) qpp[i] = f[i];\n"
-           << "    " << back("qpp") << ";\n";
+           << "    " << back("1", "qpp") << ";\n";
     else {
         os << "    /* qpp by the articulated-body recursion, then M factored */\n"
            << "    if (!" << d.function("forward_dynamics") << "(" << c_arg << "t, q, qp, u, qpp)"
@@ -375,26 +401,26 @@ std::string forward_derivatives(const CodePlan& plan, const Dialect& d, const Co
             os << "    " << d.function("mass_forcing") << "(" << c_arg << "t, q, qp, u, M, f);\n";
         os << "    if (" << factor << " != 0) return " << fail << ";\n";
     }
-    os << "    /* d u/d q and d u/d qp of inverse dynamics at qpp, then column by column\n"
+    os << "    /* d u/d q and d u/d qp of inverse dynamics at qpp, then in their place\n"
        << "       d qpp/d q = " << (negated ? "-M^-1 du/dq" : "M^-1 A du/dq")
-       << " (the same for qp) in their place */\n"
+       << " and the same for qp, nq right sides at once */\n"
        << "    " << d.function("inverse_dynamics_derivatives") << "(" << c_arg
        << "t, q, qp, qpp, dqpp_dq, dqpp_dqp);\n"
        << "    for (k = 0; k < 2; ++k) {\n"
-       << "        double* D = k == 0 ? dqpp_dq : dqpp_dqp;\n"
-       << "        for (j = 0; j < " << nq << "; ++j) {\n";
+       << "        double* D = k == 0 ? dqpp_dq : dqpp_dqp;\n";
     if (negated)
-        os << "            for (i = 0; i < " << nq << "; ++i) x[i] = -D[i * " << nq << " + j];\n";
+        os << "        for (i = 0; i < " << nq << " * " << nq << "; ++i) D[i] = -D[i];\n";
     else
-        os << "            for (i = 0; i < " << nq << "; ++i) {\n"
-           << "                int m;\n"
-           << "                x[i] = 0.0;\n"
-           << "                for (m = 0; m < " << nq << "; ++m) x[i] += A[i * " << nq
-           << " + m] * D[m * " << nq << " + j];\n"
-           << "            }\n";
-    os << "            " << back("x") << ";\n"
-       << "            for (i = 0; i < " << nq << "; ++i) D[i * " << nq << " + j] = x[i];\n"
-       << "        }\n"
+        os << "        int j, m;\n"
+           << "        for (i = 0; i < " << nq << "; ++i)\n"
+           << "            for (j = 0; j < " << nq << "; ++j) {\n"
+           << "                double s = 0.0;\n"
+           << "                for (m = 0; m < " << nq << "; ++m) s += A[i * " << nq << " + m] * D[m * "
+           << nq << " + j];\n"
+           << "                T[i * " << nq << " + j] = s;\n"
+           << "            }\n"
+           << "        for (i = 0; i < " << nq << " * " << nq << "; ++i) D[i] = T[i];\n";
+    os << "        " << back(nq, "D") << ";\n"
        << "    }\n"
        << "    return " << ok << ";\n}\n";
     return os.str();

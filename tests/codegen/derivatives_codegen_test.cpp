@@ -206,7 +206,7 @@ TEST(DerivativesCodegen, DoublePendulumByKaneMatchesDifferencesAndHandDerivation
     const CodegenCase c = with_derivatives(planar_chain_case(2));
     // M and f of Kane's method, M factored by Cholesky for qpp and the derivatives
     expect_derivatives_match_differences(c, 5, "c-derivatives-chain2",
-                                         {"chain2_cholesky_back(chain2_NQ, M, qpp);"});
+                                         {"chain2_cholesky_back(chain2_NQ, 1, M, qpp);"});
     // two uniform rods (L = 1 m, m = 1 kg, mass centre at L/2), relative angles, hanging:
     // u1 = M11 q1'' + M12 q2'' - m2 L1 d2 sin(q2) (2 q1' q2' + q2'^2) + g1(q), so
     // d u1/d q2' = -2 m2 L1 d2 sin(q2) (q1' + q2') = -sin(q2) (q1' + q2'); and
@@ -235,7 +235,7 @@ TEST(DerivativesCodegen, TriplePendulumRoadmapMatchesDifferences) {
     // the road-map rows about the joints, M split from them (symmetric: Cholesky)
     expect_derivatives_match_differences(
         with_derivatives(triple_pendulum_case()), 5, "c-derivatives-triple",
-        {"triple_pendulum_cholesky_back(triple_pendulum_NQ, M, qpp);"});
+        {"triple_pendulum_cholesky_back(triple_pendulum_NQ, 1, M, qpp);"});
 }
 
 TEST(DerivativesCodegen, MixedRowsWhoseLoadsEnterWithOtherCoefficientsMatchDifferences) {
@@ -249,7 +249,7 @@ TEST(DerivativesCodegen, MixedRowsWhoseLoadsEnterWithOtherCoefficientsMatchDiffe
     c.equations.mass_forcing = std::nullopt;
     expect_derivatives_match_differences(
         with_derivatives(std::move(c)), 5, "c-derivatives-mixed",
-        {"static const double A[mixed2_NQ * mixed2_NQ] = {", "mixed2_lu_back(mixed2_NQ, M, p, x);"});
+        {"static const double A[mixed2_NQ * mixed2_NQ] = {", "mixed2_lu_back(mixed2_NQ, mixed2_NQ, M, p, D);"});
 }
 
 TEST(DerivativesCodegen, CppAndPythonHaveTheDerivatives) {
