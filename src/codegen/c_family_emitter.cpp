@@ -393,8 +393,8 @@ std::string forward_derivatives(const CodePlan& plan, const Dialect& d, const Co
            << "    " << back("1", "qpp") << ";\n";
     else {
         os << "    /* qpp by the articulated-body recursion, then M factored */\n"
-           << "    if (!" << d.function("forward_dynamics") << "(" << c_arg << "t, q, qp, u, qpp)"
-           << (d.cpp ? "" : " == 0") << ") return " << fail << ";\n";
+           << "    if (" << (d.cpp ? "!" : "") << d.function("forward_dynamics") << "(" << c_arg
+           << "t, q, qp, u, qpp)" << (d.cpp ? "" : " != 0") << ") return " << fail << ";\n";
         if (!plan.mass_matrix.empty())
             os << "    " << d.function("mass_matrix") << "(" << c_arg << "t, q, M);\n";
         else
