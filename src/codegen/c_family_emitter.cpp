@@ -237,6 +237,195 @@ std::string solvers(const CodePlan& plan, const Dialect& d) {
     return os.str();
 }
 
+// with derivatives: M factored once and solved for many right sides (qpp and 2 nq columns)
+std::string derivative_solvers(const CodePlan& plan, const Dialect& d) {
+    std::ostringstream os;
+    if (plan.inverse_dynamics_derivatives.empty()) return os.str();
+    const std::string st = d.cpp ? "" : "static ";
+    const std::string prefix = d.cpp ? "" : d.name + "_";
+    if (plan.symmetric_mass_matrix) {
+        os << "/* The Cholesky factorization A = L L^T of a symmetric positive definite A (n x n,\n"
+              "   row by row; L overwrites A's lower triangle); returns 0, or -1 if A is not\n"
+              "   positive definite. */\n"
+           << st << "int " << prefix << "cholesky_factor(int n, double* A) {\n"
+              "    for (int j = 0; j < n; ++j) {\n"
+              "        double s = A[j * n + j];\n"
+              "        for (int k = 0; k < j; ++k) s -= A[j * n + k] * A[j * n + k];\n"
+              "        if (!(s > 0.0)) return -1;\n"
+              "        const double d = " << d.math("sqrt") << "(s);\n"
+              "        A[j * n + j] = d;\n"
+              "        for (int i = j + 1; i < n; ++i) {\n"
+              "            double r = A[i * n + j];\n"
+              "            for (int k = 0; k < j; ++k) r -= A[i * n + k] * A[j * n + k];\n"
+              "            A[i * n + j] = r / d;\n"
+              "        }\n"
+              "    }\n"
+              "    return 0;\n"
+              "}\n\n"
+              "/* Solves L L^T X = B in place for m right sides (X n x m, row by row, holds B on\n"
+              "   entry), L from cholesky_factor: row operations, the inner loops over the m. */\n"
+           << st << "void " << prefix << "cholesky_back(int n, int m, const double* L, double* X) {\n"
+              "    for (int i = 0; i < n; ++i) { /* L Y = B */\n"
+              "        double* x = X + i * m;\n"
+              "        for (int k = 0; k < i; ++k) {\n"
+              "            const double l = L[i * n + k];\n"
+              "            const double* y = X + k * m;\n"
+              "            for (int j = 0; j < m; ++j) x[j] -= l * y[j];\n"
+              "        }\n"
+              "        const double d = 1.0 / L[i * n + i];\n"
+              "        for (int j = 0; j < m; ++j) x[j] *= d;\n"
+              "    }\n"
+              "    for (int i = n - 1; i >= 0; --i) { /* L^T X = Y */\n"
+              "        double* x = X + i * m;\n"
+              "        for (int k = i + 1; k < n; ++k) {\n"
+              "            const double l = L[k * n + i];\n"
+              "            const double* y = X + k * m;\n"
+              "            for (int j = 0; j < m; ++j) x[j] -= l * y[j];\n"
+              "        }\n"
+              "        const double d = 1.0 / L[i * n + i];\n"
+              "        for (int j = 0; j < m; ++j) x[j] *= d;\n"
+              "    }\n"
+              "}\n";
+    } else {
+        os << "/* The LU decomposition of A (n x n, row by row, overwritten by L below the\n"
+              "   diagonal and U on and above it) with partial pivoting, p[k] the row swapped\n"
+              "   with row k; returns 0, or -1 if A is singular. */\n"
+           << st << "int " << prefix << "lu_factor(int n, double* A, int* p) {\n"
+              "    for (int k = 0; k < n; ++k) {\n"
+              "        int m = k;\n"
+              "        for (int i = k + 1; i < n; ++i)\n"
+              "            if (" << d.math("fabs") << "(A[i * n + k]) > " << d.math("fabs")
+           << "(A[m * n + k])) m = i;\n"
+              "        if (!(" << d.math("fabs") << "(A[m * n + k]) > 0.0)) return -1;\n"
+              "        p[k] = m;\n"
+              "        if (m != k)\n"
+              "            for (int j = 0; j < n; ++j) {\n"
+              "                const double s = A[k * n + j];\n"
+              "                A[k * n + j] = A[m * n + j];\n"
+              "                A[m * n + j] = s;\n"
+              "            }\n"
+              "        for (int i = k + 1; i < n; ++i) {\n"
+              "            const double l = A[i * n + k] / A[k * n + k];\n"
+              "            A[i * n + k] = l;\n"
+              "            for (int j = k + 1; j < n; ++j) A[i * n + j] -= l * A[k * n + j];\n"
+              "        }\n"
+              "    }\n"
+              "    return 0;\n"
+              "}\n\n"
+              "/* Solves A X = B in place for m right sides (X n x m, row by row, holds B on\n"
+              "   entry), A and p from lu_factor: row operations, the inner loops over the m. */\n"
+           << st << "void " << prefix << "lu_back(int n, int m, const double* A, const int* p, double* X) {\n"
+              "    for (int k = 0; k < n; ++k) {\n"
+              "        double* x = X + k * m;\n"
+              "        if (p[k] != k) {\n"
+              "            double* y = X + p[k] * m;\n"
+              "            for (int j = 0; j < m; ++j) {\n"
+              "                const double s = x[j];\n"
+              "                x[j] = y[j];\n"
+              "                y[j] = s;\n"
+              "            }\n"
+              "        }\n"
+              "        for (int i = k + 1; i < n; ++i) {\n"
+              "            const double l = A[i * n + k];\n"
+              "            double* y = X + i * m;\n"
+              "            for (int j = 0; j < m; ++j) y[j] -= l * x[j];\n"
+              "        }\n"
+              "    }\n"
+              "    for (int i = n - 1; i >= 0; --i) {\n"
+              "        double* x = X + i * m;\n"
+              "        for (int k = i + 1; k < n; ++k) {\n"
+              "            const double u = A[i * n + k];\n"
+              "            const double* y = X + k * m;\n"
+              "            for (int j = 0; j < m; ++j) x[j] -= u * y[j];\n"
+              "        }\n"
+              "        const double d = 1.0 / A[i * n + i];\n"
+              "        for (int j = 0; j < m; ++j) x[j] *= d;\n"
+              "    }\n"
+              "}\n";
+    }
+    return os.str();
+}
+
+// forward dynamics with its derivatives: qpp, then d u/d q and d u/d qp of inverse dynamics at
+// qpp turned into d qpp/d q = M^-1 A du/dq, d qpp/d qp = M^-1 A du/dqp (A the loads'
+// coefficients in E = b - A u, -I for M qpp + h = u), M factored once
+std::string forward_derivatives(const CodePlan& plan, const Dialect& d, const CodePrinter& pr) {
+    std::ostringstream os;
+    if (plan.inverse_dynamics_derivatives.empty()) return os.str();
+    const std::string owner = d.cpp ? "Model::" : "";
+    const std::string ctx = d.cpp ? "" : "const " + d.name + "_context* c, ";
+    const std::string cnst = d.cpp ? " const" : "";
+    const std::string c_arg = d.cpp ? "" : "c, ";
+    const std::string nq = d.size("nq");
+    const std::string prefix = d.cpp ? "" : d.name + "_";
+    const std::string fail = d.cpp ? "false" : "-1", ok = d.cpp ? "true" : "0";
+    const bool chol = plan.symmetric_mass_matrix;
+    const bool aba = !plan.accelerations.empty();
+    const bool need_f = !aba || plan.mass_matrix.empty();
+    std::string factor = chol ? prefix + "cholesky_factor(" + nq + ", M)"
+                              : prefix + "lu_factor(" + nq + ", M, p)";
+    // M^-1 on m right sides, row by row in X
+    auto back = [&](const std::string& m, const std::string& X) {
+        return chol ? prefix + "cholesky_back(" + nq + ", " + m + ", M, " + X + ")"
+                    : prefix + "lu_back(" + nq + ", " + m + ", M, p, " + X + ")";
+    };
+    const bool negated = plan.negated_identity_loads();
+    os << "\n" << (d.cpp ? "bool " : "int ") << owner << d.function("forward_dynamics_derivatives")
+       << "(" << ctx
+       << "double t, const double* q, const double* qp, const double* u, double* qpp,\n"
+       << "    double* dqpp_dq, double* dqpp_dqp)" << cnst << " {\n"
+       << "    double M[" << nq << " * " << nq << "]" << (need_f ? ", f[" + nq + "]" : "")
+       << (negated ? "" : ", T[" + nq + " * " + nq + "]") << ";\n";
+    if (!chol) os << "    int p[" << nq << "];\n";
+    if (!negated) {
+        // A of E = b - A u, row by row
+        os << "    static const double A[" << nq << " * " << nq << "] = {";
+        for (std::size_t k = 0; k < plan.load_coefficients.size(); ++k)
+            os << (k ? ", " : "") << pr.number(plan.load_coefficients[k]);
+        os << "};\n";
+    }
+    os << "    int i, k;\n";
+    if (!aba)
+        os << "    /* qpp = M^-1 f, M factored for the derivatives too */\n"
+           << "    " << d.function("mass_forcing") << "(" << c_arg << "t, q, qp, u, M, f);\n"
+           << "    if (" << factor << " != 0) return " << fail << ";\n"
+           << "    for (i = 0; i < " << nq << "; ++i) qpp[i] = f[i];\n"
+           << "    " << back("1", "qpp") << ";\n";
+    else {
+        os << "    /* qpp by the articulated-body recursion, then M factored */\n"
+           << "    if (" << (d.cpp ? "!" : "") << d.function("forward_dynamics") << "(" << c_arg
+           << "t, q, qp, u, qpp)" << (d.cpp ? "" : " != 0") << ") return " << fail << ";\n";
+        if (!plan.mass_matrix.empty())
+            os << "    " << d.function("mass_matrix") << "(" << c_arg << "t, q, M);\n";
+        else
+            os << "    " << d.function("mass_forcing") << "(" << c_arg << "t, q, qp, u, M, f);\n";
+        os << "    if (" << factor << " != 0) return " << fail << ";\n";
+    }
+    os << "    /* d u/d q and d u/d qp of inverse dynamics at qpp, then in their place\n"
+       << "       d qpp/d q = " << (negated ? "-M^-1 du/dq" : "M^-1 A du/dq")
+       << " and the same for qp, nq right sides at once */\n"
+       << "    " << d.function("inverse_dynamics_derivatives") << "(" << c_arg
+       << "t, q, qp, qpp, dqpp_dq, dqpp_dqp);\n"
+       << "    for (k = 0; k < 2; ++k) {\n"
+       << "        double* D = k == 0 ? dqpp_dq : dqpp_dqp;\n";
+    if (negated)
+        os << "        for (i = 0; i < " << nq << " * " << nq << "; ++i) D[i] = -D[i];\n";
+    else
+        os << "        int j, m;\n"
+           << "        for (i = 0; i < " << nq << "; ++i)\n"
+           << "            for (j = 0; j < " << nq << "; ++j) {\n"
+           << "                double s = 0.0;\n"
+           << "                for (m = 0; m < " << nq << "; ++m) s += A[i * " << nq << " + m] * D[m * "
+           << nq << " + j];\n"
+           << "                T[i * " << nq << " + j] = s;\n"
+           << "            }\n"
+           << "        for (i = 0; i < " << nq << " * " << nq << "; ++i) D[i] = T[i];\n";
+    os << "        " << back(nq, "D") << ";\n"
+       << "    }\n"
+       << "    return " << ok << ";\n}\n";
+    return os.str();
+}
+
 // the declarations of equations in generalized speeds, state (q, ur)
 std::string speed_declarations(const CodePlan& plan, const Dialect& d) {
     std::ostringstream os;
@@ -341,6 +530,21 @@ std::string declarations(const CodePlan& plan, const Dialect& d) {
         os << ind << "/* Inverse dynamics: the loads u that give the accelerations qpp. */\n"
            << ind << "void " << d.function("inverse_dynamics") << "(" << ctx
            << arguments(plan.inverse_dynamics) << ")" << cnst << ";\n";
+    if (!plan.inverse_dynamics_derivatives.empty())
+        os << ind << "/* Derivatives of inverse dynamics at fixed qpp: dtau_dq[i nq + j] = d u_i/d q_j\n"
+           << ind << "   and dtau_dqp[i nq + j] = d u_i/d qp_j (d u/d qpp is the mass matrix). */\n"
+           << ind << "void " << d.function("inverse_dynamics_derivatives") << "(" << ctx
+           << arguments(plan.inverse_dynamics_derivatives) << ")" << cnst << ";\n"
+           << ind << "/* Forward dynamics with its derivatives: qpp, dqpp_dq[i nq + j] = d qpp_i/d q_j\n"
+           << ind << "   and dqpp_dqp[i nq + j] = d qpp_i/d qp_j, from inverse dynamics' derivatives\n"
+           << ind << "   at qpp: d qpp/d q = "
+           << (plan.negated_identity_loads() ? "-M^-1 du/dq" : "M^-1 A du/dq (A the loads' coefficients)")
+           << ", the same for qp (M factored by\n"
+           << ind << "   " << (plan.symmetric_mass_matrix ? "Cholesky" : "LU with partial pivoting")
+           << "); returns " << (d.cpp ? "false" : "-1") << " if M is singular. */\n"
+           << ind << (d.cpp ? "bool " : "int ") << d.function("forward_dynamics_derivatives") << "("
+           << ctx << "double t, const double* q, const double* qp, const double* u,\n"
+           << ind << "    double* qpp, double* dqpp_dq, double* dqpp_dqp)" << cnst << ";\n";
     if (!plan.reactions.empty()) {
         std::string measures, slots;
         for (std::size_t k = 0; k < plan.reaction_loads.size(); ++k) {
@@ -821,6 +1025,7 @@ std::vector<GeneratedFile> emit_c_family(const CodePlan& plan, const Dialect& d,
       << d.name << ext_h << "\"\n\n";
     if (d.cpp) c << "namespace " << d.name << " {\n\nnamespace {\n\n";
     c << solvers(plan, d) << "\n";
+    if (!plan.inverse_dynamics_derivatives.empty()) c << derivative_solvers(plan, d) << "\n";
     if (d.cpp) {
         c << "}  // namespace\n\nModel::Model(const Parameters& p) { set_parameters(p); }\n\n"
           << "void Model::set_parameters(const Parameters& p) {\n    p_ = p;\n";
@@ -846,7 +1051,7 @@ std::vector<GeneratedFile> emit_c_family(const CodePlan& plan, const Dialect& d,
         print_body(c, plan, *f, d, pr, spell(*f));
         c << "}\n";
     }
-    c << "\n" << forward_and_rhs(plan, d);
+    c << "\n" << forward_and_rhs(plan, d) << forward_derivatives(plan, d, pr);
     if (d.cpp) c << "\n}  // namespace " << d.name << "\n";
     files.push_back({d.name + ext_c, c.str()});
 

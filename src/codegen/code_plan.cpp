@@ -93,35 +93,6 @@ bool symmetric_at_random_states(const StraightLineProgram& p, const std::vector<
     return true;
 }
 
-// The residuals E(u) = E0 + C u solved for the loads, u = -C^-1 E0: split_linear gives C and
-// E0 in time linear in the expressions' graph. When C is numeric (joint loads enter road-maps
-// and Kane's equations of chains with coefficients +-1) its inverse is exact and the loads are
-// sums of the E0; otherwise the system is solved symbolically, one decoupled block at a time.
-std::vector<ex> solve_for_loads(const SymbolTable& table, const DynamicsEquations& eq) {
-    const auto n = static_cast<unsigned>(eq.loads.size());
-    const std::vector<ex>& E = eq.inverse_residuals.empty() ? eq.residuals : eq.inverse_residuals;
-    LinearSystem L = detail::split_linear(table, E, eq.loads, kWho);  // C = -A
-    bool numeric = true;
-    for (unsigned i = 0; i < n && numeric; ++i)
-        for (unsigned j = 0; j < n && numeric; ++j) numeric = GiNaC::is_a<GiNaC::numeric>(L.A(i, j));
-    std::vector<ex> u;
-    if (numeric && !L.A.determinant().is_zero()) {
-        // A u = b with E = b - A u
-        GiNaC::matrix Ainv = L.A.inverse();
-        for (unsigned i = 0; i < n; ++i) {
-            ex s = 0;
-            for (unsigned j = 0; j < n; ++j)
-                if (!Ainv(i, j).is_zero()) s += Ainv(i, j) * L.b(j, 0);
-            u.push_back(s);
-        }
-        return u;
-    }
-    GiNaC::matrix X =
-        detail::solve_by_blocks(L.A, L.b, eq.loads, std::string(kWho) + ": inverse dynamics");
-    for (unsigned i = 0; i < n; ++i) u.push_back(X(i, 0));
-    return u;
-}
-
 // the constants kept as parameters: those of the options, or every constant of the table
 std::vector<ex> chosen_parameters(const SymbolTable& table, const CodegenOptions& options) {
     if (!options.parameters) return table.symbols(SymbolKind::constant);
@@ -236,6 +207,7 @@ std::vector<const CodeFunction*> CodePlan::functions() const {
     if (!bias_forces.empty()) out.push_back(&bias_forces);
     for (const CodeFunction& f : jacobian_functions) out.push_back(&f);
     if (!inverse_dynamics.empty()) out.push_back(&inverse_dynamics);
+    if (!inverse_dynamics_derivatives.empty()) out.push_back(&inverse_dynamics_derivatives);
     if (!reactions.empty()) out.push_back(&reactions);
     if (!output_function.empty()) out.push_back(&output_function);
     if (!load_laws.empty()) out.push_back(&load_laws);
@@ -243,6 +215,15 @@ std::vector<const CodeFunction*> CodePlan::functions() const {
     if (!kinematics.empty()) out.push_back(&kinematics);
     if (!dependent_speed_function.empty()) out.push_back(&dependent_speed_function);
     return out;
+}
+
+bool CodePlan::negated_identity_loads() const {
+    const std::size_t n = coordinate_count;
+    if (load_coefficients.size() != n * n) return false;
+    for (std::size_t i = 0; i < n; ++i)
+        for (std::size_t j = 0; j < n; ++j)
+            if (load_coefficients[i * n + j] != (i == j ? -1.0 : 0.0)) return false;
+    return true;
 }
 
 std::vector<CodegenConstraint> differentiate_constraints(SymbolTable& table,
@@ -538,7 +519,9 @@ CodePlan plan_code(const SymbolTable& table, const DynamicsEquations& eq,
                             " inverse-dynamics residuals for " + std::to_string(eq.loads.size()) +
                             " loads; give one per load (the road-map rows of the loads)");
     if (nc == 0 && !eq.loads.empty() && (eq.loads.size() == n || !eq.inverse_residuals.empty())) {
-        std::vector<ex> u = solve_for_loads(table, eq);
+        std::vector<ex> u = detail::solve_for_loads(
+            table, eq.inverse_residuals.empty() ? eq.residuals : eq.inverse_residuals, eq.loads,
+            kWho);
         plan.inverse_dynamics = {
             .name = "inverse_dynamics",
             .summary = "loads u that give the accelerations qpp (inverse dynamics)",
@@ -547,6 +530,46 @@ CodePlan plan_code(const SymbolTable& table, const DynamicsEquations& eq,
             .result_sizes = {eq.loads.size()},
             .program =
                 compile(table, symbols({&q, &qp, &qpp}), u, compile_options, "inverse dynamics"),
+            .input_names = input_names({&q_names, &qp_names, &qpp_names}),
+            .parameter_names = parameter_names};
+    }
+
+    // ---- derivatives of inverse dynamics (forward dynamics' follow from them and M) ------------
+    if (!eq.inverse_dynamics_dq.empty() || !eq.inverse_dynamics_dqp.empty()) {
+        if (nc > 0 || eq.loads.size() != n || !eq.inverse_residuals.empty() ||
+            eq.inverse_dynamics_dq.size() != n * n || eq.inverse_dynamics_dqp.size() != n * n)
+            throw ArgumentError(std::string(kWho) + ": the derivatives of inverse dynamics have " +
+                                std::to_string(eq.inverse_dynamics_dq.size()) + " and " +
+                                std::to_string(eq.inverse_dynamics_dqp.size()) + " entries for " +
+                                std::to_string(n) + " coordinates and " +
+                                std::to_string(eq.loads.size()) + " loads; form them with "
+                                "add_dynamics_derivatives for a model without constraints, one "
+                                "load per coordinate and no joint-reaction rows");
+        // the loads' coefficients A of E = b - A u, numeric for joint torques and forces
+        const LinearSystem L = detail::split_linear(table, eq.residuals, eq.loads, kWho);
+        for (unsigned i = 0; i < n; ++i)
+            for (unsigned j = 0; j < n; ++j) {
+                const ex a = L.A(i, j);
+                if (!GiNaC::is_a<GiNaC::numeric>(a) || !GiNaC::ex_to<GiNaC::numeric>(a).is_real())
+                    throw ArgumentError(std::string(kWho) + ": the load '" + to_string(eq.loads[j]) +
+                                        "' enters the equation of '" + plan.q[i].name +
+                                        "' with the coefficient " + to_string(a) + ", not a number; "
+                                        "forward dynamics' derivatives are generated for loads "
+                                        "that enter with constant coefficients (joint torques "
+                                        "and forces)");
+                plan.load_coefficients.push_back(GiNaC::ex_to<GiNaC::numeric>(a).to_double());
+            }
+        std::vector<ex> d = eq.inverse_dynamics_dq;
+        d.insert(d.end(), eq.inverse_dynamics_dqp.begin(), eq.inverse_dynamics_dqp.end());
+        plan.inverse_dynamics_derivatives = {
+            .name = "inverse_dynamics_derivatives",
+            .summary = "derivatives of inverse dynamics d u/d q and d u/d qp at fixed qpp "
+                       "(nu x nq each, row by row: dtau_dq[i nq + j] = d u_i/d q_j)",
+            .arrays = {"q", "qp", "qpp"},
+            .results = {"dtau_dq", "dtau_dqp"},
+            .result_sizes = {n * n, n * n},
+            .program = compile(table, symbols({&q, &qp, &qpp}), d, compile_options,
+                               "the derivatives of inverse dynamics"),
             .input_names = input_names({&q_names, &qp_names, &qpp_names}),
             .parameter_names = parameter_names};
     }

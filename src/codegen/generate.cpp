@@ -59,6 +59,7 @@ GeneratedCode write_code(const CodePlan& plan, Language language,
     result.mass_matrix_operations = ops(plan.mass_matrix);
     result.bias_forces_operations = ops(plan.bias_forces);
     result.inverse_dynamics_operations = ops(plan.inverse_dynamics);
+    result.inverse_dynamics_derivatives_operations = ops(plan.inverse_dynamics_derivatives);
     result.outputs_operations = ops(plan.output_function);
     result.kinematics_operations = ops(plan.kinematics);
     result.dependent_speeds_operations = ops(plan.dependent_speed_function);

@@ -5,6 +5,7 @@
 #include <map>
 #include <unordered_map>
 
+#include "alembert/eom/kane.hpp"
 #include "alembert/error.hpp"
 #include "alembert/sym/print.hpp"
 
@@ -120,6 +121,29 @@ LinearSystem split_linear(const SymbolTable& table, const std::vector<ex>& resid
         }
     }
     return s;
+}
+
+std::vector<ex> solve_for_loads(const SymbolTable& table, const std::vector<ex>& E,
+                                const std::vector<ex>& loads, const char* who) {
+    const auto n = static_cast<unsigned>(loads.size());
+    LinearSystem L = split_linear(table, E, loads, who);
+    bool numeric = true;
+    for (unsigned i = 0; i < n && numeric; ++i)
+        for (unsigned j = 0; j < n && numeric; ++j) numeric = GiNaC::is_a<GiNaC::numeric>(L.A(i, j));
+    std::vector<ex> u;
+    if (numeric && !L.A.determinant().is_zero()) {
+        GiNaC::matrix Ainv = L.A.inverse();
+        for (unsigned i = 0; i < n; ++i) {
+            ex s = 0;
+            for (unsigned j = 0; j < n; ++j)
+                if (!Ainv(i, j).is_zero()) s += Ainv(i, j) * L.b(j, 0);
+            u.push_back(s);
+        }
+        return u;
+    }
+    GiNaC::matrix X = solve_by_blocks(L.A, L.b, loads, std::string(who) + ": inverse dynamics");
+    for (unsigned i = 0; i < n; ++i) u.push_back(X(i, 0));
+    return u;
 }
 
 }  // namespace alembert::detail

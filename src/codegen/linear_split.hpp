@@ -18,4 +18,13 @@ namespace alembert::detail {
 LinearSystem split_linear(const SymbolTable& table, const std::vector<ex>& residuals,
                           const std::vector<ex>& unknowns, const char* who);
 
+/// The residuals E(u) = b - A u, linear in the loads u, solved for them: u = A^-1 b. When A is
+/// numeric (joint loads enter road-maps and Kane's equations of chains with coefficients +-1)
+/// its inverse is exact and the loads are sums of the b; otherwise the system is solved
+/// symbolically, one decoupled block at a time.
+/// @throws alembert::SolveError if the residuals are not linear in the loads or do not
+///         determine them.
+std::vector<ex> solve_for_loads(const SymbolTable& table, const std::vector<ex>& residuals,
+                                const std::vector<ex>& loads, const char* who);
+
 }  // namespace alembert::detail

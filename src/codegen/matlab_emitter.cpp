@@ -98,11 +98,11 @@ std::vector<GeneratedFile> MatlabEmitter::emit(const CodePlan& plan) const {
         std::size_t k = 0;
         for (std::size_t r = 0; r < f->results.size(); ++r) {
             const std::string& res = f->results[r];
-            bool matrix = res == "M";
+            bool matrix = res == "M" || res == "dtau_dq" || res == "dtau_dqp";
             b << res << " = zeros(" << (matrix ? n : f->result_sizes[r]) << ", "
               << (matrix ? n : 1) << ");\n";
             for (std::size_t j = 0; j < f->result_sizes[r]; ++j, ++k) {
-                std::string place = matrix ? "M(" + std::to_string(j / n + 1) + ", " +
+                std::string place = matrix ? res + "(" + std::to_string(j / n + 1) + ", " +
                                                  std::to_string(j % n + 1) + ")"
                                            : pr.element(res, j);
                 b << pr.assign(place, pr.operand(p, p.outputs[k], names)) << "\n";
@@ -132,6 +132,36 @@ std::vector<GeneratedFile> MatlabEmitter::emit(const CodePlan& plan) const {
                  ? std::string("The accelerations qpp = M^-1 f (") +
                        (plan.symmetric_mass_matrix ? "Cholesky" : "LU") + ")."
                  : std::string("The accelerations qpp (articulated-body recursion)."),
+             b.str());
+    }
+    if (!plan.inverse_dynamics_derivatives.empty()) {
+        // d qpp/d q = M^-1 A du/dq at qpp (A the loads' coefficients in E = b - A u)
+        const bool negated = plan.negated_identity_loads();
+        std::ostringstream b;
+        b << "qpp = " << N << "_forward_dynamics(t, q, qp, u, ctx);\n"
+          << "[Dq, Dqp] = " << N << "_inverse_dynamics_derivatives(t, q, qp, qpp, ctx);\n"
+          << (plan.mass_matrix.empty() ? "M = " + N + "_mass_forcing(t, q, qp, u, ctx);\n"
+                                       : "M = " + N + "_mass_matrix(t, q, ctx);\n");
+        if (negated) {
+            b << "D = -[Dq, Dqp];\n";
+        } else {
+            b << "A = [";
+            for (std::size_t i = 0; i < n; ++i) {
+                for (std::size_t j = 0; j < n; ++j)
+                    b << (j ? ", " : "") << pr.number(plan.load_coefficients[i * n + j]);
+                b << (i + 1 < n ? "; " : "");
+            }
+            b << "];  % the loads' coefficients\nD = A * [Dq, Dqp];\n";
+        }
+        if (plan.symmetric_mass_matrix)
+            b << "R = chol(M);  % M = R'*R\nX = R \\ (R' \\ D);\n";
+        else
+            b << "X = M \\ D;\n";
+        b << "dqpp_dq = X(:, 1:" << n << ");\ndqpp_dqp = X(:, " << n + 1 << ":" << 2 * n << ");\n";
+        file(N + "_forward_dynamics_derivatives",
+             "[qpp, dqpp_dq, dqpp_dqp] = " + N + "_forward_dynamics_derivatives(t, q, qp, u, ctx)",
+             std::string("Forward dynamics with its derivatives d qpp/d q and d qpp/d qp (") +
+                 (negated ? "-M^-1 du/dq" : "M^-1 A du/dq") + " at qpp).",
              b.str());
     }
     {

@@ -126,6 +126,8 @@ std::vector<GeneratedFile> PythonEmitter::emit(const CodePlan& plan) const {
             os << "    return M.reshape(NQ, NQ), f\n";
         else if (f->name == "mass_matrix")
             os << "    return M.reshape(NQ, NQ)\n";
+        else if (f->name == "inverse_dynamics_derivatives")
+            os << "    return dtau_dq.reshape(NQ, NQ), dtau_dqp.reshape(NQ, NQ)\n";
         else
             os << "    return " << f->results[0] << "\n";
     }
@@ -191,6 +193,30 @@ std::vector<GeneratedFile> PythonEmitter::emit(const CodePlan& plan) const {
                << "    return np.linalg.solve(L.T, np.linalg.solve(L, f))\n";
         else
             os << "    return np.linalg.solve(M, f)\n";
+    }
+    if (!plan.inverse_dynamics_derivatives.empty()) {
+        // d qpp/d q = M^-1 A du/dq at qpp (A the loads' coefficients in E = b - A u)
+        const bool negated = plan.negated_identity_loads();
+        os << "\n\ndef forward_dynamics_derivatives(t, q, qp, u, ctx):\n"
+           << "    \"\"\"Forward dynamics with its derivatives: qpp, d qpp/d q and d qpp/d qp (NQ x NQ),\n"
+           << "    from inverse dynamics' derivatives at qpp: d qpp/d q = "
+           << (negated ? "-M^-1 du/dq" : "M^-1 A du/dq") << ".\"\"\"\n"
+           << "    qpp = forward_dynamics(t, q, qp, u, ctx)\n"
+           << "    Dq, Dqp = inverse_dynamics_derivatives(t, q, qp, qpp, ctx)\n"
+           << (plan.mass_matrix.empty() ? "    M = mass_forcing(t, q, qp, u, ctx)[0]\n"
+                                        : "    M = mass_matrix(t, q, ctx)\n");
+        if (negated)
+            os << "    D = -np.hstack((Dq, Dqp))\n";
+        else
+            os << "    A = np.array(" << vector_of(plan.load_coefficients, pr)
+               << ").reshape(NQ, NQ)  # loads' coefficients\n"
+               << "    D = A @ np.hstack((Dq, Dqp))\n";
+        if (plan.symmetric_mass_matrix)
+            os << "    L = np.linalg.cholesky(M)  # M = L L^T\n"
+               << "    X = np.linalg.solve(L.T, np.linalg.solve(L, D))\n";
+        else
+            os << "    X = np.linalg.solve(M, D)\n";
+        os << "    return qpp, X[:, :NQ], X[:, NQ:]\n";
     }
     os << "\n\ndef rhs(t, x, ctx):\n"
        << "    \"\"\"x' = [qp, qpp] for x = [q, qp], with the loads of load_laws.\"\"\"\n"

@@ -51,6 +51,7 @@ void Interpreter::Impl::codegen(const Statement& s) {
         }
     if (s.has_word("name")) r.name = s.word("name").text;
     if (s.lists.count("jacobians")) r.jacobians = s.lists.at("jacobians");
+    if (s.has_word("derivatives")) r.derivatives = s.word("derivatives");
     r.dir = output_path(s);
     run_codegen(r, s.location);
 }
@@ -213,6 +214,23 @@ void Interpreter::Impl::run_codegen(const CodegenRequest& r, Location where) {
                               "name a point (point P) or a body (body B) declared before codegen");
         }
     }
+    // derivatives of inverse and forward dynamics: one load per coordinate, an open chain or tree
+    if (r.derivatives) {
+        const Location at = r.derivatives->location;
+        if (speeds)
+            throw ScriptError(at, "derivatives are generated for the coordinates' rates, not for "
+                                  "equations in generalized speeds",
+                              "leave out 'derivatives' or declare the coordinates with q''");
+        if (!constraint_forces.empty())
+            throw ScriptError(at, "derivatives are not generated for a model with constraints",
+                              "leave out 'derivatives'");
+        if (loads.size() != q.size() || !reactions.empty() ||
+            std::any_of(loads.begin(), loads.end(), [&](const ex& x) { return sys.reaction_of(x); }))
+            throw ScriptError(at, "derivatives need one load per coordinate (" + std::to_string(loads.size()) +
+                                      " loads for " + std::to_string(q.size()) + " coordinates)",
+                              "list the joint torques and forces: codegen " + r.language.text +
+                                  " for T1, T2 derivatives");
+    }
     // the script's simulation settings make the generated simulation program
     opts.simulation = true;
     SimulationSpec& spec = opts.simulation_spec;
@@ -267,12 +285,14 @@ void Interpreter::Impl::run_codegen(const CodegenRequest& r, Location where) {
             eqs.bias_forces = t->bias_forces;
             eqs.reactions = reaction_measures;
             eqs.reaction_residuals = reaction_residuals;
+            if (r.derivatives) add_dynamics_derivatives(sys.symbols(), eqs);
             return generate_code(table, eqs, language, r.dir, opts);
         }
         KaneEquations k = form_kane_equations(sys, KaneOptions{.coordinates = q});
         DynamicsEquations eqs{q, k.residuals, loads, k.dynamics, {}, inverse_residuals};
         eqs.reactions = reaction_measures;
         eqs.reaction_residuals = reaction_residuals;
+        if (r.derivatives) add_dynamics_derivatives(sys.symbols(), eqs);
         return generate_code(table, eqs, language, r.dir, opts);
     });
     std::ostringstream out;
@@ -305,6 +325,7 @@ void Interpreter::Impl::run_codegen(const CodegenRequest& r, Location where) {
     if (!opts.outputs.empty()) out << ", " << opts.outputs.size() << " outputs";
     if (!opts.jacobians.empty())
         out << ", " << opts.jacobians.size() << (opts.jacobians.size() == 1 ? " Jacobian" : " Jacobians");
+    if (r.derivatives) out << ", derivatives of inverse and forward dynamics";
     out << ", a simulation program";
     if (numbers.options.integrator != Integrator::dopri5)
         out << " (integrating by Dormand-Prince 5(4): the integrator " << to_string(numbers.options.integrator)

@@ -140,6 +140,7 @@ struct CodegenRequest {
     std::string name{};       ///< empty: the script's name
     std::string dir{};
     std::vector<Word> jacobians{};  ///< points and bodies whose Jacobians are generated
+    std::optional<Word> derivatives{};  ///< `derivatives`: of inverse and forward dynamics
 };
 
 struct Interpreter::Impl {

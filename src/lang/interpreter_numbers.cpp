@@ -660,6 +660,7 @@ void parse_run(StatementParser& p, Statement& s) {
             s.lists["cycles"] = p.name_list("a plate one foot steps on (cycles floor1, floor2)");
         } else if (k == "codegen" && p.accept_word("name")) s.words["name"] = p.name("an identifier for the files");
         else if (k == "codegen" && p.accept_word("jacobian")) s.lists["jacobians"] = p.name_list("a point or a body");
+        else if (k == "codegen" && p.at_word("derivatives")) s.words["derivatives"] = p.take_word();
         else if (k != "codegen" && (p.at_word("compiled") || p.at_word("tape"))) {
             const Word w = p.take_word();
             if (s.flags.count(w.text == "tape" ? "compiled" : "tape"))
@@ -671,7 +672,7 @@ void parse_run(StatementParser& p, Statement& s) {
         else if (p.accept_word("to")) s.words["to"] = p.text("the output directory");
         else p.fail_expected(k == "simulate" ? "'compiled', 'tape', 'plot' or 'to'"
                              : k == "inverse" ? "'for', 'from', 'per kg', 'cycles', 'compiled', 'tape', 'plot' or 'to'"
-                                              : "'for', 'name', 'jacobian' or 'to'");
+                                              : "'for', 'name', 'jacobian', 'derivatives' or 'to'");
     }
     if (k == "inverse" && !s.lists.count("loads"))
         throw ScriptError(s.location, "inverse dynamics needs the load measures to solve for",
@@ -788,10 +789,10 @@ std::vector<StatementSpec> number_statements() {
          .clauses = {"at", "to"}, .parse = parse_report, .run = [](M& m, const Statement& s) { m.latex(s); }},
         {.keyword = "codegen", .family = family,
          .help = "generates C, C++, MATLAB or Python code for the model's equations",
-         .forms = {{"`codegen` *c\\|cpp\\|matlab\\|python* [`name` *N*] [`for` *loads*] [`jacobian` *points, bodies*] [`to` *\"dir\"*]",
-                    "codegen c name fall jacobian C to \"code\"",
-                    "`generate_code` on Kane's equations (a tree's recursive rows when the model is one): functions for M and f, forward and inverse dynamics, M alone and the bias forces (trees), the outputs, and a simulation program with the script's settings (the declared joint reactions without an `input` computed at every sample from their road-map rows, `NAME_reactions`; refused for constrained models and equations in speeds); per `jacobian` name its position, Jacobian and J' q' (`form_point_jacobian`, or `form_frame_jacobian` of a body at its origin B_o, else its mass centre)"}},
-         .clauses = {"for", "jacobian", "to"}, .parse = parse_run, .run = [](M& m, const Statement& s) { m.codegen(s); }},
+         .forms = {{"`codegen` *c\\|cpp\\|matlab\\|python* [`name` *N*] [`for` *loads*] [`jacobian` *points, bodies*] [`derivatives`] [`to` *\"dir\"*]",
+                    "codegen c name fall jacobian C derivatives to \"code\"",
+                    "`generate_code` on Kane's equations (a tree's recursive rows when the model is one): functions for M and f, forward and inverse dynamics, M alone and the bias forces (trees), the outputs, and a simulation program with the script's settings (the declared joint reactions without an `input` computed at every sample from their road-map rows, `NAME_reactions`; refused for constrained models and equations in speeds); per `jacobian` name its position, Jacobian and J' q' (`form_point_jacobian`, or `form_frame_jacobian` of a body at its origin B_o, else its mass centre); with `derivatives`, d u/d q and d u/d q' of inverse dynamics and q'' with d q''/d q and d q''/d q' (`add_dynamics_derivatives`; one load per coordinate, no constraints, not in generalized speeds)"}},
+         .clauses = {"for", "jacobian", "derivatives", "to"}, .parse = parse_run, .run = [](M& m, const Statement& s) { m.codegen(s); }},
     };
 }
 

@@ -522,6 +522,50 @@ TEST(Codegen, JacobianClauseGeneratesAPointsAndABodysJacobians) {
         EXPECT_NE(header.find(f), std::string::npos) << f << " in\n" << header;
 }
 
+namespace {
+
+// the falling triple pendulum's model (torques T_A, T_B, T_C, no joint reactions)
+std::string falling_triple_pendulum_model() {
+    std::ifstream in(fs::path(ALEMBERT_SOURCE_DIR) / "examples/triple_pendulum_fall/model.alb");
+    std::string line, out;
+    while (std::getline(in, line)) {
+        if (line.rfind("# released", 0) == 0) break;
+        out += line + "\n";
+    }
+    return out;
+}
+
+}  // namespace
+
+TEST(Codegen, DerivativesClauseGeneratesInverseAndForwardDynamicsDerivatives) {
+    TempDir dir;
+    Script r(dir.path);
+    r.run(falling_triple_pendulum_model() + "codegen c name sts derivatives to \"gen\"\n");
+    std::ifstream h(dir.path / "gen" / "sts.h");
+    std::string header((std::istreambuf_iterator<char>(h)), std::istreambuf_iterator<char>());
+    for (const char* f : {"void sts_inverse_dynamics_derivatives(const sts_context* c, double t, "
+                          "const double* q, const double* qp, const double* qpp, double* dtau_dq, "
+                          "double* dtau_dqp);",
+                          "int sts_forward_dynamics_derivatives(const sts_context* c, double t, "
+                          "const double* q, const double* qp, const double* u,\n    double* qpp, "
+                          "double* dqpp_dq, double* dqpp_dqp);"})
+        EXPECT_NE(header.find(f), std::string::npos) << f << " in\n" << header;
+    EXPECT_NE(r.out.str().find("derivatives of inverse and forward dynamics"), std::string::npos)
+        << r.out.str();
+}
+
+TEST(Codegen, DerivativesClauseNamesTheLoadsThatDoNotFit) {
+    // the joint reactions among the loads: 9 loads for 3 coordinates
+    TempDir dir;
+    Script r(dir.path);
+    EXPECT_NE(r.interp.run(sit_to_stand_model() + "codegen c name sts derivatives to \"gen\"\n",
+                           "test.alb"),
+              RunStatus::ok);
+    EXPECT_NE(r.err.str().find("derivatives need one load per coordinate (9 loads for 3 coordinates)"),
+              std::string::npos)
+        << r.err.str();
+}
+
 TEST(Codegen, JacobianClauseNamesWhatIsNeitherAPointNorABody) {
     TempDir dir;
     Script r(dir.path);

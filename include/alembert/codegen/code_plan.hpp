@@ -73,6 +73,15 @@ struct CodePlan {
     /// and J' q' (t, q, qp; result Jdqp), in that order.
     std::vector<CodeFunction> jacobian_functions;
     CodeFunction inverse_dynamics;  ///< inputs t, q, qp, qpp; result u (empty if not formed)
+    /// d u/d q and d u/d q' at fixed qpp (DynamicsEquations::inverse_dynamics_dq, _dqp):
+    /// inputs t, q, qp, qpp; results dtau_dq, dtau_dqp (nu x nq each, row-major). Empty if
+    /// not given. With it, `load_coefficients` holds A (nq x nq, row-major) of the residuals
+    /// E = b - A u (-I for M qpp + h = u): forward dynamics' derivatives are
+    /// d qpp/d q = M^-1 A du/dq and d qpp/d qp = M^-1 A du/dqp at qpp.
+    CodeFunction inverse_dynamics_derivatives;
+    std::vector<double> load_coefficients;
+    /// A is -I (no product needed: d qpp/d q = -M^-1 du/dq)
+    bool negated_identity_loads() const;
     /// Joint-reaction measures (DynamicsEquations::reactions): inputs t, q, qp, qpp, u (its
     /// entries for the measures unread); result reaction, one per measure, reaction[k]
     /// the load loads[reaction_loads[k]]. Empty without them.

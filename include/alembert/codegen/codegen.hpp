@@ -114,7 +114,28 @@ struct DynamicsEquations {
     /// (`TreeEquations::bias_forces`), so that M q'' + h are the generalized inertia forces
     /// with gravity; when given, a `bias_forces` function is generated (no loads, no q'').
     std::vector<ex> bias_forces{};
+    /// The derivatives of inverse dynamics, d u_i/d q_j and d u_i/d q'_j at fixed q'' (loads x
+    /// coordinates, row by row), as add_dynamics_derivatives forms them; when given, functions
+    /// `inverse_dynamics_derivatives` (t, q, q', q'') and `forward_dynamics_derivatives`
+    /// (t, q, q', u: q'' with d q''/d q and d q''/d q') are generated. d u/d q'' is the mass
+    /// matrix when the loads enter the equations as M q'' + h = u.
+    std::vector<ex> inverse_dynamics_dq{};
+    std::vector<ex> inverse_dynamics_dqp{};
 };
+
+/// Forms the derivatives of inverse dynamics (DynamicsEquations::inverse_dynamics_dq and
+/// inverse_dynamics_dqp) of `equations`: the residuals solved for the loads u(q, q', q''), as
+/// generate_code solves them, then differentiated with respect to each q_j and q'_j through
+/// the named intermediates (SymbolTable::diff, forward mode: each intermediate's derivative
+/// taken once and named), never by expanding them, so the derivatives share the dynamics'
+/// intermediates and cost a bounded multiple of the dynamics per coordinate. Needs as many
+/// loads as coordinates, each entering the equations with a numeric coefficient (joint
+/// torques and forces: forward dynamics' derivatives then follow from these by
+/// d q''/d q = M^-1 A du/dq with A the loads' coefficients, -I for M q'' + h = u), and no
+/// constraints; equations in generalized speeds are not covered.
+/// @throws alembert::ArgumentError naming what does not fit; alembert::SolveError if the
+///         residuals are not linear in the loads.
+void add_dynamics_derivatives(SymbolTable& table, DynamicsEquations& equations);
 
 /// A quantity the generated code computes on request (an output column of a simulation):
 /// any expression of t, q, q', q'', the loads and the constants.
@@ -187,6 +208,8 @@ struct GeneratedCode {
     std::size_t mass_matrix_operations = 0;    ///< M alone (0 when not given)
     std::size_t bias_forces_operations = 0;    ///< h alone (0 when not given)
     std::size_t inverse_dynamics_operations = 0;
+    /// d u/d q and d u/d q' together (0 when not generated)
+    std::size_t inverse_dynamics_derivatives_operations = 0;
     std::size_t outputs_operations = 0;
     std::size_t prelude_operations = 0;
     bool symmetric_mass_matrix = false;  ///< Cholesky (true) or LU (false) in forward dynamics
