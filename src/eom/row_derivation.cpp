@@ -3,6 +3,9 @@
 #include "alembert/eom/row_derivation.hpp"
 
 #include <algorithm>
+#include <optional>
+#include <stdexcept>
+#include <utility>
 
 #include "alembert/eom/inertia_forces.hpp"
 #include "alembert/eom/zero_test.hpp"
@@ -20,7 +23,44 @@ bool in_set(const BodySet& S, const Body* b) {
 
 // the coordinate whose change alone moves exactly the bodies of S (a body moves if its mass
 // centre's partial velocity or its partial angular velocity for that speed is not zero)
+std::string coordinate_moving_symbolically(const System& sys, const BodySet& S);
+
+// the same, each velocity's change with the speed alone told at the random states (one walk
+// of the kinematics per speed), the symbolic test only where they cannot be evaluated
 std::string coordinate_moving(const System& sys, const BodySet& S) {
+    const SymbolTable& st = sys.symbols();
+    const Frame& N = sys.newtonian();
+    try {
+        MeasuresAtRandomStates at(st);
+        const std::vector<const Body*>& bodies = sys.bodies();
+        std::vector<std::optional<std::pair<Col3, Col3>>> measured(bodies.size());
+        auto velocities = [&](std::size_t i) -> const std::pair<Col3, Col3>& {
+            if (!measured[i])
+                measured[i].emplace(bodies[i]->cm().vel_in(N).components_in(N),
+                                    bodies[i]->frame() ? bodies[i]->frame()->ang_vel_in(N).components_in(N)
+                                                       : Col3{});
+            return *measured[i];
+        };
+        for (const ex& x : st.symbols(SymbolKind::variable)) {
+            if (st.derivative_order(x) != 0) continue;
+            const TimeVariable q = st.variable(st.name(x));
+            if (q.order() < 1) continue;
+            const ex speed = q.d(1);
+            bool same = true;
+            for (std::size_t i = 0; i < bodies.size() && same; ++i) {
+                const auto& [v, w] = velocities(i);
+                const bool moves = at.calc_changes_with(v, speed) || (!w.is_zero() && at.calc_changes_with(w, speed));
+                same = moves == in_set(S, bodies[i]);
+            }
+            if (same) return q.name();
+        }
+        return "";
+    } catch (const std::domain_error&) {
+        return coordinate_moving_symbolically(sys, S);
+    }
+}
+
+std::string coordinate_moving_symbolically(const System& sys, const BodySet& S) {
     const SymbolTable& st = sys.symbols();
     const Frame& N = sys.newtonian();
     for (const ex& x : st.symbols(SymbolKind::variable)) {

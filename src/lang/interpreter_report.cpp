@@ -145,11 +145,12 @@ std::string Interpreter::Impl::write_report_to(const std::string& dir, const exm
     System& sys = model(where);
     ReportContent c;
     c.system = &sys;
-    // a script named model.alb is named by its directory (examples/sit_to_stand/model.alb)
+    // a script named model.alb is named by its directory (examples/sit_to_stand/model.alb),
+    // model_X.alb by its directory and X (examples/sit_to_stand/model_lab.alb: sit_to_stand_lab)
     c.title = script_name;
-    if (script_name == "model" && !base_dir.empty()) {
+    if ((script_name == "model" || script_name.starts_with("model_")) && !base_dir.empty()) {
         std::string parent = std::filesystem::path(base_dir).lexically_normal().filename().string();
-        if (!parent.empty() && parent != "." && parent != "..") c.title = parent;
+        if (!parent.empty() && parent != "." && parent != "..") c.title = parent + script_name.substr(5);
     }
     c.coordinates = default_coordinates();
     c.histories = histories;

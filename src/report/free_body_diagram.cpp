@@ -57,9 +57,8 @@ double norm3(const std::vector<double>& v) {
 // u . T for a torque. Decided at the drawn configuration where it is clearly not zero there
 // (most loads: no symbolic work), else at random states
 bool known_load_appears(const System& sys, const Evaluation& ev, const RoadmapRow& r,
-                        bool torque, const Point* at, const Vector& v,
+                        const std::vector<double>& u, bool torque, const Point* at, const Vector& v,
                         const std::vector<double>& numeric) {
-    const std::vector<double> u = ev.in_newtonian(r.direction);
     const bool rotate = r.motion == Motion::rotate && r.about && !torque;
     double c = 0, scale = norm3(numeric) * norm3(u);
     if (!rotate) {
@@ -131,6 +130,9 @@ std::vector<DiagramLoad> diagram_loads(const System& sys, const Evaluation& ev,
             if (holds(r.additional_unknowns, x)) return LoadRole::held;
         return LoadRole::drops_out;
     };
+    // the row's direction and gravity in N, evaluated once for all of S's loads
+    const std::vector<double> u = ev.in_newtonian(r.direction);
+    const std::vector<double> gravity = ev.in_newtonian(sys.gravity());
     for (const Load& l : sys.loads()) {
         if (!in_body_set(S, l.on) || in_body_set(S, l.from)) continue;
         const bool torque = l.kind != LoadKind::force;
@@ -140,11 +142,11 @@ std::vector<DiagramLoad> diagram_loads(const System& sys, const Evaluation& ev,
         d.label = label;
         d.at = torque ? torque_point(sys, l.on) : l.point;
         d.on = l.on;
-        d.vector = ev.in_newtonian(l.vector);
+        d.vector = ev.load_vector(l);
         const std::vector<ex> measures = unknown_measures(sys, l.vector);
         d.unknown = !measures.empty();
         d.role = d.unknown ? unknown_role(measures)
-                 : known_load_appears(sys, ev, r, torque, d.at, l.vector, d.vector)
+                 : known_load_appears(sys, ev, r, u, torque, d.at, l.vector, d.vector)
                      ? LoadRole::known
                      : LoadRole::drops_out;
         loads.push_back(std::move(d));
@@ -159,8 +161,8 @@ std::vector<DiagramLoad> diagram_loads(const System& sys, const Evaluation& ev,
                 d.tex = w.tex;
                 d.at = &b->cm();
                 d.on = b;
-                d.vector = ev.in_newtonian(sys.gravity());
-                d.role = known_load_appears(sys, ev, r, false, d.at, b->mass() * sys.gravity(),
+                d.vector = gravity;
+                d.role = known_load_appears(sys, ev, r, u, false, d.at, b->mass() * sys.gravity(),
                                             d.vector)
                              ? LoadRole::known
                              : LoadRole::drops_out;

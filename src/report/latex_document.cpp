@@ -544,7 +544,8 @@ std::string derivations_tex(const ReportContent& c, const std::vector<report_det
 
 std::string report_detail::render_latex(const ReportContent& c,
                                         const std::vector<std::string>& equations,
-                                        const std::vector<RowSteps>* given_steps) {
+                                        const std::vector<RowSteps>* given_steps,
+                                        const BruteForceCount* given_count) {
     if (!c.system)
         throw ArgumentError(
             "render_report_latex(): the report has no model; build one (newtonian N, ...) before "
@@ -573,7 +574,7 @@ std::string report_detail::render_latex(const ReportContent& c,
              "$0 = E$; accelerations are collected. The free-body diagram of $S$ lists the loads "
              "external to $S$.\n\n";
         t += table_tex(sys, c.rows);
-        const std::string bf = brute_force_words(calc_brute_force_count(c), c.rows.size());
+        const std::string bf = brute_force_words(given_count ? *given_count : calc_brute_force_count(c), c.rows.size());
         if (!bf.empty()) t += step_text(bf) + "\n\n";
         t += "\\subsection*{Rows: free-body diagrams and equations}\n";
         t += "Unknown loads in red, known in blue, gravity in green; $O$ is the about point and "

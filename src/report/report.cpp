@@ -73,8 +73,9 @@ std::string report_detail::render_html(const ReportContent& content,
                                        const std::vector<std::string>& equations,
                                        const std::string& katex_dir,
                                        const std::string& three_dir,
-                                       const std::vector<RowSteps>* steps) {
-    const std::string json = render_json(content, equations, steps);
+                                       const std::vector<RowSteps>* steps,
+                                       const BruteForceCount* count) {
+    const std::string json = render_json(content, equations, steps, count);
     const fs::path katex(katex_dir);
     const std::string katex_js = katex_dir.empty() ? "" : read_text(katex / "katex.min.js");
     const std::string katex_css = katex_dir.empty() ? "" : read_text(katex / "katex.min.css");
@@ -139,9 +140,10 @@ std::string write_report(const ReportContent& content, const std::string& dir) {
     // the equations are typeset once, for the page and roadmap.tex
     const std::vector<std::string> equations = report_detail::typeset_equations(content);
     const std::vector<report_detail::RowSteps> steps = report_detail::calc_rows_steps(content, equations);
+    const report_detail::BruteForceCount count = report_detail::calc_brute_force_count(content);
     const std::string page = report_detail::render_html(content, equations,
                                                         have_katex ? katex : "",
-                                                        have_three ? three : "", &steps);
+                                                        have_three ? three : "", &steps, &count);
     // KaTeX's stylesheet names its fonts relative to the page: fonts/KaTeX_*.woff2
     if (have_katex) {
         fs::create_directories(out / "fonts", ec);
@@ -151,7 +153,7 @@ std::string write_report(const ReportContent& content, const std::string& dir) {
                              "write_report()");
         }
     }
-    write_file_atomically(out / "roadmap.tex", report_detail::render_latex(content, equations, &steps),
+    write_file_atomically(out / "roadmap.tex", report_detail::render_latex(content, equations, &steps, &count),
                      "write_report()");
     const fs::path index = out / "index.html";
     write_file_atomically(index, page, "write_report()");

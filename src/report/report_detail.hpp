@@ -51,15 +51,20 @@ std::vector<std::string> typeset_equations(const ReportContent& content);
 
 /// render_report_json / render_report_latex / render_report_html with the rows' equations
 /// already typeset (`equations`, one per row of `content`).
-/// `steps`: the rows' derivations (calc_rows_steps), formed here when null.
+/// `steps`: the rows' derivations (calc_rows_steps), formed here when null; `count`: the
+/// brute-force count (calc_brute_force_count), counted here when null.
 struct RowSteps;
+struct BruteForceCount;
 std::string render_json(const ReportContent& content, const std::vector<std::string>& equations,
-                        const std::vector<RowSteps>* steps = nullptr);
+                        const std::vector<RowSteps>* steps = nullptr,
+                        const BruteForceCount* count = nullptr);
 std::string render_latex(const ReportContent& content, const std::vector<std::string>& equations,
-                         const std::vector<RowSteps>* steps = nullptr);
+                         const std::vector<RowSteps>* steps = nullptr,
+                         const BruteForceCount* count = nullptr);
 std::string render_html(const ReportContent& content, const std::vector<std::string>& equations,
                         const std::string& katex_dir, const std::string& three_dir,
-                        const std::vector<RowSteps>* steps = nullptr);
+                        const std::vector<RowSteps>* steps = nullptr,
+                        const BruteForceCount* count = nullptr);
 
 /// The viewer's script and style (src/report/viewer), compiled in.
 extern const char* const kViewerScript;
@@ -109,8 +114,17 @@ struct Evaluation {
         return it->second;
     }
 
+    /// A load's vector in N: evaluated once per load, since every row's diagram that shows
+    /// the load draws the same arrow
+    const std::vector<double>& load_vector(const Load& l) const {
+        auto it = loads_.find(&l);
+        if (it == loads_.end()) it = loads_.emplace(&l, in_newtonian(l.vector)).first;
+        return it->second;
+    }
+
 private:
     mutable std::map<const Point*, std::vector<double>> positions_;
+    mutable std::map<const Load*, std::vector<double>> loads_;
 };
 
 /// The model's points that have a path to the origin (those a drawing can place).

@@ -764,7 +764,8 @@ std::string render_report_json(const ReportContent& c) {
 
 std::string report_detail::render_json(const ReportContent& c,
                                        const std::vector<std::string>& equations,
-                                       const std::vector<RowSteps>* given_steps) {
+                                       const std::vector<RowSteps>* given_steps,
+                                       const BruteForceCount* given_count) {
     if (!c.system)
         throw ArgumentError(
             "render_report_json(): the report has no model; build one (newtonian N, ...) before "
@@ -842,7 +843,7 @@ std::string report_detail::render_json(const ReportContent& c,
         .add("geometry", geometry)
         .add("roadmap", arr(rows));
     // free-body diagrams of every body separately, counted beside the road-map's rows
-    const BruteForceCount bf = calc_brute_force_count(c);
+    const BruteForceCount bf = given_count ? *given_count : calc_brute_force_count(c);
     if (!c.rows.empty())
         o.add("brute_force", Obj()
                                  .add("formed", bf.formed ? "true" : "false")
