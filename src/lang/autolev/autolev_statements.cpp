@@ -659,13 +659,17 @@ void Translator::solve_statement(const Expr& e) {
     if (e.args.size() < 2)
         fail(e.where, "SOLVE() takes the equations and the unknowns", "write SOLVE(M, X1, X2) or SOLVE(e, X)");
     const Expr& m = e.args[0];
-    if (m.kind == Expr::Kind::name && !m.vector && upper(m.text) == "ZERO")
-        fail(m.where, "SOLVE(ZERO, ...) is not translated",
-             "write KANE() to form the equations of motion; the script's 'solve K for ...' solves them");
-    // the equations: a matrix of one row or column the file assigned, or one expression
+    // the equations: Kane's (ZERO = FR() + FRSTAR() before), a matrix of one row or column the
+    // file assigned, or one expression
     std::string eqs;
     std::size_t count = 1;
-    if (const Entry* en = m.kind == Expr::Kind::name && !m.vector ? find(m.text) : nullptr;
+    if (m.kind == Expr::Kind::name && !m.vector && upper(m.text) == "ZERO" && !find(m.text)) {
+        if (!kane_at_)
+            fail(m.where, "SOLVE(ZERO, ...) needs ZERO = FR() + FRSTAR() before it",
+                 "form Kane's equations first: ZERO = FR() + FRSTAR()");
+        eqs = "\x02";  // Kane's equations' name, known when the script is assembled
+        count = e.args.size() - 1;
+    } else if (const Entry* en = m.kind == Expr::Kind::name && !m.vector ? find(m.text) : nullptr;
         en && en->kind == Kind::matrix) {
         if (en->rows != 1 && en->cols != 1)
             fail(m.where, "SOLVE() takes a matrix of one row or one column, and '" + m.text + "' is " +
@@ -696,7 +700,7 @@ void Translator::solve_statement(const Expr& e) {
                  "solve for each unknown once");
         xs.push_back(scalar(x).s);
         std::string base = en->name;
-        if (x.primes) base += "_d" + std::to_string(x.primes);
+        base += std::string(static_cast<std::size_t>(x.primes), 'd');  // U' -> Ud_solved
         keep.push_back(fresh_name(base + "_solved"));
         keys.push_back(key);
     }

@@ -388,7 +388,8 @@ INSTANTIATE_TEST_SUITE_P(Files, AutolevAcceptance, ::testing::ValuesIn(cases()),
 // at least twenty.
 TEST(AutolevAcceptanceFiles, EveryFileIsChecked) {
     std::vector<std::string> checked{"vector_algebra.al", "no_newtonian_kinematics.al", "algebra_functions.al",
-                                     "matrix_values.al", "series_and_solve.al"};
+                                     "matrix_values.al", "series_and_solve.al",
+                                     "solve_zero_pendulum.al"};
     for (const Case& c : cases()) checked.push_back(c.file);
     int files = 0;
     for (const auto& e : std::filesystem::directory_iterator(kDir)) {
@@ -527,6 +528,23 @@ TEST(AutolevAcceptanceFiles, SeriesCoefficientsAndSolveAgreeWithTheHandResults) 
                      mass * g / k2,
                      mass * g / k1,
                      mass * g / k1 + mass * g / k2};
+        for (std::size_t i = 0; i < expected.size(); ++i)
+            EXPECT_NEAR(v[i], expected[i], 1e-12 * std::max(1.0, std::abs(expected[i]))) << i << " at " << at;
+    }
+}
+
+// SOLVE(ZERO, U'): the particle at -L A2> on the arm turned by Q has M L^2 U' = -M G L sin Q, so
+// ACC = U' = -(G/L) sin Q, its series to order 1 is -(G/L) Q, and PERIOD = 2 pi sqrt(L/G).
+TEST(AutolevAcceptanceFiles, SolveOfKanesEquationsAgreesWithTheHandResults) {
+    AutolevTranslation t = import("solve_zero_pendulum.al");
+    ASSERT_TRUE(t.ok());
+    std::mt19937 rng(2031);
+    auto uniform = [&](double a, double b) { return std::uniform_real_distribution<double>(a, b)(rng); };
+    for (int trial = 0; trial < 3; ++trial) {
+        double l = uniform(0.2, 2), mass = uniform(0.5, 3), g = uniform(9, 10), q = uniform(-3, 3);
+        std::string at = "L = " + num(l) + ", M = " + num(mass) + ", G = " + num(g) + ", Q = " + num(q);
+        Vec v = evaluate(t, {"ACC", "PERIOD"}, at);
+        Vec expected{-g / l * std::sin(q), 2 * std::numbers::pi * std::sqrt(l / g)};
         for (std::size_t i = 0; i < expected.size(); ++i)
             EXPECT_NEAR(v[i], expected[i], 1e-12 * std::max(1.0, std::abs(expected[i]))) << i << " at " << at;
     }

@@ -314,7 +314,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"taylor_order_symbol", kHead + "X = TAYLOR(SIN(Q), 0:L, Q = 0)\n", 6, 22, "must be whole numbers"},
         BadInput{"solve_in_expression", kHead + "X = SOLVE(L*Q - 1, Q)\n", 6, 5, "SOLVE() is translated as a statement"},
         BadInput{"solve_count", kHead + "SOLVE(L*Q - 1, Q, L)\n", 6, 16, "1 equation for 2 unknowns"},
-        BadInput{"solve_zero", kHead + "SOLVE(ZERO, Q'')\n", 6, 7, "SOLVE(ZERO, ...) is not translated"},
+        BadInput{"solve_zero", kHead + "SOLVE(ZERO, Q'')\n", 6, 7, "SOLVE(ZERO, ...) needs ZERO = FR() + FRSTAR()"},
         BadInput{"solve_twice", kHead + "SOLVE(L*Q - 1, Q)\nSOLVE(L*Q - 2, Q)\n", 7, 16, "'Q' is solved for already"},
         BadInput{"solve_by_vector", kHead + "SOLVE(L*Q - 1, N1>)\n", 6, 16, "SOLVE() solves for constants, variables"},
         BadInput{"evaluate_alone", kHead + "X = EVALUATE(L*Q)\n", 6, 5, "EVALUATE() without substitutions"},
