@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Algebra inside expressions: coef(), replace(), taylor(), factor() and floor(), each one GiNaC
 // operation on the value's intermediates written out.
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <sstream>
@@ -259,10 +260,20 @@ Value Interpreter::Impl::eval_algebra(const Expr& e) {
     if (x.kind != Kind::scalar) throw ScriptError(a[0]->location, "floor() takes a scalar", "");
     check_dimension(x.dim, Dimension::none(), "the argument of floor()", a[0]->location);
     ex n = guarded([&] { return GiNaC::evalf(table.expand_intermediates(x.s)); });
-    if (!GiNaC::is_a<GiNaC::numeric>(n) || !GiNaC::ex_to<GiNaC::numeric>(n).is_real())
-        throw ScriptError(a[0]->location, "floor() takes a number, but this holds symbols: " + to_string(x.s),
+    if (!GiNaC::is_a<GiNaC::numeric>(n) || !GiNaC::ex_to<GiNaC::numeric>(n).is_real()) {
+        // the symbols named (a few, in the table's order of names), not the whole expression
+        std::vector<std::string> held;
+        for (const ex& y : symbols_of(table.expand_intermediates(x.s)))
+            if (table.owns(y)) held.push_back(table.name(y));
+        std::sort(held.begin(), held.end());
+        std::string list;
+        for (std::size_t i = 0; i < held.size() && i < 5; ++i) list += (i ? ", " : "") + held[i];
+        if (held.size() > 5) list += ", ...";
+        if (list.empty()) list = "a value that is not a real number";
+        throw ScriptError(a[0]->location, "floor() takes a number, but this holds " + list,
                           "floor() is a step of the numbers only; evaluate the expression first (replace(e, q = 1)), "
                           "or give the constants as numbers");
+    }
     if (GiNaC::is_a<GiNaC::numeric>(x.s) && GiNaC::ex_to<GiNaC::numeric>(x.s).is_rational()) {
         // exact: numerator over denominator rounded down
         const GiNaC::numeric& r = GiNaC::ex_to<GiNaC::numeric>(x.s);

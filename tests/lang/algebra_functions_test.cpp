@@ -230,7 +230,9 @@ TEST(AlgebraFunctions, FactorKeepsTheValueAndFloorRoundsNumbersDown) {
     EXPECT_EQ(r.ok("floor(2*pi)\n"), "= 6\n");
     EXPECT_EQ(r.ok("floor(-sqrt(2))\n"), "= -2\n");
     std::string e = r.fails("floor(q)\n");
-    EXPECT_TRUE(has(e, "floor() takes a number, but this holds symbols: q")) << e;
+    EXPECT_TRUE(has(e, "floor() takes a number, but this holds q\n")) << e;
+    e = r.fails("floor(x*sin(q) + A)\n");
+    EXPECT_TRUE(has(e, "floor() takes a number, but this holds A, q, x\n")) << e;
     e = r.fails("floor(2 m)\n");
     EXPECT_TRUE(has(e, "the argument of floor() must be")) << e;
 }
