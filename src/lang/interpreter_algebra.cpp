@@ -113,9 +113,11 @@ Value Interpreter::Impl::eval_algebra(const Expr& e) {
                 const GiNaC::symbol& sym = GiNaC::ex_to<GiNaC::symbol>(s);
                 if (!guarded([&] { return full.is_polynomial(s); }))
                     throw ScriptError(a[0]->location,
-                                      "coef(): " + (es.size() > 1 ? "element " + std::to_string(i + 1) + " " : std::string()) +
-                                          "is not a polynomial in '" + table.name(s) +
-                                          "': it holds it inside a function, a root, a denominator or a symbolic power",
+                                      "coef(): " +
+                                          (es.size() > 1 ? "element " + std::to_string(i + 1) + " of the list"
+                                                         : std::string("the expression")) +
+                                          " is not a polynomial in '" + table.name(s) + "': it holds " + table.name(s) +
+                                          " inside a function, a root, a denominator or a symbolic power",
                                       "coef() takes coefficients of polynomials; diff(e, " + table.name(s) +
                                           ") is the derivative of any expression");
                 out.push_back(guarded([&] {
@@ -159,7 +161,7 @@ Value Interpreter::Impl::eval_algebra(const Expr& e) {
             Value v = eval(*a[i]->args[1]);
             if (v.kind != Kind::scalar)
                 throw ScriptError(a[i]->args[1]->location, "replace(): the value of '" + table.name(s) + "' must be a scalar",
-                                  "");
+                                  "take a measure of a vector: dot(v>, Nx>)");
             check_dimension(v.dim, dx, "the value of '" + table.name(s) + "' in replace()", a[i]->args[1]->location);
             m[s] = v.s;
         }
@@ -213,10 +215,11 @@ Value Interpreter::Impl::eval_algebra(const Expr& e) {
             ex series;
             try {
                 series = full.series(h == 0, n + 1);
-            } catch (const std::exception& err) {
+            } catch (const std::exception&) {
+                // GiNaC divides by zero at a root's or an absolute value's branch point
                 throw ScriptError(a[0]->location,
-                                  "taylor(): the expression has no Taylor series about this point (" +
-                                      std::string(err.what()) + ")",
+                                  "taylor(): the expression has no Taylor series about this point (a root, an "
+                                  "absolute value or a division by zero there)",
                                   "expand about a point where it is smooth");
             }
             if (series.ldegree(h) < 0)

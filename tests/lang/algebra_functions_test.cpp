@@ -104,7 +104,7 @@ TEST(AlgebraFunctions, CoefRefusesWhatIsNotAPolynomialCoefficient) {
     AlgebraRun r;
     r.ok(kHead);
     std::string e = r.fails("coef(sin(q)*x, q)\n");
-    EXPECT_TRUE(has(e, "coef(): is not a polynomial in 'q'")) << e;
+    EXPECT_TRUE(has(e, "coef(): the expression is not a polynomial in 'q': it holds q inside a function")) << e;
     EXPECT_TRUE(has(e, "test.alb:1:6:")) << e;  // at the expression, with its caret
     EXPECT_TRUE(has(e, "|      ^")) << e;
     e = r.fails("coef(e, 2)\n");
@@ -114,6 +114,8 @@ TEST(AlgebraFunctions, CoefRefusesWhatIsNotAPolynomialCoefficient) {
     EXPECT_TRUE(has(e, "coef(): the power of x^n must be a whole number from 0 to 64")) << e;
     e = r.fails("coef(e, q, 65)\n");
     EXPECT_TRUE(has(e, "coef(): the power n must be a whole number from 0 to 64")) << e;
+    e = r.fails("coef([e, sin(q)], q)\n");
+    EXPECT_TRUE(has(e, "coef(): element 2 of the list is not a polynomial in 'q'")) << e;
     e = r.fails("coef(q*Nx>, q)\n");
     EXPECT_TRUE(has(e, "coef() takes a scalar or a list of scalars first")) << e;
     e = r.fails("coef(e)\n");
@@ -200,6 +202,8 @@ TEST(AlgebraFunctions, TaylorRefusesSingularPointsAndBadOrders) {
     std::string e = r.fails("taylor(1/q, q = 0, 3)\n");
     EXPECT_TRUE(has(e, "taylor(): the expression is singular at this point")) << e;
     EXPECT_TRUE(has(e, "test.alb:1:8:")) << e;
+    e = r.fails("taylor(sqrt(q), q = 0, 2)\n");
+    EXPECT_TRUE(has(e, "taylor(): the expression has no Taylor series about this point")) << e;
     e = r.fails("taylor(sin(q), q = 0, -1)\n");
     EXPECT_TRUE(has(e, "taylor(): the order must be a whole number from 0 to 64")) << e;
     e = r.fails("taylor(sin(q), q = 0, A)\n");
