@@ -173,8 +173,8 @@ Value Interpreter::Impl::eval_algebra(const Expr& e) {
     }
 
     if (f == "taylor") {
-        // taylor(e, x = x0, ..., n): the Taylor polynomial of total order n about the point,
-        // from the series in h of e at x0 + h*(x - x0) (GiNaC series), with h = 1
+        // taylor(e, x = x0, ..., n): the Taylor polynomial of total order n about the point:
+        // e at x0 + h*(x - x0), ... expanded in h to order n, at h = 1
         const std::string form = "taylor(e, q = 0, 3), taylor(e, q, 0, 3) or taylor(e, x = 0, y = 0, 2)";
         if (a.size() < 3) throw ScriptError(e.location, "taylor() takes 3 or more arguments, not " + std::to_string(a.size()),
                                             "write " + form);
@@ -211,7 +211,20 @@ Value Interpreter::Impl::eval_algebra(const Expr& e) {
         GiNaC::exmap shift;
         for (const auto& [s, s0] : at) shift[s] = s0 + h * (s - s0);
         auto op = [&](const ex& s) -> ex {
-            ex full = table.expand_intermediates(s).subs(shift, GiNaC::subs_options::no_pattern);
+            const ex full = table.expand_intermediates(s).subs(shift, GiNaC::subs_options::no_pattern);
+            // the sum of (1/k!) d^k/dh^k at h = 0: diff and subs, linear in the expression's
+            // size (GiNaC's series multiplies out products, too slow for equations of motion)
+            try {
+                ex term = full, sum = 0;
+                for (int k = 0; k <= n; ++k) {
+                    if (k > 0) term = term.diff(h);
+                    sum += term.subs(h == 0, GiNaC::subs_options::no_pattern) / GiNaC::factorial(k);
+                }
+                return sum;
+            } catch (const std::exception&) {
+                // a division by zero at the point: a removable singularity (sin(q)/q at 0), a
+                // pole or a branch point, which the series tells apart
+            }
             ex series;
             try {
                 series = full.series(h == 0, n + 1);

@@ -188,6 +188,8 @@ TEST(AlgebraFunctions, TaylorIsTheTaylorPolynomialAboutThePoint) {
         // two variables, total order 2: exp(q + x) = 1 + (q + x) + (q + x)^2/2
         const double s = q + x;
         expect_close(r.at("taylor(exp(q + x), q = 0, x = 0, 2)", at), 1 + s + s * s / 2, "two variables");
+        // a removable singularity: sin(q)/q = 1 - q^2/6 + ...
+        expect_close(r.at("taylor(sin(q)/q, q = 0, 3)", at), 1 - q * q / 6, "sin(q)/q");
         // order 0: the value at the point
         expect_close(r.at("taylor(exp(q + x), q = 0, 0)", at), std::exp(x), "order 0");
         // a polynomial of lower degree is itself
