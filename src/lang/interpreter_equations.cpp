@@ -401,13 +401,17 @@ void Interpreter::Impl::solve(const Statement& s) {
     SymbolTable& table = m.symbols();
     const Word& n = s.word("name");
     auto it = values.find(n.text);
-    if (it == values.end() || it->second.kind != Kind::array) {
+    // equations: an array, or a matrix of one column or one row (E = [e1; e2])
+    const bool vector_matrix = it != values.end() && it->second.kind == Kind::matrix &&
+                               (it->second.rows == 1 || it->second.cols == 1);
+    if (it == values.end() || (it->second.kind != Kind::array && !vector_matrix)) {
         if (!names.count(n.text))
             throw ScriptError(n.location, "there are no equations named '" + n.text + "'",
                               "form them first with kane, lagrange or roadmap, or assign a list");
-        throw ScriptError(n.location, "'" + n.text + "' is not a list of equations", "");
+        throw ScriptError(n.location, "'" + n.text + "' is not a list of equations",
+                          "assign them as a list: E = [e1, e2]");
     }
-    const std::vector<ex>& eqs = it->second.a;
+    const std::vector<ex> eqs = it->second.a;
     require_each_once(s.lists.at("unknowns"), "unknown");
     std::vector<ex> xs;
     std::vector<std::string> printed;
@@ -420,6 +424,45 @@ void Interpreter::Impl::solve(const Statement& s) {
         xs.push_back(x);
         printed.push_back(w.text);
     }
+    // names for the solutions (solve ... as x1s, x2s or as S), checked before any work
+    std::vector<Word> keep = s.lists.count("as") ? s.lists.at("as") : std::vector<Word>{};
+    if (!keep.empty()) {
+        require_each_once(keep, "name");
+        if (keep.size() != 1 && keep.size() != xs.size())
+            throw ScriptError(keep.front().location,
+                              std::to_string(keep.size()) + " names for " + std::to_string(xs.size()) + " unknowns",
+                              "give one name per unknown, or one name for all of them (an array)");
+        for (const Word& w : keep) {
+            if (is_reserved(w.text))
+                throw ScriptError(w.location, "'" + w.text + "' is a word of the language and cannot name a value",
+                                  "choose another name");
+            auto nt = names.find(w.text);
+            if (nt != names.end() && nt->second.kind != NameKind::value)
+                throw ScriptError(w.location, "'" + w.text + "' is already declared (line " +
+                                                  std::to_string(nt->second.declared.line) + ") and cannot name a value",
+                                  "choose another name");
+            if (w.text.find('\'') != std::string::npos)
+                throw ScriptError(w.location, "'" + w.text + "': only declared variables have primes",
+                                  "name the value without primes");
+        }
+    }
+    // keeps the solutions under the names of 'as' (numbers in SI with the unknowns' dimensions)
+    auto keep_values = [&](const std::vector<ex>& solved) {
+        if (keep.empty()) return;
+        if (keep.size() == 1 && xs.size() > 1) {
+            Value v;
+            v.kind = Kind::array, v.a = solved;
+            names[keep[0].text] = {NameKind::value, keep[0].location};
+            values[keep[0].text] = v;
+            return;
+        }
+        for (std::size_t i = 0; i < xs.size(); ++i) {
+            Value v;
+            v.kind = Kind::scalar, v.s = solved[i], v.dim = symbol_dimension(printed[i]);
+            names[keep[i].text] = {NameKind::value, keep[i].location};
+            values[keep[i].text] = v;
+        }
+    };
     bool nonlinear = s.bindings.count("guess") != 0;
     if (s.quantities.count("limit") && (s.bindings.count("at") || nonlinear))
         throw ScriptError(s.quantities.at("limit").value->location,
@@ -463,6 +506,7 @@ void Interpreter::Impl::solve(const Statement& s) {
             }
         }, "try another guess, nearer the solution you want");
         for (std::size_t i = 0; i < xs.size(); ++i) out += format_value(printed[i], q.values[i]) + "\n";
+        keep_values(std::vector<ex>(q.values.begin(), q.values.end()));
         remember_solved_configuration(at, xs, q.values, s.location.line);
     } else {
         // with values, rows that are not linear together may still be solved one block after
@@ -501,6 +545,9 @@ void Interpreter::Impl::solve(const Statement& s) {
                 "give every symbol a value after 'at'");
             for (std::size_t i = 0; i < xs.size(); ++i)
                 out += format_value(printed[i], x(static_cast<Eigen::Index>(i))) + "\n";
+            std::vector<ex> numbers;
+            for (std::size_t i = 0; i < xs.size(); ++i) numbers.push_back(x(static_cast<Eigen::Index>(i)));
+            keep_values(numbers);
             remember_solved_configuration(at, {}, {}, s.location.line);
         } else {
             SymbolicSolveOptions options;
@@ -540,6 +587,7 @@ void Interpreter::Impl::solve(const Statement& s) {
             }
             out = format_intermediates(table, x);
             for (std::size_t i = 0; i < xs.size(); ++i) out += printed[i] + " = " + to_string(x[i]) + "\n";
+            keep_values(x);
         }
     }
     transcript.result(out);
@@ -620,7 +668,8 @@ void parse_solve(StatementParser& p, Statement& s) {
         if (p.accept_word("guess")) s.bindings["guess"] = p.bindings("an unknown");
         else if (p.accept_word("at")) s.bindings["at"] = p.bindings("a symbol");
         else if (p.accept_word("limit")) s.quantities["limit"] = p.quantity();
-        else p.fail_expected("'at', 'guess' or 'limit'");
+        else if (p.accept_word("as")) s.lists["as"] = p.name_list("a name for the solution");
+        else p.fail_expected("'at', 'guess', 'limit' or 'as'");
     }
 }
 
@@ -735,8 +784,11 @@ std::vector<StatementSpec> equation_statements() {
                     "`form_linear_system` + `solve_numeric` (unset speeds, accelerations: error); rows not linear together are solved one block after another (`solve_numeric_in_blocks`: a road-map with a friction's |Fn| solves the row of Fn first)"},
                    {"`solve` *E* `for` *x...* `guess` *name = value, ...* [`at` ...]",
                     "solve E for q1, q2 guess q1 = 10 deg, q2 = 20 deg",
-                    "`solve_equilibrium` (nonlinear; speeds and accelerations not given after `at` are 0; refused, naming the unknown and the rows, when at the answer the equations do not change with an unknown)"}},
-         .clauses = {"for", "at", "guess", "limit"}, .parse = parse_solve,
+                    "`solve_equilibrium` (nonlinear; speeds and accelerations not given after `at` are 0; refused, naming the unknown and the rows, when at the answer the equations do not change with an unknown)"},
+                   {"`solve` *E* `for` *x...* [...] `as` *names*",
+                    "solve E for x1, x2 as x1s, x2s",
+                    "each form above, its solutions also kept as values: one name per unknown (scalars, in the unknowns' dimensions; in SI after `at` or `guess`), or one name for all (an array, `S[1]` the first); a singular system is refused"}},
+         .clauses = {"for", "at", "guess", "limit", "as"}, .parse = parse_solve,
          .run = [](M& m, const Statement& s) { m.solve(s); }},
         {.keyword = "digits", .family = solving,
          .help = "sets the significant digits of the numbers printed from here on (6 at the start)",

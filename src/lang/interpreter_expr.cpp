@@ -370,6 +370,9 @@ Value Interpreter::Impl::eval(const Expr& e) {
             return matrix_value(e.rows, cols, std::move(entries), dim);
         }
         case Expr::Kind::call: return eval_call(e);
+        case Expr::Kind::binding:
+            throw ScriptError(e.location, "'x = v' stands only among the arguments of replace() and taylor()",
+                              "write replace(e, q = 0) or taylor(e, q = 0, 3)");
     }
     throw ScriptError(e.location, "internal: unknown expression", "");
 }
@@ -692,10 +695,12 @@ Value Interpreter::Impl::eval_call(const Expr& e) {
         return matrix_value(static_cast<int>(fs.size()), static_cast<int>(by.size()), std::move(entries),
                             Dimension::open());
     }
+    if (f == "coef" || f == "replace" || f == "taylor" || f == "factor" || f == "floor") return eval_algebra(e);
     throw ScriptError(e.location, "unknown function '" + f + "'",
                       "functions: sin cos tan asin acos atan sqrt exp log abs dot cross express dt "
                       "mag unit simplify expand angvel angacc vel acc pos rotation mass momentum "
-                      "angmomentum kinetic potential resultant moment massmatrix jacobian diff");
+                      "angmomentum kinetic potential resultant moment massmatrix jacobian diff coef "
+                      "replace taylor factor floor");
 }
 
 // ---- output ----------------------------------------------------------------------------

@@ -325,6 +325,11 @@ struct Interpreter::Impl {
     // ---- expressions (interpreter_expr.cpp) ------------------------------------------------
     Value eval(const Expr& e);
     Value eval_call(const Expr& e);
+    // ---- algebra in expressions (interpreter_algebra.cpp) ----------------------------------
+    /// coef(), replace(), taylor(), factor() and floor().
+    Value eval_algebra(const Expr& e);
+    /// The declared symbol `e` names, or an error "f(): <role> must be a declared symbol".
+    ex algebra_symbol(const Expr& e, const std::string& f, const std::string& role, Dimension* dim);
     Value eval_name(const Expr& e);
     Value number_with_unit(const Expr& e, const ex& n);  ///< `0.1575 m`: n in SI, with its dimension
     Value eval_vector_name(const Expr& e);

@@ -18,7 +18,8 @@ const std::set<std::string, std::less<>>& function_words() {
         "sin", "cos", "tan", "asin", "acos", "atan", "sqrt", "exp", "log", "abs", "dot", "cross",
         "express", "dt", "mag", "unit", "simplify", "expand", "angvel", "angacc", "vel", "acc",
         "pos", "rotation", "mass", "momentum", "angmomentum", "kinetic", "potential",
-        "resultant", "moment", "pi", "minimum_jerk", "massmatrix", "jacobian", "diff"};
+        "resultant", "moment", "pi", "minimum_jerk", "massmatrix", "jacobian", "diff", "coef",
+        "replace", "taylor", "floor", "factor"};
     return w;
 }
 
@@ -359,7 +360,22 @@ ExprPtr StatementParser::primary() {
                 DepthGuard guard(depth_, peek().location);
                 next();
                 node->kind = Expr::Kind::call;
-                if (!peek().is(")")) node->args = expression_list();
+                if (!peek().is(")")) {
+                    // an argument may be a binding `x = v` (replace(e, q = 0), taylor(e, q = 0, 3))
+                    do {
+                        ExprPtr arg = expression();
+                        if (peek().is("=")) {
+                            auto b = std::make_unique<Expr>();
+                            b->kind = Expr::Kind::binding;
+                            b->location = peek().location;
+                            next();
+                            b->args.push_back(std::move(arg));
+                            b->args.push_back(expression());
+                            arg = std::move(b);
+                        }
+                        node->args.push_back(std::move(arg));
+                    } while (accept_punct(","));
+                }
                 expect_punct(")", "to close the arguments of " + node->text + "(...)");
                 return node;
             }

@@ -44,6 +44,7 @@ struct Expr {
         index,        ///< text[args[0]]
         list,         ///< [a, b, c]
         matrix,       ///< [a, b; c, d]: `rows` rows of args.size()/rows entries
+        binding,      ///< args[0] = args[1], an argument of replace() and taylor() (`q = 0`)
     };
     Kind kind = Kind::number;
     Location location{};

@@ -58,6 +58,11 @@ Text Translator::expr(const Expr& e) {
 }
 
 Text Translator::binary(const Expr& e) {
+    if (e.text == "=" || e.text == ":")
+        fail(e.where, std::string(e.text == "=" ? "a substitution 'x = v'" : "a range 'm:n'") +
+                          " stands only among the arguments of " +
+                          (e.text == "=" ? "REPLACE(), EVALUATE() and TAYLOR()" : "TAYLOR()"),
+             "write REPLACE(e, X = 1) or TAYLOR(e, 0:3, X = 0)");
     std::vector<const Expr*> chain;
     const Expr* x = &e;
     while (x->kind == Expr::Kind::binary) {
@@ -125,7 +130,8 @@ Text Translator::call_text(const Expr& e, bool& numeric) {
     auto scalar_arg = [&](std::size_t i) {
         Text t = expr(e.args[i]);
         numeric = numeric && t.numeric;
-        if (t.vector) fail(e.args[i].where, e.text + "() takes a scalar here, not a vector");
+        if (t.vector)
+            fail(e.args[i].where, e.text + "() takes a scalar here, not a vector", "take a measure: DOT(v>, N1>)");
         return t;
     };
     auto vector_arg = [&](std::size_t i) {
@@ -224,22 +230,69 @@ Text Translator::call_text(const Expr& e, bool& numeric) {
         numeric = v.numeric;
         return v;
     }
+    if (f == "COEF") {
+        // the coefficient of X (or X^n) in a polynomial in X
+        args(2, 2);
+        Text v = scalar_arg(0), x = scalar_arg(1);
+        numeric = false;
+        return {"coef(" + v.s + ", " + x.s + ")", false, 5};
+    }
+    if (f == "REPLACE" || f == "EVALUATE") {
+        // substitutions inside an expression: replace(e, x = v, ...)
+        if (e.args.size() < 2)
+            fail(e.where, e.text + "() without substitutions is not translated: the script keeps constants as "
+                                   "symbols and gives numbers with the statement 'evaluate e at x = v'",
+                 "write " + e.text + "(e, X = 1, ...)");
+        Text v = expr(e.args[0]);
+        std::string s = "replace(" + v.s;
+        for (std::size_t i = 1; i < e.args.size(); ++i) s += ", " + substitution(e.args[i], e.text);
+        numeric = false;
+        return {s + ")", v.vector, 5};
+    }
+    if (f == "TAYLOR") {
+        // TAYLOR(e, m:n, X = X0, ...): the terms of orders m to n of the Taylor polynomial,
+        // taylor(e, X = X0, n) less taylor(e, X = X0, m - 1)
+        if (e.args.size() < 3)
+            fail(e.where, "TAYLOR() takes the expression, the orders and at least one X = X0",
+                 "write TAYLOR(e, 0:3, X = 0)");
+        Text v = expr(e.args[0]);
+        const Expr& r = e.args[1];
+        auto order = [&](const Expr& x) {
+            if (x.kind != Expr::Kind::number || x.text.find_first_not_of("0123456789") != std::string::npos ||
+                x.text.size() > 2)
+                fail(x.where, "the orders of TAYLOR() must be whole numbers", "write TAYLOR(e, 0:3, X = 0)");
+            return std::stoi(x.text);
+        };
+        int lo = 0, hi = 0;
+        if (r.kind == Expr::Kind::binary && r.text == ":") lo = order(r.args[0]), hi = order(r.args[1]);
+        else hi = order(r);
+        if (lo > hi) fail(r.where, "the orders of TAYLOR() run from the lower to the higher", "write TAYLOR(e, 0:3, X = 0)");
+        std::string at;
+        for (std::size_t i = 2; i < e.args.size(); ++i) at += ", " + substitution(e.args[i], e.text);
+        numeric = false;
+        std::string s = "taylor(" + v.s + at + ", " + std::to_string(hi) + ")";
+        if (lo == 0) return {s, v.vector, 5};
+        return {"(" + s + " - taylor(" + v.s + at + ", " + std::to_string(lo - 1) + "))", v.vector, 5};
+    }
+    if (f == "FLOOR") {
+        args(1, 1);
+        return {"floor(" + scalar_arg(0).s + ")", false, 5};
+    }
+    if (f == "FACTOR" && e.args.size() == 1) {
+        Text v = scalar_arg(0);
+        return {"factor(" + v.s + ")", false, 5};
+    }
+    if (f == "SOLVE")
+        fail(e.where, "SOLVE() is translated as a statement of its own: SOLVE(M, X1, X2) alone on its line",
+             "solve first, then use X1 and X2 in the expressions after it");
     static const std::string kMatrices =
         "the script uses matrices through their elements (M[i, j]); matrix operations have no counterpart";
     static const std::map<std::string, std::string> missing{
-        {"COEF", "Alembert has no coefficient extraction; diff(e, x) is the coefficient of a term linear in x "
-                 "(D(e, X) in Autolev)"},
-        {"FACTOR", "Alembert's simplify() takes common factors out, but not a factor chosen by name"},
-        {"EVALUATE", "Alembert evaluates with the statement 'evaluate e at x = v' (printed), not inside an "
-                     "expression"},
-        {"REPLACE", "Alembert has no substitution inside an expression; 'evaluate e at x = v' prints the value"},
-        {"TAYLOR", "Alembert has no series expansion"},
-        {"SOLVE", "Alembert solves equations with the statement 'solve E for x' (printed), not as values"},
+        {"FACTOR", "FACTOR(e) is factor(e); Alembert takes no factor chosen by name (FACTOR(e, X))"},
         {"POLYNOMIAL", "Alembert has no polynomials as values"},
         {"ROOTS", "Alembert has no polynomial roots"},
         {"EXCLUDE", "Alembert keeps every term"},
         {"INCLUDE", "Alembert keeps every term"},
-        {"FLOOR", "Alembert has no floor()"},
         {"TRANSPOSE", kMatrices},
         {"EIG", "eigenvalues are printed by Alembert's 'linearize', not computed inside an expression"},
         {"DIAGMAT", kMatrices},
@@ -262,7 +315,8 @@ Text Translator::call_text(const Expr& e, bool& numeric) {
              "write ZERO = FR() + FRSTAR() and then KANE()");
     fail(e.where, "the Autolev function '" + e.text + "' is not translated",
          "the translator knows SIN, COS, TAN, ASIN, ACOS, ATAN, SQRT, EXP, LOG, ABS, DOT, CROSS, MAG, "
-         "UNITVEC, EXPRESS, DT, D, EXPAND, EXPLICIT, ARRANGE and RHS");
+         "UNITVEC, EXPRESS, DT, D, EXPAND, EXPLICIT, ARRANGE, RHS, COEF, REPLACE, EVALUATE, TAYLOR, FLOOR, "
+         "FACTOR and SOLVE");
 }
 
 Text Translator::matrix_element(const Expr& e, const Entry& m) {
@@ -298,6 +352,12 @@ std::string Translator::scalar_name(const Expr& e) {
         fail(e.where, "'" + e.text + "' is not declared",
              "declare it (CONSTANTS, VARIABLES, ...) or assign it before this line");
     }
+    if (!solved_.empty())
+        if (auto sv = solved_.find(en->name + primes); sv != solved_.end()) {
+            // a symbol SOLVE assigned is its solution from there on
+            resolved_numeric_ = false;
+            return sv->second;
+        }
     switch (en->kind) {
         case Kind::constant:
         case Kind::scalar:
@@ -332,6 +392,25 @@ std::string Translator::scalar_name(const Expr& e) {
             fail(e.where, "'" + e.text + "' is " + kind_word(en->kind) + ", not a value",
                  "a vector needs '>' (A1>, V_P_N>); points and frames are arguments of V2PTS, SIMPROT, ...");
     }
+}
+
+std::string Translator::substitution(const Expr& e, const std::string& f) {
+    if (e.kind != Expr::Kind::binary || e.text != "=")
+        fail(e.where, f + "() takes substitutions X = v after the expression", "write " + f + "(e, X = 1)");
+    const Expr& x = e.args[0];
+    const Entry* en = x.kind == Expr::Kind::name && !x.vector ? find(x.text) : nullptr;
+    if (!en || (en->kind != Kind::constant && en->kind != Kind::variable && en->kind != Kind::specified))
+        fail(x.where, f + "() substitutes for a constant, variable or specified quantity",
+             "write " + f + "(e, Q1 = 0) or " + f + "(e, U1 = 0)");
+    return scalar(x).s + " = " + scalar(e.args[1]).s;
+}
+
+std::string Translator::fresh_name(const std::string& base) {
+    std::string n = base;
+    for (int k = 2; find(n) || find_object(n) || extra_names_.count(n) || is_reserved(n); ++k)
+        n = base + "_" + std::to_string(k);
+    extra_names_.insert({n, 0});
+    return n;
 }
 
 std::string Translator::frame_name(const Expr& e) {

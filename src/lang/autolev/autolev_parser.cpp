@@ -270,19 +270,21 @@ public:
             if (t.primes == 0 && is_symbol("(")) {
                 take();
                 e.kind = Expr::Kind::call;
+                // an argument may be a range or a substitution, TAYLOR(e, 0:3, Q = 0) and
+                // EVALUATE(e, Q = 1): a binary ':' or '=' node, which only the functions that
+                // take them accept
                 if (!is_symbol(")")) {
-                    e.args.push_back(expression());
-                    while (is_symbol(",")) {
+                    for (;;) {
+                        Expr arg = expression();
+                        if (is_symbol(":") || is_symbol("=")) {
+                            const Token& op = take();
+                            arg = binary(op, std::move(arg), expression());
+                        }
+                        e.args.push_back(std::move(arg));
+                        if (!is_symbol(",")) break;
                         take();
-                        e.args.push_back(expression());
                     }
                 }
-                // TAYLOR(e, 0:3, Q = 0), EVALUATE(e, Q = 1): ranges and substitutions, which
-                // no translated function takes
-                if (is_symbol(":") || is_symbol("="))
-                    fail(t, "the arguments of " + upper(t.text) + "() hold '" + peek().text +
-                                "' (a range or a substitution), which no translated function takes",
-                         "docs/autolev.md lists each Autolev function with its translation or the reason it has none");
                 expect(")");
                 return e;
             }

@@ -115,6 +115,9 @@ void Translator::assemble() {
                        std::to_string(dependent_.size()) + " dependent speeds",
                    "name the dependent speeds with CONSTRAIN(DEPENDENT[U3, ...]) before KANE()");
         model_[*kane_at_] = kane_statement();
+        // SOLVE(ZERO, ...) solves Kane's equations, named now
+        for (std::string& l : model_)
+            if (std::size_t at = l.find('\x02'); at != std::string::npos) l.replace(at, 1, kane_name_);
     }
     std::string& s = out_.script;
     s = "# " + file_ + ", translated from Autolev by alembert import\n";

@@ -540,6 +540,7 @@ void Translator::expression_statement(const Statement& st) {
             fail(e.where, e.text + "() takes " + std::to_string(n) + " arguments, not " + std::to_string(e.args.size()),
                  std::string("write ") + form);
     };
+    if (f == "SOLVE") return solve_statement(e);
     if (f == "SIMPROT") {
         nargs(4, "SIMPROT(A, B, 3, Q1)");
         std::string a = frame_name(e.args[0]), b = frame_name(e.args[1]);
@@ -652,6 +653,59 @@ std::string Translator::simprot_axis(const Expr& ax, const std::string& a, const
     }
     fail(ax.where, "SIMPROT about this axis is not translated",
          "give the axis as 1, 2 or 3 (or -1, -2, -3), or as a unit vector of either frame");
+}
+
+void Translator::solve_statement(const Expr& e) {
+    if (e.args.size() < 2)
+        fail(e.where, "SOLVE() takes the equations and the unknowns", "write SOLVE(M, X1, X2) or SOLVE(e, X)");
+    const Expr& m = e.args[0];
+    // the equations: Kane's (ZERO = FR() + FRSTAR() before), a matrix of one row or column the
+    // file assigned, or one expression
+    std::string eqs;
+    std::size_t count = 1;
+    if (m.kind == Expr::Kind::name && !m.vector && upper(m.text) == "ZERO" && !find(m.text)) {
+        if (!kane_at_)
+            fail(m.where, "SOLVE(ZERO, ...) needs ZERO = FR() + FRSTAR() before it",
+                 "form Kane's equations first: ZERO = FR() + FRSTAR()");
+        eqs = "\x02";  // Kane's equations' name, known when the script is assembled
+        count = e.args.size() - 1;
+    } else if (const Entry* en = m.kind == Expr::Kind::name && !m.vector ? find(m.text) : nullptr;
+        en && en->kind == Kind::matrix) {
+        if (en->rows != 1 && en->cols != 1)
+            fail(m.where, "SOLVE() takes a matrix of one row or one column, and '" + m.text + "' is " +
+                              std::to_string(en->rows) + " by " + std::to_string(en->cols),
+                 "write the equations as a column: M = [e1; e2]");
+        eqs = en->name;
+        count = static_cast<std::size_t>(en->rows * en->cols);
+    } else {
+        std::string value = scalar(m).s;
+        eqs = fresh_name("solve_eq");
+        emit(eqs + " = [" + value + "]");
+    }
+    if (e.args.size() - 1 != count)
+        fail(e.args[1].where,
+             std::to_string(count) + " equation" + (count == 1 ? "" : "s") + " for " + std::to_string(e.args.size() - 1) +
+                 " unknowns", "give as many unknowns as equations");
+    std::vector<std::string> xs, keep;
+    std::vector<std::string> keys;
+    for (std::size_t i = 1; i < e.args.size(); ++i) {
+        const Expr& x = e.args[i];
+        const Entry* en = x.kind == Expr::Kind::name && !x.vector ? find(x.text) : nullptr;
+        if (!en || (en->kind != Kind::constant && en->kind != Kind::variable && en->kind != Kind::specified))
+            fail(x.where, "SOLVE() solves for constants, variables or specified quantities",
+                 "write SOLVE(M, X1, X2) with X1, X2 declared");
+        const std::string key = en->name + std::string(static_cast<std::size_t>(x.primes), '\'');
+        if (solved_.count(key) || std::find(keys.begin(), keys.end(), key) != keys.end())
+            fail(x.where, "'" + x.text + "' is solved for already (here or by a SOLVE before this one)",
+                 "solve for each unknown once");
+        xs.push_back(scalar(x).s);
+        std::string base = en->name;
+        base += std::string(static_cast<std::size_t>(x.primes), 'd');  // U' -> Ud_solved
+        keep.push_back(fresh_name(base + "_solved"));
+        keys.push_back(key);
+    }
+    emit("solve " + eqs + " for " + join(xs) + " as " + join(keep));
+    for (std::size_t i = 0; i < keys.size(); ++i) solved_[keys[i]] = keep[i];
 }
 
 }  // namespace alembert::lang::autolev

@@ -187,6 +187,14 @@ private:
 
     std::string scalar_name(const Expr& e);
 
+    // x = v of REPLACE, EVALUATE and TAYLOR: x a constant, variable or specified quantity
+    std::string substitution(const Expr& e, const std::string& f);
+    // a name no entry, extra name or word of the language takes: base, base_2, ...
+    std::string fresh_name(const std::string& base);
+    // SOLVE(M, X1, X2): `solve M for X1, X2 as X1_solved, X2_solved`, and X1 written as
+    // X1_solved from there on
+    void solve_statement(const Expr& e);
+
     // ---- frames, points and vectors -------------------------------------------------------
 
     std::optional<std::string> frame_of(std::string_view name) const {
@@ -339,6 +347,7 @@ private:
     std::vector<std::pair<std::string, Location>> forced_points_{};
     Location statement_where_{};
     std::map<std::string, int> extra_names_{};
+    std::map<std::string, std::string> solved_{};  // X (with its primes) SOLVE assigned -> its value's name
     std::vector<std::string> extra_constants_{};
     std::string time_unit_{};  // the constant 1 s that Autolev's time T is divided by  // numbers given a place with a dimension
     bool resolved_numeric_ = false;

@@ -388,7 +388,8 @@ INSTANTIATE_TEST_SUITE_P(Files, AutolevAcceptance, ::testing::ValuesIn(cases()),
 // at least twenty.
 TEST(AutolevAcceptanceFiles, EveryFileIsChecked) {
     std::vector<std::string> checked{"vector_algebra.al", "no_newtonian_kinematics.al", "algebra_functions.al",
-                                     "matrix_values.al"};
+                                     "matrix_values.al", "series_and_solve.al",
+                                     "solve_zero_pendulum.al"};
     for (const Case& c : cases()) checked.push_back(c.file);
     int files = 0;
     for (const auto& e : std::filesystem::directory_iterator(kDir)) {
@@ -495,6 +496,55 @@ TEST(AutolevAcceptanceFiles, MatrixElementsAgreeWithTheHandResults) {
         std::string at = "A = " + num(a) + ", B = " + num(b) + ", Q = " + num(q);
         Vec v = evaluate(t, {"X", "Y", "R"}, at);
         Vec expected{a * std::cos(q) - b * std::sin(q), a * std::sin(q) + b * std::cos(q), a * a + b * b};
+        for (std::size_t i = 0; i < expected.size(); ++i)
+            EXPECT_NEAR(v[i], expected[i], 1e-12 * std::max(1.0, std::abs(expected[i]))) << i << " at " << at;
+    }
+}
+
+// Series, coefficients, substitutions and SOLVE, by hand: with m = -M G L,
+//   MOM = m sin Q, LIN = m Q, CUBIC = -m Q^3/6, STIFF = m, SQUARE = 3 L^2 ((1 + LQ)^3),
+//   SLOPE = m cos 0 = m, SIDE = -M G (2L) sin(pi/6) = -M G L, TURNS = floor(19/3) = 6;
+// the springs: K1 X1 = K2 (X2 - X1) = M G, so X1 = M G/K1, X2 = M G/K1 + M G/K2 and
+// STRETCH = M G/K2; after SOLVE, X1 and X2 are their solutions (P1, P2).
+TEST(AutolevAcceptanceFiles, SeriesCoefficientsAndSolveAgreeWithTheHandResults) {
+    AutolevTranslation t = import("series_and_solve.al");
+    ASSERT_TRUE(t.ok());
+    std::mt19937 rng(2030);
+    auto uniform = [&](double a, double b) { return std::uniform_real_distribution<double>(a, b)(rng); };
+    for (int trial = 0; trial < 3; ++trial) {
+        double k1 = uniform(10, 100), k2 = uniform(10, 100), mass = uniform(0.5, 3), g = uniform(9, 10);
+        double l = uniform(0.2, 2), q = uniform(-1, 1);
+        std::string at = "K1 = " + num(k1) + ", K2 = " + num(k2) + ", M = " + num(mass) + ", G = " + num(g) +
+                         ", L = " + num(l) + ", Q = " + num(q);
+        Vec v = evaluate(t, {"LIN", "CUBIC", "STIFF", "SQUARE", "SLOPE", "SIDE", "TURNS", "STRETCH", "P1", "P2"}, at);
+        const double m = -mass * g * l;
+        Vec expected{m * q,
+                     -m * q * q * q / 6,
+                     m,
+                     3 * l * l,
+                     m,
+                     -mass * g * l,
+                     6,
+                     mass * g / k2,
+                     mass * g / k1,
+                     mass * g / k1 + mass * g / k2};
+        for (std::size_t i = 0; i < expected.size(); ++i)
+            EXPECT_NEAR(v[i], expected[i], 1e-12 * std::max(1.0, std::abs(expected[i]))) << i << " at " << at;
+    }
+}
+
+// SOLVE(ZERO, U'): the particle at -L A2> on the arm turned by Q has M L^2 U' = -M G L sin Q, so
+// ACC = U' = -(G/L) sin Q, its series to order 1 is -(G/L) Q, and PERIOD = 2 pi sqrt(L/G).
+TEST(AutolevAcceptanceFiles, SolveOfKanesEquationsAgreesWithTheHandResults) {
+    AutolevTranslation t = import("solve_zero_pendulum.al");
+    ASSERT_TRUE(t.ok());
+    std::mt19937 rng(2031);
+    auto uniform = [&](double a, double b) { return std::uniform_real_distribution<double>(a, b)(rng); };
+    for (int trial = 0; trial < 3; ++trial) {
+        double l = uniform(0.2, 2), mass = uniform(0.5, 3), g = uniform(9, 10), q = uniform(-3, 3);
+        std::string at = "L = " + num(l) + ", M = " + num(mass) + ", G = " + num(g) + ", Q = " + num(q);
+        Vec v = evaluate(t, {"ACC", "PERIOD"}, at);
+        Vec expected{-g / l * std::sin(q), 2 * std::numbers::pi * std::sqrt(l / g)};
         for (std::size_t i = 0; i < expected.size(); ++i)
             EXPECT_NEAR(v[i], expected[i], 1e-12 * std::max(1.0, std::abs(expected[i]))) << i << " at " << at;
     }

@@ -691,4 +691,22 @@ TEST(AutolevMeaning, LongOperatorChainsTranslate) {
     EXPECT_TRUE(contains(t.script, "R> = Nx> + Ny> + Ny>")) << t.script.substr(0, 200);
 }
 
+// Arguments of 10,000 terms to COEF, REPLACE, EVALUATE, TAYLOR and SOLVE translate without a
+// deep stack (the script's run of such arguments: tests/lang/algebra_functions_test.cpp).
+TEST(AutolevMeaning, LongArgumentsOfAlgebraFunctionsTranslate) {
+    std::string sum = "M*Q";
+    for (int i = 0; i < 10000; ++i) sum += " + M*Q";
+    AutolevTranslation t = translate_autolev(
+        "NEWTONIAN N\nCONSTANTS M\nVARIABLES Q\nC = COEF(" + sum + ", Q)\nR = REPLACE(" + sum +
+            ", Q = 2)\nE = EVALUATE(" + sum + ", Q = 2, M = 1)\nS = TAYLOR(" + sum + ", 1:2, Q = 0)\nSOLVE(" + sum +
+            " - 1, Q)\n",
+        "long.al");
+    ASSERT_TRUE(t.ok()) << messages(t);
+    EXPECT_TRUE(contains(t.script, "C = coef(M*Q + M*Q + M*Q")) << t.script.substr(0, 300);
+    EXPECT_TRUE(contains(t.script, " + M*Q, Q = 2)\n")) << t.script.substr(0, 300);
+    EXPECT_TRUE(contains(t.script, " + M*Q, Q = 2, M = 1)\n")) << t.script.substr(0, 300);
+    EXPECT_TRUE(contains(t.script, " + M*Q, Q = 0, 2) - taylor(M*Q + ")) << t.script.substr(0, 300);
+    EXPECT_TRUE(contains(t.script, " + M*Q - 1]\nsolve solve_eq for Q as Q_solved\n")) << t.script.substr(0, 300);
+}
+
 }  // namespace
