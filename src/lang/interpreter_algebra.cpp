@@ -6,6 +6,7 @@
 #include <iomanip>
 #include <sstream>
 
+#include "alembert/lang/lexer.hpp"
 #include "interpreter_impl.hpp"
 
 namespace alembert::lang {
