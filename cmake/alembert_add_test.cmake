@@ -19,6 +19,10 @@ function(alembert_add_test name)
   add_executable(${target} ${ARG_SOURCES})
   target_link_libraries(${target} PRIVATE GTest::gtest_main ${ARG_LIBS} alembert_test_support)
   alembert_set_warnings(${target})
+  if(ALEMBERT_TEST_PROGRAM_FLAGS)
+    separate_arguments(_alembert_test_flags UNIX_COMMAND "${ALEMBERT_TEST_PROGRAM_FLAGS}")
+    target_compile_options(${target} PRIVATE ${_alembert_test_flags})
+  endif()
   if(ARG_LARGE)
     gtest_discover_tests(${target}
       DISCOVERY_TIMEOUT 60

@@ -55,9 +55,12 @@ std::vector<std::string> undefined_intermediates(const std::string& transcript) 
         if (line.rfind("> ", 0) == 0) continue;  // the statement echoed
         std::string body = line;
         std::smatch def;
-        static const std::regex definition(R"(^(z[0-9]+'*) = (.*)$)");
+        // the name and " = " only: a `(.*)$` over a line of thousands of characters recurses
+        // once per character in libstdc++'s regex (a stack overflow in unoptimized code)
+        static const std::regex definition(R"(^(z[0-9]+'*) = )");
         std::string lhs;
-        if (std::regex_match(line, def, definition)) lhs = def[1], body = def[2];
+        if (std::regex_search(line, def, definition, std::regex_constants::match_continuous))
+            lhs = def[1], body = def.suffix();
         for (auto it = std::sregex_iterator(body.begin(), body.end(), name); it != std::sregex_iterator(); ++it)
             if (!defined.count((*it)[2].str())) bad.push_back((*it)[2].str() + " in: " + line.substr(0, 120));
         if (!lhs.empty()) defined.insert(lhs);
@@ -296,11 +299,14 @@ std::map<std::string, double> values_of_lines(const std::string& text) {
     GiNaC::symtab names;
     std::istringstream in(text);
     std::string line;
-    static const std::regex labelled(R"(^([A-Za-z_][A-Za-z0-9_']*(\[[0-9]+\])?)(: 0)? = (.*)$)");
+    // the label and " = " only, the right-hand side is what follows (see above)
+    static const std::regex labelled(R"(^([A-Za-z_][A-Za-z0-9_']*(\[[0-9]+\])?)(: 0)? = )");
     while (std::getline(in, line)) {
         std::smatch m;
-        if (line.rfind("> ", 0) == 0 || !std::regex_match(line, m, labelled)) continue;
-        std::string rhs = std::regex_replace(m[4].str(), std::regex("'"), "_d");
+        if (line.rfind("> ", 0) == 0 ||
+            !std::regex_search(line, m, labelled, std::regex_constants::match_continuous))
+            continue;
+        std::string rhs = std::regex_replace(m.suffix().str(), std::regex("'"), "_d");
         GiNaC::parser reader(names);
         GiNaC::ex e;
         try {
