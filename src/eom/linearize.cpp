@@ -98,12 +98,23 @@ public:
                 if (p != point_.end()) at[s] = p->second;
             }
         }
-        Jet out{tidy(e.subs(at)), {}};
+        Jet out{tidy(e.subs(at, GiNaC::subs_options::no_pattern)), {}};
+        // the symbols whose derivatives do not count, at numeric values, put in before
+        // differentiating: each derivative below then walks the smaller expression
+        exmap fixed;
+        for (const ex& s : syms) {
+            if (targets_.count(s) != 0) continue;
+            auto z = z_.find(s);
+            if (z != z_.end() && !z->second.d.empty()) continue;
+            auto v = at.find(s);
+            if (v != at.end() && GiNaC::is_a<GiNaC::numeric>(v->second)) fixed.insert(*v);
+        }
+        const ex reduced = fixed.empty() ? e : e.subs(fixed, GiNaC::subs_options::no_pattern);
         for (const ex& s : syms) {
             const bool target = targets_.count(s) != 0;
             auto z = z_.find(s);
             if (!target && (z == z_.end() || z->second.d.empty())) continue;
-            ex partial = with_sign_derivatives(e.diff(sym(s)).subs(at));
+            ex partial = with_sign_derivatives(reduced.diff(sym(s)).subs(at, GiNaC::subs_options::no_pattern));
             if (partial.is_zero()) continue;
             if (target) out.d[s] += partial;
             if (z != z_.end())
