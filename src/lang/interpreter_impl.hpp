@@ -114,6 +114,7 @@ struct ScriptMarker {
     Word name{};
     std::string body{};
     std::string point{};
+    double weight = 1;  ///< w of w |p_model - p_measured|^2 in the inverse-kinematics fit
 };
 
 /// A force plate's record applied to a body by `plate NAME on B from "file.mot"`: the record

@@ -30,6 +30,9 @@ void parse_marker(StatementParser& p, Statement& s) {
     s.words["on"] = p.name("the body the marker is fixed in");
     p.expect_word("at", "(marker KNEE on A at B_o)");
     s.words["at"] = p.name("a point of the model");
+    // the marker's weight in the inverse-kinematics fit (OpenSim's IKMarkerTask weight)
+    if (p.accept_word("weight")) s.quantities["weight"] = p.quantity();
+    if (!p.at_end()) p.fail_expected("'weight' (marker KNEE on A at B_o weight 2) or the end of the statement");
 }
 
 // ---- meaning -----------------------------------------------------------------------------
@@ -43,12 +46,31 @@ void run_marker(Interpreter::Impl& m, const Statement& s) {
         throw ScriptError(on.location, "'" + on.text + "' is a particle; a marker gives a segment's angle",
                           "put markers on rigid bodies");
     m.point(at);
-    for (const ScriptMarker& k : m.markers)
+    double weight = 1;
+    if (s.quantities.count("weight")) {
+        const Quantity& q = s.quantities.at("weight");
+        weight = m.number_of(q, Dimension::none(), "the marker's weight", q.value->location);
+        if (!(weight > 0) || !std::isfinite(weight))
+            throw ScriptError(q.value->location,
+                              "the marker '" + name.text + "' has weight " + m.transcript.number(weight) +
+                                  "; a weight multiplies the marker's squared distance in the fit and must be a number above 0",
+                              "give a positive weight (marker " + name.text + " on " + on.text + " at " + at.text +
+                                  " weight 2), or remove the marker statement to leave the marker out");
+    }
+    for (const ScriptMarker& k : m.markers) {
         if (k.name.text == name.text && k.body == on.text)
             throw ScriptError(name.location,
                               "the marker '" + name.text + "' is declared on " + on.text + " twice" + at_line(k.name.location),
                               "give each marker one point of each body it serves (a joint's marker may serve both segments)");
-    m.markers.push_back({name, on.text, at.text});
+        // a joint's marker declared on both its segments is one marker of the fit: one weight
+        if (k.name.text == name.text && k.weight != weight)
+            throw ScriptError(name.location,
+                              "the marker '" + name.text + "' has weight " + m.transcript.number(weight) + " here but " +
+                                  m.transcript.number(k.weight) + " on " + k.body + at_line(k.name.location) +
+                                  "; it is one marker of the fit, with one weight",
+                              "give both statements the same weight");
+    }
+    m.markers.push_back({name, on.text, at.text, weight});
 }
 
 void parse_plate(StatementParser& p, Statement& s) {
@@ -218,6 +240,11 @@ MarkerCoordinates Interpreter::Impl::coordinates_from_markers(const std::string&
         return spatial_coordinates_from_markers(trial, base, q, where, note);
     }
     const MarkerCoordinates mc = calc_coordinates_from_markers(sys.symbols(), q, model_markers, trial);
+    // weights belong to the least-squares fit; segment angles from two markers have none
+    std::string unweighted;
+    for (const ScriptMarker& k : markers)
+        if (k.weight != 1 && unweighted.find("'" + k.name.text + "'") == std::string::npos)
+            unweighted += (unweighted.empty() ? "'" : ", '") + k.name.text + "'";
     // what was done, for the transcript
     std::ostringstream out;
     out << "markers: " << model_markers.size() << " on " << mc.segments.size() << " segments (";
@@ -238,6 +265,9 @@ MarkerCoordinates Interpreter::Impl::coordinates_from_markers(const std::string&
         << model_markers[wi].name << "')";
     std::string base_text = base.describe();
     base_text += unused_text;
+    if (!unweighted.empty())
+        base_text += "marker weights not used (" + unweighted +
+                     "): this model's coordinates come from its segments' angles, not from a weighted fit\n";
     while (!base_text.empty() && base_text.back() == '\n') base_text.pop_back();
     if (!base_text.empty()) out << "\n" << base_text;
     note = out.str();
@@ -261,7 +291,7 @@ MarkerCoordinates Interpreter::Impl::spatial_coordinates_from_markers(const Mark
     for (const ScriptMarker& k : markers) {
         const bool seen = std::any_of(points.begin(), points.end(),
                                       [&](const MarkerPoint& m) { return m.name == k.name.text; });
-        if (!seen) points.push_back({k.name.text, &sys.point(k.point)});
+        if (!seen) points.push_back({k.name.text, &sys.point(k.point), k.weight});
     }
     std::vector<ex> coordinates;
     for (const TimeVariable& v : q) coordinates.push_back(v.symbol());
@@ -301,10 +331,10 @@ std::vector<StatementSpec> lab_statements() {
     return {
         {.keyword = "marker", .family = "Kinematics",
          .help = "a model point as a marker of .trc (or .c3d) files, so a marker trial drives the model's coordinates",
-         .forms = {{"`marker` *name* \\| *\"name\"* `on` *B* `at` *P*",
-                    "marker KNEE on A at B_o",
-                    "`calc_coordinates_from_markers` when `inverse` reads a `.trc` (or a `.c3d` trial's markers): segment angles from each body's markers, joint angles by the model's own signs, checked against the model's marker points"}},
-         .clauses = {"on", "at"},
+         .forms = {{"`marker` *name* \\| *\"name\"* `on` *B* `at` *P* [`weight` *w*]",
+                    "marker KNEE on A at B_o weight 2",
+                    "`calc_coordinates_from_markers` when `inverse` reads a `.trc` (or a `.c3d` trial's markers): segment angles from each body's markers, joint angles by the model's own signs, checked against the model's marker points; a model with a moving root or leaving the plane: `InverseKinematics`, each marker's squared distance times its weight (default 1)"}},
+         .clauses = {"on", "at", "weight"},
          .parse = parse_marker, .run = run_marker},
         {.keyword = "plate", .family = "Mass and loads",
          .help = "a force plate's record (force, centre of pressure, free moment) as a known load on a body",

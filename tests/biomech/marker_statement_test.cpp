@@ -162,4 +162,67 @@ marker BM on B at Bcm
     fs::remove_all(dir);
 }
 
+// A marker's weight multiplies its squared distance in the inverse-kinematics fit. A slider
+// (one translation x) carries two markers at one point of it; the file has them 1 m apart,
+// at x = 0 and x = 1, so the fit minimises w1 x^2 + w2 (x - 1)^2: x = w2 / (w1 + w2), the
+// weighted mean, 1/2 unweighted and 3/4 with w2 = 3.
+TEST(MarkerStatement, AMarkersWeightPullsTheFitByItsShareOfTheWeights) {
+    const fs::path dir = fs::temp_directory_path() / ("alembert_marker_weight_" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    {
+        std::ofstream out(dir / "slide.trc");
+        out << "PathFileType\t4\t(X/Y/Z)\tslide.trc\nDataRate\tCameraRate\tNumFrames\tNumMarkers\tUnits\t"
+               "OrigDataRate\tOrigDataStartFrame\tOrigNumFrames\n100\t100\t21\t2\tm\t100\t1\t21\n"
+               "Frame#\tTime\tM1\t\t\tM2\t\t\n\t\tX1\tY1\tZ1\tX2\tY2\tZ2\n\n";
+        for (int k = 0; k < 21; ++k) out << k + 1 << "\t" << k / 100.0 << "\t0\t0\t0\t1\t0\t0\n";
+    }
+    auto fitted = [&](const std::string& weight) {
+        const std::string model = "newtonian N\nbody A\nvariable x''\nunknown F N\n"
+                                  "rotate A from N about z by 0\ntranslate A_o from N_o by x*Nx>\ntranslate Acm from A_o by 0>\n"
+                                  "mass A = 2 kg; inertia A = 0, 0, 0.1 kg*m^2\nforce F on A_o = F*Nx>\n"
+                                  "marker M1 on A at A_o\nmarker M2 on A at A_o" + weight + "\n"
+                                  "inverse for F from \"" + (dir / "slide.trc").string() + "\" cutoff 6 Hz to \"fit\"\n";
+        std::ostringstream out, err;
+        Interpreter interp(out, err, false);
+        interp.set_output_dir(dir.string());
+        EXPECT_EQ(interp.run(model, (dir / "slide.alb").string()), RunStatus::ok) << err.str();
+        const alembert::Table kin = alembert::read_csv((dir / "fit" / "kinematics.csv").string());
+        const alembert::Table loads = alembert::read_csv((dir / "fit" / "forces.csv").string());
+        double x = kin.columns[kin.column_index("x")][10];
+        for (std::size_t k = 0; k < kin.row_count(); ++k) {
+            EXPECT_NEAR(kin.columns[kin.column_index("x")][k], x, 1e-9);
+            EXPECT_NEAR(loads.columns[loads.column_index("F")][k], 0.0, 1e-6);  // at rest: no force
+        }
+        return x;
+    };
+    EXPECT_NEAR(fitted(""), 0.5, 1e-9);
+    EXPECT_NEAR(fitted(" weight 3"), 0.75, 1e-9);
+    EXPECT_NEAR(fitted(" weight 0.25"), 0.2, 1e-9);
+    fs::remove_all(dir);
+}
+
+TEST(MarkerStatement, AWeightThatIsNotAPositiveNumberOrDiffersBetweenAJointsTwoStatementsIsAnError) {
+    LabScript zero;
+    EXPECT_EQ(zero.run("marker LMAL on A at A_o", "marker LMAL on A at A_o weight 0"), RunStatus::script_error);
+    EXPECT_NE(zero.err.str().find("the marker 'LMAL' has weight 0; a weight multiplies the marker's squared distance"),
+              std::string::npos)
+        << zero.err.str();
+    LabScript unit;
+    EXPECT_EQ(unit.run("marker LMAL on A at A_o", "marker LMAL on A at A_o weight 2 m"), RunStatus::script_error);
+    EXPECT_NE(unit.err.str().find("weight"), std::string::npos) << unit.err.str();
+    LabScript joint;
+    EXPECT_EQ(joint.run("marker LFE on B at B_o", "marker LFE on B at B_o weight 2"), RunStatus::script_error);
+    EXPECT_NE(joint.err.str().find("the marker 'LFE' has weight 2 here but 1 on A"), std::string::npos)
+        << joint.err.str();
+    // a model read from segment angles has no fit to weigh: the transcript says the weights
+    // are not used
+    LabScript angles;
+    ASSERT_EQ(angles.run("marker LMAL on A at A_o", "marker LMAL on A at A_o weight 3"), RunStatus::ok)
+        << angles.err.str();
+    EXPECT_NE(angles.out.str().find("marker weights not used ('LMAL'): this model's coordinates come from its "
+                                    "segments' angles"),
+              std::string::npos)
+        << angles.out.str();
+}
+
 }  // namespace marker_statement_test
