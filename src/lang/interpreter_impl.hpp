@@ -278,7 +278,8 @@ struct Interpreter::Impl {
     /// statement (`simulate`), its line (0: run from the command line) and the file written
     /// (named relative to the output directory in the history's title).
     void record_history(const std::string& statement, int line, const std::string& file,
-                        const Table& table, const MotionSamples* motion);
+                        const Table& table, const MotionSamples* motion,
+                        const exmap& first_row_data = {});
     /// Keeps the coordinates a solve was given (`at`) or found (`xs`, `values`) for the
     /// report's diagrams.
     void remember_solved_configuration(const exmap& at, const std::vector<ex>& xs,

@@ -224,7 +224,20 @@ void Interpreter::Impl::run_inverse(const InverseRequest& r, Location where) {
         write_inverse_results(id, samples, r, opts, q, where,
                               marker_residuals.names.empty() ? nullptr : &marker_residuals);
     const InverseAnalysisReport& rep = results.report;
-    record_history("inverse", r.line, rep.csv, rep.loads, &samples);
+    // the plates' records at the motion's first row, for the report's diagrams drawn there: a
+    // plate out of contact there has no centre of pressure
+    exmap first_row;
+    if (plate_data && !samples.t.empty()) {
+        std::vector<double> v(plate_data->symbols().size());
+        guard(where, [&] { plate_data->calc_values(samples.t.front(), v.data()); });
+        for (std::size_t i = 0; i + 4 < v.size(); i += 5) {
+            const std::vector<ex>& s = plate_data->symbols();
+            const bool contact = v[i] != 0 || v[i + 1] != 0;
+            for (std::size_t j = 0; j < 5; ++j)
+                if (contact || (j != 2 && j != 3)) first_row[s[i + j]] = v[i + j];
+        }
+    }
+    record_history("inverse", r.line, rep.csv, rep.loads, &samples, first_row);
     const Table& t = rep.loads;
     std::ostringstream out;
     out << "inverse dynamics over " << span << ", t = " << transcript.number(t.columns[0].front())

@@ -14,7 +14,7 @@ namespace alembert::lang {
 
 void Interpreter::Impl::record_history(const std::string& statement, int line,
                                        const std::string& file, const Table& table,
-                                       const MotionSamples* motion) {
+                                       const MotionSamples* motion, const exmap& first_row_data) {
     ReportHistory h;
     // the file as the script named it: relative to the output directory when inside it
     namespace fs = std::filesystem;
@@ -25,6 +25,7 @@ void Interpreter::Impl::record_history(const std::string& statement, int line,
     h.title = report_history_title(statement, line, h.file);
     h.table = table;
     h.coordinates = default_coordinates();
+    h.first_row_data = first_row_data;
     if (motion && motion->t.size() == table.row_count()) {
         // the samples of the motion, prescribed or read from a file, each coordinate by name
         for (const TimeVariable& q : h.coordinates) {
@@ -191,6 +192,8 @@ std::string Interpreter::Impl::write_report_to(const std::string& dir, const exm
         for (std::size_t k = 0; k < motion->coordinates.size(); ++k)
             if (!motion->motion[k].empty())
                 c.configuration[motion->coordinates[k].symbol()] = motion->motion[k].front();
+        // the data the run read at that row (a plate's force and centre of pressure)
+        for (const auto& [x, v] : motion->first_row_data) c.configuration[x] = v;
         c.configuration_source = "the first sample of " + motion->title;
     }
     if (!configuration.empty()) {
@@ -199,6 +202,9 @@ std::string Interpreter::Impl::write_report_to(const std::string& dir, const exm
                                      [&](const TimeVariable& q) { return configuration.count(q.symbol()); });
         c.configuration_source = all ? "given with report at"
                                      : "given with report at, the other coordinates from " + c.configuration_source;
+        // drawn at no row of the motion: its data (a plate's) are not those of this configuration
+        if (all && !solved_last && motion != histories.end())
+            for (const auto& [x, v] : motion->first_row_data) c.configuration.erase(x);
     }
     close_loops(sys, c.coordinates, configuration, c.configuration, c.configuration_source);
     for (const auto& [x, v] : configuration) c.configuration[x] = v;

@@ -4,6 +4,7 @@
 // weights labelled with their masses, and the angles of a planar model's rotations.
 #include <algorithm>
 #include <cmath>
+#include <exception>
 #include <string>
 #include <vector>
 
@@ -83,9 +84,47 @@ bool known_load_appears(const System& sys, const Evaluation& ev, const RoadmapRo
     }
 }
 
+// a known load zero at the configuration: its vector in N with the rates (q', q'', ...) and
+// the specified quantities that are 0 there taken as 1 (the coordinates kept); empty if that
+// is zero or not finite too
+std::vector<double> positive_sense(const System& sys, const Evaluation& ev, const Vector& v) {
+    const SymbolTable& st = sys.symbols();
+    exmap values = ev.values;
+    for (auto& [x, value] : values)
+        if (st.owns(x) && (st.kind(x) == SymbolKind::specified ||
+             (st.kind(x) == SymbolKind::variable && st.derivative_order(x) > 0)) &&
+            GiNaC::is_a<GiNaC::numeric>(value) && value.is_zero())
+            value = 1;
+    const Col3 c = v.components_in(sys.newtonian());
+    std::vector<double> out(3);
+    try {
+        for (int k = 0; k < 3; ++k) out[k] = st.evaluate(c[k], values);
+    } catch (const std::exception&) {
+        return {};
+    }
+    const double n = norm3(out);
+    return std::isfinite(n) && n > 0 ? out : std::vector<double>{};
+}
+
 }  // namespace
 
 namespace report_detail {
+
+bool Evaluation::places(const Point* p) const {
+    auto it = places_.find(p);
+    if (it != places_.end()) return it->second;
+    bool placed = true;
+    try {
+        const SymbolTable& st = sys.symbols();
+        const Col3 c = p->pos_from(sys.origin()).components_in(sys.newtonian());
+        for (int k = 0; k < 3; ++k)
+            for (const ex& s : symbols_of(c[k]))
+                if (st.owns(s) && st.kind(s) == SymbolKind::specified && !given_.count(s)) placed = false;
+    } catch (const Error&) {
+        placed = false;  // no path to the origin
+    }
+    return places_.emplace(p, placed).first->second;
+}
 
 WeightLabel weight_label(const System& sys, const Evaluation& ev, const Body& b) {
     // the gravity constant: gravity's one component in N (its sign made positive at the
@@ -142,9 +181,11 @@ std::vector<DiagramLoad> diagram_loads(const System& sys, const Evaluation& ev,
         d.label = label;
         d.at = torque ? torque_point(sys, l.on) : l.point;
         d.on = l.on;
+        d.placed = ev.places(d.at);
         d.vector = ev.load_vector(l);
         const std::vector<ex> measures = unknown_measures(sys, l.vector);
         d.unknown = !measures.empty();
+        if (!d.unknown && !(norm3(d.vector) > 0)) d.sense = positive_sense(sys, ev, l.vector);
         d.role = d.unknown ? unknown_role(measures)
                  : known_load_appears(sys, ev, r, u, torque, d.at, l.vector, d.vector)
                      ? LoadRole::known
@@ -215,8 +256,9 @@ std::vector<const Point*> diagram_points(const System& sys, const RoadmapRow& r,
         if (!is_joint_point(sys, *p, &from)) continue;
         if (in_body_set(r.system, p->owner()) || in_body_set(r.system, from)) add(p);
     }
-    // where the loads act (the mass centres among them)
-    for (const DiagramLoad& l : loads) add(l.at);
+    // where the loads act (the mass centres among them), where the configuration places it
+    for (const DiagramLoad& l : loads)
+        if (l.placed) add(l.at);
     return out;
 }
 

@@ -340,7 +340,12 @@ std::string tikz_diagram(const System& sys, const Evaluation& ev,
         }
     const std::vector<DiagramLoad> loads = diagram_loads(sys, ev, r);
     bool own_load = false, drops = false, held = false;
+    std::string zero, unplaced;  // the loads zero here; those at a point not placed here
     for (const DiagramLoad& l : loads) {
+        if (!l.placed) {
+            unplaced += (unplaced.empty() ? "" : ", ") + tex_text(l.label) + " at " + tex_text(l.at->name());
+            continue;
+        }
         auto it = at.find(l.at);
         if (it == at.end()) continue;
         const std::array<double, 2> p = cmxy(it->second);
@@ -356,7 +361,11 @@ std::string tikz_diagram(const System& sys, const Evaluation& ev,
         own_load = own_load || l.role == LoadRole::own;
         drops = drops || l.role == LoadRole::drops_out;
         held = held || l.role == LoadRole::held;
-        const std::string label = l.tex.empty() ? tex_text(l.label) : "$" + l.tex + "$";
+        // a known load zero here (a damper at rest): along its positive sense, labelled zero
+        const std::vector<double>& v = l.sense.empty() ? l.vector : l.sense;
+        if (!l.sense.empty()) zero += (zero.empty() ? "" : ", ") + tex_text(l.label);
+        const std::string label = (l.tex.empty() ? tex_text(l.label) : "$" + l.tex + "$") +
+                                  (l.sense.empty() ? "" : " $= 0$");
         const std::string text_style =
             colour + (l.role == LoadRole::own ? ", font=\\scriptsize\\bfseries" : "") +
             (l.role == LoadRole::drops_out ? ", text opacity=0.7" : "");
@@ -380,7 +389,7 @@ std::string tikz_diagram(const System& sys, const Evaluation& ev,
             prefer = {1, -1};
         } else if (l.kind == "torque" && planar) {
             // an arc about the point, counterclockwise for a +z torque
-            const bool ccw = l.vector.size() < 3 || l.vector[2] >= 0;
+            const bool ccw = v.size() < 3 || v[2] >= 0;
             const double a0 = ccw ? -1.0 : 2.6, a1 = ccw ? 2.6 : -1.0;
             t += "\\draw[->, " + style + "] " +
                  pt({p[0] + 0.45 * std::cos(a0), p[1] + 0.45 * std::sin(a0)}) +
@@ -388,7 +397,7 @@ std::string tikz_diagram(const System& sys, const Evaluation& ev,
                  ", end angle=" + (ccw ? "149" : "-57") + ", radius=0.45];\n";
             tip(p[0] + 0.45 * std::cos(a1), p[1] + 0.45 * std::sin(a1));
             anchor = {p[0] + 0.32, p[1] + 0.32};
-        } else if (unit(l.vector, &ux, &uy)) {
+        } else if (unit(v, &ux, &uy)) {
             const std::array<double, 2> end{p[0] + arrow * ux, p[1] + arrow * uy};
             if (l.kind == "gravity") {
                 t += "\\draw[->, " + style + "] " + pt(p) + " -- ++(" + cm(arrow * ux) + "," +
@@ -472,6 +481,9 @@ std::string tikz_diagram(const System& sys, const Evaluation& ev,
                             ? "through $O$, or their moment about $O$ square to $\\hat u$"
                             : "square to $\\hat u$") +
                        ").";
+        if (!zero.empty()) *legend += " Zero at this configuration, drawn in its positive sense: " + zero + ".";
+        if (!unplaced.empty())
+            *legend += " Not drawn, acting where this configuration does not say: " + unplaced + ".";
     }
     return t;
 }
@@ -582,7 +594,7 @@ std::string report_detail::render_latex(const ReportContent& c,
              tex_text(configuration_words(c)) + ".\n\n";
     }
     Evaluation ev(sys, c.configuration);
-    const std::vector<const Point*> placed = placed_points(sys);
+    const std::vector<const Point*> placed = placed_points(sys, &ev);
     bool planar = true;
     (void)geometry_json(sys, ev, placed, &planar);
     int figure = 0;

@@ -83,8 +83,12 @@ struct Evaluation {
         for (SymbolKind k : {SymbolKind::variable, SymbolKind::specified})
             for (const ex& x : st.symbols(k)) values[x] = 0;
         for (const ex& x : st.symbols(SymbolKind::unknown)) values[x] = 1;
-        for (const auto& [x, v] : configuration) values[x] = v;
+        for (const auto& [x, v] : configuration) values[x] = v, given_.insert(x);
     }
+    /// Whether the configuration places `p`: its position holds no specified quantity the
+    /// configuration leaves out (a force plate's centre of pressure, which its record gives
+    /// only where the diagrams are drawn at a row of the motion it was read with). Once per point.
+    bool places(const Point* p) const;
     /// The value of `e`, or NaN if it needs what is not known.
     double at(const ex& e) const {
         try {
@@ -123,12 +127,15 @@ struct Evaluation {
     }
 
 private:
+    GiNaC::exset given_;
+    mutable std::map<const Point*, bool> places_;
     mutable std::map<const Point*, std::vector<double>> positions_;
     mutable std::map<const Load*, std::vector<double>> loads_;
 };
 
-/// The model's points that have a path to the origin (those a drawing can place).
-std::vector<const Point*> placed_points(const System& sys);
+/// The model's points that have a path to the origin (those a drawing can place); with `ev`,
+/// those of them its configuration places (Evaluation::places).
+std::vector<const Point*> placed_points(const System& sys, const Evaluation* ev = nullptr);
 
 /// "qA = 60 deg, qB = -41.6 deg (the configuration solve found at line 31)"
 std::string configuration_words(const ReportContent& c);
@@ -163,6 +170,14 @@ struct DiagramLoad {
     const Point* at = nullptr;
     const Body* on = nullptr;      ///< the body of S it acts on
     std::vector<double> vector{};  ///< in N at the configuration (empty for a joint)
+    /// A known load that is zero at the configuration (a damper at rest, a push of 0 N there):
+    /// its positive sense in N, with its rates and specified quantities taken as 1, to draw
+    /// its arrow along at its point (labelled as zero there); empty otherwise, or if that is
+    /// zero too
+    std::vector<double> sense{};
+    /// False for a load at a point the configuration does not place (Evaluation::places): it
+    /// is not drawn, and the diagram's legend says so
+    bool placed = true;
     bool unknown = false;
     LoadRole role = LoadRole::known;
 };

@@ -77,12 +77,12 @@ std::string ground_or(const System& sys, const Body* b) {
 
 namespace report_detail {
 
-std::vector<const Point*> placed_points(const System& sys) {
+std::vector<const Point*> placed_points(const System& sys, const Evaluation* ev) {
     std::vector<const Point*> out;
     for (const Point* p : sys.points()) {
         try {
             (void)p->pos_from(sys.origin());
-            out.push_back(p);
+            if (!ev || ev->places(p)) out.push_back(p);
         } catch (const Error&) {
             // a point with no path to the origin has no place in a drawing
         }
@@ -294,6 +294,8 @@ std::string diagram_json(const System& sys, const Evaluation& ev, const RoadmapR
         o.add("on", str(l.on ? l.on->name() : ""));
         o.add("vector", num_arr(l.vector)).add("unknown", l.unknown ? "true" : "false");
         o.add("role", str(role_word(l.role)));
+        if (!l.sense.empty()) o.add("sense", num_arr(l.sense));
+        if (!l.placed) o.add("placed", "false");
         loads.push_back(o.done());
     }
     for (const Point* p : diagram_points(sys, r, drawn)) points.push_back(p->name());
@@ -772,7 +774,7 @@ std::string report_detail::render_json(const ReportContent& c,
             "report");
     const System& sys = *c.system;
     Evaluation ev(sys, c.configuration);
-    std::vector<const Point*> placed = placed_points(sys);
+    std::vector<const Point*> placed = placed_points(sys, &ev);
     bool planar = true;
     std::string geometry = geometry_json(sys, ev, placed, &planar);
     std::vector<std::string> rows, histories, config;

@@ -6,7 +6,12 @@ row with one arrow group per load on S, every equation typeset by KaTeX and no w
 column on the screen at 1280 px and in print, plots, animation), then a screenshot is taken and
 checked not to be blank.
 
-usage: browser_test.py ALEMBERT_CLI SOURCE_DIR WORK_DIR     (exit 77: Chromium missing)"""
+Then every example's report (examples/*/ with a model script, report_examples.py), checked
+alike. PART: "main" (the sit-to-stand page, the options, the spatial, 3D and motion-file
+scripts), or examples by name (bicycle,kuka_iiwa); all of them when left out. CMake runs
+the parts as ctest entries report.browser.<part> that ctest -j balances.
+
+usage: browser_test.py ALEMBERT_CLI SOURCE_DIR WORK_DIR [PART]     (exit 77: Chromium missing)"""
 import html.parser
 import math
 import os
@@ -18,7 +23,7 @@ import sys
 import tempfile
 import zlib
 
-from report_examples import FEATURES
+from report_examples import example_models
 
 failures = []
 # headless Chromium draws WebGL (the 3D view) in software; saying so keeps its console quiet
@@ -38,6 +43,22 @@ EXERCISE_TEACHING = ["derivations are closed until opened", "each derivation ope
 EXERCISE_PLOTS = ["the cursor reads values", "dragging zooms into a time range", "show all zooms out again"]
 EXERCISE_MOTION = ["the time slider moves the model", "play starts the animation", "the speed control offers",
                    "play at 1\u00d7", "play at 0.5\u00d7", "play at 2\u00d7", "play at 0.25\u00d7"]
+
+
+SPENT = {}  # wall time per kind of run: [runs, seconds]
+
+
+def run(cmd, **kw):
+    """subprocess.run, its wall time added to SPENT under the program run (alembert, Chromium)."""
+    import time
+    start = time.monotonic()
+    try:
+        return subprocess.run(cmd, **kw)
+    finally:
+        kind = "Chromium" if cmd[1:2] == ["--headless"] else "alembert"
+        spent = SPENT.setdefault(kind, [0, 0.0])
+        spent[0] += 1
+        spent[1] += time.monotonic() - start
 
 
 def check(ok, what):
@@ -66,6 +87,8 @@ class Dom(html.parser.HTMLParser):
         self.gravity_shafts = []  # per gravity arrow in a diagram: (dx, dy) of its shaft, page axes
         self.equations = 0       # .equation boxes
         self.folded = 0          # long equations folded, typeset when opened
+        self.shown = 0           # .equation boxes outside the derivations (rows', equation sets')
+        self.folded_shown = 0    # folded equations outside the derivations
         self.katex = 0           # .katex inside them
         self.raw = 0             # .tex-raw boxes (TeX left untypeset)
         self.text_backslashes = 0  # backslashes in visible text (TeX not rendered)
@@ -137,8 +160,10 @@ class Dom(html.parser.HTMLParser):
             self.gravity_shafts.append((float(a["x2"]) - float(a["x1"]), float(a["y2"]) - float(a["y1"])))
         if "equation" in c:
             self.equations += 1
+            self.shown += not self.inside("details", "derivation")
         if tag == "details" and "equation-folded" in c:
             self.folded += 1
+            self.folded_shown += not self.inside("details", "derivation")
         if "katex" in c and self.inside(cls="equation"):
             self.katex += 1
         if "tex-raw" in c:
@@ -314,9 +339,9 @@ def open_page(browser, url, extra=()):
     """Chromium's DOM of the page after its scripts, and its console lines."""
     profile = tempfile.mkdtemp(prefix="alembert-chromium-")
     try:
-        r = subprocess.run([browser, "--headless", "--disable-gpu", "--no-sandbox", "--user-data-dir=" + profile,
-                            "--hide-scrollbars", "--enable-logging=stderr", "--v=0", "--virtual-time-budget=3000"]
-                           + WEBGL + list(extra) + ["--dump-dom", url], capture_output=True, text=True, timeout=120)
+        r = run([browser, "--headless", "--disable-gpu", "--no-sandbox", "--user-data-dir=" + profile,
+                 "--hide-scrollbars", "--enable-logging=stderr", "--v=0", "--virtual-time-budget=3000"]
+                + WEBGL + list(extra) + ["--dump-dom", url], capture_output=True, text=True, timeout=120)
     finally:
         shutil.rmtree(profile, ignore_errors=True)
     dom = Dom()
@@ -345,7 +370,7 @@ def three_d(cli, source, work, browser):
         shutil.rmtree(out, ignore_errors=True)
         os.makedirs(out)
         script = os.path.join(source, "tests", "report", name + ".alb")
-        r = subprocess.run([cli, "run", "-q", script, "--out", out], capture_output=True, text=True, timeout=300)
+        r = run([cli, "run", "-q", script, "--out", out], capture_output=True, text=True, timeout=300)
         check(r.returncode == 0, "%s: the script writes its report (stderr: %s)" % (name, r.stderr.strip()[:300]))
         index = os.path.join(out, "index.html")
         if r.returncode != 0:
@@ -392,7 +417,7 @@ def motion_from_file(cli, source, work, browser):
     shutil.rmtree(out, ignore_errors=True)
     os.makedirs(out)
     script = os.path.join(source, "tests", "report", name + ".alb")
-    r = subprocess.run([cli, "run", "-q", script, "--out", out], capture_output=True, text=True, timeout=300)
+    r = run([cli, "run", "-q", script, "--out", out], capture_output=True, text=True, timeout=300)
     check(r.returncode == 0, "%s: the script writes its report (stderr: %s)" % (name, r.stderr.strip()[:300]))
     index = os.path.join(out, "index.html")
     if r.returncode != 0 or not os.path.isfile(index):
@@ -514,6 +539,34 @@ window.addEventListener("load", function () {
 </script>"""
 
 
+MEASURED = {}  # (page, media, width): the DOM of the page measured (measured_page)
+
+
+def measured_page(browser, index, media, width):
+    """The DOM of a copy of the page (measure.html) with MEASURE and FBD_MEASURE appended, as
+    Chromium lays it out `width` px wide for `media` (screen, print): each equation box's
+    width against its column's and each free-body diagram as drawn, from one start of
+    Chromium (each start costs seconds); loaded once per page, media and width."""
+    key = (os.path.abspath(index), media, width)
+    if key not in MEASURED:
+        with open(index, encoding="utf-8") as f:
+            page = f.read()
+        at = page.rindex("</body>")
+        measure = os.path.join(os.path.dirname(index), "measure.html")
+        with open(measure, "w", encoding="utf-8") as f:
+            f.write(page[:at] + MEASURE + FBD_MEASURE + page[at:])
+        profile = tempfile.mkdtemp(prefix="alembert-chromium-")
+        try:
+            r = run([browser, "--headless", "--disable-gpu", "--no-sandbox", "--user-data-dir=" + profile,
+                     "--hide-scrollbars", "--virtual-time-budget=10000", "--window-size=%d,1600" % width] + WEBGL +
+                    ["--dump-dom", "file://" + os.path.abspath(measure) + "#" + media],
+                    capture_output=True, text=True, timeout=300)
+        finally:
+            shutil.rmtree(profile, ignore_errors=True)
+        MEASURED[key] = r.stdout
+    return MEASURED[key]
+
+
 def segment_meets_box(a, b, box):
     """Whether the segment a-b passes through the box [x, y, w, h] (sampled finely)."""
     for k in range(201):
@@ -536,20 +589,7 @@ def diagram_checks(browser, index, who):
     import html
     import json
     data = page_data(index)
-    with open(index, encoding="utf-8") as f:
-        page = f.read()
-    at = page.rindex("</body>")
-    measure = os.path.join(os.path.dirname(index), "fbd_measure.html")
-    with open(measure, "w", encoding="utf-8") as f:
-        f.write(page[:at] + FBD_MEASURE + page[at:])
-    profile = tempfile.mkdtemp(prefix="alembert-chromium-")
-    try:
-        r = subprocess.run([browser, "--headless", "--disable-gpu", "--no-sandbox", "--user-data-dir=" + profile,
-                            "--hide-scrollbars", "--virtual-time-budget=10000", "--window-size=1280,1600"] + WEBGL +
-                           ["--dump-dom", "file://" + os.path.abspath(measure)], capture_output=True, text=True, timeout=300)
-    finally:
-        shutil.rmtree(profile, ignore_errors=True)
-    m = re.search(r'<pre id="fbd-measure">(.*?)</pre>', r.stdout, re.S)
+    m = re.search(r'<pre id="fbd-measure">(.*?)</pre>', measured_page(browser, index, "screen", 1280), re.S)
     check(m is not None, "%s: the diagrams were measured" % who)
     if not m:
         return
@@ -566,7 +606,8 @@ def diagram_checks(browser, index, who):
     load_vector = {l["label"]: l["vector"] for l in data["model"]["loads"]}
     bodies = {b["name"]: b for b in data["model"]["bodies"]}
     unknowns = set(u["name"] for u in data["model"]["unknowns"])
-    bad = {"on": [], "at": [], "overlap": [], "direction": [], "named": [], "weight": [], "own": [], "drops": []}
+    bad = {"on": [], "at": [], "overlap": [], "direction": [], "named": [], "weight": [], "own": [], "drops": [],
+           "zero": []}
     for row, d in zip(rows, drawn):
         dia, S, var = row["diagram"], set(row["diagram"]["system"]), row["variable"]
         vb = d["view"]
@@ -664,7 +705,17 @@ def diagram_checks(browser, index, who):
         # dashed exactly where the load's part in the equation is zero
         U = dia["direction"]
         O = place.get(dia["about"]) if row["motion"] == "rotate" else None
-        for load, spec in zip(d["loads"], dia["loads"]):
+        # a load at a point the configuration does not place is not drawn, and the legend says so
+        placed = [l for l in dia["loads"] if l.get("placed", True)]
+        if len(placed) < len(dia["loads"]) and "unplaced" not in d["legend"]:
+            bad["at"].append("%s: loads left undrawn and the legend silent" % var)
+        # a known load zero here: drawn along its positive sense, labelled as zero, said in the legend
+        texts_drawn = [l["text"] for l in d["labels"]]
+        for spec in placed:
+            if spec["kind"] in ("force", "torque") and not spec["unknown"] and not any(spec["vector"]):
+                if (spec["label"] + " = 0") not in texts_drawn or "zero" not in d["legend"]:
+                    bad["zero"].append("%s: %s, zero here, not labelled so (%s)" % (var, spec["label"], d["legend"]))
+        for load, spec in zip(d["loads"], placed):
             dashed = load["dash"] not in ("", "none")
             if (load["role"] == "drops") != dashed or (dashed and "drops" not in d["legend"]):
                 bad["drops"].append("%s: %s role %s, dash %r" % (var, load["label"], load["role"], load["dash"]))
@@ -693,7 +744,8 @@ def diagram_checks(browser, index, who):
                        ("named", "S's points, O and S's angles named"),
                        ("weight", "each weight labelled with its mass times g"),
                        ("own", "the row's own unknown drawn apart"),
-                       ("drops", "loads the equation does not hold dashed, others not")):
+                       ("drops", "loads the equation does not hold dashed, others not"),
+                       ("zero", "a known load zero at the configuration labelled = 0, the legend saying so")):
         check(not bad[what], "%s: %s (%d diagrams; %s)" % (who, text, len(drawn), bad[what][:3]))
 
 
@@ -706,23 +758,9 @@ def equation_widths(browser, index, who, print_pdf=False, widths=WIDTHS):
     within its margins), where the row's diagram and equation stack. With `print_pdf`, the page
     printed to PDF by Chromium too (minutes for the arm's 200 pages, so for one page only)."""
     rows = len(page_data(index)["roadmap"])
-    with open(index, encoding="utf-8") as f:
-        page = f.read()
-    at = page.rindex("</body>")
-    measure = os.path.join(os.path.dirname(index), "measure.html")
-    with open(measure, "w", encoding="utf-8") as f:
-        f.write(page[:at] + MEASURE + page[at:])
-    url = "file://" + os.path.abspath(measure)
+    url = "file://" + os.path.abspath(os.path.join(os.path.dirname(index), "measure.html"))
     for media, width in widths:
-        profile = tempfile.mkdtemp(prefix="alembert-chromium-")
-        try:
-            r = subprocess.run([browser, "--headless", "--disable-gpu", "--no-sandbox", "--user-data-dir=" + profile,
-                                "--hide-scrollbars", "--virtual-time-budget=10000",
-                                "--window-size=%d,1600" % width] + WEBGL + ["--dump-dom", url + "#" + media],
-                               capture_output=True, text=True, timeout=300)
-        finally:
-            shutil.rmtree(profile, ignore_errors=True)
-        m = re.search(r'data-measured="(\d+)\|([^|"]*)\|([a-z]*)"', r.stdout)
+        m = re.search(r'data-measured="(\d+)\|([^|"]*)\|([a-z]*)"', measured_page(browser, index, media, width))
         check(m is not None and int(m.group(1)) >= rows and not m.group(2),
               "%s (%s, %d px): no equation wider than its column (%s)"
               % (who, media, width, m.group(0)[:200] if m else "not measured"))
@@ -735,9 +773,9 @@ def equation_widths(browser, index, who, print_pdf=False, widths=WIDTHS):
     pdf = os.path.join(os.path.dirname(index), "printed.pdf")
     profile = tempfile.mkdtemp(prefix="alembert-chromium-")
     try:
-        subprocess.run([browser, "--headless", "--disable-gpu", "--no-sandbox", "--user-data-dir=" + profile,
-                        "--virtual-time-budget=10000", "--no-pdf-header-footer", "--print-to-pdf=" + pdf, url] + WEBGL,
-                       capture_output=True, text=True, timeout=300)
+        run([browser, "--headless", "--disable-gpu", "--no-sandbox", "--user-data-dir=" + profile,
+             "--virtual-time-budget=10000", "--no-pdf-header-footer", "--print-to-pdf=" + pdf, url] + WEBGL,
+            capture_output=True, text=True, timeout=300)
     finally:
         shutil.rmtree(profile, ignore_errors=True)
     pages = 0
@@ -747,22 +785,19 @@ def equation_widths(browser, index, who, print_pdf=False, widths=WIDTHS):
     check(pages > 0, "%s: printed to PDF (%d pages)" % (who, pages))
 
 
-def examples(cli, source, work, browser):
-    """One example's report per feature (report_examples.FEATURES; main() opens the
+def examples(cli, source, work, browser, names):
+    """The reports of the examples `names` (report_examples.example_models; main_page opens the
     sit-to-stand page): written, drawn without errors, one free-body diagram per road-map row
     with an arrow per load on S, every equation typeset, plots and animation where the script
-    computed histories, a screenshot that is not blank."""
+    computed histories; a planar and a spatial example's screenshot not blank."""
     import time
-    folder = os.path.join(source, "examples")
-    for name in sorted(n for n in FEATURES if n != "sit_to_stand"):
-        model = os.path.join(folder, name, "model.alb")
-        check(os.path.isfile(model), "%s (%s): the example is there" % (name, FEATURES[name]))
-        if not os.path.isfile(model):
+    for name, model in example_models(source):
+        if name not in names:
             continue
         out = os.path.join(work, "examples", name)
         shutil.rmtree(out, ignore_errors=True)
         start = time.monotonic()
-        r = subprocess.run([cli, "report", model, "--out", out], capture_output=True, text=True, timeout=600)
+        r = run([cli, "report", model, "--out", out], capture_output=True, text=True, timeout=600)
         seconds = time.monotonic() - start
         check(r.returncode == 0, "%s: alembert report exits 0 in %.2f s (stderr: %s)" % (name, seconds, r.stderr.strip()[:300]))
         index = os.path.join(out, "index.html")
@@ -780,15 +815,20 @@ def examples(cli, source, work, browser):
         check(dom.rows == rows and len(drawn) == with_diagram and dom.constraint_rows == rows - with_diagram,
               "%s: one free-body diagram per road-map row (%d rows, %d diagrams, %d constraint rows)"
               % (name, rows, len(drawn), dom.constraint_rows))
-        expected = [len(row["diagram"]["loads"]) for row in data["roadmap"] if row["diagram"]]
+        expected = [len([l for l in row["diagram"]["loads"] if l.get("placed", True)])
+                    for row in data["roadmap"] if row["diagram"]]
         check([f[1] for f in drawn] == expected and all(n > 0 for n in expected),
               "%s: an arrow per load on S %s" % (name, [f[1] for f in drawn]))
-        # equations longer than the viewer's LONG_TEX are folded, to be typeset when opened
-        long_rows = sum(1 for row in data["roadmap"] if len(row["equation"]) > 12000)
-        check(dom.equations + dom.folded >= rows and dom.folded == long_rows and dom.katex == dom.equations
+        # each row's equation and each equation a kane or lagrange formed (a model may have
+        # either alone: the bicycle's Kane equations with no road-map) typeset, or folded when
+        # longer than the viewer's LONG_TEX, to be typeset when opened
+        shown = [row["equation"] for row in data["roadmap"]] + [e for s in data["equation_sets"] for e in s["equations"]]
+        long_ones = sum(1 for e in shown if len(e) > 12000)
+        check(dom.shown == len(shown) - long_ones and dom.folded_shown == long_ones and dom.katex == dom.equations
               and dom.raw == 0 and dom.text_backslashes == 0,
-              "%s: every equation typeset by KaTeX (%d of %d) or folded when long (%d of %d)"
-              % (name, dom.katex, dom.equations, dom.folded, long_rows))
+              "%s: every equation of the rows and equation sets typeset by KaTeX (%d of %d) or folded when long "
+              "(%d of %d; %d typeset in all)" % (name, dom.shown, len(shown) - long_ones, dom.folded_shown, long_ones,
+                                                 dom.katex))
         # the intermediates are on the page once, each row naming those it uses
         check(all(0 <= k < len(data["intermediates"]) for row in data["roadmap"] for k in row["intermediates"]),
               "%s: the rows' intermediates are in the page's table (%d)" % (name, len(data["intermediates"])))
@@ -825,6 +865,9 @@ def examples(cli, source, work, browser):
             coupler, rocker = math.dist(at["B_o"], at["B_tip"]), math.dist(at["C_o"], at["C_tip"])
             check(gap <= 1e-5 and abs(coupler - 1.2) <= 1e-5 and abs(rocker - 0.8) <= 1e-5,
                   "four_bar_linkage: drawn closed (gap %.3g m, coupler %.6g m, rocker %.6g m)" % (gap, coupler, rocker))
+        if name == "sit_to_stand_lab":
+            chair_by_hand(source, data)
+            chair_unplaced(cli, source, work, browser)
         check_plots(dom, data, name, name)
         # the controls worked: the plots' cursor and zoom, the animation's slider, play and speed
         want = (EXERCISE_PLOTS if data["histories"] else []) + (EXERCISE_MOTION if data["animation"] else [])
@@ -848,15 +891,72 @@ def examples(cli, source, work, browser):
         profile = tempfile.mkdtemp(prefix="alembert-chromium-")
         shot = os.path.join(out, "screenshot.png")
         try:
-            subprocess.run([browser, "--headless", "--disable-gpu", "--no-sandbox", "--user-data-dir=" + profile,
-                            "--hide-scrollbars", "--virtual-time-budget=3000", "--window-size=1280,1600",
-                            "--screenshot=" + shot, url] + WEBGL, capture_output=True, text=True, timeout=120)
+            run([browser, "--headless", "--disable-gpu", "--no-sandbox", "--user-data-dir=" + profile,
+                 "--hide-scrollbars", "--virtual-time-budget=3000", "--window-size=1280,1600",
+                 "--screenshot=" + shot, url] + WEBGL, capture_output=True, text=True, timeout=120)
         finally:
             shutil.rmtree(profile, ignore_errors=True)
         if os.path.isfile(shot):
             not_blank(shot, name + ": screenshot")
         else:
             check(False, "%s: a screenshot was taken" % name)
+
+
+def chair_by_hand(source, data):
+    """The lab sit-to-stand's chair plate where its record puts it at the motion's first row,
+    which the diagrams are drawn at: its force (rise.mot's 1_ground_force at the first time)
+    and its centre of pressure from the model's N_o, the ankle marker LMAL (rise.trc, in mm;
+    the plates' CoP are taken from the lab's origin to N_o)."""
+    lab = os.path.join(source, "examples", "sit_to_stand", "lab")
+    with open(os.path.join(lab, "rise.mot")) as f:
+        lines = f.read().split("\n")
+    head = lines.index("endheader") + 1
+    names, first = lines[head].split("\t"), [float(v) for v in lines[head + 1].split("\t")]
+    record = dict(zip(names, first))
+    with open(os.path.join(lab, "rise.trc")) as f:
+        frames = [l.split("\t") for l in f.read().split("\n")[5:] if l.strip()]
+    lmal = [(float(r[2]) / 1000, float(r[3]) / 1000) for r in frames]
+    origin = (sum(h for h, _ in lmal) / len(lmal), sum(v for _, v in lmal) / len(lmal))
+    want = (record["1_ground_force_px"] - origin[0], record["1_ground_force_py"] - origin[1])
+    place = {p["name"]: p["at"] for p in data["geometry"]["points"]}
+    at = place.get("chair_CoP")
+    check(at is not None and math.dist(at[:2], want) <= 1e-6 and abs(data["animation"]["time"][0] - first[0]) <= 1e-9,
+          "sit_to_stand_lab: the chair's centre of pressure drawn where the plate's record has it at t = %g s "
+          "(%s, by hand %s)" % (first[0], at, want))
+    force = (record["1_ground_force_vx"], record["1_ground_force_vy"], 0)
+    drawn = [l for row in data["roadmap"] if row["diagram"] for l in row["diagram"]["loads"] if l["label"] == "chair"]
+    check(drawn and all(l["at"] == "chair_CoP" and l.get("placed", True) and math.dist(l["vector"], force) <= 1e-6
+                        for l in drawn),
+          "sit_to_stand_lab: the chair's force drawn at chair_CoP as the record has it, %s N (%s)"
+          % (force, [l["vector"] for l in drawn][:1]))
+
+
+def chair_unplaced(cli, source, work, browser):
+    """The lab sit-to-stand drawn at angles `report at` gives, at no row of the plate's record:
+    the chair's centre of pressure has no place there, so neither it nor the chair's force is
+    drawn, and each diagram's legend says so (diagram_checks, as drawn)."""
+    folder = os.path.abspath(os.path.join(source, "examples", "sit_to_stand"))
+    with open(os.path.join(folder, "model_lab.alb")) as f:
+        script = f.read().replace('"lab/', '"' + os.path.join(folder, "lab") + "/")
+    out = os.path.join(work, "lab_report_at")
+    shutil.rmtree(out, ignore_errors=True)
+    os.makedirs(out)
+    path = os.path.join(out, "lab_report_at.alb")
+    with open(path, "w") as f:
+        f.write(script + '\nreport at qA = -20 deg, qB = 100 deg, qC = -120 deg to "page"\n')
+    r = run([cli, "run", "-q", path, "--out", out], capture_output=True, text=True, timeout=300)
+    index = os.path.join(out, "page", "index.html")
+    check(r.returncode == 0 and os.path.isfile(index),
+          "sit_to_stand_lab at report at: the page is written (stderr: %s)" % r.stderr.strip()[:300])
+    if not os.path.isfile(index):
+        return
+    data = page_data(index)
+    chair = [l for row in data["roadmap"] if row["diagram"] for l in row["diagram"]["loads"] if l["label"] == "chair"]
+    names = [p["name"] for p in data["geometry"]["points"]]
+    check(chair and all(l.get("placed") is False for l in chair) and "chair_CoP" not in names,
+          "sit_to_stand_lab at report at: chair_CoP has no place and the chair's force is not drawn (%s)"
+          % [(l["at"], l.get("placed")) for l in chair][:1])
+    diagram_checks(browser, index, "sit_to_stand_lab at report at")
 
 
 def options(cli, source, work, browser):
@@ -867,7 +967,7 @@ def options(cli, source, work, browser):
     for args, series, checked in ((["--plot", "T_A,T_B", "--check", "--matrices"], 2, True), (["--no-plots"], 0, False)):
         out = os.path.join(work, "options" + "".join(a.strip("-").replace(",", "_") for a in args))
         shutil.rmtree(out, ignore_errors=True)
-        r = subprocess.run([cli, "report", model, "--out", out] + args, capture_output=True, text=True, timeout=600)
+        r = run([cli, "report", model, "--out", out] + args, capture_output=True, text=True, timeout=600)
         check(r.returncode == 0, "report %s exits 0 (stderr: %s)" % (" ".join(args), r.stderr.strip()[:300]))
         dom, console = open_page(browser, "file://" + os.path.abspath(os.path.join(out, "index.html")))
         check(dom.status == "ready" and not dom.errors.strip() and not console,
@@ -901,14 +1001,14 @@ def spatial(cli, source, work, browser):
     shutil.rmtree(out, ignore_errors=True)
     os.makedirs(out)
     script = os.path.join(source, "tests", "report", "spatial_double_pendulum.alb")
-    r = subprocess.run([cli, "run", "-q", script, "--out", out], capture_output=True, text=True, timeout=120)
+    r = run([cli, "run", "-q", script, "--out", out], capture_output=True, text=True, timeout=120)
     check(r.returncode == 0, "the spatial script writes its report (stderr: %s)" % r.stderr.strip())
     profile = tempfile.mkdtemp(prefix="alembert-chromium-")
     try:
-        dump = subprocess.run([browser, "--headless", "--disable-gpu", "--no-sandbox", "--user-data-dir=" + profile,
-                               "--virtual-time-budget=3000"] + WEBGL + ["--dump-dom",
-                               "file://" + os.path.abspath(os.path.join(out, "index.html"))],
-                              capture_output=True, text=True, timeout=90)
+        dump = run([browser, "--headless", "--disable-gpu", "--no-sandbox", "--user-data-dir=" + profile,
+                    "--virtual-time-budget=3000"] + WEBGL + ["--dump-dom",
+                    "file://" + os.path.abspath(os.path.join(out, "index.html"))],
+                   capture_output=True, text=True, timeout=90)
     finally:
         shutil.rmtree(profile, ignore_errors=True)
     dom = Dom()
@@ -932,30 +1032,54 @@ def spatial(cli, source, work, browser):
 
 
 def main():
-    if len(sys.argv) != 4:
+    import time
+    if len(sys.argv) not in (4, 5):
         print(__doc__)
         return 2
-    cli, source, work = sys.argv[1:]
+    cli, source, work = sys.argv[1:4]
+    part = sys.argv[4] if len(sys.argv) == 5 else "all"
+    names = [n for n, _ in example_models(source)]
+    chosen = names if part == "all" else [] if part == "main" else part.split(",")
+    if any(n not in names for n in chosen):
+        print("browser_test.py: %r: no such example (examples with a model script: %s)" % (part, ", ".join(names)))
+        return 2
     browser = chromium()
     if not browser:
         print("report.browser: skipped: Chromium is not installed (Debian: apt-get install chromium; "
               "scripts/install_deps.sh installs it)")
         return 77
+    start = time.monotonic()
+    if part in ("all", "main"):
+        main_page(cli, source, work, browser)
+        options(cli, source, work, browser)
+        spatial(cli, source, work, browser)
+        three_d(cli, source, work, browser)
+        motion_from_file(cli, source, work, browser)
+    examples(cli, source, work, browser, [n for n in chosen if n != "sit_to_stand"])
+    print("time: %.1f s in all; " % (time.monotonic() - start) +
+          "; ".join("%s %d runs %.1f s" % (k, n, t) for k, (n, t) in sorted(SPENT.items())))
+    return 1 if failures else 0
+
+
+def main_page(cli, source, work, browser):
+    """The sit-to-stand report: the same bytes run to run, nothing from the network, nine
+    diagrams with the loads on S, every equation typeset, the plots, the animation, every
+    control worked once, the count and the unit checks, a screenshot that is not blank."""
     out = os.path.join(work, "sit_to_stand")
     shutil.rmtree(out, ignore_errors=True)
     model = os.path.join(source, "examples", "sit_to_stand", "model.alb")
-    r = subprocess.run([cli, "report", model, "--out", out], capture_output=True, text=True, timeout=120)
+    r = run([cli, "report", model, "--out", out], capture_output=True, text=True, timeout=120)
     check(r.returncode == 0, "alembert report exits 0 (stderr: %s)" % r.stderr.strip())
     index = os.path.join(out, "index.html")
     check(os.path.isfile(index), "index.html written")
     if failures:
-        return 1
+        return
     with open(index, encoding="utf-8") as f:
         page = f.read()
     # same script, same bytes: nothing in the page depends on the clock or the directory
     again = os.path.join(work, "sit_to_stand_again")
     shutil.rmtree(again, ignore_errors=True)
-    subprocess.run([cli, "report", model, "--out", again], capture_output=True, text=True, timeout=120)
+    run([cli, "report", model, "--out", again], capture_output=True, text=True, timeout=120)
     with open(os.path.join(again, "index.html"), encoding="utf-8") as f:
         check(f.read() == page, "a second run writes the same bytes")
     leftovers = [n for d, _, files in os.walk(out) for n in files if n.endswith(".tmp")]
@@ -969,11 +1093,11 @@ def main():
              "--hide-scrollbars", "--enable-logging=stderr", "--v=0", "--virtual-time-budget=3000"] + WEBGL
     url = "file://" + os.path.abspath(index)
     try:
-        dump = subprocess.run(flags + ["--dump-dom", url], capture_output=True, text=True, timeout=90)
+        dump = run(flags + ["--dump-dom", url], capture_output=True, text=True, timeout=90)
         shot = os.path.join(out, "screenshot.png")
-        subprocess.run(flags + ["--window-size=1280,2200", "--screenshot=" + shot, url],
-                       capture_output=True, text=True, timeout=90)
-        worked = subprocess.run(flags + ["--dump-dom", url + "#exercise"], capture_output=True, text=True, timeout=90)
+        run(flags + ["--window-size=1280,2200", "--screenshot=" + shot, url],
+            capture_output=True, text=True, timeout=90)
+        worked = run(flags + ["--dump-dom", url + "#exercise"], capture_output=True, text=True, timeout=90)
     finally:
         shutil.rmtree(profile, ignore_errors=True)
     console = console_lines(dump.stderr)
@@ -1033,13 +1157,7 @@ def main():
         dark = sum(1 for g in gray if g < 128) / len(gray)
         check(w == 1280 and var > 100 and 0.002 < dark < 0.5,
               "the screenshot is not blank (%dx%d, variance %.0f, %.1f%% dark)" % (w, h, var, 100 * dark))
-    options(cli, source, work, browser)
-    spatial(cli, source, work, browser)
-    three_d(cli, source, work, browser)
-    motion_from_file(cli, source, work, browser)
-    examples(cli, source, work, browser)
     print("report: %s" % index)
-    return 1 if failures else 0
 
 
 if __name__ == "__main__":

@@ -1,13 +1,20 @@
 # SPDX-License-Identifier: MIT
-"""The examples whose reports the browser and LaTeX tests open: one per feature of a report.
-The other examples' pages repeat what these show, and each report runs its whole script."""
+"""The examples whose reports the browser and LaTeX tests open: every examples/<name>/ with a
+model script (model.alb, named <name>; model_<variant>.alb, named <name>_<variant>)."""
+import os
 
-FEATURES = {
-    "sit_to_stand": "a planar model: torques solved, plotted and animated (the main example)",
-    "four_bar_linkage": "a closed loop: constraint rows beside the free-body diagrams",
-    "inverted_pendulum_cart": "a sliding joint, a linearization and a simulation",
-    "kuka_iiwa": "a spatial arm, its equations past the size that is folded and abbreviated",
-    "rolling_disk": "rolling: Kane's equations with motion constraints, the 3D view",
-    "statics_double_pendulum": "statics: springs, no motion",
-    "triple_pendulum_fall": "a simulation animated, energy checked",
-}
+
+def example_models(source):
+    """[(name, path of its model script)] for every example with a model script, by name."""
+    folder = os.path.join(source, "examples")
+    found = []
+    for d in sorted(os.listdir(folder)):
+        if not os.path.isdir(os.path.join(folder, d)):
+            continue
+        for f in sorted(os.listdir(os.path.join(folder, d))):
+            m = f[:-len(".alb")] if f.endswith(".alb") else None
+            if m == "model":
+                found.append((d, os.path.join(folder, d, f)))
+            elif m and m.startswith("model_"):
+                found.append((d + "_" + m[len("model_"):], os.path.join(folder, d, f)))
+    return sorted(found)

@@ -120,6 +120,51 @@ TEST(Report, APlanarModelsAnglesAreMarkedFromTheParentsAxisToTheBodys) {
     EXPECT_NE(angles.find("\"value\":1}"), std::string::npos) << angles;
 }
 
+// A point placed by data (a force plate's centre of pressure from px, py, read with the
+// plate's record) where the configuration lacks them has no place: it is not drawn, nor is the
+// force at it, and the LaTeX caption says so; with the data given (the diagrams drawn at a row
+// of the record) both are drawn, the point where the data put it and the force as they say.
+TEST(Report, APointPlacedByDataTheConfigurationLacksIsNotDrawnNorTheLoadAtIt) {
+    SitToStand s;
+    System& sys = s.m.system;
+    const ex px = sys.symbols().add_specified("px").symbol();
+    const ex py = sys.symbols().add_specified("py").symbol();
+    const ex Fy = sys.symbols().add_specified("Fy").symbol();
+    Point& cop = sys.add_point("CoP", &sys.body("B"));
+    cop.set_pos(sys.origin(), Vector(sys.newtonian(), Col3{px, py, 0}));
+    sys.add_force(cop, Vector(sys.newtonian(), Col3{0, Fy, 0}), "plate");
+    std::string json = render_report_json(s.content);
+    EXPECT_EQ(json.find("{\"name\":\"CoP\",\"at\""), std::string::npos);
+    // the rows whose S holds B (T_A, T_B: S = {A, B, C}, {B, C}) list the plate's force undrawn
+    EXPECT_EQ(count(json, "\"label\":\"plate\",\"at\":\"CoP\""), 2u);
+    EXPECT_EQ(count(json, "\"placed\":false"), 2u);
+    const std::string tex = render_report_latex(s.content);
+    EXPECT_EQ(count(tex, "Not drawn, acting where this configuration does not say: plate at CoP."), 2u);
+    EXPECT_EQ(count(tex, "% load: plate"), 0u);
+    s.content.configuration[px] = 0.2;
+    s.content.configuration[py] = 0.3;
+    s.content.configuration[Fy] = 300;
+    json = render_report_json(s.content);
+    EXPECT_NE(json.find("{\"name\":\"CoP\",\"at\":[0.2,0.3,0]}"), std::string::npos);
+    EXPECT_EQ(count(json, "\"label\":\"plate\",\"at\":\"CoP\",\"on\":\"B\",\"vector\":[0,300,0]"), 2u);
+    EXPECT_EQ(count(json, "\"placed\":false"), 0u);
+    EXPECT_EQ(count(render_report_latex(s.content), "% load: plate"), 2u);
+}
+
+// A known load zero at the configuration (a specified push of 0 N there) is drawn along its
+// positive sense, the push taken as 1: its data carry that sense.
+TEST(Report, AKnownLoadZeroAtTheConfigurationCarriesItsPositiveSense) {
+    SitToStand s;
+    System& sys = s.m.system;
+    const ex P = sys.symbols().add_specified("P").symbol();
+    sys.add_force(sys.point("Ccm"), Vector(sys.newtonian(), Col3{-P, 0, 0}), "push");
+    const std::string json = render_report_json(s.content);
+    // every row's S (T_A: {A, B, C}, T_B: {B, C}, T_C: {C}) holds C: the push on each diagram, 0 N
+    // here, its sense -Nx
+    EXPECT_EQ(count(json, "\"label\":\"push\",\"at\":\"Ccm\",\"on\":\"C\",\"vector\":[0,0,0]"), 3u);
+    EXPECT_EQ(count(json, "\"sense\":[-1,0,0]"), 3u);
+}
+
 TEST(Report, PointsArePlacedAtTheConfiguration) {
     SitToStand s;
     s.content.configuration.clear();  // every angle 0: the chain stands straight up Ny

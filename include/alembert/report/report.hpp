@@ -26,6 +26,11 @@ struct ReportHistory {
     Table table{};                              ///< t, then the series, in their units
     std::vector<TimeVariable> coordinates{};    ///< the coordinates `motion` holds
     std::vector<std::vector<double>> motion{};  ///< motion[k][row]: coordinate k at each row (SI)
+    /// The values the run's data gave the model's data symbols at the motion's first row (SI):
+    /// a force plate's force, free moment and, where it is in contact there, centre of
+    /// pressure. Diagrams drawn at that row take them, so a plate's load is drawn where and as
+    /// its record has it.
+    exmap first_row_data{};
 };
 
 /// A history's title from what computed it: `statement` ("simulate", "inverse"), its `line`
@@ -70,7 +75,9 @@ struct ReportContent {
     std::vector<RoadmapRow> rows{};  ///< formed road-map rows
     std::vector<TimeVariable> coordinates{};
     /// Values of coordinates (and rates) at which free-body diagrams are drawn (SI); those
-    /// missing are 0. Constants take their values from the model's symbol table.
+    /// missing are 0. Constants take their values from the model's symbol table. A point
+    /// placed by a specified quantity missing here (a plate's centre of pressure out of the
+    /// data's reach) has no place at the configuration: it is not drawn, nor the loads at it.
     exmap configuration{};
     /// Where the configuration comes from, for the reader ("the configuration solve found at
     /// line 31", "the initial values"); empty: not said.

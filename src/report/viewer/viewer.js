@@ -231,8 +231,10 @@
     var L = box.size, pad = 0.45 * L, fontSize = 0.055 * L;
     var figure = el("div", {"class": "fbd-figure"}, parent);
     var view0 = [box.x - pad, box.y - pad, box.w + 2 * pad, box.h + 2 * pad];
+    // a load at a point the configuration does not place is not drawn (the legend says so)
+    var drawnLoads = dia.loads.filter(function (l) { return l.placed !== false; });
     var s = svg("svg", {"class": "fbd", viewBox: view0.join(" "), width: 340, height: 340 * view0[3] / view0[2],
-                        "data-variable": row.variable, "data-loads": dia.loads.length}, figure);
+                        "data-variable": row.variable, "data-loads": drawnLoads.length}, figure);
     var g = svg("g", {"class": "scene", "font-size": fontSize}, s);
     g.head = 0.06 * L;
     // the labels are drawn over everything else, each with a halo of the background
@@ -281,7 +283,7 @@
       label(an.name, m, [Math.cos(mid), Math.sin(mid)], "angle-name" + (own ? " own" : ""), {"data-angle": an.name});
     });
     var arrowLength = 0.28 * L;
-    dia.loads.forEach(function (load) {
+    drawnLoads.forEach(function (load) {
       var role = load.role || (load.unknown ? "held" : "known");
       var lg = svg("g", {"class": "load " + load.kind + (load.unknown ? " unknown" : " known") + " role-" + role,
                          "data-label": load.label, "data-on": load.on, "data-at": load.at, "data-role": role}, g);
@@ -292,7 +294,7 @@
       function head(q) { labels.obstacle(q[0] - 0.4 * g.head, q[1] - 0.4 * g.head, 0.8 * g.head, 0.8 * g.head); }
       if (load.kind === "torque" && !geo.planar) {
         // in space: a double-headed arrow along the torque
-        var tu = unit2(project(load.vector.length ? load.vector : [0, 0, 1]));
+        var tu = unit2(project(load.sense || (load.vector.length ? load.vector : [0, 0, 1])));
         if (tu) {
           var tip = [p[0] + tu[0] * arrowLength, p[1] + tu[1] * arrowLength];
           arrow(lg, p, tip);
@@ -303,7 +305,7 @@
         }
       } else if (load.kind === "torque") {
         // an arc about the point, counterclockwise in the plane for a +z torque
-        var z = load.vector.length ? load.vector[2] : 1, r = 0.11 * L, sense = z >= 0 ? 1 : -1;
+        var z = load.sense ? load.sense[2] : load.vector.length ? load.vector[2] : 1, r = 0.11 * L, sense = z >= 0 ? 1 : -1;
         var th0 = sense > 0 ? -2.1 : 2.6, th1 = sense > 0 ? 2.6 : -2.1, pts = [];
         for (var k = 0; k <= 24; ++k) {
           var th = th0 + (th1 - th0) * k / 24;
@@ -327,7 +329,8 @@
         anchor = [p[0] + 0.3 * arrowLength, p[1] + 0.03 * L];
         prefer = [1, 1];
       } else {
-        var u = unit2(project(load.vector));
+        // a known load zero here (a damper at rest) along its positive sense, labelled zero
+        var u = unit2(project(load.vector)) || (load.sense && unit2(project(load.sense)));
         if (u) {
           var tail = load.kind === "gravity" ? p : [p[0] - u[0] * arrowLength, p[1] - u[1] * arrowLength];
           var tipp = load.kind === "gravity" ? [p[0] + u[0] * arrowLength, p[1] + u[1] * arrowLength] : p;
@@ -339,7 +342,7 @@
           svg("circle", {cx: p[0], cy: p[1], r: 0.04 * L, "class": "shaft", fill: "none"}, lg);
         }
       }
-      label(load.label, anchor, prefer, "load-label " + load.kind + (load.unknown ? " unknown" : " known") + " role-" + role,
+      label(load.label + (load.sense ? " = 0" : ""), anchor, prefer, "load-label " + load.kind + (load.unknown ? " unknown" : " known") + " role-" + role,
             {"data-label": load.label, "data-at": load.at});
     });
     // the about point O
@@ -423,6 +426,18 @@
       var lh = el("li", {"class": "held"}, ul);
       el("span", {"class": "swatch held"}, lh);
       el("span", {}, lh, "unknown the equation also holds: " + row.additional_unknowns.join(", "));
+    }
+    var zero = dia.loads.filter(function (l) { return l.sense && l.placed !== false; });
+    if (zero.length) {
+      var lz = el("li", {"class": "zero"}, ul);
+      el("span", {}, lz, "zero at this configuration, drawn in its positive sense: " +
+         zero.map(function (l) { return l.label; }).join(", "));
+    }
+    var unplaced = dia.loads.filter(function (l) { return l.placed === false; });
+    if (unplaced.length) {
+      var lu = el("li", {"class": "unplaced"}, ul);
+      el("span", {}, lu, "not drawn, acting where this configuration does not say: " +
+         unplaced.map(function (l) { return l.label + " at " + l.at; }).join(", "));
     }
     if (roles.drops) {
       var ld = el("li", {"class": "drops"}, ul);
