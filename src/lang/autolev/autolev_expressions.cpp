@@ -406,8 +406,8 @@ std::string Translator::scalar_name(const Expr& e) {
             return en->name + primes;
         }
         case Kind::matrix:
-            fail(e.where, "the matrix '" + e.text + "' is translated only through its elements",
-                 "use " + e.text + "[i, j]; matrix arithmetic has no counterpart in the script");
+            fail(e.where, "the matrix '" + e.text + "' stands where a scalar is expected",
+                 "take an element: " + e.text + "[i, j]");
         default:
             fail(e.where, "'" + e.text + "' is " + kind_word(en->kind) + ", not a value",
                  "a vector needs '>' (A1>, V_P_N>); points and frames are arguments of V2PTS, SIMPROT, ...");

@@ -14,24 +14,21 @@ int Translator::whole_number(const Expr& e, const std::string& what) {
 }
 
 Text Translator::matrix_literal(const Expr& m) {
-    std::vector<std::string> rows;
+    std::vector<std::vector<std::string>> cells;
     const std::size_t cols = m.args.empty() ? 0 : m.args.front().args.size();
     for (const Expr& row : m.args) {
         if (row.args.size() != cols)
             fail(row.where, "the rows of the matrix have different lengths", "give every row " + std::to_string(cols) + " elements");
-        std::vector<std::string> cells;
-        for (const Expr& c : row.args) cells.push_back(scalar(c).s);
-        rows.push_back(join(cells));
+        cells.emplace_back();
+        for (const Expr& c : row.args) cells.back().push_back(scalar(c).s);
     }
-    if (rows.empty() || cols == 0) fail(m.where, "an empty matrix", "give its elements: [a, b; c, d]");
+    if (cells.empty() || cols == 0) fail(m.where, "an empty matrix", "give its elements: [a, b; c, d]");
+    const int rows = static_cast<int>(cells.size());
     // [a, b] alone is a list in the script; a row matrix is the transpose of a column
-    std::string s = "[" + join(rows, "; ") + "]";
-    if (rows.size() == 1 && cols > 1) {
-        std::string column = rows.front();
-        for (std::size_t p = column.find(", "); p != std::string::npos; p = column.find(", ", p + 2)) column.replace(p, 2, "; ");
-        s = "transpose([" + column + "])";
-    }
-    return {s, false, 5, false, static_cast<int>(rows.size()), static_cast<int>(cols)};
+    if (rows == 1 && cols > 1) return {"transpose([" + join(cells.front(), "; ") + "])", false, 5, false, 1, static_cast<int>(cols)};
+    std::vector<std::string> lines;
+    for (const auto& r : cells) lines.push_back(join(r));
+    return {"[" + join(lines, "; ") + "]", false, 5, false, rows, static_cast<int>(cols)};
 }
 
 std::optional<Text> Translator::matrix_call(const Expr& e, const std::string& f, bool& numeric) {

@@ -556,7 +556,8 @@ TEST(AutolevAcceptanceFiles, SolveOfKanesEquationsAgreesWithTheHandResults) {
 //   K^-1 = [C, -B; -B, A]/(AC - B^2), so K^-1 [1; 2] = [C - 2B; 2A - B]/(AC - B^2);
 //   ROWS(K) + COLS of a 1 by 3 = 5, K's first row's second element B, J's second column's
 //   second element A + B; [2, 1; 1, 2] has eigenvalues 1 and 3; POLYNOMIAL([1, -6, 11, -6], Q)
-//   is (Q - 1)(Q - 2)(Q - 3), whose roots add up to 6; 2x - 3 has the root 1.5.
+//   is (Q - 1)(Q - 2)(Q - 3), whose roots add up to 6; 2x - 3 has the root 1.5; the row
+//   [DET(K), ELEMENT(K, 1, 2)] has B second.
 TEST(AutolevAcceptanceFiles, MatrixOperationsAgreeWithTheHandResults) {
     AutolevTranslation t = import("matrix_operations.al");
     ASSERT_TRUE(t.ok());
@@ -565,7 +566,7 @@ TEST(AutolevAcceptanceFiles, MatrixOperationsAgreeWithTheHandResults) {
     for (int trial = 0; trial < 3; ++trial) {
         const double a = uniform(0.5, 3), b = uniform(-2, 2), c = uniform(0.5, 3), q = uniform(-3, 3);
         std::string at = "A = " + num(a) + ", B = " + num(b) + ", C = " + num(c) + ", Q = " + num(q);
-        Vec v = evaluate(t, {"JXX", "JXY", "TR", "DJ", "X1", "X2", "NR", "T12", "S22", "E1", "E2", "P", "RSUM", "R1"}, at);
+        Vec v = evaluate(t, {"JXX", "JXY", "TR", "DJ", "X1", "X2", "NR", "T12", "S22", "E1", "E2", "P", "RSUM", "R1", "RB"}, at);
         const double s = std::sin(q), co = std::cos(q), d = a * c - b * b;
         Vec expected{a + b * s * s,
                      -b * s * co,
@@ -580,7 +581,8 @@ TEST(AutolevAcceptanceFiles, MatrixOperationsAgreeWithTheHandResults) {
                      3,
                      (q - 1) * (q - 2) * (q - 3),
                      6,
-                     1.5};
+                     1.5,
+                     b};
         for (std::size_t i = 0; i < expected.size(); ++i)
             EXPECT_NEAR(v[i], expected[i], 1e-12 * std::max(1.0, std::abs(expected[i]))) << i << " at " << at;
     }

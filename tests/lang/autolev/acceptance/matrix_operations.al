@@ -27,3 +27,5 @@ RT = ROOTS(P, Q)
 RSUM = RT[1] + RT[2] + RT[3]
 RL = ROOTS([2, -3])
 R1 = RL[1]
+ROW = [DET(K), ELEMENT(K, 1, 2)]
+RB = ROW[2]
