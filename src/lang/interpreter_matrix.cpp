@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: MIT
 // Matrices as values: their arithmetic (M + N, c*M, M*N) and transpose(), inv(), det(),
-// diagmat(), element(), rows(), cols() (GiNaC matrix operations) and eig() (the roots of the
-// characteristic polynomial; Eigen finds them).
+// diagmat(), element(), rows(), cols() (GiNaC matrix operations) and eig() (Eigen's eigenvalues
+// of a matrix of numbers).
 #include <algorithm>
 #include <cmath>
 #include <complex>
@@ -270,26 +270,35 @@ Value Interpreter::Impl::eval_matrix(const Expr& e) {
             for (int c : picked) out.push_back(m.a[static_cast<std::size_t>(i * m.cols + c)]);
         return matrix_value(m.rows, count, std::move(out), m.dim);
     }
-    // eig: the eigenvalues of a matrix of numbers (constants with values), the roots of its
-    // characteristic polynomial det(s 1 - M), exact for exact entries, found numerically
+    // eig: the eigenvalues of a matrix of numbers (constants with values), by Eigen; one next
+    // to a whole number that is a root of the exact characteristic polynomial is that number
     want(1, 1, "eig(M)");
     Value m = matrix_arg(0, "eig(M)");
     square(m, "eig(M)");
     const std::string hint =
         "eig() takes a matrix of numbers: give its constants values (constant k = 2) or substitute them with replace()";
     const GiNaC::exmap given = table.constant_values();
+    std::vector<double> entries;
+    bool exact = true;
     for (ex& x : m.a) {
         ex v = guarded([&] { return table.expand_intermediates(x).subs(given, GiNaC::subs_options::no_pattern); });
         if (!GiNaC::is_a<GiNaC::numeric>(v)) v = GiNaC::numeric(guard(a[0]->location, [&] { return table.evaluate(x); }, hint));
+        exact = exact && GiNaC::ex_to<GiNaC::numeric>(v).is_rational();
+        entries.push_back(GiNaC::ex_to<GiNaC::numeric>(v).to_double());
         x = v;
     }
-    const GiNaC::symbol s("s_eig");
-    const ex p = guarded([&] { return GiNaC::expand(ginac_matrix(m).charpoly(s)); });
-    std::vector<double> k;
-    for (int i = m.rows; i >= 0; --i)
-        k.push_back(GiNaC::ex_to<GiNaC::numeric>(GiNaC::evalf(p.coeff(s, i))).to_double());
-    std::vector<double> values = real_polynomial_roots(k, a[0]->location, "eig(): the eigenvalues of " + matrix_called(*a[0]),
-                                                       "the script's eig() gives real eigenvalues only");
+    std::vector<double> values = real_eigenvalues(entries, m.rows, a[0]->location, "eig(): the eigenvalues of " + matrix_called(*a[0]),
+                                                  "the script's eig() gives real eigenvalues only");
+    if (exact && m.rows <= 12) {
+        const GiNaC::symbol s("s_eig");
+        const ex p = guarded([&] { return ginac_matrix(m).charpoly(s); });
+        for (double& x : values) {
+            const double whole = std::round(x);
+            if (std::abs(x - whole) <= 1e-9 * std::max(1.0, std::abs(x)) && std::abs(whole) < 1e15 &&
+                GiNaC::expand(p.subs(s == GiNaC::numeric(static_cast<long>(whole)))).is_zero())
+                x = whole;
+        }
+    }
     return matrix_value(m.rows, 1, number_values(values), m.dim);
 }
 

@@ -147,6 +147,8 @@ TEST(MatrixFunctions, EigIsTheEigenvaluesOfAMatrixOfNumbers) {
         expect_close(w.at("E[1, 1]", ""), mid - half, "lower eigenvalue");
         expect_close(w.at("E[2, 1]", ""), mid + half, "upper eigenvalue");
     }
+    // a triangular matrix's eigenvalues are its diagonal
+    EXPECT_EQ(r.ok("eig([1, 5, 7; 0, -2, 4; 0, 0, 3])\n"), "= [-2; 1; 3]\n");
     std::string e = r.fails("eig([0, -1; 1, 0])\n");
     EXPECT_TRUE(has(e, "test.alb:1:5: error: eig(): the eigenvalues of the matrix are complex: 0 - 1i, 0 + 1i")) << e;
     e = r.fails("constant z\neig([z, 1; 1, 0])\n");
