@@ -220,7 +220,10 @@ Value Interpreter::Impl::eval(const Expr& e) {
             Value v = eval(*e.args[0]);
             if (v.kind == Kind::scalar) v.s = -v.s;
             else if (v.kind == Kind::vector) v.v = -v.v;
-            else throw ScriptError(e.location, std::string("cannot negate ") + kind_name(v.kind), "");
+            else if (v.kind == Kind::matrix) {
+                for (ex& x : v.a) x = -x;
+                v = matrix_value(v.rows, v.cols, std::move(v.a), v.dim);
+            } else throw ScriptError(e.location, std::string("cannot negate ") + kind_name(v.kind), "");
             return v;
         }
         case Expr::Kind::sum: {
@@ -228,6 +231,15 @@ Value Interpreter::Impl::eval(const Expr& e) {
             for (std::size_t i = 0; i < e.args.size(); ++i) {
                 Value v = eval(*e.args[i]);
                 Location where = e.args[i]->location;
+                if (v.kind == Kind::matrix && i == 0) {
+                    acc = v;
+                    if (e.inverted[0]) acc = matrix_product(acc, scalar_value(-1, Dimension::none()), false, where);
+                    continue;
+                }
+                if (v.kind == Kind::matrix || acc.kind == Kind::matrix) {
+                    acc = matrix_sum(std::move(acc), v, e.inverted[i], where);
+                    continue;
+                }
                 if (v.kind != Kind::scalar && v.kind != Kind::vector)
                     throw ScriptError(where, std::string("cannot add ") + kind_name(v.kind),
                                       "index an array, e.g. E[1]");
@@ -259,7 +271,12 @@ Value Interpreter::Impl::eval(const Expr& e) {
             for (std::size_t i = 0; i < e.args.size(); ++i) {
                 Value v = eval(*e.args[i]);
                 Location where = e.args[i]->location;
-                if (v.kind != Kind::scalar && v.kind != Kind::vector)
+                if (i > 0 && (v.kind == Kind::matrix || acc.kind == Kind::matrix || acc.kind == Kind::array)) {
+                    acc = guard(where, [&] { return matrix_product(std::move(acc), v, e.inverted[i], where); });
+                    continue;
+                }
+                if (v.kind != Kind::scalar && v.kind != Kind::vector &&
+                    !(i == 0 && (v.kind == Kind::matrix || v.kind == Kind::array) && e.args.size() > 1))
                     throw ScriptError(where, std::string("cannot multiply ") + kind_name(v.kind),
                                       "index an array, e.g. E[1]");
                 if (i == 0) {
@@ -597,6 +614,31 @@ Value Interpreter::Impl::eval_call(const Expr& e) {
         System& m = model(e.location);
         return scalar_value(guarded([&] { return m.calc_potential_energy(); }), kM * kL * kL / kT / kT);
     }
+    if ((f == "mass" && a.size() != 1) || f == "cm") {
+        // mass(A, B, ...): the sum of their masses (mass(): every body's); cm(O), cm(O, A, B, ...): the position of
+        // the mass centre of every body (or of those listed) from O
+        const bool cm = f == "cm";
+        if (cm && a.empty())
+            throw ScriptError(e.location, "cm() takes the point first", "write cm(O) for every body, or cm(O, A, B)");
+        System& m = model(e.location);
+        BodySet S;
+        for (std::size_t i = cm ? 1 : 0; i < a.size(); ++i) {
+            const Word w = word(i, "a system or body");
+            for (const Body* b : body_set(w)) {
+                if (std::find(S.begin(), S.end(), b) != S.end())
+                    throw ScriptError(w.location, f + "(): '" + b->name() + "' is counted twice",
+                                      "list each body once (a system counts its bodies)");
+                S.push_back(b);
+            }
+        }
+        if (!cm) return scalar_value(guarded([&] { return m.calc_mass(a.empty() ? m.bodies() : S); }), kM);
+        Point& O = point(word(0, "a point"));
+        if (a.size() == 1) S = m.bodies();
+        if (guarded([&] { return m.calc_mass(S).is_zero(); }))
+            throw ScriptError(e.location, "cm(): the bodies' masses add up to 0, so they have no mass centre",
+                              "give them masses first: mass A = m_A");
+        return vector_value(guarded([&] { return m.calc_cm_pos(S, O); }), kL);
+    }
     if (f == "mass" || f == "momentum" || f == "kinetic" || f == "resultant") {
         want(1, f + "(S)");
         BodySet S = body_set(word(0, "a system or body"));
@@ -696,11 +738,16 @@ Value Interpreter::Impl::eval_call(const Expr& e) {
                             Dimension::open());
     }
     if (f == "coef" || f == "replace" || f == "taylor" || f == "factor" || f == "floor") return eval_algebra(e);
+    if (f == "transpose" || f == "inv" || f == "det" || f == "diagmat" || f == "element" || f == "rows" ||
+        f == "cols" || f == "eig")
+        return eval_matrix(e);
+    if (f == "polynomial" || f == "roots") return eval_polynomial(e);
     throw ScriptError(e.location, "unknown function '" + f + "'",
                       "functions: sin cos tan asin acos atan sqrt exp log abs dot cross express dt "
                       "mag unit simplify expand angvel angacc vel acc pos rotation mass momentum "
                       "angmomentum kinetic potential resultant moment massmatrix jacobian diff coef "
-                      "replace taylor factor floor");
+                      "replace taylor factor floor transpose inv det diagmat element rows cols eig "
+                      "polynomial roots cm");
 }
 
 // ---- output ----------------------------------------------------------------------------

@@ -332,6 +332,16 @@ struct Interpreter::Impl {
     Value eval_algebra(const Expr& e);
     /// The declared symbol `e` names, or an error "f(): <role> must be a declared symbol".
     ex algebra_symbol(const Expr& e, const std::string& f, const std::string& role, Dimension* dim);
+    // ---- matrices and polynomials (interpreter_matrix.cpp, interpreter_polynomial.cpp) -----
+    /// transpose(), inv(), det(), diagmat(), element(), rows(), cols() and eig().
+    Value eval_matrix(const Expr& e);
+    /// polynomial() and roots().
+    Value eval_polynomial(const Expr& e);
+    /// acc + v (acc - v when `subtract`), one of them a matrix: both matrices of one size.
+    Value matrix_sum(Value acc, const Value& v, bool subtract, Location where);
+    /// acc * v (acc / v when `divide`), one of them a matrix: a scalar times a matrix, a
+    /// matrix divided by a scalar, or the product of matrices whose sizes fit.
+    Value matrix_product(Value acc, const Value& v, bool divide, Location where);
     Value eval_name(const Expr& e);
     Value number_with_unit(const Expr& e, const ex& n);  ///< `0.1575 m`: n in SI, with its dimension
     Value eval_vector_name(const Expr& e);
@@ -383,6 +393,21 @@ Dimension residual_dimension_of(const ex& e, const std::function<Dimension(const
 
 /// The hint for a unit of the wrong dimension: the units that fit, "write it in m/s^2 ...".
 std::string unit_of_dimension_hint(const Dimension& expected);
+
+/// The eigenvalues of the n by n matrix of `entries` (row by row), ascending, by Eigen; an
+/// error at `where` saying "<what> are complex: 1 + 2i, ..." when any is not real.
+std::vector<double> real_eigenvalues(const std::vector<double>& entries, int n, Location where,
+                                     const std::string& what, const std::string& hint);
+/// The real roots, ascending, of the polynomial k[0] x^n + ... + k[n] (k[0] != 0, n >= 1): the
+/// eigenvalues of its companion matrix, each polished by Newton steps, a root next to a whole
+/// number that is a root exactly taken as that number; complex roots are an error as in
+/// real_eigenvalues.
+std::vector<double> real_polynomial_roots(const std::vector<double>& k, Location where, const std::string& what,
+                                          const std::string& hint);
+/// Numbers as values: a whole number exact (2, not 2.0), others as doubles.
+std::vector<ex> number_values(const std::vector<double>& xs);
+/// A complex number as a transcript prints it: 1.5 + 2i, -1 - 0.5i (6 significant digits).
+std::string format_complex(double re, double im);
 
 /// What a kind of name is, for messages: "a frame", "a rigid body", ...
 const char* kind_word(NameKind k);

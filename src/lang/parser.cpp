@@ -19,7 +19,8 @@ const std::set<std::string, std::less<>>& function_words() {
         "express", "dt", "mag", "unit", "simplify", "expand", "angvel", "angacc", "vel", "acc",
         "pos", "rotation", "mass", "momentum", "angmomentum", "kinetic", "potential",
         "resultant", "moment", "pi", "minimum_jerk", "massmatrix", "jacobian", "diff", "coef",
-        "replace", "taylor", "floor", "factor"};
+        "replace", "taylor", "floor", "factor", "transpose", "inv", "det", "diagmat", "element",
+        "rows", "cols", "eig", "polynomial", "roots", "cm"};
     return w;
 }
 

@@ -33,6 +33,8 @@ Text Translator::expr(const Expr& e) {
                 }
                 return {"t/" + time_unit_, false, 2, false};
             }
+            if (const Entry* m = e.vector || e.primes ? nullptr : find(e.text); m && m->kind == Kind::matrix)
+                return {m->name, false, 5, false, m->rows, m->cols};
             resolved_numeric_ = false;
             Text t = e.vector ? Text{vector_name(e), true, 5} : Text{scalar_name(e), false, 5};
             t.numeric = resolved_numeric_;
@@ -46,13 +48,11 @@ Text Translator::expr(const Expr& e) {
         case Expr::Kind::unary: {
             Text a = expr(e.args[0]);
             if (e.text == "+") return a;
-            return {"-" + paren(a, 4), a.vector, 3, a.numeric};
+            return {"-" + paren(a, 4), a.vector, 3, a.numeric, a.rows, a.cols};
         }
         case Expr::Kind::binary: return binary(e);
-        case Expr::Kind::matrix:
-        case Expr::Kind::row:
-            fail(e.where, "a matrix inside an expression is not translated",
-                 "assign it to a name (M = [...]) and use its elements M[i, j]");
+        case Expr::Kind::matrix: return matrix_literal(e);
+        case Expr::Kind::row: break;
     }
     fail(e.where, "an expression that is not translated");
 }
@@ -82,6 +82,37 @@ Text Translator::binary(const Expr& e) {
 Text Translator::combine(const Expr& e, Text a, Text b) {
     const std::string& op = e.text;
     auto wrapped = [](Text& t, bool wrap) { return wrap ? "(" + std::move(t.s) + ")" : std::move(t.s); };
+    auto size = [](const Text& t) { return std::to_string(t.rows) + " by " + std::to_string(t.cols); };
+    auto known = [](const Text& t) { return t.rows > 0; };
+    int rows = 0, cols = 0;  // the result's size, if a matrix
+    if (a.matrix() || b.matrix()) {
+        if (a.vector || b.vector)
+            fail(e.where, std::string("'") + op + "' between a matrix and a vector",
+                 "write the vector's measures as a column [X; Y; Z]");
+        if (op == "+" || op == "-") {
+            if (!a.matrix() || !b.matrix())
+                fail(e.where, std::string("'") + op + "' between a matrix and a scalar",
+                     "add matrices of the same size; DIAGMAT(n, X) is X times the identity");
+            if (known(a) && known(b) && (a.rows != b.rows || a.cols != b.cols))
+                fail(e.where, std::string("'") + op + "' between a " + size(a) + " and a " + size(b) + " matrix",
+                     "matrices added must have the same size");
+            rows = known(a) ? a.rows : b.rows, cols = known(a) ? a.cols : b.cols;
+        } else if (op == "*") {
+            if (a.matrix() && b.matrix()) {
+                if (known(a) && known(b) && a.cols != b.rows)
+                    fail(e.where, "'*' between a " + size(a) + " and a " + size(b) + " matrix",
+                         "the first's columns must match the second's rows; TRANSPOSE(M) turns rows into columns");
+                rows = known(a) && known(b) ? a.rows : -1, cols = known(a) && known(b) ? b.cols : -1;
+            } else {
+                rows = a.matrix() ? a.rows : b.rows, cols = a.matrix() ? a.cols : b.cols;
+            }
+        } else if (op == "/") {
+            if (b.matrix()) fail(e.where, "division by a matrix", "multiply by its inverse: A*INV(B)");
+            rows = a.rows, cols = a.cols;
+        } else {
+            fail(e.where, "a power of a matrix", "multiply it by itself: M*M");
+        }
+    }
     if (op == "+" || op == "-") {
         if (a.vector != b.vector)
             fail(e.where, std::string("'") + op + "' between a vector and a scalar",
@@ -91,7 +122,7 @@ Text Translator::combine(const Expr& e, Text a, Text b) {
         std::string s = std::move(a.s);
         s += " " + op + " ";
         s += wrapped(b, wrap);
-        return {std::move(s), a.vector, 1};
+        return {std::move(s), a.vector, 1, false, rows, cols};
     }
     if (op == "*" || op == "/") {
         if (op == "*" && a.vector && b.vector)
@@ -101,7 +132,7 @@ Text Translator::combine(const Expr& e, Text a, Text b) {
         std::string s = wrapped(a, a.prec < 2);
         s += op;
         s += wrapped(b, b.prec <= 3);
-        return {std::move(s), vector, 2};
+        return {std::move(s), vector, 2, false, rows, cols};
     }
     // ^
     if (a.vector || b.vector) fail(e.where, "a power of a vector", "use DOT(v>, v>) for the square of a magnitude");
@@ -132,6 +163,8 @@ Text Translator::call_text(const Expr& e, bool& numeric) {
         numeric = numeric && t.numeric;
         if (t.vector)
             fail(e.args[i].where, e.text + "() takes a scalar here, not a vector", "take a measure: DOT(v>, N1>)");
+        if (t.matrix())
+            fail(e.args[i].where, e.text + "() takes a scalar here, not a matrix", "take an element: M[i, j]");
         return t;
     };
     auto vector_arg = [&](std::size_t i) {
@@ -282,30 +315,16 @@ Text Translator::call_text(const Expr& e, bool& numeric) {
         Text v = scalar_arg(0);
         return {"factor(" + v.s + ")", false, 5};
     }
+    if (auto m = matrix_call(e, f, numeric)) return *m;
     if (f == "SOLVE")
         fail(e.where, "SOLVE() is translated as a statement of its own: SOLVE(M, X1, X2) alone on its line",
              "solve first, then use X1 and X2 in the expressions after it");
-    static const std::string kMatrices =
-        "the script uses matrices through their elements (M[i, j]); matrix operations have no counterpart";
     static const std::map<std::string, std::string> missing{
         {"FACTOR", "FACTOR(e) is factor(e); Alembert takes no factor chosen by name (FACTOR(e, X))"},
-        {"POLYNOMIAL", "Alembert has no polynomials as values"},
-        {"ROOTS", "Alembert has no polynomial roots"},
         {"EXCLUDE", "Alembert keeps every term"},
         {"INCLUDE", "Alembert keeps every term"},
-        {"TRANSPOSE", kMatrices},
-        {"EIG", "eigenvalues are printed by Alembert's 'linearize', not computed inside an expression"},
-        {"DIAGMAT", kMatrices},
-        {"INV", kMatrices},
-        {"DET", kMatrices},
-        {"ELEMENT", kMatrices},
-        {"COLS", kMatrices},
-        {"ROWS", kMatrices},
-        {"MATRIX", kMatrices},
+        {"MATRIX", "write the matrix by its elements: [A, B; C, D]"},
         {"VECTOR", "write the vector from unit vectors: X*N1> + Y*N2>"},
-        {"CM", "Alembert has no point for the mass centre of a set of bodies"},
-        {"MASS", "Alembert's mass(S) takes a system declared with 'system S = A, B'"},
-        {"ANGVEL", "write the angular velocity's name: W_B_N>"},
         {"NICHECK", "the translation has no nonholonomic checks"}};
     if (auto it = missing.find(f); it != missing.end())
         fail(e.where, "the Autolev function " + f + "() is not translated: " + it->second,
@@ -316,7 +335,8 @@ Text Translator::call_text(const Expr& e, bool& numeric) {
     fail(e.where, "the Autolev function '" + e.text + "' is not translated",
          "the translator knows SIN, COS, TAN, ASIN, ACOS, ATAN, SQRT, EXP, LOG, ABS, DOT, CROSS, MAG, "
          "UNITVEC, EXPRESS, DT, D, EXPAND, EXPLICIT, ARRANGE, RHS, COEF, REPLACE, EVALUATE, TAYLOR, FLOOR, "
-         "FACTOR and SOLVE");
+         "FACTOR, SOLVE, TRANSPOSE, INV, DET, DIAGMAT, ELEMENT, ROWS, COLS, EIG, POLYNOMIAL, ROOTS, MASS, CM "
+         "and ANGVEL");
 }
 
 Text Translator::matrix_element(const Expr& e, const Entry& m) {
@@ -332,7 +352,7 @@ Text Translator::matrix_element(const Expr& e, const Entry& m) {
     if (at.size() != 2)
         fail(e.where, "matrix '" + e.text + "' is " + std::to_string(m.rows) + " by " + std::to_string(m.cols) +
                           ": give its row and column", "write " + e.text + "[i, j]");
-    if (at[0] < 1 || at[0] > m.rows || at[1] < 1 || at[1] > m.cols)
+    if (m.rows > 0 && (at[0] < 1 || at[0] > m.rows || at[1] < 1 || at[1] > m.cols))
         fail(e.where, "[" + std::to_string(at[0]) + ", " + std::to_string(at[1]) + "] is outside matrix '" + e.text +
                           "', which is " + std::to_string(m.rows) + " by " + std::to_string(m.cols),
              "rows run from 1 to " + std::to_string(m.rows) + " and columns from 1 to " + std::to_string(m.cols));
@@ -386,8 +406,8 @@ std::string Translator::scalar_name(const Expr& e) {
             return en->name + primes;
         }
         case Kind::matrix:
-            fail(e.where, "the matrix '" + e.text + "' is translated only through its elements",
-                 "use " + e.text + "[i, j]; matrix arithmetic has no counterpart in the script");
+            fail(e.where, "the matrix '" + e.text + "' stands where a scalar is expected",
+                 "take an element: " + e.text + "[i, j]");
         default:
             fail(e.where, "'" + e.text + "' is " + kind_word(en->kind) + ", not a value",
                  "a vector needs '>' (A1>, V_P_N>); points and frames are arguments of V2PTS, SIMPROT, ...");

@@ -266,15 +266,13 @@ void Translator::assignment(const Statement& st) {
         return;
     }
     if (en) {
-        if (en->kind == Kind::matrix) {
-            if (st.rhs.kind != Expr::Kind::matrix)
-                fail(st.rhs.where, "'" + lhs.text + "' is a matrix and is assigned only a matrix [...]",
-                     "give the expression another name");
-            return matrix_assignment(st);
-        }
+        if (en->kind == Kind::matrix) return matrix_assignment(st);
         if (en->kind == Kind::variable) return kinematical_assignment(st, *en);
         if (en->kind == Kind::scalar) {
-            Text r = scalar(st.rhs);
+            Text r = expr(st.rhs);
+            if (r.matrix())
+                fail(st.rhs.where, "'" + lhs.text + "' is a scalar and is assigned only a scalar", "give the matrix another name");
+            if (r.vector) fail(st.rhs.where, "a vector where a scalar is expected", "take a measure: DOT(v>, N1>)");
             names_[upper(lhs.text)].numeric = r.numeric;
             emit(en->name + " = " + r.s);
             return;
@@ -292,7 +290,14 @@ void Translator::assignment(const Statement& st) {
         parent_[s->second] = s->first;
         return emit("rotate " + s->second + " from " + s->first + " dcm " + matrix(st.rhs));
     }
-    Text r = scalar(st.rhs);
+    Text r = expr(st.rhs);
+    if (r.matrix()) {
+        const Entry& ne = add(lhs.text, Kind::matrix, lhs.where);
+        Entry& stored = names_[ne.key];
+        stored.rows = r.rows, stored.cols = r.cols;
+        return emit(ne.name + " = " + r.s);
+    }
+    if (r.vector) fail(st.rhs.where, "a vector where a scalar is expected", "take a measure: DOT(v>, N1>)");
     const Entry& ne = add(lhs.text, Kind::scalar, lhs.where);
     names_[upper(lhs.text)].numeric = r.numeric;
     emit(ne.name + " = " + r.s);
@@ -388,24 +393,20 @@ std::string Translator::matrix(const Expr& m) {
 }
 
 void Translator::matrix_assignment(const Statement& st) {
-    const Expr& m = st.rhs;
-    std::vector<std::string> rows;
-    const std::size_t cols = m.args.empty() ? 0 : m.args.front().args.size();
-    for (const Expr& row : m.args) {
-        if (row.args.size() != cols)
-            fail(row.where, "the rows of matrix '" + st.lhs.text + "' have different lengths",
-                 "give every row " + std::to_string(cols) + " elements");
-        std::vector<std::string> cells;
-        for (const Expr& c : row.args) cells.push_back(scalar(c).s);
-        rows.push_back(join(cells));
-    }
-    if (rows.empty() || cols == 0) fail(m.where, "an empty matrix", "give its elements: [a, b; c, d]");
+    // M = [a, b; c, d], or M = a matrix expression (TRANSPOSE(A)*B, ...)
+    if (st.rhs.kind == Expr::Kind::matrix)
+        for (const Expr& row : st.rhs.args)
+            if (row.args.size() != st.rhs.args.front().args.size())
+                fail(row.where, "the rows of matrix '" + st.lhs.text + "' have different lengths",
+                     "give every row " + std::to_string(st.rhs.args.front().args.size()) + " elements");
+    Text m = st.rhs.kind == Expr::Kind::matrix ? matrix_literal(st.rhs) : expr(st.rhs);
+    if (!m.matrix()) fail(st.rhs.where, "'" + st.lhs.text + "' is a matrix and is assigned only a matrix", "give the expression another name");
     const Entry* old = find(st.lhs.text);
     const Entry& e = old ? *old : add(st.lhs.text, Kind::matrix, st.lhs.where);
     Entry& stored = names_[e.key];
-    stored.rows = static_cast<int>(rows.size());
-    stored.cols = static_cast<int>(cols);
-    emit(e.name + " = [" + join(rows, "; ") + "]");
+    stored.rows = m.rows;
+    stored.cols = m.cols;
+    emit(e.name + " = " + m.s);
 }
 
 void Translator::array_assignment(const Statement& st) {
@@ -671,6 +672,9 @@ void Translator::solve_statement(const Expr& e) {
         count = e.args.size() - 1;
     } else if (const Entry* en = m.kind == Expr::Kind::name && !m.vector ? find(m.text) : nullptr;
         en && en->kind == Kind::matrix) {
+        if (en->rows < 0)
+            fail(m.where, "SOLVE() takes a matrix whose size is known here, and the size of '" + m.text +
+                              "' is known only when the script runs", "write the equations out: EQ = [e1; e2]");
         if (en->rows != 1 && en->cols != 1)
             fail(m.where, "SOLVE() takes a matrix of one row or one column, and '" + m.text + "' is " +
                               std::to_string(en->rows) + " by " + std::to_string(en->cols),

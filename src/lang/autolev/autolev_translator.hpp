@@ -62,6 +62,8 @@ struct Text {
     bool vector = false;
     int prec = 5;
     bool numeric = false;  // numbers and unit vectors only: no quantity with a dimension
+    int rows = 0, cols = 0;  // a matrix's size (0: not a matrix; -1: known when the script runs)
+    bool matrix() const { return rows != 0; }
 };
 
 // A declared constant: its declaration group (one `constant` line each) and its value.
@@ -252,11 +254,15 @@ private:
     Text scalar(const Expr& e) {
         Text t = expr(e);
         if (t.vector) fail(e.where, "a vector where a scalar is expected", "take a measure: DOT(v>, N1>)");
+        if (t.matrix())
+            fail(e.where, "a matrix where a scalar is expected", "take an element: M[i, j] or ELEMENT(M, i, j)");
         return t;
     }
     Text vec(const Expr& e) {
         Text t = expr(e);
-        if (!t.vector) fail(e.where, "a scalar where a vector is expected", "multiply by a unit vector such as N1>");
+        if (!t.vector)
+            fail(e.where, std::string("a ") + (t.matrix() ? "matrix" : "scalar") + " where a vector is expected",
+                 "multiply by a unit vector such as N1>");
         return t;
     }
 
@@ -279,6 +285,13 @@ private:
     // elements M[i, j] (M[i] of a row or a column)
     void matrix_assignment(const Statement& st);
     Text matrix_element(const Expr& e, const Entry& m);
+    // an Autolev matrix function (TRANSPOSE, INV, DET, DIAGMAT, ELEMENT, ROWS, COLS, EIG,
+    // POLYNOMIAL, ROOTS), or nothing if `f` is none
+    std::optional<Text> matrix_call(const Expr& e, const std::string& f, bool& numeric);
+    // a matrix literal [a, b; c, d] inside an expression
+    Text matrix_literal(const Expr& m);
+    // a whole number written in the file (a size or an index), or an error naming `what`
+    int whole_number(const Expr& e, const std::string& what);
 
     static bool is_call(const Expr& e, const char* f) {
         return e.kind == Expr::Kind::call && e.args.empty() && upper(e.text) == f;

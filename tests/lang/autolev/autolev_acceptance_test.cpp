@@ -389,7 +389,7 @@ INSTANTIATE_TEST_SUITE_P(Files, AutolevAcceptance, ::testing::ValuesIn(cases()),
 TEST(AutolevAcceptanceFiles, EveryFileIsChecked) {
     std::vector<std::string> checked{"vector_algebra.al", "no_newtonian_kinematics.al", "algebra_functions.al",
                                      "matrix_values.al", "series_and_solve.al",
-                                     "solve_zero_pendulum.al"};
+                                     "solve_zero_pendulum.al", "matrix_operations.al", "mass_functions.al"};
     for (const Case& c : cases()) checked.push_back(c.file);
     int files = 0;
     for (const auto& e : std::filesystem::directory_iterator(kDir)) {
@@ -545,6 +545,72 @@ TEST(AutolevAcceptanceFiles, SolveOfKanesEquationsAgreesWithTheHandResults) {
         std::string at = "L = " + num(l) + ", M = " + num(mass) + ", G = " + num(g) + ", Q = " + num(q);
         Vec v = evaluate(t, {"ACC", "PERIOD"}, at);
         Vec expected{-g / l * std::sin(q), 2 * std::numbers::pi * std::sqrt(l / g)};
+        for (std::size_t i = 0; i < expected.size(); ++i)
+            EXPECT_NEAR(v[i], expected[i], 1e-12 * std::max(1.0, std::abs(expected[i]))) << i << " at " << at;
+    }
+}
+
+// Matrix operations, by hand: with R the rotation by Q and J = diag(A, A + B),
+//   R J R^T = A 1 + B r r^T, r = (-sin Q, cos Q): JXX = A + B sin^2 Q, JXY = -B sin Q cos Q,
+//   its trace 2A + B and determinant A (A + B); K = [A, B; B, C] has
+//   K^-1 = [C, -B; -B, A]/(AC - B^2), so K^-1 [1; 2] = [C - 2B; 2A - B]/(AC - B^2);
+//   ROWS(K) + COLS of a 1 by 3 = 5, K's first row's second element B, J's second column's
+//   second element A + B; [2, 1; 1, 2] has eigenvalues 1 and 3; POLYNOMIAL([1, -6, 11, -6], Q)
+//   is (Q - 1)(Q - 2)(Q - 3), whose roots add up to 6; 2x - 3 has the root 1.5; the row
+//   [DET(K), ELEMENT(K, 1, 2)] has B second.
+TEST(AutolevAcceptanceFiles, MatrixOperationsAgreeWithTheHandResults) {
+    AutolevTranslation t = import("matrix_operations.al");
+    ASSERT_TRUE(t.ok());
+    std::mt19937 rng(2032);
+    auto uniform = [&](double a, double b) { return std::uniform_real_distribution<double>(a, b)(rng); };
+    for (int trial = 0; trial < 3; ++trial) {
+        const double a = uniform(0.5, 3), b = uniform(-2, 2), c = uniform(0.5, 3), q = uniform(-3, 3);
+        std::string at = "A = " + num(a) + ", B = " + num(b) + ", C = " + num(c) + ", Q = " + num(q);
+        Vec v = evaluate(t, {"JXX", "JXY", "TR", "DJ", "X1", "X2", "NR", "T12", "S22", "E1", "E2", "P", "RSUM", "R1", "RB"}, at);
+        const double s = std::sin(q), co = std::cos(q), d = a * c - b * b;
+        Vec expected{a + b * s * s,
+                     -b * s * co,
+                     2 * a + b,
+                     a * (a + b),
+                     (c - 2 * b) / d,
+                     (2 * a - b) / d,
+                     5,
+                     b,
+                     a + b,
+                     1,
+                     3,
+                     (q - 1) * (q - 2) * (q - 3),
+                     6,
+                     1.5,
+                     b};
+        for (std::size_t i = 0; i < expected.size(); ++i)
+            EXPECT_NEAR(v[i], expected[i], 1e-12 * std::max(1.0, std::abs(expected[i]))) << i << " at " << at;
+    }
+}
+
+// Mass functions, by hand: the rod's mass centre at (L/2)(cos Q, sin Q), P1 at L (cos Q, sin Q),
+// P2 at (0, 2L); MASS() = MASS(A, P1, P2) = MA + M1 + M2 = m; CM(NO) = (MA L/2 + M1 L)(cos Q,
+// sin Q)/m + (0, 2 L M2/m); CM(P2, A, P1) = (MA L/2 + M1 L)(cos Q, sin Q)/(MA + M1) - (0, 2L);
+// ANGVEL(N, A) = Q' N3>.
+TEST(AutolevAcceptanceFiles, MassFunctionsAgreeWithTheHandResults) {
+    AutolevTranslation t = import("mass_functions.al");
+    ASSERT_TRUE(t.ok());
+    std::mt19937 rng(2033);
+    auto uniform = [&](double a, double b) { return std::uniform_real_distribution<double>(a, b)(rng); };
+    for (int trial = 0; trial < 3; ++trial) {
+        const double l = uniform(0.2, 2), m1 = uniform(0.5, 3), m2 = uniform(0.5, 3), ma = uniform(0.5, 3);
+        const double q = uniform(-3, 3), u = uniform(-4, 4);
+        std::string at = "L = " + num(l) + ", M1 = " + num(m1) + ", M2 = " + num(m2) + ", MA = " + num(ma) +
+                         ", Q = " + num(q) + ", Q' = " + num(u);
+        Vec v = evaluate(t, {"MT", "MALL", "RX", "RY", "SX", "SY", "WZ"}, at);
+        const double m = ma + m1 + m2, arm = ma * l / 2 + m1 * l;
+        Vec expected{m,
+                     m,
+                     arm * std::cos(q) / m,
+                     arm * std::sin(q) / m + 2 * l * m2 / m,
+                     arm * std::cos(q) / (ma + m1),
+                     arm * std::sin(q) / (ma + m1) - 2 * l,
+                     u};
         for (std::size_t i = 0; i < expected.size(); ++i)
             EXPECT_NEAR(v[i], expected[i], 1e-12 * std::max(1.0, std::abs(expected[i]))) << i << " at " << at;
     }

@@ -1,0 +1,259 @@
+// SPDX-License-Identifier: MIT
+// Matrices, polynomials and mass functions of the language against hand results: transpose,
+// inv, det, diagmat, element, rows, cols, eig and matrix arithmetic; polynomial and roots;
+// mass(A, B) and cm(O, ...), each evaluated at random points beside the hand formula; their
+// errors at the argument, with file:line:col and caret.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <random>
+#include <sstream>
+#include <string>
+
+#include "alembert/lang/interpreter.hpp"
+
+namespace matrix_functions_test {
+
+using namespace alembert::lang;
+
+struct MatrixRun {
+    std::ostringstream out, err;
+    Interpreter interp{out, err, false};
+    std::string ok(const std::string& text) {
+        out.str("");
+        EXPECT_EQ(interp.run(text, "test.alb"), RunStatus::ok) << err.str();
+        return out.str();
+    }
+    std::string fails(const std::string& text) {
+        err.str("");
+        EXPECT_EQ(interp.run(text, "test.alb"), RunStatus::script_error) << out.str();
+        return err.str();
+    }
+    double at(const std::string& e, const std::string& values) {
+        std::string o = ok("evaluate " + e + (values.empty() ? "" : " at " + values) + "\n");
+        std::size_t p = o.find("= ");
+        if (p == std::string::npos) {
+            ADD_FAILURE() << "no value for " << e << " in " << o;
+            return NAN;
+        }
+        return std::stod(o.substr(p + 2));
+    }
+};
+
+bool has(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+std::string num(double v) {
+    char b[40];
+    std::snprintf(b, sizeof b, "%.17g", v);
+    return b;
+}
+
+void expect_close(double got, double want, const std::string& what) {
+    EXPECT_NEAR(got, want, 1e-12 * std::max(1.0, std::abs(want))) << what;
+}
+
+using Mat = std::array<std::array<double, 3>, 3>;
+
+// the inverse by cofactors: inv[i][j] = C[j][i]/det
+Mat hand_inverse(const Mat& m, double& det) {
+    auto c = [&](int i, int j) {
+        const int r0 = (i + 1) % 3, r1 = (i + 2) % 3, c0 = (j + 1) % 3, c1 = (j + 2) % 3;
+        return m[r0][c0] * m[r1][c1] - m[r0][c1] * m[r1][c0];
+    };
+    det = m[0][0] * c(0, 0) + m[0][1] * c(0, 1) + m[0][2] * c(0, 2);
+    Mat inv{};
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j) inv[i][j] = c(j, i) / det;
+    return inv;
+}
+
+const char* kMatrixHead =
+    "newtonian N\n"
+    "constant a, b, c, d, f, g, h, k, L\n"
+    "digits 17\n"
+    "M = [a, b, c; d, f, g; h, k, L]\n"
+    "N2 = [a, b; c, d; f, g]\n"
+    "Mt = transpose(M)\n"
+    "Mi = inv(M)\n"
+    "D = det(M)\n"
+    "P = M*N2\n"
+    "S = 2*M - Mt/L + diagmat(3, g)\n"
+    "I3 = simplify(Mi*M)\n"
+    "R2 = rows(M, 3, 1)\n"
+    "C2 = cols(M, 2)\n";
+
+TEST(MatrixFunctions, TransposeInverseDeterminantAndArithmeticAgreeWithTheHandResults) {
+    MatrixRun r;
+    r.ok(kMatrixHead);
+    std::mt19937 rng(41);
+    std::uniform_real_distribution<double> u(-2, 2);
+    for (int trial = 0; trial < 3; ++trial) {
+        Mat m{};
+        for (auto& row : m)
+            for (double& x : row) x = u(rng);
+        const char* names[9] = {"a", "b", "c", "d", "f", "g", "h", "k", "L"};
+        std::string at;
+        for (int i = 0; i < 9; ++i) at += (i ? ", " : "") + std::string(names[i]) + " = " + num(m[i / 3][i % 3]);
+        double det = 0;
+        const Mat inv = hand_inverse(m, det);
+        expect_close(r.at("D", at), det, "det " + at);
+        expect_close(r.at("det(N2*transpose(N2))", at), 0, "a rank-2 3 by 3 product");
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j) {
+                const std::string ij = "[" + std::to_string(i + 1) + ", " + std::to_string(j + 1) + "]";
+                expect_close(r.at("Mi" + ij, at), inv[i][j], "inv " + ij + " " + at);
+                expect_close(r.at("Mt" + ij, at), m[j][i], "transpose " + ij);
+                expect_close(r.at("I3" + ij, at), i == j ? 1 : 0, "inv(M)*M " + ij);
+                expect_close(r.at("S" + ij, at), 2 * m[i][j] - m[j][i] / m[2][2] + (i == j ? m[1][2] : 0), "S " + ij);
+                expect_close(r.at("element(M, " + std::to_string(i + 1) + ", " + std::to_string(j + 1) + ")", at),
+                             m[i][j], "element " + ij);
+            }
+        // N2 = [a, b; c, d; f, g]: P = M N2, 3 by 2
+        const double n2[3][2] = {{m[0][0], m[0][1]}, {m[0][2], m[1][0]}, {m[1][1], m[1][2]}};
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 2; ++j) {
+                double want = 0;
+                for (int s = 0; s < 3; ++s) want += m[i][s] * n2[s][j];
+                expect_close(r.at("P[" + std::to_string(i + 1) + ", " + std::to_string(j + 1) + "]", at), want, "M*N2");
+            }
+        for (int j = 0; j < 3; ++j) {
+            expect_close(r.at("R2[1, " + std::to_string(j + 1) + "]", at), m[2][j], "rows(M, 3, 1) row 1");
+            expect_close(r.at("R2[2, " + std::to_string(j + 1) + "]", at), m[0][j], "rows(M, 3, 1) row 2");
+            expect_close(r.at("C2[" + std::to_string(j + 1) + ", 1]", at), m[j][1], "cols(M, 2)");
+        }
+    }
+    EXPECT_EQ(r.ok("rows(N2)\ncols(N2)\n"), "= 3\n= 2\n");
+    EXPECT_EQ(r.ok("diagmat(2, 3, L)\ndiagmat([a, b])\n"), "= [L, 0, 0; 0, L, 0]\n= [a, 0; 0, b]\n");
+}
+
+// eig of [2, 1, 0; 1, 2, 1; 0, 1, 2]: 2 - sqrt 2, 2, 2 + sqrt 2; of [p, r; r, s] with values:
+// (p + s)/2 -+ sqrt(((p - s)/2)^2 + r^2)
+TEST(MatrixFunctions, EigIsTheEigenvaluesOfAMatrixOfNumbers) {
+    MatrixRun r;
+    r.ok("newtonian N\ndigits 17\nE = eig([2, 1, 0; 1, 2, 1; 0, 1, 2])\n");
+    expect_close(r.at("E[1, 1]", ""), 2 - std::sqrt(2.0), "smallest");
+    expect_close(r.at("E[2, 1]", ""), 2, "middle");
+    expect_close(r.at("E[3, 1]", ""), 2 + std::sqrt(2.0), "largest");
+    std::mt19937 rng(42);
+    std::uniform_real_distribution<double> u(-3, 3);
+    for (int trial = 0; trial < 3; ++trial) {
+        const double p = u(rng), q = u(rng), s = u(rng);
+        MatrixRun w;
+        w.ok("newtonian N\ndigits 17\nconstant p = " + num(p) + ", r = " + num(q) + ", s = " + num(s) +
+             "\nE = eig([p, r; r, s])\n");
+        const double mid = (p + s) / 2, half = std::sqrt((p - s) * (p - s) / 4 + q * q);
+        expect_close(w.at("E[1, 1]", ""), mid - half, "lower eigenvalue");
+        expect_close(w.at("E[2, 1]", ""), mid + half, "upper eigenvalue");
+    }
+    // a triangular matrix's eigenvalues are its diagonal
+    EXPECT_EQ(r.ok("eig([1, 5, 7; 0, -2, 4; 0, 0, 3])\n"), "= [-2; 1; 3]\n");
+    std::string e = r.fails("eig([0, -1; 1, 0])\n");
+    EXPECT_TRUE(has(e, "test.alb:1:5: error: eig(): the eigenvalues of the matrix are complex: 0 - 1i, 0 + 1i")) << e;
+    e = r.fails("constant z\neig([z, 1; 1, 0])\n");
+    EXPECT_TRUE(has(e, "test.alb:2:5: error: 'z' has no value")) << e;
+    EXPECT_TRUE(has(e, "hint: eig() takes a matrix of numbers")) << e;
+}
+
+// polynomial([A, B, C], x) = A x^2 + B x + C and back; roots of (x - r1)(x - r2)(x - r3)
+TEST(MatrixFunctions, PolynomialAndRootsAgreeWithTheHandPolynomial) {
+    MatrixRun r;
+    r.ok("newtonian N\nconstant A, B, C\nvariable x''\ndigits 17\nP = polynomial([A, B, C], x)\n"
+         "K = polynomial((A*x - B)^2*x + C, x)\n");
+    std::mt19937 rng(43);
+    std::uniform_real_distribution<double> u(-3, 3);
+    for (int trial = 0; trial < 3; ++trial) {
+        const double a = u(rng), b = u(rng), c = u(rng), x = u(rng);
+        const std::string at = "A = " + num(a) + ", B = " + num(b) + ", C = " + num(c) + ", x = " + num(x);
+        expect_close(r.at("P", at), a * x * x + b * x + c, "polynomial " + at);
+        // (A x - B)^2 x + C = A^2 x^3 - 2AB x^2 + B^2 x + C
+        expect_close(r.at("K[1, 1]", at), a * a, "x^3");
+        expect_close(r.at("K[1, 2]", at), -2 * a * b, "x^2");
+        expect_close(r.at("K[1, 3]", at), b * b, "x");
+        expect_close(r.at("K[1, 4]", at), c, "1");
+        std::array<double, 3> z{u(rng), u(rng), u(rng)};
+        const std::string p = "(x - " + num(z[0]) + ")*(x - " + num(z[1]) + ")*(x - " + num(z[2]) + ")";
+        r.ok("Z = roots(" + p + ", x)\n");
+        std::sort(z.begin(), z.end());
+        for (int i = 0; i < 3; ++i) EXPECT_NEAR(r.at("Z[" + std::to_string(i + 1) + ", 1]", ""), z[static_cast<std::size_t>(i)], 1e-9) << p;
+    }
+    EXPECT_EQ(r.ok("roots([1, -6, 11, -6])\nroots(2*x - 3, x)\n"), "= [1; 2; 3]\n= [1.5]\n");
+    std::string e = r.fails("roots([1, 0, 1])\n");
+    EXPECT_TRUE(has(e, "test.alb:1:7: error: roots(): the roots are complex: 0 - 1i, 0 + 1i")) << e;
+    EXPECT_TRUE(has(e, "    1 | roots([1, 0, 1])\n      |       ^")) << e;
+    e = r.fails("roots(A*x^2 - 1, x)\n");
+    EXPECT_TRUE(has(e, "test.alb:1:7: error: 'A' has no value")) << e;
+    EXPECT_TRUE(has(e, "the coefficient of x^2 is A")) << e;
+    e = r.fails("roots(sin(x), x)\n");
+    EXPECT_TRUE(has(e, "roots(): the expression is not a polynomial in 'x'")) << e;
+    e = r.fails("roots([0, 0, 3])\n");
+    EXPECT_TRUE(has(e, "roots(): the polynomial has no roots to find")) << e;
+    e = r.fails("polynomial(1/x, x)\n");
+    EXPECT_TRUE(has(e, "test.alb:1:12: error: polynomial(): the expression is not a polynomial in 'x'")) << e;
+    e = r.fails("polynomial([1, 2], 3)\n");
+    EXPECT_TRUE(has(e, "polynomial(): the second argument must be a declared symbol")) << e;
+}
+
+TEST(MatrixFunctions, MatrixErrorsNameTheMatrixAndTheArgument) {
+    MatrixRun r;
+    r.ok("newtonian N\nconstant a, b\nZ = [1, 2; 2, 4]\nM = [a, b; b, a]\nR = [1, 2, 3]\n");
+    std::string e = r.fails("W = inv(Z)\n");
+    EXPECT_TRUE(has(e, "test.alb:1:9: error: inv(): 'Z' is singular (its determinant is 0), so it has no inverse")) << e;
+    EXPECT_TRUE(has(e, "    1 | W = inv(Z)\n      |         ^")) << e;
+    e = r.fails("inv([a, a; b, b])\n");
+    EXPECT_TRUE(has(e, "inv(): the matrix is singular")) << e;
+    e = r.fails("det(R)\n");
+    EXPECT_TRUE(has(e, "test.alb:1:5: error: det() takes a square matrix, and 'R' is 1 by 3")) << e;
+    e = r.fails("M + R\n");
+    EXPECT_TRUE(has(e, "test.alb:1:5: error: cannot add a 1 by 3 matrix to a 2 by 2 matrix")) << e;
+    e = r.fails("M + 1\n");
+    EXPECT_TRUE(has(e, "cannot add a scalar to a matrix")) << e;
+    e = r.fails("M*R\n");
+    EXPECT_TRUE(has(e, "cannot multiply a 2 by 2 matrix by a 1 by 3 matrix")) << e;
+    e = r.fails("M*Nx>\n");
+    EXPECT_TRUE(has(e, "cannot multiply a matrix and a vector")) << e;
+    e = r.fails("1/M\n");
+    EXPECT_TRUE(has(e, "cannot divide by a matrix")) << e;
+    e = r.fails("element(M, 3, 1)\n");
+    EXPECT_TRUE(has(e, "test.alb:1:12: error: element(): the row of 'M' must be a whole number from 1 to 2")) << e;
+    e = r.fails("cols(M, 0)\n");
+    EXPECT_TRUE(has(e, "cols(): the column of 'M' must be a whole number from 1 to 2")) << e;
+    e = r.fails("transpose(a)\n");
+    EXPECT_TRUE(has(e, "test.alb:1:11: error: transpose() takes a matrix, but this is a scalar")) << e;
+    e = r.fails("diagmat(0, a)\n");
+    EXPECT_TRUE(has(e, "diagmat(): the number of rows must be a whole number from 1 to 100")) << e;
+    e = r.fails("inv(M, M)\n");
+    EXPECT_TRUE(has(e, "inv() takes 1 argument, not 2")) << e;
+}
+
+// two particles: mass(A, B) = m1 + m2; the mass centre from N_o, (m1 r1 + m2 r2)/(m1 + m2)
+TEST(MatrixFunctions, MassAndMassCentreOfSeveralBodies) {
+    MatrixRun r;
+    r.ok("newtonian N\nparticle A, B, C\nconstant m1, m2, m3, L\nvariable q''\ndigits 17\n"
+         "translate A from N_o by L*cos(q)*Nx> + L*sin(q)*Ny>\ntranslate B from N_o by 2*L*Ny>\n"
+         "translate C from A by L*Nx>\nmass A = m1\nmass B = m2\nmass C = m3\nsystem S = A, C\n");
+    std::mt19937 rng(44);
+    std::uniform_real_distribution<double> u(0.5, 3);
+    for (int trial = 0; trial < 3; ++trial) {
+        const double m1 = u(rng), m2 = u(rng), m3 = u(rng), l = u(rng), q = u(rng);
+        const std::string at = "m1 = " + num(m1) + ", m2 = " + num(m2) + ", m3 = " + num(m3) + ", L = " + num(l) +
+                               ", q = " + num(q);
+        expect_close(r.at("mass(A, B)", at), m1 + m2, "mass(A, B)");
+        expect_close(r.at("mass(S, B)", at), m1 + m2 + m3, "mass(S, B)");
+        const double xa = l * std::cos(q), ya = l * std::sin(q), yb = 2 * l, xc = xa + l, yc = ya;
+        expect_close(r.at("dot(cm(N_o, A, B), Nx>)", at), m1 * xa / (m1 + m2), "x of cm(N_o, A, B)");
+        expect_close(r.at("dot(cm(N_o, A, B), Ny>)", at), (m1 * ya + m2 * yb) / (m1 + m2), "y of cm(N_o, A, B)");
+        const double all = m1 + m2 + m3;
+        expect_close(r.at("dot(cm(B), Nx>)", at), (m1 * xa + m3 * xc) / all, "x of cm(B)");
+        expect_close(r.at("dot(cm(B), Ny>)", at), (m1 * ya + m2 * yb + m3 * yc) / all - yb, "y of cm(B)");
+    }
+    std::string e = r.fails("cm(N_o, S, A)\n");
+    EXPECT_TRUE(has(e, "test.alb:1:12: error: cm(): 'A' is counted twice")) << e;
+    e = r.fails("cm()\n");
+    EXPECT_TRUE(has(e, "cm() takes the point first")) << e;
+    e = r.fails("mass(A, Q)\n");
+    EXPECT_TRUE(has(e, "test.alb:1:9:")) << e;
+}
+
+}  // namespace matrix_functions_test
