@@ -5,6 +5,7 @@
 #include <cmath>
 #include <exception>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -84,11 +85,12 @@ struct Evaluation {
             for (const ex& x : st.symbols(k)) values[x] = 0;
         for (const ex& x : st.symbols(SymbolKind::unknown)) values[x] = 1;
         for (const auto& [x, v] : configuration) values[x] = v;
+        memo_ = std::make_unique<SymbolTable::EvaluationMemo>(values);
     }
     /// The value of `e`, or NaN if it needs what is not known.
     double at(const ex& e) const {
         try {
-            return sys.symbols().evaluate(e, values);
+            return sys.symbols().evaluate(e, *memo_);
         } catch (const std::exception&) {
             return std::nan("");  // a library error, or GiNaC's (a spring of length 0 at rest)
         }
@@ -123,6 +125,8 @@ struct Evaluation {
     }
 
 private:
+    // every intermediate evaluated once over all the page's expressions (the values are fixed)
+    std::unique_ptr<SymbolTable::EvaluationMemo> memo_;
     mutable std::map<const Point*, std::vector<double>> positions_;
     mutable std::map<const Load*, std::vector<double>> loads_;
 };
