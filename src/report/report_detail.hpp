@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "alembert/eom/equations.hpp"
+#include "alembert/eom/moving_bodies.hpp"
 #include "alembert/eom/newton_euler.hpp"
 #include "alembert/eom/roadmap.hpp"
 #include "alembert/mech/system.hpp"
@@ -243,9 +244,9 @@ struct RowSteps {
     std::vector<ex> quantities;
 };
 
-/// The steps of row `r`, ending with its typeset `equation`.
+/// The steps of row `r`, ending with its typeset `equation`; `moving` is shared by the rows.
 RowSteps calc_row_steps(const System& sys, const RoadmapRow& r, const std::string& equation,
-                        Simplifier& simplifier);
+                        Simplifier& simplifier, MovingBodies& moving);
 
 /// Every row's steps (a row whose derivation cannot be formed says why in one step).
 std::vector<RowSteps> calc_rows_steps(const ReportContent& c, const std::vector<std::string>& equations);
