@@ -16,6 +16,7 @@
 #include "accumulated_moment.hpp"
 #include "free_body_rows.hpp"
 #include "unknown_rows.hpp"
+#include "alembert/eom/moving_bodies.hpp"
 #include "alembert/eom/zero_test.hpp"
 
 namespace alembert {
@@ -76,22 +77,17 @@ void locate_instantaneous_centre(const System& sys, const TimeVariable& q, const
     p.O = p.own.get();
 }
 
-// The model's kinematics as the planner tests it: each body's angular velocity and mass
-// centre's velocity, and each point's velocity and position, measured in N once (not once per
+// The model's kinematics as the planner tests it: which bodies each speed moves
+// (MovingBodies), and each point's velocity and position, measured in N once (not once per
 // coordinate), with their values at the zero tests' random states
 class PlannerKinematics {
 public:
-    explicit PlannerKinematics(const System& sys) : sys_(sys), at_(sys.symbols()) {
-        const Frame& N = sys.newtonian();
-        for (const Body* b : sys.bodies()) {
-            w_.push_back(b->frame() ? b->frame()->ang_vel_in(N).components_in(N) : Col3{});
-            v_.push_back(b->cm().vel_in(N).components_in(N));
-        }
-    }
+    explicit PlannerKinematics(const System& sys) : sys_(sys), moving_(sys) {}
 
-    MeasuresAtRandomStates& at() { return at_; }
-    const Col3& w(std::size_t body) const { return w_[body]; }
-    const Col3& v(std::size_t body) const { return v_[body]; }
+    MovingBodies& moving() { return moving_; }
+    MeasuresAtRandomStates& at() { return moving_.at(); }
+    const Col3& w(std::size_t body) const { return moving_.w(body); }
+    const Col3& v(std::size_t body) const { return moving_.v(body); }
 
     /// P's velocity in N, measured in N; nothing for a point never located
     const std::optional<Col3>& velocity(const Point& P) {
@@ -110,15 +106,14 @@ public:
         auto [it, added] = point_r_.try_emplace(&P);
         if (added) {
             Vector r;
-            if (position_of(sys_, P, r)) it->second = at_.calc_values(r.components_in(sys_.newtonian()));
+            if (position_of(sys_, P, r)) it->second = at().calc_values(r.components_in(sys_.newtonian()));
         }
         return it->second;
     }
 
 private:
     const System& sys_;
-    MeasuresAtRandomStates at_;
-    std::vector<Col3> w_, v_;
+    MovingBodies moving_;
     std::map<const Point*, std::optional<Col3>> point_v_;
     std::map<const Point*, std::optional<MeasuresAtRandomStates::Values>> point_r_;
 };
@@ -160,9 +155,9 @@ std::optional<Plan> plan_coordinate_at_random_states(
         std::vector<Values> pw, pv;      // their partial angular and mass centres' velocities
         std::vector<bool> turns;
         const std::vector<const Body*>& bodies = sys.bodies();
+        const std::vector<BodyMotion>& moves = kin.moving().calc_motions(qd);
         for (std::size_t i = 0; i < bodies.size(); ++i) {
-            const bool w_moves = !kin.w(i).is_zero() && at.calc_changes_with(kin.w(i), qd);
-            const bool v_moves = !kin.v(i).is_zero() && at.calc_changes_with(kin.v(i), qd);
+            const bool w_moves = moves[i].turns, v_moves = moves[i].slides;
             if (!w_moves && !v_moves) continue;
             p.S.push_back(bodies[i]);
             index.push_back(i);

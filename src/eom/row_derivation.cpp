@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "alembert/eom/inertia_forces.hpp"
+#include "alembert/eom/moving_bodies.hpp"
 #include "alembert/eom/zero_test.hpp"
 #include "alembert/error.hpp"
 #include "alembert/sym/print.hpp"
@@ -22,44 +23,8 @@ bool in_set(const BodySet& S, const Body* b) {
 }
 
 // the coordinate whose change alone moves exactly the bodies of S (a body moves if its mass
-// centre's partial velocity or its partial angular velocity for that speed is not zero)
-std::string coordinate_moving_symbolically(const System& sys, const BodySet& S);
-
-// the same, each velocity's change with the speed alone told at the random states (one walk
-// of the kinematics per speed), the symbolic test only where they cannot be evaluated
-std::string coordinate_moving(const System& sys, const BodySet& S) {
-    const SymbolTable& st = sys.symbols();
-    const Frame& N = sys.newtonian();
-    try {
-        MeasuresAtRandomStates at(st);
-        const std::vector<const Body*>& bodies = sys.bodies();
-        std::vector<std::optional<std::pair<Col3, Col3>>> measured(bodies.size());
-        auto velocities = [&](std::size_t i) -> const std::pair<Col3, Col3>& {
-            if (!measured[i])
-                measured[i].emplace(bodies[i]->cm().vel_in(N).components_in(N),
-                                    bodies[i]->frame() ? bodies[i]->frame()->ang_vel_in(N).components_in(N)
-                                                       : Col3{});
-            return *measured[i];
-        };
-        for (const ex& x : st.symbols(SymbolKind::variable)) {
-            if (st.derivative_order(x) != 0) continue;
-            const TimeVariable q = st.variable(st.name(x));
-            if (q.order() < 1) continue;
-            const ex speed = q.d(1);
-            bool same = true;
-            for (std::size_t i = 0; i < bodies.size() && same; ++i) {
-                const auto& [v, w] = velocities(i);
-                const bool moves = at.calc_changes_with(v, speed) || (!w.is_zero() && at.calc_changes_with(w, speed));
-                same = moves == in_set(S, bodies[i]);
-            }
-            if (same) return q.name();
-        }
-        return "";
-    } catch (const std::domain_error&) {
-        return coordinate_moving_symbolically(sys, S);
-    }
-}
-
+// centre's partial velocity or its partial angular velocity for that speed is not zero),
+// tested symbolically: where the velocities cannot be evaluated at the random states
 std::string coordinate_moving_symbolically(const System& sys, const BodySet& S) {
     const SymbolTable& st = sys.symbols();
     const Frame& N = sys.newtonian();
@@ -104,6 +69,11 @@ std::string about_words(const System& sys, const RoadmapRow& row) {
 }  // namespace
 
 RowDerivation calc_row_derivation(const System& sys, const RoadmapRow& row) {
+    MovingBodies moving(sys);
+    return calc_row_derivation(sys, row, moving);
+}
+
+RowDerivation calc_row_derivation(const System& sys, const RoadmapRow& row, MovingBodies& moving) {
     RowDerivation d;
     d.motion = row.motion;
     d.analysis = row.analysis;
@@ -122,7 +92,11 @@ RowDerivation calc_row_derivation(const System& sys, const RoadmapRow& row) {
     if (row.system.empty())
         throw ArgumentError("calc_row_derivation(): the row for '" + to_string(row.variable) +
                             "' has an empty system S; list the bodies it moves");
-    d.moved_by = coordinate_moving(sys, row.system);
+    try {
+        d.moved_by = moving.calc_coordinate_moving(row.system);
+    } catch (const std::domain_error&) {
+        d.moved_by = coordinate_moving_symbolically(sys, row.system);
+    }
     const bool dynamics = row.analysis == Analysis::dynamics;
     if (row.motion == Motion::translate) {
         d.force = sys.calc_resultant(row.system, sys.origin()).force;

@@ -5,10 +5,12 @@
 #include <cmath>
 #include <exception>
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "alembert/eom/equations.hpp"
+#include "alembert/eom/moving_bodies.hpp"
 #include "alembert/eom/newton_euler.hpp"
 #include "alembert/eom/roadmap.hpp"
 #include "alembert/mech/system.hpp"
@@ -84,6 +86,7 @@ struct Evaluation {
             for (const ex& x : st.symbols(k)) values[x] = 0;
         for (const ex& x : st.symbols(SymbolKind::unknown)) values[x] = 1;
         for (const auto& [x, v] : configuration) values[x] = v, given_.insert(x);
+        memo_ = std::make_unique<SymbolTable::EvaluationMemo>(values);
     }
     /// Whether the configuration places `p`: its position holds no specified quantity the
     /// configuration leaves out (a force plate's centre of pressure, which its record gives
@@ -92,7 +95,7 @@ struct Evaluation {
     /// The value of `e`, or NaN if it needs what is not known.
     double at(const ex& e) const {
         try {
-            return sys.symbols().evaluate(e, values);
+            return sys.symbols().evaluate(e, *memo_);
         } catch (const std::exception&) {
             return std::nan("");  // a library error, or GiNaC's (a spring of length 0 at rest)
         }
@@ -129,6 +132,8 @@ struct Evaluation {
 private:
     GiNaC::exset given_;
     mutable std::map<const Point*, bool> places_;
+    // every intermediate evaluated once over all the page's expressions (the values are fixed)
+    std::unique_ptr<SymbolTable::EvaluationMemo> memo_;
     mutable std::map<const Point*, std::vector<double>> positions_;
     mutable std::map<const Load*, std::vector<double>> loads_;
 };
@@ -254,9 +259,9 @@ struct RowSteps {
     std::vector<ex> quantities;
 };
 
-/// The steps of row `r`, ending with its typeset `equation`.
+/// The steps of row `r`, ending with its typeset `equation`; `moving` is shared by the rows.
 RowSteps calc_row_steps(const System& sys, const RoadmapRow& r, const std::string& equation,
-                        Simplifier& simplifier);
+                        Simplifier& simplifier, MovingBodies& moving);
 
 /// Every row's steps (a row whose derivation cannot be formed says why in one step).
 std::vector<RowSteps> calc_rows_steps(const ReportContent& c, const std::vector<std::string>& equations);

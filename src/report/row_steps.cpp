@@ -142,7 +142,7 @@ void add_measures(std::vector<ex>& into, const Vector& v) {
 namespace report_detail {
 
 RowSteps calc_row_steps(const System& sys, const RoadmapRow& r, const std::string& equation,
-                        Simplifier& simplifier) {
+                        Simplifier& simplifier, MovingBodies& moving) {
     RowSteps out;
     auto step = [&](const std::string& label, const std::string& text, const std::string& tex) {
         out.steps.push_back({label, text, tex.empty() ? tex : breakable_tex(tex)});
@@ -155,7 +155,7 @@ RowSteps calc_row_steps(const System& sys, const RoadmapRow& r, const std::strin
                         "k characters of TeX with named parts: left out)",
              name);
     };
-    const RowDerivation d = calc_row_derivation(sys, r);
+    const RowDerivation d = calc_row_derivation(sys, r, moving);
     const std::string E = "E_{" + to_latex(r.variable) + "}";
     step("variable", "the unknown this row is solved for", to_latex(r.variable));
     if (r.motion == Motion::constraint) {
@@ -253,9 +253,10 @@ std::vector<RowSteps> calc_rows_steps(const ReportContent& c, const std::vector<
     std::vector<RowSteps> out;
     if (!c.system) return out;
     Simplifier simplifier;  // the rows share their kinematics: each node simplified once
+    MovingBodies moving(*c.system);  // and which bodies each speed moves
     for (std::size_t i = 0; i < c.rows.size(); ++i) {
         try {
-            out.push_back(calc_row_steps(*c.system, c.rows[i], equations.at(i), simplifier));
+            out.push_back(calc_row_steps(*c.system, c.rows[i], equations.at(i), simplifier, moving));
         } catch (const Error& e) {
             RowSteps s;
             s.steps.push_back({"derivation", std::string("not available: ") + e.what(), ""});

@@ -2,6 +2,7 @@
 // The symbol table: declarations, look-up, the chain rule and numeric evaluation.
 #include "alembert/sym/symbol_table.hpp"
 
+#include <algorithm>
 #include <cctype>
 #include <cmath>
 #include <optional>
@@ -590,9 +591,24 @@ exmap SymbolTable::constant_values() const {
 }
 
 double SymbolTable::evaluate(const ex& e, const exmap& values) const {
-    exmap m = constant_values();
-    for (const auto& [k, v] : values) m[k] = v;
-    // intermediates in dependency order, only those reachable from e
+    EvaluationMemo memo(values);
+    return evaluate(e, memo);
+}
+
+double SymbolTable::evaluate(const ex& e, EvaluationMemo& memo) const {
+    exmap& m = memo.m_;
+    DoubleValues& at = memo.at_;
+    if (!memo.ready_) {
+        m = constant_values();
+        for (const auto& [k, v] : memo.values_) m[k] = v;
+        // the pole guard (see in_doubles): a value that is not finite in double arithmetic is
+        // reported here, without handing GiNaC a division by zero
+        for (const auto& [k, x] : m)
+            if (GiNaC::is_a<GiNaC::numeric>(x) && GiNaC::ex_to<GiNaC::numeric>(x).is_real())
+                at.emplace(k, GiNaC::ex_to<GiNaC::numeric>(x).to_double());
+        memo.ready_ = true;
+    }
+    // intermediates reachable from e and not yet evaluated, in dependency order
     GiNaC::exset needed;
     std::vector<ex> stack{e};
     while (!stack.empty()) {
@@ -605,25 +621,22 @@ double SymbolTable::evaluate(const ex& e, const exmap& values) const {
                 stack.push_back(it->second.definition);
         }
     }
-    // the pole guard (see in_doubles): a value that is not finite in double arithmetic is
-    // reported here, without handing GiNaC a division by zero
-    DoubleValues at, memo;
-    for (const auto& [k, x] : m)
-        if (GiNaC::is_a<GiNaC::numeric>(x) && GiNaC::ex_to<GiNaC::numeric>(x).is_real())
-            at.emplace(k, GiNaC::ex_to<GiNaC::numeric>(x).to_double());
+    std::vector<const std::pair<const ex, Info>*> order;
+    for (const ex& z : needed) order.push_back(&*info_.find(z));
+    std::sort(order.begin(), order.end(),
+              [](const auto* a, const auto* b) { return a->second.index < b->second.index; });
     auto guard = [&](const ex& expression, const std::string& what) {
-        std::optional<double> x = in_doubles(expression, at, memo);
+        std::optional<double> x = in_doubles(expression, at, memo.memo_);
         if (x && !std::isfinite(*x))
             throw ArgumentError("SymbolTable::evaluate(): " + what +
                                 " is not a finite real number at these values (a division by "
                                 "zero, or a value outside a function's domain)");
         return x;
     };
-    for (const ex& z : intermediates_) {
-        if (!needed.count(z)) continue;
-        if (std::optional<double> x = guard(info_.at(z).definition, "'" + info_.at(z).name + "'"))
-            at.emplace(z, *x);
-        m[z] = GiNaC::evalf(info_.at(z).definition.subs(m));
+    for (const auto* zi : order) {
+        const auto& [z, i] = *zi;
+        if (std::optional<double> x = guard(i.definition, "'" + i.name + "'")) at.emplace(z, *x);
+        m[z] = GiNaC::evalf(i.definition.subs(m));
     }
     guard(e, "the expression");
     ex v = GiNaC::evalf(e.subs(m));

@@ -101,6 +101,8 @@ class Dom(html.parser.HTMLParser):
         self.slider = False
         self.in_errors = False
         self.rows = 0            # road-map rows (div.row)
+        self.pending = 0         # rows not drawn yet (div.row[data-pending]: drawn when scrolled near)
+        self.drawn_rows = []     # the numbers of the rows drawn (N of div.row#row-N)
         self.constraint_rows = 0  # rows without a diagram (constraint rows)
         self.canvas = None       # the 3D view's attributes
         self.checks = []         # (kind, passed) per row of the checks panel
@@ -140,6 +142,9 @@ class Dom(html.parser.HTMLParser):
             self.in_pre = a.get("id")
         if tag == "div" and "row" in c:
             self.rows += 1
+            self.pending += "data-pending" in a
+            if "data-pending" not in a:
+                self.drawn_rows.append(int(a.get("id", "row-0")[4:]))
         if tag == "div" and "equation-set" in c:
             self.equation_sets += 1
         if tag == "div" and "result" in c:
@@ -489,13 +494,15 @@ window.addEventListener("load", function () {
 </script>"""
 
 
-# appended to a copy of a report's page: once the viewer has drawn, writes what each free-body
+# appended to a copy of a report's page: once the viewer has drawn, and has drawn the rows it
+# leaves until they are scrolled to as printing has it draw them, writes what each free-body
 # diagram drew into <pre id="fbd-measure"> as JSON: its viewBox, every label's text and laid
 # out box, each load arrow's data attributes, lines, arrowhead tips, arcs and computed stroke,
 # the points' drawn places and the u arrow's lines
 FBD_MEASURE = """<script>
 window.addEventListener("load", function () {
   document.fonts.ready.then(function () {
+    window.dispatchEvent(new Event("beforeprint"));
     setTimeout(function () {
       function box(n) { var b = n.getBBox(); return [b.x, b.y, b.width, b.height]; }
       function lines(g) {
@@ -752,6 +759,32 @@ def diagram_checks(browser, index, who):
 WIDTHS = (("screen", 1280), ("print", 720))
 
 
+def lazy_rows(browser, url, rows, who):
+    """A page whose rows hold more than the viewer's EAGER_TEX (40,000 characters of TeX) draws
+    its first rows on opening and each other when it is scrolled near: opened in a window of
+    800 x 600 px, rows past the first are left to draw and the page is ready without errors;
+    opened at its last row, that row is drawn and the rows between are not."""
+    data = page_data(url[len("file://"):])
+    tex = [len(row["equation"]) for row in data["roadmap"]]
+    if sum(tex) <= 40000:
+        return
+    first = next(i + 1 for i in range(len(tex)) if sum(tex[:i + 1]) >= 40000)
+    dom, console = open_page(browser, url, ["--window-size=800,600"])
+    check(dom.status == "ready" and not dom.errors.strip() and not console,
+          "%s: opened without #exercise, the viewer finished without errors (%r)" % (who, dom.errors.strip()[:200]))
+    drawn = sum(1 for row in data["roadmap"][:rows - dom.pending] if row["diagram"])
+    check(dom.rows == rows and 0 < dom.pending <= rows - first and len(dom.fbds) == drawn,
+          "%s: the first %d rows drawn on opening, %d of %d left until scrolled to (%d diagrams)"
+          % (who, first, dom.pending, rows, len(dom.fbds)))
+    # opened at the last row (the address's #row-N): it is drawn, the first rows too, the rows
+    # between are left
+    dom, console = open_page(browser, url + "#row-%d" % rows, ["--window-size=800,600"])
+    check(dom.status == "ready" and not dom.errors.strip() and not console and dom.rows == rows
+          and 0 < dom.pending < rows - first and dom.drawn_rows[:first] == list(range(1, first + 1))
+          and rows in dom.drawn_rows,
+          "%s: opened at row %d, it is drawn (rows drawn %s)" % (who, rows, dom.drawn_rows))
+
+
 def equation_widths(browser, index, who, print_pdf=False, widths=WIDTHS):
     """Every .equation box no wider than its column: at 1280 px on the screen, and with the
     page's @media print rules applied (measure.html#print) at an A4 page's width (about 720 px
@@ -880,6 +913,7 @@ def examples(cli, source, work, browser, names):
         if data["animation"]:
             check(dom.anim == 1 and dom.play and dom.slider and (dom.canvas is not None or data["geometry"]["planar"]),
                   "%s: the animation with play and the time slider" % name)
+        lazy_rows(browser, url, dom.rows, name)
         diagram_checks(browser, index, name)
         # in print too where the rows are longest (the arm); the sit-to-stand page and the
         # mass matrix's are measured in print below

@@ -158,6 +158,24 @@ TEST(SymbolTable, EvaluateAtAPoleIsAnArgumentErrorNamingTheIntermediate) {
     EXPECT_NEAR(s.evaluate(GiNaC::Pi / q, {{q, 2.0}}), M_PI / 2, 1e-15);
 }
 
+TEST(SymbolTable, EvaluateWithAMemoGivesEachExpressionItsValueAtTheSameValues) {
+    // z1 = L q, z2 = z1^2 + q at L = 2, q = 3: z1 = 6, z2 = 39; expressions met one after the
+    // other through a memo (each intermediate evaluated once) take their values by hand
+    SymbolTable s;
+    TimeVariable q = s.add_variable("q");
+    ex L = s.add_constant("L", 2.0);
+    ex z1 = s.add_intermediate(L * q, "z1");
+    ex z2 = s.add_intermediate(pow(z1, 2) + q, "z2");
+    SymbolTable::EvaluationMemo memo({{q, 3.0}});
+    EXPECT_NEAR(s.evaluate(z1 + 1, memo), 7.0, 1e-12);
+    EXPECT_NEAR(s.evaluate(z2 - z1, memo), 33.0, 1e-12);
+    EXPECT_NEAR(s.evaluate(GiNaC::sin(z1) * z2, memo), std::sin(6.0) * 39.0, 1e-12);
+    // a pole is still reported, naming the intermediate, and the memo serves on after it
+    ex z3 = s.add_intermediate(L / (q - 3), "z3");
+    EXPECT_THROW_MSG(s.evaluate(z3 + z1, memo), ArgumentError, "'z3' is not a finite real");
+    EXPECT_NEAR(s.evaluate(z2 / z1, memo), 6.5, 1e-12);
+}
+
 TEST(SymbolTable, DerivativeOfAVelocityIntermediateKeepsTheAccelerationExplicit) {
     // z = L q' cos(q) is a velocity measure; z' = L q'' cos(q) - L q'^2 sin(q) must show q''
     // (equations are later solved for it) and hide only the rest

@@ -9,6 +9,8 @@
 
 namespace alembert {
 
+class MovingBodies;
+
 /// The steps of one road-map row as a textbook writes them (Mitiguy ch. 21), each quantity
 /// formed by the same functions as the row (System::calc_resultant, calc_inertial_force, the
 /// bodies' momenta):
@@ -47,5 +49,8 @@ struct RowDerivation {
 /// The derivation of `row` (formed already: form_roadmap_row), from the model's quantities.
 /// @throws alembert::ArgumentError as form_roadmap_equation does (no about point, empty S).
 RowDerivation calc_row_derivation(const System& sys, const RoadmapRow& row);
+/// The same, `moving` telling which coordinate moves exactly S (MovingBodies: each speed's
+/// motions found once for all the model's rows, not once per row).
+RowDerivation calc_row_derivation(const System& sys, const RoadmapRow& row, MovingBodies& moving);
 
 }  // namespace alembert

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <ginac/ginac.h>
+#include <ginac/hash_map.h>
 
 #include <array>
 #include <cstddef>
@@ -186,6 +187,23 @@ public:
     /// evaluated from their definitions.
     /// @throws alembert::ArgumentError naming the first symbol left without a value.
     double evaluate(const ex& e, const exmap& values = {}) const;
+    /// What evaluate() builds for one set of values, kept for the next expression at the same
+    /// values: the map of the constants and the values, and each intermediate's value once
+    /// found. Valid while the table's constants keep their values.
+    class EvaluationMemo {
+    public:
+        explicit EvaluationMemo(exmap values) : values_(std::move(values)) {}
+
+    private:
+        friend class SymbolTable;
+        exmap values_;
+        exmap m_;                            // constants, values, intermediates found
+        GiNaC::exhashmap<double> at_, memo_;  // the same in doubles, for the pole guard
+        bool ready_ = false;
+    };
+    /// evaluate(e, values) with the values and what was found for earlier expressions at
+    /// them in `memo`: each intermediate is evaluated once over all the expressions.
+    double evaluate(const ex& e, EvaluationMemo& memo) const;
 
 private:
     struct Info {

@@ -88,8 +88,21 @@
     });
     return d;
   }
-  // printing opens the folded equations, so that the paper holds every one
+  // the road-map's first rows, up to EAGER_TEX characters of their equations' TeX, are drawn
+  // on opening; the others (diagram, equation, derivation) when scrolled near: laying out a
+  // large model's every row at once (the arm's 42 rows, 8 MB of DOM) kept its page from
+  // showing for seconds. Printing, the #exercise mode and a browser without
+  // IntersectionObserver draw them all; an address ending in #row-N draws row N on opening.
+  var EAGER_TEX = 40000, pendingRows = [], rowObserver = null;
+  function drawPendingRows() {
+    var rows = pendingRows;
+    pendingRows = [];
+    rows.forEach(function (draw) { draw(); });
+  }
+  // printing draws the rows not yet drawn and opens the folded equations, so that the paper
+  // holds every one
   window.addEventListener("beforeprint", function () {
+    drawPendingRows();
     Array.prototype.forEach.call(document.querySelectorAll("details.equation-folded"), function (d) {
       if (!d.open) { d.open = true; d.dispatchEvent(new Event("toggle")); }
     });
@@ -522,35 +535,66 @@
       "shown solved for the row's unknown where it holds it linearly with a constant coefficient.");
     bruteForce(sec, data);
     var head = ["variable", "translate/rotate", "direction", "system S", "FBD of S", "about point", "additional unknowns"];
+    var eager = window.location.hash === "#exercise" || !("IntersectionObserver" in window);
+    var texTotal = 0;
+    data.roadmap.forEach(function (row) { texTotal += row.equation.length; });
+    if (!eager && texTotal > EAGER_TEX)
+      rowObserver = new IntersectionObserver(function (entries) {
+        entries.forEach(function (e) {
+          if (e.isIntersecting) e.target.drawRow();
+        });
+      }, {rootMargin: "100% 0px"});
+    var texDrawn = 0;
     data.roadmap.forEach(function (row, i) {
       var card = el("div", {"class": "row", id: "row-" + (i + 1)}, sec);
       var cells = [row.variable, row.motion, row.direction || "-", row.system.length ? "{" + row.system.join(", ") + "}" : "-",
                    row.fbd.join("; ") || "-", row.about || "-",
                    row.additional_unknowns.length ? row.additional_unknowns.join(", ") : "none"];
       table(card, head, [cells], "data roadmap-row");
-      var body = el("div", {"class": "row-body"}, card);
-      var pic = el("div", {"class": "fbd-box"}, body);
-      if (row.diagram) { drawDiagram(pic, data, row); diagrams.push([pic, row]); }
-      else el("p", {"class": "note"}, pic, "constraint " + row.constraint + ": no free-body diagram");
-      var eq = el("div", {"class": "eq-box"}, body);
-      el("div", {"class": "eq-name"}, eq, "E_" + row.variable + ":");
-      if (row.equation.length <= LONG_TEX) {
-        tex(eq, row.equation, true);
-      } else {
-        // a long equation is typeset when asked for: typesetting every one of a large model's
-        // rows on opening made the page take a minute to show
-        folded(eq, "equation-folded", "the equation, " + Math.round(row.equation.length / 1000) +
-               "k characters of TeX: open to typeset it", function (d) { tex(d, row.equation, true); });
+      // (the row the address names, #row-N, is drawn at once: the page opens there)
+      if (!rowObserver || texDrawn < EAGER_TEX || window.location.hash === "#row-" + (i + 1)) {
+        texDrawn += row.equation.length;
+        drawRow(card, data, row);
+        return;
       }
-      if (row.intermediates.length) {
-        folded(eq, "", row.intermediates.length + " named intermediates", function (d) {
-          row.intermediates.forEach(function (k) { tex(d, data.intermediates[k], true); });
-        });
-      }
-      if (row.note) el("p", {"class": "note"}, eq, row.note);
-      unitMark(eq, row);
-      derivation(card, data, row);
+      var wait = el("p", {"class": "note row-waiting"}, card, "E_" + row.variable + ": drawn when scrolled to");
+      card.setAttribute("data-pending", "");
+      card.drawRow = function () {
+        if (!card.hasAttribute("data-pending")) return;
+        card.removeAttribute("data-pending");
+        card.removeChild(wait);
+        rowObserver.unobserve(card);
+        drawRow(card, data, row);
+      };
+      pendingRows.push(card.drawRow);
+      rowObserver.observe(card);
     });
+  }
+
+  // a row's free-body diagram, its equation and its derivation, under its table
+  function drawRow(card, data, row) {
+    var body = el("div", {"class": "row-body"}, card);
+    var pic = el("div", {"class": "fbd-box"}, body);
+    if (row.diagram) { drawDiagram(pic, data, row); diagrams.push([pic, row]); }
+    else el("p", {"class": "note"}, pic, "constraint " + row.constraint + ": no free-body diagram");
+    var eq = el("div", {"class": "eq-box"}, body);
+    el("div", {"class": "eq-name"}, eq, "E_" + row.variable + ":");
+    if (row.equation.length <= LONG_TEX) {
+      tex(eq, row.equation, true);
+    } else {
+      // a long equation is typeset when asked for: typesetting every one of a large model's
+      // rows on opening made the page take a minute to show
+      folded(eq, "equation-folded", "the equation, " + Math.round(row.equation.length / 1000) +
+             "k characters of TeX: open to typeset it", function (d) { tex(d, row.equation, true); });
+    }
+    if (row.intermediates.length) {
+      folded(eq, "", row.intermediates.length + " named intermediates", function (d) {
+        row.intermediates.forEach(function (k) { tex(d, data.intermediates[k], true); });
+      });
+    }
+    if (row.note) el("p", {"class": "note"}, eq, row.note);
+    unitMark(eq, row);
+    derivation(card, data, row);
   }
 
   // ---- teaching aids: a row's derivation, its unit check, the brute-force count -----------
