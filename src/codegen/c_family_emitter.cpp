@@ -164,38 +164,71 @@ void print_prelude(std::ostream& os, const CodeFunction& f, const Dialect& d,
     os << "    }\n";
 }
 
+// The Cholesky factorization, and the solve with it for m right sides at once (forward
+// dynamics solves for one, the derivatives for 2 nq more).
+std::string cholesky_factor_and_back(const Dialect& d) {
+    std::ostringstream os;
+    const std::string st = d.cpp ? "" : "static ";
+    const std::string prefix = d.cpp ? "" : d.name + "_";
+    os << "/* The Cholesky factorization A = L L^T of a symmetric positive definite A (n x n,\n"
+          "   row by row; L overwrites A's lower triangle); returns 0, or -1 if A is not\n"
+          "   positive definite. */\n"
+       << st << "int " << prefix << "cholesky_factor(int n, double* A) {\n"
+          "    for (int j = 0; j < n; ++j) {\n"
+          "        double s = A[j * n + j];\n"
+          "        for (int k = 0; k < j; ++k) s -= A[j * n + k] * A[j * n + k];\n"
+          "        if (!(s > 0.0)) return -1;\n"
+          "        const double d = " << d.math("sqrt") << "(s);\n"
+          "        A[j * n + j] = d;\n"
+          "        for (int i = j + 1; i < n; ++i) {\n"
+          "            double r = A[i * n + j];\n"
+          "            for (int k = 0; k < j; ++k) r -= A[i * n + k] * A[j * n + k];\n"
+          "            A[i * n + j] = r / d;\n"
+          "        }\n"
+          "    }\n"
+          "    return 0;\n"
+          "}\n\n"
+          "/* Solves L L^T X = B in place for m right sides (X n x m, row by row, holds B on\n"
+          "   entry), L from cholesky_factor: row operations, the inner loops over the m. */\n"
+       << st << "void " << prefix << "cholesky_back(int n, int m, const double* L, double* X) {\n"
+          "    for (int i = 0; i < n; ++i) { /* L Y = B */\n"
+          "        double* x = X + i * m;\n"
+          "        for (int k = 0; k < i; ++k) {\n"
+          "            const double l = L[i * n + k];\n"
+          "            const double* y = X + k * m;\n"
+          "            for (int j = 0; j < m; ++j) x[j] -= l * y[j];\n"
+          "        }\n"
+          "        const double d = 1.0 / L[i * n + i];\n"
+          "        for (int j = 0; j < m; ++j) x[j] *= d;\n"
+          "    }\n"
+          "    for (int i = n - 1; i >= 0; --i) { /* L^T X = Y */\n"
+          "        double* x = X + i * m;\n"
+          "        for (int k = i + 1; k < n; ++k) {\n"
+          "            const double l = L[k * n + i];\n"
+          "            const double* y = X + k * m;\n"
+          "            for (int j = 0; j < m; ++j) x[j] -= l * y[j];\n"
+          "        }\n"
+          "        const double d = 1.0 / L[i * n + i];\n"
+          "        for (int j = 0; j < m; ++j) x[j] *= d;\n"
+          "    }\n"
+          "}\n";
+    return os.str();
+}
+
 std::string solvers(const CodePlan& plan, const Dialect& d) {
     std::ostringstream os;
     const std::string st = d.cpp ? "" : "static ";
     if (!plan.accelerations.empty()) return os.str();  // forward dynamics solves nothing
     if (plan.symmetric_mass_matrix) {
-        os << "/* Solves A x = b for a symmetric positive definite A (n x n, row by row) by the\n"
+        const std::string prefix = d.cpp ? "" : d.name + "_";
+        os << cholesky_factor_and_back(d) << "\n"
+           << "/* Solves A x = b for a symmetric positive definite A (n x n, row by row) by the\n"
               "   Cholesky factorization A = L L^T (L overwrites A's lower triangle); returns 0,\n"
               "   or -1 if A is not positive definite. */\n"
-           << st << "int " << (d.cpp ? "" : d.name + "_") << "cholesky_solve(int n, double* A, "
-              "const double* b, double* x) {\n"
-              "    for (int j = 0; j < n; ++j) {\n"
-              "        double s = A[j * n + j];\n"
-              "        for (int k = 0; k < j; ++k) s -= A[j * n + k] * A[j * n + k];\n"
-              "        if (!(s > 0.0)) return -1;\n"
-              "        const double d = " << d.math("sqrt") << "(s);\n"
-              "        A[j * n + j] = d;\n"
-              "        for (int i = j + 1; i < n; ++i) {\n"
-              "            double r = A[i * n + j];\n"
-              "            for (int k = 0; k < j; ++k) r -= A[i * n + k] * A[j * n + k];\n"
-              "            A[i * n + j] = r / d;\n"
-              "        }\n"
-              "    }\n"
-              "    for (int i = 0; i < n; ++i) { /* L y = b */\n"
-              "        double s = b[i];\n"
-              "        for (int k = 0; k < i; ++k) s -= A[i * n + k] * x[k];\n"
-              "        x[i] = s / A[i * n + i];\n"
-              "    }\n"
-              "    for (int i = n - 1; i >= 0; --i) { /* L^T x = y */\n"
-              "        double s = x[i];\n"
-              "        for (int k = i + 1; k < n; ++k) s -= A[k * n + i] * x[k];\n"
-              "        x[i] = s / A[i * n + i];\n"
-              "    }\n"
+           << st << "int " << prefix << "cholesky_solve(int n, double* A, const double* b, double* x) {\n"
+              "    if (" << prefix << "cholesky_factor(n, A) != 0) return -1;\n"
+              "    for (int i = 0; i < n; ++i) x[i] = b[i];\n"
+              "    " << prefix << "cholesky_back(n, 1, A, x);\n"
               "    return 0;\n"
               "}\n";
     } else {
@@ -244,48 +277,8 @@ std::string derivative_solvers(const CodePlan& plan, const Dialect& d) {
     const std::string st = d.cpp ? "" : "static ";
     const std::string prefix = d.cpp ? "" : d.name + "_";
     if (plan.symmetric_mass_matrix) {
-        os << "/* The Cholesky factorization A = L L^T of a symmetric positive definite A (n x n,\n"
-              "   row by row; L overwrites A's lower triangle); returns 0, or -1 if A is not\n"
-              "   positive definite. */\n"
-           << st << "int " << prefix << "cholesky_factor(int n, double* A) {\n"
-              "    for (int j = 0; j < n; ++j) {\n"
-              "        double s = A[j * n + j];\n"
-              "        for (int k = 0; k < j; ++k) s -= A[j * n + k] * A[j * n + k];\n"
-              "        if (!(s > 0.0)) return -1;\n"
-              "        const double d = " << d.math("sqrt") << "(s);\n"
-              "        A[j * n + j] = d;\n"
-              "        for (int i = j + 1; i < n; ++i) {\n"
-              "            double r = A[i * n + j];\n"
-              "            for (int k = 0; k < j; ++k) r -= A[i * n + k] * A[j * n + k];\n"
-              "            A[i * n + j] = r / d;\n"
-              "        }\n"
-              "    }\n"
-              "    return 0;\n"
-              "}\n\n"
-              "/* Solves L L^T X = B in place for m right sides (X n x m, row by row, holds B on\n"
-              "   entry), L from cholesky_factor: row operations, the inner loops over the m. */\n"
-           << st << "void " << prefix << "cholesky_back(int n, int m, const double* L, double* X) {\n"
-              "    for (int i = 0; i < n; ++i) { /* L Y = B */\n"
-              "        double* x = X + i * m;\n"
-              "        for (int k = 0; k < i; ++k) {\n"
-              "            const double l = L[i * n + k];\n"
-              "            const double* y = X + k * m;\n"
-              "            for (int j = 0; j < m; ++j) x[j] -= l * y[j];\n"
-              "        }\n"
-              "        const double d = 1.0 / L[i * n + i];\n"
-              "        for (int j = 0; j < m; ++j) x[j] *= d;\n"
-              "    }\n"
-              "    for (int i = n - 1; i >= 0; --i) { /* L^T X = Y */\n"
-              "        double* x = X + i * m;\n"
-              "        for (int k = i + 1; k < n; ++k) {\n"
-              "            const double l = L[k * n + i];\n"
-              "            const double* y = X + k * m;\n"
-              "            for (int j = 0; j < m; ++j) x[j] -= l * y[j];\n"
-              "        }\n"
-              "        const double d = 1.0 / L[i * n + i];\n"
-              "        for (int j = 0; j < m; ++j) x[j] *= d;\n"
-              "    }\n"
-              "}\n";
+        // forward dynamics' cholesky_solve brought them, unless the accelerations are explicit
+        if (!plan.accelerations.empty()) os << cholesky_factor_and_back(d);
     } else {
         os << "/* The LU decomposition of A (n x n, row by row, overwritten by L below the\n"
               "   diagonal and U on and above it) with partial pivoting, p[k] the row swapped\n"
