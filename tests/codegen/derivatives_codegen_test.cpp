@@ -222,6 +222,21 @@ TEST(DerivativesCodegen, MixedRowsWhoseLoadsEnterWithOtherCoefficientsMatchDiffe
         {"static const double A[mixed2_NQ * mixed2_NQ] = {", "mixed2_lu_back(mixed2_NQ, mixed2_NQ, M, p, D);"});
 }
 
+TEST(DerivativesCodegen, RowsThatLuPivotsAfterItsFirstStepMatchDifferences) {
+    if (!have_c_compiler()) GTEST_SKIP() << "no C compiler found (set CC or install gcc)";
+    // Kane's rows of a 4-link chain with the second scaled by 1/100: LU's second step takes
+    // a lower row as its pivot, after the first step's multipliers were stored, so the solve
+    // must apply the factorization's swaps to the right sides as P A = L U has them
+    CodegenCase c = planar_chain_case(4);
+    c.name = "pivoted4";
+    std::vector<ex> E = c.equations.residuals;
+    E[1] = E[1] / 100;
+    c.equations.residuals = E;
+    c.equations.mass_forcing = std::nullopt;
+    expect_derivatives_match_differences(with_derivatives(std::move(c)), 5, "c-derivatives-pivoted",
+                                         {"pivoted4_lu_back(pivoted4_NQ, pivoted4_NQ, M, p, D);"});
+}
+
 TEST(DerivativesCodegen, CppAndPythonHaveTheDerivatives) {
     const CodegenCase c = with_derivatives(arm_case());
     ScratchDir dir("derivatives-languages");
