@@ -102,10 +102,10 @@ std::vector<TimeVariable> coordinates_with_speeds_as_rates(SampleModel& m) {
 }
 
 // the recursive formation in those coordinates, with the derivatives
-CodegenCase floating_case(bool lone) {
+CodegenCase speed_case(std::unique_ptr<SampleModel> model, const std::string& name) {
     CodegenCase c;
-    c.name = lone ? "free_body" : "floating";
-    c.model = std::make_unique<SampleModel>(floating_chain(lone));
+    c.name = name;
+    c.model = std::move(model);
     const std::vector<TimeVariable> q = coordinates_with_speeds_as_rates(*c.model);
     TreeEquations t = form_tree_equations(c.model->system, q, TreeOptions{.mass_matrix = true});
     c.equations = {q, t.residuals, c.model->unknowns, std::nullopt, t.accelerations};
@@ -113,6 +113,10 @@ CodegenCase floating_case(bool lone) {
     c.equations.bias_forces = t.bias_forces;
     add_dynamics_derivatives(c.model->system.symbols(), c.equations);
     return c;
+}
+
+CodegenCase floating_case(bool lone) {
+    return speed_case(std::make_unique<SampleModel>(floating_chain(lone)), lone ? "free_body" : "floating");
 }
 
 // random states with each quaternion's vector part inside the unit ball (|ev| < 0.87)
@@ -178,9 +182,10 @@ struct SpeedPrinted {
 
 // generated, compiled and run at `states`: the printed values per state
 std::vector<SpeedPrinted> run_speed_derivatives(const CodegenCase& c, const std::vector<State>& states,
-                                                const std::string& tag) {
+                                                const std::string& tag, GeneratedCode* generated = nullptr) {
     ScratchDir dir(tag);
-    generate_case(c, Language::c, dir.path());
+    const GeneratedCode g = generate_case(c, Language::c, dir.path());
+    if (generated) *generated = g;
     const std::optional<std::vector<double>> v =
         compile_and_run_c_driver(dir.path(), c.name, speed_derivatives_driver(c.name), driver_input(states));
     if (!v) return {};
@@ -232,6 +237,31 @@ TEST(SpeedDerivativesCodegen, FloatingChainDerivativesAtFixedSpeedsMatchCentralD
         expect_entries_close(got[k].Fq, got[k].fd_Fq, 1e-7, at + "d u'/d q at fixed u");
         expect_entries_close(got[k].Fu, got[k].fd_Fu, 1e-7, at + "d u'/d u");
     }
+}
+
+TEST(SpeedDerivativesCodegen, HumanoidDerivativesAtFixedSpeedsMatchCentralDifferences) {
+    // make_humanoid: 15 segments, a free base, 5 ball joints and 8 hinges, 32 speeds
+    if (!have_c_compiler()) GTEST_SKIP() << "no C compiler '" << c_compiler() << "' found (set CC or install gcc)";
+    const CodegenCase c = speed_case(std::make_unique<SampleModel>(make_humanoid()), "humanoid");
+    ASSERT_EQ(c.n(), 32u);
+    const std::vector<State> states = floating_states(c, 2, 41);
+    GeneratedCode g;
+    const std::vector<SpeedPrinted> got = run_speed_derivatives(c, states, "c-speed-derivatives-humanoid", &g);
+    ASSERT_EQ(got.size(), states.size());
+    for (std::size_t k = 0; k < got.size(); ++k) {
+        const std::string at = "state " + std::to_string(k) + ": ";
+        expect_entries_close(got[k].Dq, got[k].fd_Dq, 1e-7, at + "d tau/d q at fixed u");
+        expect_entries_close(got[k].Du, got[k].fd_Du, 1e-7, at + "d tau/d u");
+        expect_entries_close(got[k].ud, got[k].fd_ud, 1e-12, at + "u'");
+        expect_entries_close(got[k].Fq, got[k].fd_Fq, 1e-7, at + "d u'/d q at fixed u");
+        expect_entries_close(got[k].Fu, got[k].fd_Fu, 1e-7, at + "d u'/d u");
+    }
+    // the operation counts bench/README.md quotes
+    RecordProperty("inverse_dynamics_operations", std::to_string(g.inverse_dynamics_operations));
+    RecordProperty("derivatives_operations", std::to_string(g.inverse_dynamics_derivatives_operations));
+    RecordProperty("accelerations_operations", std::to_string(g.accelerations_operations));
+    RecordProperty("mass_matrix_operations", std::to_string(g.mass_matrix_operations));
+    EXPECT_GT(g.inverse_dynamics_derivatives_operations, g.inverse_dynamics_operations);
 }
 
 TEST(SpeedDerivativesCodegen, LoneFreeBodyDerivativesAreThoseOfEulersEquations) {
