@@ -3,9 +3,11 @@
 // from the tip inward, and the articulated-body accelerations.
 #include "alembert/eom/tree_dynamics.hpp"
 
+#include <algorithm>
 #include <array>
 #include <optional>
 
+#include "alembert/eom/zero_test.hpp"
 #include "alembert/error.hpp"
 #include "alembert/sym/print.hpp"
 #include "alembert/sym/simplify.hpp"
@@ -404,6 +406,31 @@ std::vector<ex> tree_active_forces(const System& sys, const Speeds& sp,
     return F;
 }
 
+// The measures of declared joint reactions that do no work in the tree's motion: those no row
+// of the generalized active forces F changes with (a reaction along the directions its joint
+// prevents, at the joint's point; tested at random states, since the pair's two halves need
+// not cancel symbolically), each mapped to 0. Neither the rows nor the articulated-body
+// recursion then need their values (a program that computes the motor torques or the motion
+// does not read them); a reaction that would do work stays in both.
+GiNaC::exmap idle_reaction_measures(const System& sys, const std::vector<ex>& F) {
+    std::vector<ex> measures;
+    for (const JointReaction& r : sys.joint_reactions())
+        for (const ReactionComponent& c : r.components) measures.push_back(c.measure);
+    GiNaC::exmap idle;
+    if (measures.empty()) return idle;
+    std::vector<bool> works(measures.size(), false);
+    for (const ex& row : F) {
+        if (std::none_of(measures.begin(), measures.end(), [&](const ex& m) { return row.has(m); }))
+            continue;
+        const std::vector<bool> changes =
+            calc_changes_with_at_random_states(sys.symbols(), row, measures);
+        for (std::size_t i = 0; i < measures.size(); ++i) works[i] = works[i] || changes[i];
+    }
+    for (std::size_t i = 0; i < measures.size(); ++i)
+        if (!works[i]) idle[measures[i]] = 0;
+    return idle;
+}
+
 // The rows and the accelerations of a tree extract_tree found.
 TreeEquations form_on_tree(const System& sys, const Speeds& sp, Tree& tree,
                            const TreeOptions& options) {
@@ -463,6 +490,11 @@ TreeEquations form_on_tree(const System& sys, const Speeds& sp, Tree& tree,
     }
 
     // ---- inverse dynamics: road-map rows about successive joints -------------------------------
+    // the generalized active forces, less the joint reactions that do no work
+    std::vector<ex> active = tree_active_forces(sys, sp, nodes);
+    const GiNaC::exmap idle = idle_reaction_measures(sys, active);
+    if (!idle.empty())
+        for (ex& Fr : active) Fr = Fr.subs(idle);
     std::vector<ex> residuals(sp.u.size(), 0);
     {
         std::vector<Spatial> A(nb);  // (alpha, a^O) of each body, -g of the base folded in
@@ -481,30 +513,32 @@ TreeEquations form_on_tree(const System& sys, const Speeds& sp, Tree& tree,
                 fk = fk + transpose(X[static_cast<std::size_t>(ch)]) * f[static_cast<std::size_t>(ch)];
             f[k] = name(fk);
         }
-        std::vector<ex> F = tree_active_forces(sys, sp, nodes);
         for (std::size_t k = 0; k < nb; ++k)
             for (std::size_t i = 0; i < nodes[k].joint.coordinates.size(); ++i) {
                 std::size_t j = nodes[k].joint.coordinates[i];
-                residuals[j] = F[j] - dot(S[k][i], f[k]);
+                residuals[j] = active[j] - dot(S[k][i], f[k]);
             }
     }
 
     // ---- forward dynamics: the articulated-body recursion --------------------------------------
     std::vector<ex> accelerations(sp.u.size(), 0);
     {
-        // loads on each body about its origin, in its frame (gravity is in the base)
+        // loads on each body about its origin, in its frame (gravity is in the base; the
+        // joint reactions that do no work left out)
         std::vector<Spatial> fext(nb);
         for (const Load& l : sys.loads()) {
             const int on = node_of(nodes, l.on);
             if (on < 0) continue;
+            const Vector v = idle.empty() ? l.vector : l.vector.map([&](const ex& e) { return e.subs(idle); });
+            if (v.is_zero()) continue;
             const auto k = static_cast<std::size_t>(on);
             const Frame& B = *nodes[k].frame;
             if (l.kind == LoadKind::force) {
-                Col3 F = l.vector.components_in(B);
+                Col3 F = v.components_in(B);
                 Col3 r = l.point->pos_from(*nodes[k].joint.origin).components_in(B);
                 fext[k] = fext[k] + Spatial{cross(r, F), F};
             } else if (l.on->frame()) {
-                fext[k] = fext[k] + Spatial{l.vector.components_in(B), {}};
+                fext[k] = fext[k] + Spatial{v.components_in(B), {}};
             }
         }
         std::vector<Spatial6> IA = I;

@@ -65,18 +65,6 @@ std::string derivatives_driver(const std::string& name) {
 )");
 }
 
-std::string derivatives_file_text(const fs::path& p) {
-    std::ifstream in(p);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
-std::string c_compiler() {
-    const char* cc_env = std::getenv("CC");
-    return cc_env && *cc_env ? cc_env : "cc";
-}
-
 // the case's equations with the derivatives added
 CodegenCase with_derivatives(CodegenCase c) {
     add_dynamics_derivatives(c.model->system.symbols(), c.equations);
@@ -140,31 +128,18 @@ void expect_close(const std::vector<double>& got, const std::vector<double>& wan
 // random states; the printed values per state
 std::vector<Printed> run_derivatives(const CodegenCase& c, const std::vector<State>& states,
                                      const std::string& tag, std::string* source = nullptr) {
-    const std::string cc = c_compiler();
-    std::string out;
     ScratchDir dir(tag);
     generate_case(c, Language::c, dir.path());
-    if (source) *source = derivatives_file_text(dir.path() / (c.name + ".c"));
-    write(dir.path() / "driver.c", derivatives_driver(c.name));
-    const std::string build = "cd " + dir.path().string() + " && " + cc +
-                              " -std=c99 -pedantic -Wall -Wextra -Werror -O2 " + c.name +
-                              ".c driver.c -lm -o driver";
-    if (run(build, out) != 0) {
-        ADD_FAILURE() << "compiling the generated C failed:\n" << out;
-        return {};
-    }
-    write(dir.path() / "states.txt", driver_input(states));
-    if (run("cd " + dir.path().string() + " && ./driver < states.txt", out) != 0) {
-        ADD_FAILURE() << "the driver failed:\n" << out;
-        return {};
-    }
-    const std::vector<double> v = numbers(out);
+    if (source) *source = file_text(dir.path() / (c.name + ".c"));
+    const std::optional<std::vector<double>> v =
+        compile_and_run_c_driver(dir.path(), c.name, derivatives_driver(c.name), driver_input(states));
+    if (!v) return {};
     const std::size_t n = c.n();
-    if (v.size() != states.size() * (8 * n * n + 2 * n)) {
-        ADD_FAILURE() << "the driver printed " << v.size() << " numbers:\n" << out;
+    if (v->size() != states.size() * (8 * n * n + 2 * n)) {
+        ADD_FAILURE() << "the driver printed " << v->size() << " numbers";
         return {};
     }
-    return split_printed(v, n, states.size());
+    return split_printed(*v, n, states.size());
 }
 
 // the derivatives against central differences of the generated dynamics, to 1e-7 relative;
@@ -185,11 +160,6 @@ void expect_derivatives_match_differences(const CodegenCase& c, int count, const
         expect_close(got[k].Fq, got[k].fd_Fq, 1e-7, at + "d qpp/d q");
         expect_close(got[k].Fqp, got[k].fd_Fqp, 1e-7, at + "d qpp/d qp");
     }
-}
-
-bool have_c_compiler() {
-    std::string out;
-    return run(c_compiler() + " --version", out) == 0;
 }
 
 }  // namespace
@@ -252,12 +222,27 @@ TEST(DerivativesCodegen, MixedRowsWhoseLoadsEnterWithOtherCoefficientsMatchDiffe
         {"static const double A[mixed2_NQ * mixed2_NQ] = {", "mixed2_lu_back(mixed2_NQ, mixed2_NQ, M, p, D);"});
 }
 
+TEST(DerivativesCodegen, RowsThatLuPivotsAfterItsFirstStepMatchDifferences) {
+    if (!have_c_compiler()) GTEST_SKIP() << "no C compiler found (set CC or install gcc)";
+    // Kane's rows of a 4-link chain with the second scaled by 1/100: LU's second step takes
+    // a lower row as its pivot, after the first step's multipliers were stored, so the solve
+    // must apply the factorization's swaps to the right sides as P A = L U has them
+    CodegenCase c = planar_chain_case(4);
+    c.name = "pivoted4";
+    std::vector<ex> E = c.equations.residuals;
+    E[1] = E[1] / 100;
+    c.equations.residuals = E;
+    c.equations.mass_forcing = std::nullopt;
+    expect_derivatives_match_differences(with_derivatives(std::move(c)), 5, "c-derivatives-pivoted",
+                                         {"pivoted4_lu_back(pivoted4_NQ, pivoted4_NQ, M, p, D);"});
+}
+
 TEST(DerivativesCodegen, CppAndPythonHaveTheDerivatives) {
     const CodegenCase c = with_derivatives(arm_case());
     ScratchDir dir("derivatives-languages");
     GeneratedCode g = generate_case(c, Language::cpp, dir.path());
     EXPECT_GT(g.inverse_dynamics_derivatives_operations, g.inverse_dynamics_operations);
-    const std::string hpp = derivatives_file_text(dir.path() / "arm.hpp");
+    const std::string hpp = file_text(dir.path() / "arm.hpp");
     EXPECT_NE(hpp.find("void inverse_dynamics_derivatives(double t, const double* q, const double* "
                        "qp, const double* qpp, double* dtau_dq, double* dtau_dqp) const;"),
               std::string::npos)
@@ -303,7 +288,7 @@ TEST(DerivativesCodegen, CppAndPythonHaveTheDerivatives) {
         }
     }
     generate_case(c, Language::python, dir.path());
-    const std::string py = derivatives_file_text(dir.path() / "arm.py");
+    const std::string py = file_text(dir.path() / "arm.py");
     EXPECT_NE(py.find("def inverse_dynamics_derivatives(t, q, qp, qpp, ctx):"), std::string::npos);
     EXPECT_NE(py.find("def forward_dynamics_derivatives(t, q, qp, u, ctx):"), std::string::npos);
     EXPECT_EQ(run("python3 -m py_compile " + (dir.path() / "arm.py").string(), out), 0) << out;
@@ -344,7 +329,7 @@ TEST(DerivativesCodegen, GeneratedDerivativesAreTheSameFromRunToRun) {
                       out),
                   0)
             << out;
-        texts[k] = derivatives_file_text(sub / "arm.c");
+        texts[k] = file_text(sub / "arm.c");
     }
     EXPECT_NE(texts[0].find("void arm_inverse_dynamics_derivatives("), std::string::npos);
     EXPECT_NE(texts[0].find("int arm_forward_dynamics_derivatives("), std::string::npos);

@@ -3,7 +3,10 @@
 // standard input and print M, f, forward dynamics, inverse dynamics and outputs per state.
 #pragma once
 
+#include <cstdlib>
+#include <optional>
 #include <string>
+#include <vector>
 
 #include "harness.hpp"
 
@@ -170,6 +173,50 @@ for k = 1:size(X, 1)
     s = replace_all(s, "N+", std::to_string(n) + "+");
     s = replace_all(s, "*N", "*" + std::to_string(n));
     return replace_all(s, "+U", "+" + std::to_string(m));
+}
+
+/// The C compiler generated code is built with: $CC, else cc.
+inline std::string c_compiler() {
+    const char* cc = std::getenv("CC");
+    return cc && *cc ? cc : "cc";
+}
+
+/// Whether the C compiler runs (the tests that compile skip without one).
+inline bool have_c_compiler() {
+    std::string out;
+    return run(c_compiler() + " --version", out) == 0;
+}
+
+/// A file's whole text.
+inline std::string file_text(const fs::path& p) {
+    std::ifstream in(p);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+/// The generated C NAME.c in `dir` compiled with a C driver (`driver`, written to driver.c;
+/// c_driver_frame) as strict C99 into `dir`/driver, which is run on `input` (written to
+/// states.txt): the numbers it prints. When compiling or running fails, a test failure naming
+/// the step with the compiler's or the driver's output is added and nothing is returned.
+inline std::optional<std::vector<double>> compile_and_run_c_driver(const fs::path& dir,
+                                                                   const std::string& name,
+                                                                   const std::string& driver,
+                                                                   const std::string& input) {
+    std::string out;
+    write(dir / "driver.c", driver);
+    if (run("cd " + dir.string() + " && " + c_compiler() +
+                " -std=c99 -pedantic -Wall -Wextra -Werror -O2 " + name + ".c driver.c -lm -o driver",
+            out) != 0) {
+        ADD_FAILURE() << "compiling the generated C " << name << ".c failed:\n" << out;
+        return std::nullopt;
+    }
+    write(dir / "states.txt", input);
+    if (run("cd " + dir.string() + " && ./driver < states.txt", out) != 0) {
+        ADD_FAILURE() << "the driver of " << name << ".c failed:\n" << out;
+        return std::nullopt;
+    }
+    return numbers(out);
 }
 
 }  // namespace alembert::test

@@ -37,21 +37,10 @@ DynamicsEquations arm_equations(const SampleModel& m) {
     return eq;
 }
 
-std::string read_text(const fs::path& p) {
-    std::ifstream in(p);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
 }  // namespace
 
 TEST(MassMatrixCodegen, GeneratedMassMatrixAndBiasOfTheArmMatchMassAndForcing) {
-    const char* cc_env = std::getenv("CC");
-    const std::string cc = cc_env && *cc_env ? cc_env : "cc";
-    std::string out;
-    if (run(cc + " --version", out) != 0)
-        GTEST_SKIP() << "no C compiler '" << cc << "' found (set CC or install gcc)";
+    if (!have_c_compiler()) GTEST_SKIP() << "no C compiler '" << c_compiler() << "' found (set CC or install gcc)";
 
     SampleModel m = make_kuka_iiwa14();
     const DynamicsEquations eq = arm_equations(m);
@@ -64,13 +53,6 @@ TEST(MassMatrixCodegen, GeneratedMassMatrixAndBiasOfTheArmMatchMassAndForcing) {
     // M alone costs less than M with the forcing
     EXPECT_LT(g.mass_matrix_operations, g.mass_forcing_operations);
 
-    write(dir.path() / "driver.c", mass_matrix_driver(options.name));
-    ASSERT_EQ(run("cd " + dir.path().string() + " && " + cc +
-                      " -std=c99 -pedantic -Wall -Wextra -Werror -O2 arm.c driver.c -lm -o driver",
-                  out),
-              0)
-        << "compiling the generated C failed:\n"
-        << out;
     std::mt19937 rng(5);
     std::uniform_real_distribution<double> angle(-2.5, 2.5), rate(-2, 2);
     const int count = 5;
@@ -84,11 +66,12 @@ TEST(MassMatrixCodegen, GeneratedMassMatrixAndBiasOfTheArmMatchMassAndForcing) {
         for (std::size_t i = 0; i < n; ++i) input << ' ' << rate(rng);
         input << '\n';
     }
-    write(dir.path() / "states.txt", input.str());
-    ASSERT_EQ(run("cd " + dir.path().string() + " && ./driver < states.txt", out), 0) << out;
-    const std::vector<double> got = numbers(out);
+    const std::optional<std::vector<double>> printed =
+        compile_and_run_c_driver(dir.path(), options.name, mass_matrix_driver(options.name), input.str());
+    ASSERT_TRUE(printed);
+    const std::vector<double>& got = *printed;
     const std::size_t per = 2 * (n * n + n);
-    ASSERT_EQ(got.size(), count * per) << out;
+    ASSERT_EQ(got.size(), count * per);
     for (int k = 0; k < count; ++k) {
         const double* M = &got[k * per];
         const double* f = M + n * n;
@@ -129,7 +112,7 @@ TEST(MassMatrixCodegen, GeneratedMassMatrixFileIsTheSameFromRunToRun) {
                       out),
                   0)
             << out;
-        texts[k] = read_text(sub / "arm.c");
+        texts[k] = file_text(sub / "arm.c");
     }
     EXPECT_NE(texts[0].find("void arm_mass_matrix("), std::string::npos);
     EXPECT_NE(texts[0].find("void arm_bias_forces("), std::string::npos);

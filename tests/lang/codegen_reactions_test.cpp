@@ -11,6 +11,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <iterator>
+#include <optional>
 #include <random>
 #include <sstream>
 #include <string>
@@ -202,6 +203,69 @@ ArmForces arm_forces(double q1, double q2, double d1, double d2, double T, bool 
     return {mA * aAx + mB * aBx, mA * aAy + mB * aBy + (mA + mB) * g, mB * aBx, mB * aBy + mB * g};
 }
 
+// ---- sit-to-stand ------------------------------------------------------------------------
+// examples/sit_to_stand: shank A, thigh B and trunk C in the plane, turned by qA about Nz at
+// the ankle A_o (fixed), qB at the knee B_o, qC at the hip C_o, each segment along its y axis;
+// joint reactions declared at the three joints. With absolute angles thA = qA, thB = thA + qB,
+// thC = thB + qC and e(th) = (-sin th, cos th) (a body's y axis):
+//   p_Acm = d_A e(thA),  p_Bcm = L_A e(thA) + d_B e(thB),  p_Ccm = L_A e(thA) + L_B e(thB) + d_C e(thC),
+// and l e(th) accelerates at l (th'' (-cos th, -sin th) - th'^2 e(th)). Moments about each
+// joint O of the bodies beyond it (the joint's reaction force acts at O, gravity -g Ny):
+//   T_O = sum over those bodies of I alpha + ((p - p_O) x m (a + g Ny)) . Nz,
+// the knee's and hip's points moving (the moment equation about any point with the mass
+// centres' accelerations).
+struct Segment {
+    double m, I;
+};
+constexpr Segment kShank{6.51, 0.1038}, kThigh{14.00, 0.2534}, kTrunk{47.46, 2.799};
+constexpr double kLA = 0.4182, kLB = 0.4165, kdA = 0.2371, kdB = 0.2362, kdC = 0.3065, kg = 9.81;
+
+std::array<double, 3> sit_to_stand_torques(const std::array<double, 9>& x) {
+    const double th[3] = {x[0], x[0] + x[1], x[0] + x[1] + x[2]};
+    const double w[3] = {x[3], x[3] + x[4], x[3] + x[4] + x[5]};
+    const double al[3] = {x[6], x[6] + x[7], x[6] + x[7] + x[8]};
+    struct Planar {
+        double x, y;
+    };
+    // l e(th) and its acceleration, summed over the segments' lengths l[k] from the ankle
+    auto at = [&](const double* l, int count, Planar& p, Planar& a) {
+        p = {0, 0}, a = {0, 0};
+        for (int k = 0; k < count; ++k) {
+            const double s = std::sin(th[k]), c = std::cos(th[k]);
+            p.x += -l[k] * s, p.y += l[k] * c;
+            a.x += l[k] * (-al[k] * c + w[k] * w[k] * s);
+            a.y += l[k] * (-al[k] * s - w[k] * w[k] * c);
+        }
+    };
+    const double lA[] = {kdA}, lB[] = {kLA, kdB}, lC[] = {kLA, kLB, kdC}, lKnee[] = {kLA},
+                 lHip[] = {kLA, kLB};
+    Planar p[3], a[3], knee, hip, unused;
+    at(lA, 1, p[0], a[0]);
+    at(lB, 2, p[1], a[1]);
+    at(lC, 3, p[2], a[2]);
+    at(lKnee, 1, knee, unused);
+    at(lHip, 2, hip, unused);
+    const Segment seg[3] = {kShank, kThigh, kTrunk};
+    // the moment about O of the segments from `first` on
+    auto moment = [&](Planar O, int first) {
+        double T = 0;
+        for (int k = first; k < 3; ++k) {
+            const double Fx = seg[k].m * a[k].x, Fy = seg[k].m * (a[k].y + kg);
+            T += seg[k].I * al[k] + (p[k].x - O.x) * Fy - (p[k].y - O.y) * Fx;
+        }
+        return T;
+    };
+    return {moment({0, 0}, 0), moment(knee, 1), moment(hip, 2)};
+}
+
+// the example's model statements (up to its road-map)
+std::string sit_to_stand_model() {
+    const std::string text = read_text(fs::path(ALEMBERT_SOURCE_DIR) / "examples" / "sit_to_stand" / "model.alb");
+    const std::size_t end = text.find("\nroadmap E");
+    EXPECT_NE(end, std::string::npos) << "examples/sit_to_stand/model.alb has no road-map";
+    return text.substr(0, end + 1);
+}
+
 }  // namespace
 
 TEST(CodegenReactions, APendulumsGeneratedProgramWritesThePinForceOfNewtonsLawAtEveryRow) {
@@ -373,6 +437,56 @@ TEST(CodegenReactions, TheGeneratedFilesAreTheSameFromRunToRun) {
         const std::string a = read_text(dir.path() / "first" / "c" / file);
         EXPECT_NE(a.find("reactions"), std::string::npos) << file;
         EXPECT_EQ(a, read_text(dir.path() / "second" / "c" / file)) << file;
+    }
+}
+
+TEST(CodegenReactions, TorquesOfAModelThatDeclaresJointReactionsNeedNoReactionValues) {
+    // the sit-to-stand model declares reactions at all three joints; code for its torques alone
+    // (with or without the derivatives) takes the torques as its only loads: the reactions do
+    // no work, so neither inverse nor forward dynamics reads them
+    if (!has_program(c_compiler() + " --version"))
+        GTEST_SKIP() << "no C compiler '" << c_compiler() << "' found (set CC or install gcc)";
+    ScratchDir dir("reactions-sit-to-stand");
+    run_script(sit_to_stand_model() + "codegen c name sts for T_A, T_B, T_C to \"c\"\n" +
+                   "codegen c name sts for T_A, T_B, T_C derivatives to \"d\"\n",
+               dir.path());
+    std::mt19937 rng(17);
+    std::uniform_real_distribution<double> angle(-2, 2), rate(-3, 3);
+    std::vector<std::array<double, 9>> states(6);
+    std::ostringstream in;
+    in.precision(17);
+    in << states.size() << "\n";
+    for (std::array<double, 9>& x : states) {
+        for (double& v : x) v = angle(rng);
+        for (std::size_t i = 3; i < 9; ++i) x[i] = rate(rng);
+        for (double v : x) in << v << ' ';
+        in << "\n";
+    }
+    for (const char* sub : {"c", "d"}) {
+        SCOPED_TRACE(sub);
+        const fs::path at = dir.path() / sub;
+        EXPECT_NE(read_text(at / "sts.h").find("#define sts_NU 3"), std::string::npos) << read_text(at / "sts.h");
+        // per state: the torques of inverse dynamics, then q'' of forward dynamics with them
+        const std::optional<std::vector<double>> got = alembert::test::compile_and_run_c_driver(
+            at, "sts", alembert::test::c_driver_frame("sts", R"(        double q[3], qp[3], qpp[3], u[3], a[3];
+        if (!read(q, 3) || !read(qp, 3) || !read(qpp, 3)) return 1;
+        sts_inverse_dynamics(&c, 0.0, q, qp, qpp, u);
+        if (sts_forward_dynamics(&c, 0.0, q, qp, u, a) != 0) return 2;
+        print(u, 3);
+        print(a, 3);
+)"),
+            in.str());
+        ASSERT_TRUE(got);
+        ASSERT_EQ(got->size(), 6 * states.size());
+        for (std::size_t k = 0; k < states.size(); ++k) {
+            SCOPED_TRACE("state " + std::to_string(k));
+            const std::array<double, 3> T = sit_to_stand_torques(states[k]);
+            for (int i = 0; i < 3; ++i) {
+                EXPECT_NEAR((*got)[6 * k + i], T[i], 1e-11 * std::max(1.0, std::fabs(T[i]))) << "torque " << i;
+                EXPECT_NEAR((*got)[6 * k + 3 + i], states[k][6 + i], 1e-9 * std::max(1.0, std::fabs(states[k][6 + i])))
+                    << "q'' " << i;
+            }
+        }
     }
 }
 

@@ -42,7 +42,10 @@ struct TreeEquations {
     /// included) are accumulated from the tip inward, each joint's from its children's, and
     /// dw_r, dv_r are the joint's partial angular velocity and partial velocity of O. F_r is the
     /// generalized active force of the loads external to S (gravity is in the inertia terms);
-    /// a joint's motor torque enters its own rows only, with exact number coefficients. The rows equal Kane's
+    /// a joint's motor torque enters its own rows only, with exact number coefficients. A
+    /// declared joint reaction (System::add_joint_reaction) that does no work, its measures
+    /// changing no row at random states, is left out of the rows and of the accelerations,
+    /// which then do not hold its measures. The rows equal Kane's
     /// equations with u = q' and are linear in q'' and the loads; each body's kinematics,
     /// inertia forces and accumulated sums are named intermediates, so their size grows
     /// linearly in the number of bodies.
