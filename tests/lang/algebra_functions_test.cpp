@@ -11,43 +11,15 @@
 #include <string>
 
 #include "alembert/lang/interpreter.hpp"
+#include "support/script_dir.hpp"
 
 namespace algebra_functions_test {
 
 using namespace alembert::lang;
 
-struct AlgebraRun {
-    std::ostringstream out, err;
-    Interpreter interp{out, err, false};
-    std::string ok(const std::string& text) {
-        out.str("");
-        EXPECT_EQ(interp.run(text, "test.alb"), RunStatus::ok) << err.str();
-        return out.str();
-    }
-    std::string fails(const std::string& text) {
-        err.str("");
-        EXPECT_EQ(interp.run(text, "test.alb"), RunStatus::script_error) << out.str();
-        return err.str();
-    }
-    // the value `evaluate e at ...` prints
-    double at(const std::string& e, const std::string& values) {
-        std::string o = ok("evaluate " + e + (values.empty() ? "" : " at " + values) + "\n");
-        std::size_t p = o.find("= ");
-        if (p == std::string::npos) {
-            ADD_FAILURE() << "no value for " << e << " in " << o;
-            return NAN;
-        }
-        return std::stod(o.substr(p + 2));
-    }
-};
-
-bool has(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
-
-std::string num(double v) {
-    char b[40];
-    std::snprintf(b, sizeof b, "%.17g", v);
-    return b;
-}
+using AlgebraRun = alembert::test::ScriptSession;
+using alembert::test::digits17;
+using alembert::test::has;
 
 void expect_close(double got, double want, const std::string& what) {
     EXPECT_NEAR(got, want, 1e-11 * std::max(1.0, std::abs(want))) << what;
@@ -68,8 +40,8 @@ TEST(AlgebraFunctions, CoefIsTheCoefficientOfAPowerInAPolynomial) {
     std::uniform_real_distribution<double> u(-2, 2);
     for (int trial = 0; trial < 3; ++trial) {
         const double a = u(rng), b = u(rng), l = u(rng), q = u(rng), x = u(rng), p = u(rng);
-        const std::string at = "A = " + num(a) + ", B = " + num(b) + ", L = " + num(l) + ", q = " + num(q) +
-                               ", x = " + num(x) + ", p = " + num(p);
+        const std::string at = "A = " + digits17(a) + ", B = " + digits17(b) + ", L = " + digits17(l) + ", q = " + digits17(q) +
+                               ", x = " + digits17(x) + ", p = " + digits17(p);
         expect_close(r.at("coef(e, q)", at), 2 * a * b * x + std::sin(p), "coef(e, q)");
         expect_close(r.at("coef(e, q^2)", at), b * b * x, "coef(e, q^2)");
         expect_close(r.at("coef(e, q, 2)", at), b * b * x, "coef(e, q, 2)");
@@ -94,7 +66,7 @@ TEST(AlgebraFunctions, CoefOfAnAccelerationInKanesEquationIsTheMassTerm) {
          "translate P from N_o by -L*Ay>\nmass P = m\ngravity -g*Ny>\nkane K for q\ndigits 17\n");
     for (double m : {0.7, 2.5})
         for (double l : {0.3, 1.9}) {
-            const std::string at = "m = " + num(m) + ", L = " + num(l) + ", q = 0.4, g = 9.81";
+            const std::string at = "m = " + digits17(m) + ", L = " + digits17(l) + ", q = 0.4, g = 9.81";
             expect_close(r.at("coef(K[1], q'')", at), -m * l * l, "coef(K[1], q'')");
             expect_close(r.at("coef(K[1], q'', 0)", at), -m * 9.81 * l * std::sin(0.4), "coef(K[1], q'', 0)");
         }
@@ -133,8 +105,8 @@ TEST(AlgebraFunctions, ReplaceSubstitutesEverySymbolAtOnce) {
     std::uniform_real_distribution<double> u(-2, 2);
     for (int trial = 0; trial < 3; ++trial) {
         const double a = u(rng), b = u(rng), l = u(rng), q = u(rng), x = u(rng), p = u(rng);
-        const std::string at = "A = " + num(a) + ", B = " + num(b) + ", L = " + num(l) + ", q = " + num(q) +
-                               ", x = " + num(x) + ", p = " + num(p);
+        const std::string at = "A = " + digits17(a) + ", B = " + digits17(b) + ", L = " + digits17(l) + ", q = " + digits17(q) +
+                               ", x = " + digits17(x) + ", p = " + digits17(p);
         // q = 1, x = L: (A + B)^2 L + L + sin(p)
         expect_close(r.at("replace(e, q = 1, x = L)", at), (a + b) * (a + b) * l + l + std::sin(p), "q = 1, x = L");
         // at once: q and x swapped, so q - 2x becomes x - 2q
@@ -177,7 +149,7 @@ TEST(AlgebraFunctions, TaylorIsTheTaylorPolynomialAboutThePoint) {
     const double pi = std::numbers::pi;
     for (int trial = 0; trial < 3; ++trial) {
         const double q = u(rng), x = u(rng), a = u(rng);
-        const std::string at = "q = " + num(q) + ", x = " + num(x) + ", A = " + num(a);
+        const std::string at = "q = " + digits17(q) + ", x = " + digits17(x) + ", A = " + digits17(a);
         expect_close(r.at("taylor(sin(q), q = 0, 5)", at), q - q * q * q / 6 + std::pow(q, 5) / 120, "sin");
         // cos about pi: -1 + (q - pi)^2/2; the positional form
         const double d = q - pi;
@@ -225,7 +197,7 @@ TEST(AlgebraFunctions, FactorKeepsTheValueAndFloorRoundsNumbersDown) {
     std::uniform_real_distribution<double> u(-2, 2);
     for (int trial = 0; trial < 3; ++trial) {
         const double a = u(rng), b = u(rng), q = u(rng);
-        const std::string at = "A = " + num(a) + ", B = " + num(b) + ", q = " + num(q);
+        const std::string at = "A = " + digits17(a) + ", B = " + digits17(b) + ", q = " + digits17(q);
         expect_close(r.at("factor(A^2*q^2 - B^2)", at), (a * q - b) * (a * q + b), "factor");
     }
     // the factors are GiNaC's: (A*q - B) and (A*q + B) divide the result exactly
@@ -253,7 +225,7 @@ TEST(AlgebraFunctions, SolveAsKeepsTheSolutionsAsValues) {
     std::uniform_real_distribution<double> u(0.1, 2);
     for (int trial = 0; trial < 3; ++trial) {
         const double a = u(rng), b = u(rng);
-        const std::string at = "A = " + num(a) + ", B = " + num(b);
+        const std::string at = "A = " + digits17(a) + ", B = " + digits17(b);
         expect_close(r.at("qs", at), b / (1 + a * b), "qs");
         expect_close(r.at("xs", at), 1 / (1 + a * b), "xs");
         expect_close(r.at("S[1]", at), b / (1 + a * b), "S[1]");

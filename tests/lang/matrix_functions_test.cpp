@@ -13,42 +13,15 @@
 #include <string>
 
 #include "alembert/lang/interpreter.hpp"
+#include "support/script_dir.hpp"
 
 namespace matrix_functions_test {
 
 using namespace alembert::lang;
 
-struct MatrixRun {
-    std::ostringstream out, err;
-    Interpreter interp{out, err, false};
-    std::string ok(const std::string& text) {
-        out.str("");
-        EXPECT_EQ(interp.run(text, "test.alb"), RunStatus::ok) << err.str();
-        return out.str();
-    }
-    std::string fails(const std::string& text) {
-        err.str("");
-        EXPECT_EQ(interp.run(text, "test.alb"), RunStatus::script_error) << out.str();
-        return err.str();
-    }
-    double at(const std::string& e, const std::string& values) {
-        std::string o = ok("evaluate " + e + (values.empty() ? "" : " at " + values) + "\n");
-        std::size_t p = o.find("= ");
-        if (p == std::string::npos) {
-            ADD_FAILURE() << "no value for " << e << " in " << o;
-            return NAN;
-        }
-        return std::stod(o.substr(p + 2));
-    }
-};
-
-bool has(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
-
-std::string num(double v) {
-    char b[40];
-    std::snprintf(b, sizeof b, "%.17g", v);
-    return b;
-}
+using MatrixRun = alembert::test::ScriptSession;
+using alembert::test::digits17;
+using alembert::test::has;
 
 void expect_close(double got, double want, const std::string& what) {
     EXPECT_NEAR(got, want, 1e-12 * std::max(1.0, std::abs(want))) << what;
@@ -95,7 +68,7 @@ TEST(MatrixFunctions, TransposeInverseDeterminantAndArithmeticAgreeWithTheHandRe
             for (double& x : row) x = u(rng);
         const char* names[9] = {"a", "b", "c", "d", "f", "g", "h", "k", "L"};
         std::string at;
-        for (int i = 0; i < 9; ++i) at += (i ? ", " : "") + std::string(names[i]) + " = " + num(m[i / 3][i % 3]);
+        for (int i = 0; i < 9; ++i) at += (i ? ", " : "") + std::string(names[i]) + " = " + digits17(m[i / 3][i % 3]);
         double det = 0;
         const Mat inv = hand_inverse(m, det);
         expect_close(r.at("D", at), det, "det " + at);
@@ -141,7 +114,7 @@ TEST(MatrixFunctions, EigIsTheEigenvaluesOfAMatrixOfNumbers) {
     for (int trial = 0; trial < 3; ++trial) {
         const double p = u(rng), q = u(rng), s = u(rng);
         MatrixRun w;
-        w.ok("newtonian N\ndigits 17\nconstant p = " + num(p) + ", r = " + num(q) + ", s = " + num(s) +
+        w.ok("newtonian N\ndigits 17\nconstant p = " + digits17(p) + ", r = " + digits17(q) + ", s = " + digits17(s) +
              "\nE = eig([p, r; r, s])\n");
         const double mid = (p + s) / 2, half = std::sqrt((p - s) * (p - s) / 4 + q * q);
         expect_close(w.at("E[1, 1]", ""), mid - half, "lower eigenvalue");
@@ -165,7 +138,7 @@ TEST(MatrixFunctions, PolynomialAndRootsAgreeWithTheHandPolynomial) {
     std::uniform_real_distribution<double> u(-3, 3);
     for (int trial = 0; trial < 3; ++trial) {
         const double a = u(rng), b = u(rng), c = u(rng), x = u(rng);
-        const std::string at = "A = " + num(a) + ", B = " + num(b) + ", C = " + num(c) + ", x = " + num(x);
+        const std::string at = "A = " + digits17(a) + ", B = " + digits17(b) + ", C = " + digits17(c) + ", x = " + digits17(x);
         expect_close(r.at("P", at), a * x * x + b * x + c, "polynomial " + at);
         // (A x - B)^2 x + C = A^2 x^3 - 2AB x^2 + B^2 x + C
         expect_close(r.at("K[1, 1]", at), a * a, "x^3");
@@ -173,7 +146,7 @@ TEST(MatrixFunctions, PolynomialAndRootsAgreeWithTheHandPolynomial) {
         expect_close(r.at("K[1, 3]", at), b * b, "x");
         expect_close(r.at("K[1, 4]", at), c, "1");
         std::array<double, 3> z{u(rng), u(rng), u(rng)};
-        const std::string p = "(x - " + num(z[0]) + ")*(x - " + num(z[1]) + ")*(x - " + num(z[2]) + ")";
+        const std::string p = "(x - " + digits17(z[0]) + ")*(x - " + digits17(z[1]) + ")*(x - " + digits17(z[2]) + ")";
         r.ok("Z = roots(" + p + ", x)\n");
         std::sort(z.begin(), z.end());
         for (int i = 0; i < 3; ++i) EXPECT_NEAR(r.at("Z[" + std::to_string(i + 1) + ", 1]", ""), z[static_cast<std::size_t>(i)], 1e-9) << p;
@@ -237,8 +210,8 @@ TEST(MatrixFunctions, MassAndMassCentreOfSeveralBodies) {
     std::uniform_real_distribution<double> u(0.5, 3);
     for (int trial = 0; trial < 3; ++trial) {
         const double m1 = u(rng), m2 = u(rng), m3 = u(rng), l = u(rng), q = u(rng);
-        const std::string at = "m1 = " + num(m1) + ", m2 = " + num(m2) + ", m3 = " + num(m3) + ", L = " + num(l) +
-                               ", q = " + num(q);
+        const std::string at = "m1 = " + digits17(m1) + ", m2 = " + digits17(m2) + ", m3 = " + digits17(m3) + ", L = " + digits17(l) +
+                               ", q = " + digits17(q);
         expect_close(r.at("mass(A, B)", at), m1 + m2, "mass(A, B)");
         expect_close(r.at("mass(S, B)", at), m1 + m2 + m3, "mass(S, B)");
         const double xa = l * std::cos(q), ya = l * std::sin(q), yb = 2 * l, xc = xa + l, yc = ya;
