@@ -246,7 +246,10 @@ std::string tikz_diagram(const System& sys, const Evaluation& ev,
     std::map<const Point*, std::array<double, 2>> at;
     std::vector<const Point*> order;  // the model's order, for the same output run to run
     double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
-    for (const Point* p : placed) {
+    // the model's points, and O where the planner located it off them (an instantaneous centre)
+    std::vector<const Point*> shown = placed;
+    if (const Point* o = row_about_point(r, ev)) shown.push_back(o);
+    for (const Point* p : shown) {
         std::array<double, 2> q = project(ev.position(p));
         if (!std::isfinite(q[0]) || !std::isfinite(q[1])) continue;
         at[p] = q;

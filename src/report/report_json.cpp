@@ -247,7 +247,8 @@ std::vector<double> view_up(const System& sys, const Evaluation& ev, bool planar
 }
 
 std::string geometry_json(const System& sys, const Evaluation& ev,
-                          const std::vector<const Point*>& placed, bool* planar) {
+                          const std::vector<const Point*>& placed, bool* planar,
+                          const std::vector<const Point*>& about_only) {
     std::vector<std::string> pts, segs;
     *planar = true;
     for (const Point* p : placed) {
@@ -257,6 +258,12 @@ std::string geometry_json(const System& sys, const Evaluation& ev,
         if (*planar && !is_zero_at_random_states(sys.symbols(), c[2])) *planar = false;
         pts.push_back(Obj().add("name", str(p->name())).add("at", num_arr(ev.position(p, c))).done());
     }
+    for (const Point* p : about_only)
+        pts.push_back(Obj()
+                          .add("name", str(p->name()))
+                          .add("at", num_arr(ev.position(p)))
+                          .add("about_only", "true")
+                          .done());
     for (const Segment& s : segments_of(sys, placed))
         segs.push_back(
             Obj().add("body", str(s.body)).add("from", str(s.from)).add("to", str(s.to)).done());
@@ -776,7 +783,7 @@ std::string report_detail::render_json(const ReportContent& c,
     Evaluation ev(sys, c.configuration);
     std::vector<const Point*> placed = placed_points(sys, &ev);
     bool planar = true;
-    std::string geometry = geometry_json(sys, ev, placed, &planar);
+    std::string geometry = geometry_json(sys, ev, placed, &planar, row_about_points(c.rows, ev));
     std::vector<std::string> rows, histories, config;
     const std::vector<RowSteps> formed_steps =
         given_steps ? std::vector<RowSteps>{} : calc_rows_steps(c, equations);
