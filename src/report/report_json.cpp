@@ -426,14 +426,25 @@ std::string matrices_tex(const SymbolTable& st, const LinearSystem& m) {
     const unsigned n = m.A.rows();
     std::vector<std::vector<std::string>> M(n);
     std::vector<std::string> f(n);
+    std::vector<ex> wide;              // the entries with a piece too long for a line
+    std::vector<std::string*> wide_at;  // and where each is written
+    const auto entry = [&](const ex& e, std::string& tex) {
+        const ex x = readable_entry(st, e);
+        tex = to_latex(x);
+        if (longest_unbreakable(breakable_tex(tex)) > kUnbreakableChars) {
+            wide.push_back(x);
+            wide_at.push_back(&tex);
+        }
+    };
     std::size_t widest = 0;  // the widest line of the matrix form: a row of M and f's entry
     for (unsigned i = 0; i < n; ++i) {
         std::size_t width = 0;
+        M[i].resize(m.A.cols());
         for (unsigned j = 0; j < m.A.cols(); ++j) {
-            M[i].push_back(to_latex(readable_entry(st, m.A(i, j))));
-            width += M[i].back().size() + 3;
+            entry(m.A(i, j), M[i][j]);
+            width += M[i][j].size() + 3;
         }
-        f[i] = to_latex(readable_entry(st, m.b(i, 0)));
+        entry(m.b(i, 0), f[i]);
         widest = std::max(widest, width + f[i].size());
     }
     std::string x = "\\begin{bmatrix} ";
@@ -444,12 +455,22 @@ std::string matrices_tex(const SymbolTable& st, const LinearSystem& m) {
         // too wide for a column: the equation, then each entry on a line of its own
         std::string t = "M \\, " + x + " = f \\text{, with}";
         const auto index = [](unsigned k) { return std::to_string(k + 1); };
+        // entries with a piece too long for a line written as the rows' equations are: with
+        // named parts w_k (shared among them), defined on the lines after the entries
+        AbbreviatedForm parts;
+        if (!wide.empty()) {
+            parts = abbreviate_form(wide, 100, "w");
+            for (std::size_t k = 0; k < wide.size(); ++k) *wide_at[k] = to_latex(parts.results[k]);
+        }
         for (unsigned i = 0; i < n; ++i)
             for (unsigned j = 0; j < M[i].size(); ++j)
                 t += std::string(kTexLineBreak) + "M_{" + index(i) + (n > 9 ? "," : "") + index(j) +
                      "} = " + M[i][j];
         for (unsigned i = 0; i < n; ++i)
             t += std::string(kTexLineBreak) + "f_{" + index(i) + "} = " + f[i];
+        for (std::size_t k = 0; k < parts.definitions.size(); ++k)
+            t += std::string(kTexLineBreak) + (k == 0 ? "\\text{with } " : "") +
+                 to_latex(parts.definitions[k].first) + " = " + to_latex(parts.definitions[k].second);
         return breakable_tex(t);
     }
     std::string A = "\\begin{bmatrix} ", b = "\\begin{bmatrix} ";

@@ -667,7 +667,8 @@ TEST(ReportLatex, TheRoadmapTableTheLoadsAndTheEquationsForAPaper) {
     EXPECT_NE(tex.find("\\section*{MG road-map of sit\\_to\\_stand}"), std::string::npos)
         << tex.substr(0, 400);
     EXPECT_NE(tex.find("$T_{A}$ & rotate & \\raggedright Nz\\textgreater{} & \\raggedright "
-                       "$\\{A,\\allowbreak B,\\allowbreak C\\}$ & A\\_o & none \\tabularnewline"),
+                       "$\\{A,\\allowbreak B,\\allowbreak C\\}$ & \\raggedright A\\_\\allowbreak{}o & none "
+                       "\\tabularnewline"),
               std::string::npos)
         << tex;
     EXPECT_NE(tex.find("\\paragraph{Row 3: $S = \\{C\\}$ for $T_{C}$.} T\\_C on C from B (unknown); "
