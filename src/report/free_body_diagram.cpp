@@ -262,6 +262,23 @@ std::vector<const Point*> diagram_points(const System& sys, const RoadmapRow& r,
     return out;
 }
 
+const Point* row_about_point(const RoadmapRow& r, const Evaluation& ev) {
+    const Point* p = r.about_owned.get();
+    if (!p || !ev.places(p)) return nullptr;
+    const std::vector<double>& at = ev.position(p);
+    return std::all_of(at.begin(), at.end(), [](double x) { return std::isfinite(x); }) ? p : nullptr;
+}
+
+std::vector<const Point*> row_about_points(const std::vector<RoadmapRow>& rows,
+                                           const Evaluation& ev) {
+    std::vector<const Point*> out;
+    for (const RoadmapRow& r : rows)
+        if (const Point* p = row_about_point(r, ev))
+            if (std::none_of(out.begin(), out.end(), [&](const Point* q) { return q->name() == p->name(); }))
+                out.push_back(p);
+    return out;
+}
+
 std::vector<DiagramAngle> planar_angles(const System& sys, const Evaluation& ev) {
     std::vector<DiagramAngle> out;
     for (const Body* b : sys.bodies()) {

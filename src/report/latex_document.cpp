@@ -103,6 +103,14 @@ std::string tex_text(const std::string& s) {
     return o;
 }
 
+// a name for LaTeX's text mode that may break after each underscore (IC_knee_angle_r in a
+// narrow column)
+std::string breakable_name(const std::string& s) {
+    std::string o;
+    for (const char ch : s) o += ch == '_' ? "\\_\\allowbreak{}" : tex_text(std::string(1, ch));
+    return o;
+}
+
 std::string set_words(const BodySet& S) {
     std::string s = "\\{";
     for (std::size_t i = 0; i < S.size(); ++i) s += (i ? ",\\allowbreak " : "") + tex_text(S[i]->name());
@@ -246,7 +254,10 @@ std::string tikz_diagram(const System& sys, const Evaluation& ev,
     std::map<const Point*, std::array<double, 2>> at;
     std::vector<const Point*> order;  // the model's order, for the same output run to run
     double lo[2] = {1e300, 1e300}, hi[2] = {-1e300, -1e300};
-    for (const Point* p : placed) {
+    // the model's points, and O where the planner located it off them (an instantaneous centre)
+    std::vector<const Point*> shown = placed;
+    if (const Point* o = row_about_point(r, ev)) shown.push_back(o);
+    for (const Point* p : shown) {
         std::array<double, 2> q = project(ev.position(p));
         if (!std::isfinite(q[0]) || !std::isfinite(q[1])) continue;
         at[p] = q;
@@ -496,8 +507,8 @@ constexpr std::size_t kKeptChars = 2500;
 // their columns
 std::string table_tex(const System& sys, const std::vector<RoadmapRow>& rows) {
     std::string t =
-        "{\\small\\setlength{\\tabcolsep}{4pt}\\noindent\\begin{tabular}{@{}l l p{0.25\\linewidth} p{0.16\\linewidth} l "
-        "p{0.2\\linewidth}@{}}\n\\hline\nvariable & translate/rotate & direction & system $S$ "
+        "{\\small\\setlength{\\tabcolsep}{4pt}\\noindent\\begin{tabular}{@{}l l p{0.22\\linewidth} p{0.16\\linewidth} "
+        "p{0.13\\linewidth} p{0.2\\linewidth}@{}}\n\\hline\nvariable & translate/rotate & direction & system $S$ "
         "& about point & additional unknowns \\\\\n\\hline\n";
     for (const RoadmapRow& r : rows) {
         std::string extra;
@@ -507,7 +518,7 @@ std::string table_tex(const System& sys, const std::vector<RoadmapRow>& rows) {
         t += "$" + to_latex(r.variable) + "$ & " + motion_word(r.motion) + " & " +
              (constraint ? "--" : "\\raggedright " + tex_text(direction_words(sys, r.direction))) +
              " & " + (constraint ? "--" : "\\raggedright $" + set_words(r.system) + "$") + " & " +
-             (r.about ? tex_text(r.about->name()) : "--") + " & " +
+             (r.about ? "\\raggedright " + breakable_name(r.about->name()) : "--") + " & " +
              (extra.empty() ? "none" : "\\raggedright " + extra) + " \\tabularnewline\n";
     }
     return t + "\\hline\n\\end{tabular}}\n\n";
@@ -633,10 +644,12 @@ std::string report_detail::render_latex(const ReportContent& c,
         }
         if (i < c.unit_checks.size()) {
             const ReportUnitCheck& u = c.unit_checks[i];
-            t += "\\noindent\\small " + step_text(u.summary) +
+            // a paragraph of its own, ragged right: the terms that are off, each unbroken
+            // (-m_T*sin(hip_flexion_r + knee_angle_r)*(...), break between them
+            t += "\\par{\\raggedright\\noindent\\small " + step_text(u.summary) +
                  (u.verdict == ReportUnitCheck::Verdict::consistent ? " $\\surd$"
                   : u.verdict == ReportUnitCheck::Verdict::inconsistent ? " $\\times$" : "") +
-                 "\\normalsize\n\n";
+                 "\\par}\n\n";
         }
     }
     const std::vector<RowSteps> formed_steps =

@@ -156,9 +156,22 @@ std::vector<Segment> segments_of(const System& sys, const std::vector<const Poin
 /// "up" in N: against gravity, else Ny for planar models and Nz for others
 std::vector<double> view_up(const System& sys, const Evaluation& ev, bool planar);
 
-/// The drawing's points and sticks as the page's JSON; sets *planar (decided at random states).
+/// The about point the planner located off the model's points for row `r`
+/// (RoadmapRow::about_owned: an instantaneous centre IC_q, where two unknown forces' lines
+/// meet) where the configuration places it at a finite place; else null. It is drawn in the
+/// diagrams of the rows about it only.
+const Point* row_about_point(const RoadmapRow& r, const Evaluation& ev);
+
+/// row_about_point of each of `rows`, once each by name.
+std::vector<const Point*> row_about_points(const std::vector<RoadmapRow>& rows,
+                                           const Evaluation& ev);
+
+/// The drawing's points and sticks as the page's JSON, the rows' own about points
+/// (row_about_points) after the model's, marked "about_only"; sets *planar (decided at random
+/// states, by the model's points).
 std::string geometry_json(const System& sys, const Evaluation& ev,
-                          const std::vector<const Point*>& placed, bool* planar);
+                          const std::vector<const Point*>& placed, bool* planar,
+                          const std::vector<const Point*>& about_only = {});
 
 /// A load's part in the row's equation: it holds the row's own unknown; it holds another
 /// unknown the equation keeps; it is known and the equation holds it; or the equation does not

@@ -247,7 +247,8 @@ std::vector<double> view_up(const System& sys, const Evaluation& ev, bool planar
 }
 
 std::string geometry_json(const System& sys, const Evaluation& ev,
-                          const std::vector<const Point*>& placed, bool* planar) {
+                          const std::vector<const Point*>& placed, bool* planar,
+                          const std::vector<const Point*>& about_only) {
     std::vector<std::string> pts, segs;
     *planar = true;
     for (const Point* p : placed) {
@@ -257,6 +258,12 @@ std::string geometry_json(const System& sys, const Evaluation& ev,
         if (*planar && !is_zero_at_random_states(sys.symbols(), c[2])) *planar = false;
         pts.push_back(Obj().add("name", str(p->name())).add("at", num_arr(ev.position(p, c))).done());
     }
+    for (const Point* p : about_only)
+        pts.push_back(Obj()
+                          .add("name", str(p->name()))
+                          .add("at", num_arr(ev.position(p)))
+                          .add("about_only", "true")
+                          .done());
     for (const Segment& s : segments_of(sys, placed))
         segs.push_back(
             Obj().add("body", str(s.body)).add("from", str(s.from)).add("to", str(s.to)).done());
@@ -419,14 +426,25 @@ std::string matrices_tex(const SymbolTable& st, const LinearSystem& m) {
     const unsigned n = m.A.rows();
     std::vector<std::vector<std::string>> M(n);
     std::vector<std::string> f(n);
+    std::vector<ex> wide;              // the entries with a piece too long for a line
+    std::vector<std::string*> wide_at;  // and where each is written
+    const auto entry = [&](const ex& e, std::string& tex) {
+        const ex x = readable_entry(st, e);
+        tex = to_latex(x);
+        if (longest_unbreakable(breakable_tex(tex)) > kUnbreakableChars) {
+            wide.push_back(x);
+            wide_at.push_back(&tex);
+        }
+    };
     std::size_t widest = 0;  // the widest line of the matrix form: a row of M and f's entry
     for (unsigned i = 0; i < n; ++i) {
         std::size_t width = 0;
+        M[i].resize(m.A.cols());
         for (unsigned j = 0; j < m.A.cols(); ++j) {
-            M[i].push_back(to_latex(readable_entry(st, m.A(i, j))));
-            width += M[i].back().size() + 3;
+            entry(m.A(i, j), M[i][j]);
+            width += M[i][j].size() + 3;
         }
-        f[i] = to_latex(readable_entry(st, m.b(i, 0)));
+        entry(m.b(i, 0), f[i]);
         widest = std::max(widest, width + f[i].size());
     }
     std::string x = "\\begin{bmatrix} ";
@@ -437,12 +455,22 @@ std::string matrices_tex(const SymbolTable& st, const LinearSystem& m) {
         // too wide for a column: the equation, then each entry on a line of its own
         std::string t = "M \\, " + x + " = f \\text{, with}";
         const auto index = [](unsigned k) { return std::to_string(k + 1); };
+        // entries with a piece too long for a line written as the rows' equations are: with
+        // named parts w_k (shared among them), defined on the lines after the entries
+        AbbreviatedForm parts;
+        if (!wide.empty()) {
+            parts = abbreviate_form(wide, 100, "w");
+            for (std::size_t k = 0; k < wide.size(); ++k) *wide_at[k] = to_latex(parts.results[k]);
+        }
         for (unsigned i = 0; i < n; ++i)
             for (unsigned j = 0; j < M[i].size(); ++j)
                 t += std::string(kTexLineBreak) + "M_{" + index(i) + (n > 9 ? "," : "") + index(j) +
                      "} = " + M[i][j];
         for (unsigned i = 0; i < n; ++i)
             t += std::string(kTexLineBreak) + "f_{" + index(i) + "} = " + f[i];
+        for (std::size_t k = 0; k < parts.definitions.size(); ++k)
+            t += std::string(kTexLineBreak) + (k == 0 ? "\\text{with } " : "") +
+                 to_latex(parts.definitions[k].first) + " = " + to_latex(parts.definitions[k].second);
         return breakable_tex(t);
     }
     std::string A = "\\begin{bmatrix} ", b = "\\begin{bmatrix} ";
@@ -776,7 +804,7 @@ std::string report_detail::render_json(const ReportContent& c,
     Evaluation ev(sys, c.configuration);
     std::vector<const Point*> placed = placed_points(sys, &ev);
     bool planar = true;
-    std::string geometry = geometry_json(sys, ev, placed, &planar);
+    std::string geometry = geometry_json(sys, ev, placed, &planar, row_about_points(c.rows, ev));
     std::vector<std::string> rows, histories, config;
     const std::vector<RowSteps> formed_steps =
         given_steps ? std::vector<RowSteps>{} : calc_rows_steps(c, equations);

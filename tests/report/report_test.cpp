@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <cstdlib>
 #include <filesystem>
 #include <random>
@@ -118,6 +119,59 @@ TEST(Report, APlanarModelsAnglesAreMarkedFromTheParentsAxisToTheBodys) {
     EXPECT_NE(angles.find("\"value\":0.35}"), std::string::npos) << angles;
     EXPECT_NE(angles.find("\"value\":-1.2}"), std::string::npos) << angles;
     EXPECT_NE(angles.find("\"value\":1}"), std::string::npos) << angles;
+}
+
+// A rod of length L sliding down a frictionless wall and floor, its angle q from the wall: no
+// point of the rod stays put when q changes, so the row of q'' is about the instantaneous
+// centre IC_q, where the lines of the wall's and the floor's forces meet. By hand that is at
+// (L sin q, L cos q): the foot moves along Nx, the top along Ny. The page's data places it
+// there, for the diagram of that row only, and the TikZ picture marks and names it.
+TEST(Report, AnAboutPointThePlannerLocatedOffTheModelIsDrawnWhereItIs) {
+    System sys;
+    SymbolTable& st = sys.symbols();
+    TimeVariable q = st.add_variable("q");
+    const ex m = st.add_constant("m"), L = st.add_constant("L"), g = st.add_constant("g");
+    const ex N_w = st.add_unknown("N_w"), N_f = st.add_unknown("N_f");
+    const Frame& N = sys.newtonian();
+    RigidBody& A = sys.add_rigid_body("A");
+    Point& A_w = sys.add_point("A_w", &A);
+    A.body_frame().orient_axis(N, Axis::z, q.symbol());
+    sys.point("A_o").set_pos(sys.origin(), L * GiNaC::sin(q.symbol()) * N.x());
+    A.cm().set_pos(sys.point("A_o"), L / 2 * A.body_frame().y());
+    A_w.set_pos(sys.point("A_o"), L * A.body_frame().y());
+    A.set_mass(m);
+    A.set_inertia(A.cm(), 0, 0, m * L * L / 12);
+    sys.set_gravity(-g * N.y());
+    sys.add_force(A_w, N_w * N.x(), "Nw");
+    sys.add_force(sys.point("A_o"), N_f * N.y(), "Nf");
+    ReportContent content;
+    content.system = &sys;
+    content.title = "rod";
+    content.rows = plan_roadmap(sys, {q}, {q.d(2), N_w, N_f});
+    ASSERT_FALSE(content.rows.empty());
+    ASSERT_NE(content.rows[0].about, nullptr);
+    ASSERT_EQ(content.rows[0].about->name(), "IC_q");
+    content.coordinates = {q};
+    const double qv = 0.6, Lv = 2.0;
+    content.configuration[q.symbol()] = qv;
+    content.configuration[L] = Lv;
+    content.configuration[m] = 3.0;
+    content.configuration[g] = 9.81;
+    const std::string json = render_report_json(content);
+    const std::string key = "{\"name\":\"IC_q\",\"at\":[";
+    const std::size_t at = json.find(key);
+    ASSERT_NE(at, std::string::npos) << json.substr(json.find("\"geometry\""), 600);
+    double x = 0, y = 0, z = 0;
+    ASSERT_EQ(std::sscanf(json.c_str() + at + key.size(), "%lf,%lf,%lf", &x, &y, &z), 3);
+    EXPECT_NEAR(x, Lv * std::sin(qv), 1e-5);
+    EXPECT_NEAR(y, Lv * std::cos(qv), 1e-5);
+    EXPECT_NEAR(z, 0, 1e-12);
+    EXPECT_NE(json.find("\"about_only\":true", at), std::string::npos);
+    EXPECT_EQ(count(json, "{\"name\":\"IC_q\""), 1u);
+    EXPECT_NE(row_of(json, "q''").find("\"about\":\"IC_q\""), std::string::npos);
+    // the TikZ picture of the row of q'' marks O there and names it; the other rows' do not
+    const std::string tex = render_report_latex(content);
+    EXPECT_EQ(count(tex, "{$O$ = IC\\_q}"), 1u);
 }
 
 // A point placed by data (a force plate's centre of pressure from px, py, read with the
@@ -613,7 +667,8 @@ TEST(ReportLatex, TheRoadmapTableTheLoadsAndTheEquationsForAPaper) {
     EXPECT_NE(tex.find("\\section*{MG road-map of sit\\_to\\_stand}"), std::string::npos)
         << tex.substr(0, 400);
     EXPECT_NE(tex.find("$T_{A}$ & rotate & \\raggedright Nz\\textgreater{} & \\raggedright "
-                       "$\\{A,\\allowbreak B,\\allowbreak C\\}$ & A\\_o & none \\tabularnewline"),
+                       "$\\{A,\\allowbreak B,\\allowbreak C\\}$ & \\raggedright A\\_\\allowbreak{}o & none "
+                       "\\tabularnewline"),
               std::string::npos)
         << tex;
     EXPECT_NE(tex.find("\\paragraph{Row 3: $S = \\{C\\}$ for $T_{C}$.} T\\_C on C from B (unknown); "

@@ -240,7 +240,10 @@
     var geo = data.geometry, project = projector(geo), dia = row.diagram;
     var at = {};
     geo.points.forEach(function (p) { at[p.name] = p.at; });
-    var box = bounds(geo.points.map(function (p) { return p.at; }), project);
+    // the model's points, and the row's about point where the planner located it off them (an
+    // instantaneous centre IC_q): that one is drawn in the diagrams of the rows about it only
+    var shown = geo.points.filter(function (p) { return !p.about_only || p.name === dia.about; });
+    var box = bounds(shown.map(function (p) { return p.at; }), project);
     var L = box.size, pad = 0.45 * L, fontSize = 0.055 * L;
     var figure = el("div", {"class": "fbd-figure"}, parent);
     var view0 = [box.x - pad, box.y - pad, box.w + 2 * pad, box.h + 2 * pad];
@@ -266,7 +269,7 @@
       svg("line", {x1: a[0], y1: a[1], x2: b[0], y2: b[1],
                    "class": inS[seg.body] ? "stick in-system" : "stick faded"}, g);
     });
-    geo.points.forEach(function (p) {
+    shown.forEach(function (p) {
       var q = project(p.at);
       svg("circle", {cx: q[0], cy: q[1], r: 0.012 * L, "class": "point", "data-point": p.name}, g);
       labels.obstacle(q[0] - 0.015 * L, q[1] - 0.015 * L, 0.03 * L, 0.03 * L);
@@ -868,8 +871,9 @@
       if (geo.planar || !window.THREE) return;
       var still = el("section", {id: "animation"}, main);
       el("h2", {}, still, "The model in 3D (drag to turn)");
-      var v = view3d(still, data, geo.points.map(function (p) { return p.name; }), [],
-                     [[].concat.apply([], geo.points.map(function (p) { return p.at; }))]);
+      var model = geo.points.filter(function (p) { return !p.about_only; });
+      var v = view3d(still, data, model.map(function (p) { return p.name; }), [],
+                     [[].concat.apply([], model.map(function (p) { return p.at; }))]);
       if (v) v.show(0);
       return;
     }
