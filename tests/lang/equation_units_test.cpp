@@ -83,6 +83,33 @@ TEST(EquationUnits, IntermediatesCarryTheirDefinitionsDimension) {
     EXPECT_EQ(c.terms.at(0), "-z1 is in N");
 }
 
+TEST(EquationUnits, ALengthWrittenAsADecimalNumberLeavesTheRowUncheckedNotWrong) {
+    // the pendulum with its length written `0.35 m` in the model: the equation holds 0.35,
+    // its metre gone, so the weight's moment m g 0.35 sin(q) reads as a force
+    Pendulum p;
+    const ex d = GiNaC::numeric(0.35);
+    const ex row = p.T - p.m * p.g * d * GiNaC::sin(p.q.symbol()) - (p.I + p.m * d * d) * p.q.d(2);
+    const ReportUnitCheck c = p.checker().check(row, Dimension::torque());
+    EXPECT_EQ(c.verdict, ReportUnitCheck::Verdict::unchecked) << c.summary;
+    EXPECT_NE(c.summary.find("not checked (a decimal number"), std::string::npos) << c.summary;
+    // a term off without a decimal number in it is still named
+    p.dims["T"] = Dimension::force();
+    const ReportUnitCheck wrong = p.checker().check(row, Dimension::torque());
+    EXPECT_EQ(wrong.verdict, ReportUnitCheck::Verdict::inconsistent) << wrong.summary;
+    ASSERT_FALSE(wrong.terms.empty());
+    EXPECT_EQ(wrong.terms[0], "T is in N");
+    // a decimal number without a unit in a term that is right leaves the row checked:
+    // I + 0.5 m d^2 (0.5 a pure number)
+    p.dims["T"] = Dimension::torque();
+    const ex half = GiNaC::numeric(0.5);
+    const ex right = p.T - p.m * p.g * p.d * GiNaC::sin(p.q.symbol()) - (p.I + half * p.m * p.d * p.d) * p.q.d(2);
+    const ReportUnitCheck ok = p.checker().check(right, Dimension::torque());
+    EXPECT_EQ(ok.verdict, ReportUnitCheck::Verdict::consistent) << ok.summary;
+    // inside a sum: (0.35 + d) adds a bare number to a length, unchecked rather than wrong
+    const ex nested = p.T - p.m * p.g * (d + p.d) * GiNaC::sin(p.q.symbol());
+    EXPECT_EQ(p.checker().check(nested, Dimension::torque()).verdict, ReportUnitCheck::Verdict::unchecked);
+}
+
 TEST(EquationUnits, SymbolsWithoutUnitsLeaveTheRowUnchecked) {
     Pendulum p;
     p.dims.erase("I");

@@ -26,7 +26,9 @@ public:
     /// The check of 0 = `equation`, whose terms must each be `expected` (Dimension::open():
     /// the same as one another, as in a constraint row). Consistent only if every term's
     /// dimension is known and right; a term holding a symbol declared without a unit makes it
-    /// unchecked (naming the symbols), unless another term is off.
+    /// unchecked (naming the symbols), unless another term is off. A term off only where it
+    /// holds a decimal number (a length written `0.35 m` in the model, kept as its value) makes
+    /// it unchecked too, saying so, rather than inconsistent.
     ReportUnitCheck check(const ex& equation, const Dimension& expected);
 
 private:
@@ -35,6 +37,8 @@ private:
         std::string conflict;  ///< the first sum inside whose terms differ, said for the reader
         bool partial = false;  ///< a leaf declared without a unit is inside (the sum it is in
                                ///< took another term's dimension, unchecked)
+        bool decimal = false;  ///< a decimal number is inside: a script's `0.35 m` is kept as
+                               ///< its value, its unit gone, so a term off by a unit may be right
     };
     Found of(const ex& e);
 
