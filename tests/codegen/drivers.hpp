@@ -199,14 +199,17 @@ inline std::string file_text(const fs::path& p) {
 /// c_driver_frame) as strict C99 into `dir`/driver, which is run on `input` (written to
 /// states.txt): the numbers it prints. When compiling or running fails, a test failure naming
 /// the step with the compiler's or the driver's output is added and nothing is returned.
+/// `optimization` is the compiler's -O flag: -O2 as users build, -O0 where a large file's
+/// optimization would take most of the test's time and the values do not depend on it.
 inline std::optional<std::vector<double>> compile_and_run_c_driver(const fs::path& dir,
                                                                    const std::string& name,
                                                                    const std::string& driver,
-                                                                   const std::string& input) {
+                                                                   const std::string& input,
+                                                                   const std::string& optimization = "-O2") {
     std::string out;
     write(dir / "driver.c", driver);
-    if (run("cd " + dir.string() + " && " + c_compiler() +
-                " -std=c99 -pedantic -Wall -Wextra -Werror -O2 " + name + ".c driver.c -lm -o driver",
+    if (run("cd " + dir.string() + " && " + c_compiler() + " -std=c99 -pedantic -Wall -Wextra -Werror " +
+                optimization + " " + name + ".c driver.c -lm -o driver",
             out) != 0) {
         ADD_FAILURE() << "compiling the generated C " << name << ".c failed:\n" << out;
         return std::nullopt;
