@@ -11,6 +11,7 @@
 
 #include "alembert/error.hpp"
 #include "alembert/report/report.hpp"
+#include "alembert/sym/print.hpp"
 #include "report_detail.hpp"
 
 namespace alembert {
