@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
-// Algebra inside expressions: coef(), replace(), taylor(), factor() and floor(), each one GiNaC
-// operation on the value's intermediates written out.
+// Algebra inside expressions: coef(), replace(), taylor(), factor(), floor(), exclude() and
+// include(), each one GiNaC operation on the value's intermediates written out.
 #include <algorithm>
 #include <cmath>
 #include <iomanip>
@@ -267,6 +267,49 @@ Value Interpreter::Impl::eval_algebra(const Expr& e) {
                 return GiNaC::factor(s);
             });
         });
+    }
+
+    if (f == "exclude" || f == "include") {
+        // the terms of the expanded expression that hold none (exclude) or at least one
+        // (include) of the symbols, a symbol inside a function, a root, a power or a
+        // denominator held as well
+        const bool keep_holding = f == "include";
+        const std::string form = f + "(e, x) or " + f + "(e, x, y, ...)";
+        if (a.size() < 2)
+            throw ScriptError(e.location, f + "() takes the expression and at least one symbol", "write " + form);
+        for (std::size_t i = 0; i < a.size(); ++i) no_binding(i, form);
+        Value x = eval(*a[0]);
+        std::vector<ex> by;
+        for (std::size_t i = 1; i < a.size(); ++i) {
+            by.push_back(algebra_symbol(*a[i], f, "each symbol after the expression", nullptr));
+            for (std::size_t k = 0; k + 1 < by.size(); ++k)
+                if (by[k].is_equal(by.back()))
+                    throw ScriptError(a[i]->location, f + "(): '" + table.name(by.back()) + "' is listed twice",
+                                      "list each symbol once");
+        }
+        auto op = [&](const ex& s) -> ex {
+            const ex full = table.expand_intermediates(s);
+            // the expansion's size is bounded before GiNaC builds it, as expand() does
+            const double terms = estimate_expansion_terms(full);
+            if (terms > static_cast<double>(max_terms)) {
+                std::ostringstream t;
+                t << std::setprecision(3) << terms;
+                throw ScriptError(e.location,
+                                  f + "(): expanding the expression into its terms would form up to " + t.str() +
+                                      " terms, more than the limit of " + std::to_string(max_terms),
+                                  "take the terms of a smaller expression, or raise the limit with --max-terms N");
+            }
+            const ex sum = GiNaC::expand(full);
+            auto holds = [&](const ex& term) {
+                return std::any_of(by.begin(), by.end(), [&](const ex& y) { return term.has(y); });
+            };
+            if (!GiNaC::is_a<GiNaC::add>(sum)) return holds(sum) == keep_holding ? sum : ex(0);
+            GiNaC::exvector kept;
+            for (const ex& term : sum)
+                if (holds(term) == keep_holding) kept.push_back(term);
+            return GiNaC::add(kept);
+        };
+        return guarded([&] { return map_value(x, op); });
     }
 
     // floor: a number's; a symbol's floor has no derivative and no counterpart in the equations

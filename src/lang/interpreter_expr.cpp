@@ -737,17 +737,20 @@ Value Interpreter::Impl::eval_call(const Expr& e) {
         return matrix_value(static_cast<int>(fs.size()), static_cast<int>(by.size()), std::move(entries),
                             Dimension::open());
     }
-    if (f == "coef" || f == "replace" || f == "taylor" || f == "factor" || f == "floor") return eval_algebra(e);
+    if (f == "coef" || f == "replace" || f == "taylor" || f == "factor" || f == "floor" || f == "exclude" ||
+        f == "include")
+        return eval_algebra(e);
     if (f == "transpose" || f == "inv" || f == "det" || f == "diagmat" || f == "element" || f == "rows" ||
-        f == "cols" || f == "eig")
+        f == "cols")
         return eval_matrix(e);
+    if (f == "eig" || f == "eigvec") return eval_eigen(e);
     if (f == "polynomial" || f == "roots") return eval_polynomial(e);
     throw ScriptError(e.location, "unknown function '" + f + "'",
                       "functions: sin cos tan asin acos atan sqrt exp log abs dot cross express dt "
                       "mag unit simplify expand angvel angacc vel acc pos rotation mass momentum "
                       "angmomentum kinetic potential resultant moment massmatrix jacobian diff coef "
-                      "replace taylor factor floor transpose inv det diagmat element rows cols eig "
-                      "polynomial roots cm");
+                      "replace taylor factor floor exclude include transpose inv det diagmat element rows cols "
+                      "eig eigvec polynomial roots cm");
 }
 
 // ---- output ----------------------------------------------------------------------------

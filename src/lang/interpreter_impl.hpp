@@ -328,13 +328,15 @@ struct Interpreter::Impl {
     Value eval(const Expr& e);
     Value eval_call(const Expr& e);
     // ---- algebra in expressions (interpreter_algebra.cpp) ----------------------------------
-    /// coef(), replace(), taylor(), factor() and floor().
+    /// coef(), replace(), taylor(), factor(), floor(), exclude() and include().
     Value eval_algebra(const Expr& e);
     /// The declared symbol `e` names, or an error "f(): <role> must be a declared symbol".
     ex algebra_symbol(const Expr& e, const std::string& f, const std::string& role, Dimension* dim);
     // ---- matrices and polynomials (interpreter_matrix.cpp, interpreter_polynomial.cpp) -----
-    /// transpose(), inv(), det(), diagmat(), element(), rows(), cols() and eig().
+    /// transpose(), inv(), det(), diagmat(), element(), rows() and cols().
     Value eval_matrix(const Expr& e);
+    /// eig() and eigvec() (interpreter_eigen.cpp).
+    Value eval_eigen(const Expr& e);
     /// polynomial() and roots().
     Value eval_polynomial(const Expr& e);
     /// acc + v (acc - v when `subtract`), one of them a matrix: both matrices of one size.

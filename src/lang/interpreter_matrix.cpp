@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Matrices as values: their arithmetic (M + N, c*M, M*N) and transpose(), inv(), det(),
-// diagmat(), element(), rows(), cols() (GiNaC matrix operations) and eig() (Eigen's eigenvalues
-// of a matrix of numbers).
+// diagmat(), element(), rows(), cols() (GiNaC matrix operations).
 #include <algorithm>
 #include <cmath>
 #include <complex>
@@ -242,64 +241,32 @@ Value Interpreter::Impl::eval_matrix(const Expr& e) {
         v.kind = Kind::scalar, v.s = m.a[static_cast<std::size_t>((i - 1) * m.cols + j - 1)], v.dim = m.dim;
         return v;
     }
-    if (f == "rows" || f == "cols") {
-        // rows(M): how many; rows(M, i, ...): those rows as a matrix (cols: those columns)
-        const bool by_row = f == "rows";
-        const std::string form = f + "(M) or " + f + "(M, i, ...)";
-        if (a.empty()) want(1, 1, form);
-        Value m = matrix_arg(0, form);
-        if (a.size() == 1) {
-            Value v;
-            v.kind = Kind::scalar, v.s = by_row ? m.rows : m.cols, v.dim = Dimension::none();
-            return v;
-        }
-        const int n = by_row ? m.rows : m.cols;
-        std::vector<int> picked;
-        for (std::size_t k = 1; k < a.size(); ++k)
-            picked.push_back(whole_in(eval(*a[k]), *a[k], 1, n,
-                                      f + "(): the " + (by_row ? "row" : "column") + " of " + matrix_called(*a[0])) -
-                             1);
-        std::vector<ex> out;
-        const int count = static_cast<int>(picked.size());
-        if (by_row) {
-            for (int r : picked)
-                for (int j = 0; j < m.cols; ++j) out.push_back(m.a[static_cast<std::size_t>(r * m.cols + j)]);
-            return matrix_value(count, m.cols, std::move(out), m.dim);
-        }
-        for (int i = 0; i < m.rows; ++i)
-            for (int c : picked) out.push_back(m.a[static_cast<std::size_t>(i * m.cols + c)]);
-        return matrix_value(m.rows, count, std::move(out), m.dim);
+    // rows(M): how many; rows(M, i, ...): those rows as a matrix (cols: those columns)
+    const bool by_row = f == "rows";
+    const std::string form = f + "(M) or " + f + "(M, i, ...)";
+    if (a.empty()) want(1, 1, form);
+    Value m = matrix_arg(0, form);
+    if (a.size() == 1) {
+        Value v;
+        v.kind = Kind::scalar, v.s = by_row ? m.rows : m.cols, v.dim = Dimension::none();
+        return v;
     }
-    // eig: the eigenvalues of a matrix of numbers (constants with values), by Eigen; one next
-    // to a whole number that is a root of the exact characteristic polynomial is that number
-    want(1, 1, "eig(M)");
-    Value m = matrix_arg(0, "eig(M)");
-    square(m, "eig(M)");
-    const std::string hint =
-        "eig() takes a matrix of numbers: give its constants values (constant k = 2) or substitute them with replace()";
-    const GiNaC::exmap given = table.constant_values();
-    std::vector<double> entries;
-    bool exact = true;
-    for (ex& x : m.a) {
-        ex v = guarded([&] { return table.expand_intermediates(x).subs(given, GiNaC::subs_options::no_pattern); });
-        if (!GiNaC::is_a<GiNaC::numeric>(v)) v = GiNaC::numeric(guard(a[0]->location, [&] { return table.evaluate(x); }, hint));
-        exact = exact && GiNaC::ex_to<GiNaC::numeric>(v).is_rational();
-        entries.push_back(GiNaC::ex_to<GiNaC::numeric>(v).to_double());
-        x = v;
+    const int n = by_row ? m.rows : m.cols;
+    std::vector<int> picked;
+    for (std::size_t k = 1; k < a.size(); ++k)
+        picked.push_back(whole_in(eval(*a[k]), *a[k], 1, n,
+                                  f + "(): the " + (by_row ? "row" : "column") + " of " + matrix_called(*a[0])) -
+                         1);
+    std::vector<ex> out;
+    const int count = static_cast<int>(picked.size());
+    if (by_row) {
+        for (int r : picked)
+            for (int j = 0; j < m.cols; ++j) out.push_back(m.a[static_cast<std::size_t>(r * m.cols + j)]);
+        return matrix_value(count, m.cols, std::move(out), m.dim);
     }
-    std::vector<double> values = real_eigenvalues(entries, m.rows, a[0]->location, "eig(): the eigenvalues of " + matrix_called(*a[0]),
-                                                  "the script's eig() gives real eigenvalues only");
-    if (exact && m.rows <= 12) {
-        const GiNaC::symbol s("s_eig");
-        const ex p = guarded([&] { return ginac_matrix(m).charpoly(s); });
-        for (double& x : values) {
-            const double whole = std::round(x);
-            if (std::abs(x - whole) <= 1e-9 * std::max(1.0, std::abs(x)) && std::abs(whole) < 1e15 &&
-                GiNaC::expand(p.subs(s == GiNaC::numeric(static_cast<long>(whole)))).is_zero())
-                x = whole;
-        }
-    }
-    return matrix_value(m.rows, 1, number_values(values), m.dim);
+    for (int i = 0; i < m.rows; ++i)
+        for (int c : picked) out.push_back(m.a[static_cast<std::size_t>(i * m.cols + c)]);
+    return matrix_value(m.rows, count, std::move(out), m.dim);
 }
 
 }  // namespace alembert::lang

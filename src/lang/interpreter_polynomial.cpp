@@ -95,9 +95,10 @@ Value Interpreter::Impl::eval_polynomial(const Expr& e) {
             throw ScriptError(a[0]->location, "polynomial() takes a list of coefficients or a polynomial first", "write " + form);
         const ex p = guarded([&] { return table.expand_intermediates(c.s); });
         auto rising = guarded([&] { return rising_coefficients(p, x); });
+        const std::string called = a[0]->kind == Expr::Kind::name ? "'" + a[0]->text + "'" : "the expression";
         if (!rising)
             throw ScriptError(a[0]->location,
-                              "polynomial(): the expression is not a polynomial in '" + table.name(x) + "' of degree at most " +
+                              "polynomial(): " + called + " is not a polynomial in '" + table.name(x) + "' of degree at most " +
                                   std::to_string(Limits::max_power),
                               "it holds " + table.name(x) + " inside a function, a root, a denominator or a symbolic power");
         const int n = static_cast<int>(rising->size());

@@ -20,7 +20,7 @@ const std::set<std::string, std::less<>>& function_words() {
         "pos", "rotation", "mass", "momentum", "angmomentum", "kinetic", "potential",
         "resultant", "moment", "pi", "minimum_jerk", "massmatrix", "jacobian", "diff", "coef",
         "replace", "taylor", "floor", "factor", "transpose", "inv", "det", "diagmat", "element",
-        "rows", "cols", "eig", "polynomial", "roots", "cm"};
+        "rows", "cols", "eig", "eigvec", "polynomial", "roots", "cm", "exclude", "include"};
     return w;
 }
 

@@ -1,7 +1,8 @@
 // SPDX-License-Identifier: MIT
-// coef(), replace(), taylor(), factor(), floor() and `solve ... as` against hand results,
-// compared by meaning: each result evaluated at random points beside the hand formula; their
-// errors named at the argument; and arguments of 10,000 terms without deep recursion.
+// coef(), replace(), taylor(), factor(), floor(), exclude(), include() and `solve ... as`
+// against hand results, compared by meaning: each result evaluated at random points beside the
+// hand formula; their errors named at the argument; and arguments of 10,000 terms without deep
+// recursion.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -213,6 +214,58 @@ TEST(AlgebraFunctions, FactorKeepsTheValueAndFloorRoundsNumbersDown) {
     EXPECT_TRUE(has(e, "floor() takes a number, but this holds A, q, x\n")) << e;
     e = r.fails("floor(2 m)\n");
     EXPECT_TRUE(has(e, "the argument of floor() must be")) << e;
+}
+
+// e expanded is A^2 x + 2AB x q + B^2 x q^2 + L q^3 + sin(p) q: the terms without q are A^2 x;
+// with q, the other four; with p (inside sin), sin(p) q; without x and L, sin(p) q alone.
+TEST(AlgebraFunctions, ExcludeAndIncludeChooseTermsOfTheExpandedSum) {
+    AlgebraRun r;
+    r.ok(kHead);
+    std::mt19937 rng(16);
+    std::uniform_real_distribution<double> u(-2, 2);
+    for (int trial = 0; trial < 3; ++trial) {
+        const double a = u(rng), b = u(rng), l = u(rng), q = u(rng), x = u(rng), p = u(rng), qd = u(rng);
+        const std::string at = "A = " + digits17(a) + ", B = " + digits17(b) + ", L = " + digits17(l) + ", q = " + digits17(q) +
+                               ", x = " + digits17(x) + ", p = " + digits17(p) + ", q' = " + digits17(qd);
+        const double with_q = 2 * a * b * x * q + b * b * x * q * q + l * q * q * q + std::sin(p) * q;
+        expect_close(r.at("exclude(e, q)", at), a * a * x, "exclude(e, q)");
+        expect_close(r.at("include(e, q)", at), with_q, "include(e, q)");
+        expect_close(r.at("include(e, p)", at), std::sin(p) * q, "include(e, p): p inside a function");
+        expect_close(r.at("exclude(e, p)", at), a * a * x + with_q - std::sin(p) * q, "exclude(e, p)");
+        expect_close(r.at("exclude(e, x, L)", at), std::sin(p) * q, "exclude(e, x, L)");
+        expect_close(r.at("include(e, x, L)", at), a * a * x + with_q - std::sin(p) * q, "include(e, x, L)");
+        // a denominator and a root hold their symbols; q' is a symbol of its own
+        expect_close(r.at("exclude(A/(1 + q^2) + B + sqrt(L^2 + q^2), q)", at), b, "a denominator and a root");
+        expect_close(r.at("include(q*q' + q' + A, q)", at), q * qd, "q and q'");
+        expect_close(r.at("exclude(q*q' + q' + A, q)", at), qd + a, "q' without q");
+        // each measure of a vector, each element of a matrix
+        expect_close(r.at("dot(exclude((A + q)*Nx> + q*B*Ny>, q), Nx> + Ny>)", at), a, "a vector's measures");
+        r.ok("M = include([e, A; B*p, q*L], p, q)\n");
+        expect_close(r.at("M[1, 1]", at), with_q, "M[1, 1]");
+        expect_close(r.at("M[1, 2]", at), 0, "M[1, 2]");
+        expect_close(r.at("M[2, 1]", at), b * p, "M[2, 1]");
+        expect_close(r.at("M[2, 2]", at), q * l, "M[2, 2]");
+    }
+    // none is left (0), or the whole of a term that is not a sum
+    EXPECT_EQ(r.ok("exclude(e, A, L, q)\ninclude(A*B, q)\nexclude(A*B, q)\n"), "= 0\n= 0\n= A*B\n");
+    EXPECT_EQ(r.ok("diff(exclude(e, q), q)\n"), "= 0\n");
+}
+
+TEST(AlgebraFunctions, ExcludeAndIncludeRefuseWhatIsNoSymbol) {
+    AlgebraRun r;
+    r.ok(kHead);
+    std::string e = r.fails("exclude(e)\n");
+    EXPECT_TRUE(has(e, "test.alb:1:1: error: exclude() takes the expression and at least one symbol")) << e;
+    e = r.fails("include(e, 2)\n");
+    EXPECT_TRUE(has(e, "test.alb:1:12: error: include(): each symbol after the expression must be a declared symbol")) << e;
+    e = r.fails("exclude(e, q, x, q)\n");
+    EXPECT_TRUE(has(e, "test.alb:1:18: error: exclude(): 'q' is listed twice")) << e;
+    e = r.fails("include(e, q = 1)\n");
+    EXPECT_TRUE(has(e, "include() takes no 'x = v' here")) << e;
+    // the expansion is bounded like expand()'s: (6 symbols)^60 has C(65, 5) = 8259888 terms
+    e = r.fails("exclude((A + B + L + q + x + p)^60, q)\n");
+    EXPECT_TRUE(has(e, "exclude(): expanding the expression into its terms would form up to 8.26e+06 terms, more than "
+                       "the limit of 100000")) << e;
 }
 
 // E: A q + x = 1, q - B x = 0, so q = B/(1 + AB), x = 1/(1 + AB); kept as values, they

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Matrices, polynomials and mass functions of the language against hand results: transpose,
-// inv, det, diagmat, element, rows, cols, eig and matrix arithmetic; polynomial and roots;
+// inv, det, diagmat, element, rows, cols, eig, eigvec and matrix arithmetic; polynomial and roots;
 // mass(A, B) and cm(O, ...), each evaluated at random points beside the hand formula; their
 // errors at the argument, with file:line:col and caret.
 #include <gtest/gtest.h>
@@ -11,6 +11,7 @@
 #include <random>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "alembert/lang/interpreter.hpp"
 #include "support/script_dir.hpp"
@@ -129,6 +130,126 @@ TEST(MatrixFunctions, EigIsTheEigenvaluesOfAMatrixOfNumbers) {
     EXPECT_TRUE(has(e, "hint: eig() takes a matrix of numbers")) << e;
 }
 
+// The eigenvectors by hand. [2, 1; 1, 2]: (1, -1)/sqrt 2 for 1, (1, 1)/sqrt 2 for 3.
+// [2, 1, 1; 1, 2, 1; 1, 1, 2]: 1 twice, on the plane x + y + z = 0, whose reduced echelon basis
+// (1, 0, -1), (0, 1, -1) made orthonormal is (1, 0, -1)/sqrt 2, (-1, 2, -1)/sqrt 6; 4 on
+// (1, 1, 1)/sqrt 3. diag(2, 2, 5): the unit vectors. [2, 1; 0, 3]: (1, 0) for 2, (1, 1)/sqrt 2
+// for 3. [4, 1; 2, 3]: (1, -2) for 2, its largest component made positive, (-1, 2)/sqrt 5;
+// (1, 1)/sqrt 2 for 5.
+TEST(MatrixFunctions, EigvecIsTheUnitEigenvectorsOfTheHandDerivation) {
+    MatrixRun r;
+    r.ok("newtonian N\ndigits 17\n");
+    const double s2 = std::sqrt(2.0), s3 = std::sqrt(3.0), s5 = std::sqrt(5.0), s6 = std::sqrt(6.0);
+    auto expect_matrix = [&](const std::string& m, const std::vector<std::vector<double>>& want) {
+        r.ok("V = eigvec(" + m + ")\n");
+        for (std::size_t i = 0; i < want.size(); ++i)
+            for (std::size_t j = 0; j < want.size(); ++j)
+                expect_close(r.at("V[" + std::to_string(i + 1) + ", " + std::to_string(j + 1) + "]", ""), want[i][j],
+                             "eigvec(" + m + ")[" + std::to_string(i + 1) + ", " + std::to_string(j + 1) + "]");
+    };
+    expect_matrix("[2, 1; 1, 2]", {{1 / s2, 1 / s2}, {-1 / s2, 1 / s2}});
+    expect_matrix("[2, 1, 1; 1, 2, 1; 1, 1, 2]", {{1 / s2, -1 / s6, 1 / s3}, {0, 2 / s6, 1 / s3}, {-1 / s2, -1 / s6, 1 / s3}});
+    expect_matrix("[2, 0, 0; 0, 2, 0; 0, 0, 5]", {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}});
+    expect_matrix("[2, 1; 0, 3]", {{1, 1 / s2}, {0, 1 / s2}});
+    expect_matrix("[4, 1; 2, 3]", {{-1 / s5, 1 / s2}, {2 / s5, 1 / s2}});
+    // exact unit components print as whole numbers
+    EXPECT_EQ(r.ok("eigvec([2, 0, 0; 0, 2, 0; 0, 0, 5])\neigvec([7])\n"), "= [1, 0, 0; 0, 1, 0; 0, 0, 1]\n= [1]\n");
+}
+
+// M = S diag(d) S^-1 with S and d drawn at random (d apart, ascending): the eigenvalues are d,
+// the eigenvectors S's columns; eigvec's column j is S's column j over its length, its
+// largest component positive. A symmetric M = Q diag(d) Q^T with constants given values: an
+// orthonormal V with M V = V diag(eig(M)).
+TEST(MatrixFunctions, EigvecOfMatricesOfKnownEigenvectors) {
+    std::mt19937 rng(45);
+    std::uniform_real_distribution<double> u(-2, 2);
+    for (int trial = 0; trial < 4; ++trial) {
+        // a well-conditioned basis: 1.5 on the diagonal and at most 0.5 off it
+        Mat S{};
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j) S[i][j] = (i == j ? 1.5 : 0) + 0.25 * u(rng);
+        double det = 0;
+        const Mat Si = hand_inverse(S, det);
+        const std::array<double, 3> d{-1.5 + 0.2 * trial, 0.5, 2 + 0.3 * trial};
+        Mat M{};
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j)
+                for (int k = 0; k < 3; ++k) M[i][j] += S[i][k] * d[static_cast<std::size_t>(k)] * Si[k][j];
+        std::string m = "[";
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j) m += digits17(M[i][j]) + (j < 2 ? ", " : i < 2 ? "; " : "]");
+        MatrixRun r;
+        r.ok("newtonian N\ndigits 17\nE = eig(" + m + ")\nV = eigvec(" + m + ")\n");
+        for (int j = 0; j < 3; ++j) {
+            EXPECT_NEAR(r.at("E[" + std::to_string(j + 1) + ", 1]", ""), d[static_cast<std::size_t>(j)], 1e-9);
+            double length = 0;
+            int largest = 0;
+            for (int i = 0; i < 3; ++i) {
+                length += S[i][j] * S[i][j];
+                if (std::abs(S[i][j]) > std::abs(S[largest][j])) largest = i;
+            }
+            const double sign = S[largest][j] < 0 ? -1 : 1;
+            for (int i = 0; i < 3; ++i)
+                EXPECT_NEAR(r.at("V[" + std::to_string(i + 1) + ", " + std::to_string(j + 1) + "]", ""),
+                            sign * S[i][j] / std::sqrt(length), 1e-9)
+                    << m << " column " << j + 1;
+        }
+    }
+    // symmetric, of constants with values: p, r, s on the diagonal, k off it
+    for (int trial = 0; trial < 3; ++trial) {
+        const double p = u(rng), q = u(rng), s = u(rng), k = u(rng);
+        MatrixRun r;
+        r.ok("newtonian N\ndigits 17\nconstant p = " + digits17(p) + ", r = " + digits17(q) + ", s = " + digits17(s) +
+             ", k = " + digits17(k) + "\nM = [p, k, 0; k, r, k; 0, k, s]\nE = eig(M)\nV = eigvec(M)\n");
+        const double m[3][3] = {{p, k, 0}, {k, q, k}, {0, k, s}};
+        double v[3][3], e[3];
+        for (int i = 0; i < 3; ++i) {
+            e[i] = r.at("E[" + std::to_string(i + 1) + ", 1]", "");
+            for (int j = 0; j < 3; ++j) v[i][j] = r.at("V[" + std::to_string(i + 1) + ", " + std::to_string(j + 1) + "]", "");
+        }
+        for (int j = 0; j < 3; ++j) {
+            for (int i = 0; i < 3; ++i) {
+                double mv = 0;
+                for (int c = 0; c < 3; ++c) mv += m[i][c] * v[c][j];
+                EXPECT_NEAR(mv, e[j] * v[i][j], 1e-12) << "M v = lambda v, column " << j + 1;
+            }
+            for (int c = 0; c < 3; ++c) {
+                double dot = 0;
+                for (int i = 0; i < 3; ++i) dot += v[i][j] * v[i][c];
+                EXPECT_NEAR(dot, j == c ? 1 : 0, 1e-12) << "V^T V, " << j + 1 << ", " << c + 1;
+            }
+            int largest = 0;
+            for (int i = 1; i < 3; ++i)
+                if (std::abs(v[i][j]) > std::abs(v[largest][j]) + 1e-12) largest = i;
+            EXPECT_GT(v[largest][j], 0) << "the largest component of column " << j + 1;
+        }
+    }
+}
+
+TEST(MatrixFunctions, EigvecRefusesDefectiveAndComplexMatrices) {
+    MatrixRun r;
+    r.ok("newtonian N\nconstant z\nJ = [1, 1; 0, 1]\n");
+    std::string e = r.fails("eigvec(J)\n");
+    EXPECT_TRUE(has(e, "test.alb:1:8: error: eigvec(): 'J' is defective: its eigenvalue 1, repeated 2 times, has fewer "
+                       "than 2 independent eigenvectors")) << e;
+    e = r.fails("eigvec([3, 1, 0; 0, 3, 1; 0, 0, 3])\n");
+    EXPECT_TRUE(has(e, "eigvec(): the matrix is defective: its eigenvalue 3, repeated 3 times")) << e;
+    // a double eigenvalue 1 of a matrix that is not triangular: (x - 1)^2 = x^2 - 2x + 1
+    e = r.fails("eigvec([2, 1; -1, 0])\n");
+    EXPECT_TRUE(has(e, "eigvec(): the matrix is defective: its eigenvalue 1")) << e;
+    e = r.fails("eigvec([0, -1; 1, 0])\n");
+    EXPECT_TRUE(has(e, "test.alb:1:8: error: eigvec(): the eigenvalues of the matrix are complex: 0 - 1i, 0 + 1i")) << e;
+    e = r.fails("eigvec([z, 1; 1, 0])\n");
+    EXPECT_TRUE(has(e, "'z' has no value")) << e;
+    EXPECT_TRUE(has(e, "hint: eigvec() takes a matrix of numbers")) << e;
+    e = r.fails("eigvec([1, 2])\n");
+    EXPECT_TRUE(has(e, "eigvec() takes a square matrix, and the matrix is 1 by 2")) << e;
+    e = r.fails("eigvec(z)\n");
+    EXPECT_TRUE(has(e, "eigvec() takes a matrix, but this is a scalar")) << e;
+    e = r.fails("eigvec(J, J)\n");
+    EXPECT_TRUE(has(e, "eigvec() takes 1 argument, not 2")) << e;
+}
+
 // polynomial([A, B, C], x) = A x^2 + B x + C and back; roots of (x - r1)(x - r2)(x - r3)
 TEST(MatrixFunctions, PolynomialAndRootsAgreeWithTheHandPolynomial) {
     MatrixRun r;
@@ -164,6 +285,8 @@ TEST(MatrixFunctions, PolynomialAndRootsAgreeWithTheHandPolynomial) {
     EXPECT_TRUE(has(e, "roots(): the polynomial has no roots to find")) << e;
     e = r.fails("polynomial(1/x, x)\n");
     EXPECT_TRUE(has(e, "test.alb:1:12: error: polynomial(): the expression is not a polynomial in 'x'")) << e;
+    e = r.fails("Pn = sin(x)*A\npolynomial(Pn, x)\n");
+    EXPECT_TRUE(has(e, "test.alb:2:12: error: polynomial(): 'Pn' is not a polynomial in 'x'")) << e;
     e = r.fails("polynomial([1, 2], 3)\n");
     EXPECT_TRUE(has(e, "polynomial(): the second argument must be a declared symbol")) << e;
 }
