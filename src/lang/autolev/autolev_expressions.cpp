@@ -83,7 +83,7 @@ Text Translator::combine(const Expr& e, Text a, Text b) {
     const std::string& op = e.text;
     auto wrapped = [](Text& t, bool wrap) { return wrap ? "(" + std::move(t.s) + ")" : std::move(t.s); };
     auto size = [](const Text& t) { return std::to_string(t.rows) + " by " + std::to_string(t.cols); };
-    auto known = [](const Text& t) { return t.rows > 0; };
+    auto known = [](const Text& t) { return t.size_known(); };
     int rows = 0, cols = 0;  // the result's size, if a matrix
     if (a.matrix() || b.matrix()) {
         if (a.vector || b.vector)
@@ -316,13 +316,12 @@ Text Translator::call_text(const Expr& e, bool& numeric) {
         return {"factor(" + v.s + ")", false, 5};
     }
     if (auto m = matrix_call(e, f, numeric)) return *m;
+    if (auto t = term_call(e, f, numeric)) return *t;
     if (f == "SOLVE")
         fail(e.where, "SOLVE() is translated as a statement of its own: SOLVE(M, X1, X2) alone on its line",
              "solve first, then use X1 and X2 in the expressions after it");
     static const std::map<std::string, std::string> missing{
         {"FACTOR", "FACTOR(e) is factor(e); Alembert takes no factor chosen by name (FACTOR(e, X))"},
-        {"EXCLUDE", "Alembert keeps every term"},
-        {"INCLUDE", "Alembert keeps every term"},
         {"MATRIX", "write the matrix by its elements: [A, B; C, D]"},
         {"VECTOR", "write the vector from unit vectors: X*N1> + Y*N2>"},
         {"NICHECK", "the translation has no nonholonomic checks"}};
@@ -335,8 +334,8 @@ Text Translator::call_text(const Expr& e, bool& numeric) {
     fail(e.where, "the Autolev function '" + e.text + "' is not translated",
          "the translator knows SIN, COS, TAN, ASIN, ACOS, ATAN, SQRT, EXP, LOG, ABS, DOT, CROSS, MAG, "
          "UNITVEC, EXPRESS, DT, D, EXPAND, EXPLICIT, ARRANGE, RHS, COEF, REPLACE, EVALUATE, TAYLOR, FLOOR, "
-         "FACTOR, SOLVE, TRANSPOSE, INV, DET, DIAGMAT, ELEMENT, ROWS, COLS, EIG, POLYNOMIAL, ROOTS, MASS, CM "
-         "and ANGVEL");
+         "FACTOR, SOLVE, TRANSPOSE, INV, DET, DIAGMAT, ELEMENT, ROWS, COLS, EIG, POLYNOMIAL, ROOTS, MASS, CM, "
+         "ANGVEL, EXCLUDE and INCLUDE");
 }
 
 Text Translator::matrix_element(const Expr& e, const Entry& m) {
@@ -349,13 +348,15 @@ Text Translator::matrix_element(const Expr& e, const Entry& m) {
         at.push_back(std::stoi(a.text));
     }
     if (at.size() == 1 && (m.rows == 1 || m.cols == 1)) at = m.rows == 1 ? std::vector<int>{1, at[0]} : std::vector<int>{at[0], 1};
+    // a size known when the script runs (-1) is checked there
+    auto count = [](int n) { return n > 0 ? std::to_string(n) : std::string("n"); };
+    const std::string size = count(m.rows) + " by " + count(m.cols);
     if (at.size() != 2)
-        fail(e.where, "matrix '" + e.text + "' is " + std::to_string(m.rows) + " by " + std::to_string(m.cols) +
-                          ": give its row and column", "write " + e.text + "[i, j]");
-    if (m.rows > 0 && (at[0] < 1 || at[0] > m.rows || at[1] < 1 || at[1] > m.cols))
+        fail(e.where, "matrix '" + e.text + "' is " + size + ": give its row and column", "write " + e.text + "[i, j]");
+    if (at[0] < 1 || at[1] < 1 || (m.rows > 0 && at[0] > m.rows) || (m.cols > 0 && at[1] > m.cols))
         fail(e.where, "[" + std::to_string(at[0]) + ", " + std::to_string(at[1]) + "] is outside matrix '" + e.text +
-                          "', which is " + std::to_string(m.rows) + " by " + std::to_string(m.cols),
-             "rows run from 1 to " + std::to_string(m.rows) + " and columns from 1 to " + std::to_string(m.cols));
+                          "', which is " + size,
+             "rows run from 1 to " + count(m.rows) + " and columns from 1 to " + count(m.cols));
     return {m.name + "[" + std::to_string(at[0]) + ", " + std::to_string(at[1]) + "]", false, 5, false};
 }
 

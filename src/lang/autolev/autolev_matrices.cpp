@@ -52,7 +52,7 @@ std::optional<Text> Translator::matrix_call(const Expr& e, const std::string& f,
         return t;
     };
     auto square = [&](const Text& m) {
-        if (m.rows > 0 && m.rows != m.cols)
+        if (m.size_known() && m.rows != m.cols)
             fail(a[0].where, e.text + "() takes a square matrix, and this is " + std::to_string(m.rows) + " by " +
                                  std::to_string(m.cols), "give as many rows as columns");
     };
@@ -84,7 +84,7 @@ std::optional<Text> Translator::matrix_call(const Expr& e, const std::string& f,
         count(3, 3, "ELEMENT(M, i, j)");
         Text m = matrix_arg(0);
         const int i = whole_number(a[1], "the row of ELEMENT()"), j = whole_number(a[2], "the column of ELEMENT()");
-        if (m.rows > 0 && (i > m.rows || j > m.cols))
+        if ((m.rows > 0 && i > m.rows) || (m.cols > 0 && j > m.cols))
             fail(e.where, "[" + std::to_string(i) + ", " + std::to_string(j) + "] is outside the " + std::to_string(m.rows) +
                               " by " + std::to_string(m.cols) + " matrix",
                  "rows run from 1 to " + std::to_string(m.rows) + " and columns from 1 to " + std::to_string(m.cols));
@@ -122,27 +122,35 @@ std::optional<Text> Translator::matrix_call(const Expr& e, const std::string& f,
     }
     if (f == "EIG") {
         if (a.size() > 1)
-            fail(e.where, "EIG() with names for the eigenvalues and eigenvectors is not translated",
-                 "write VALUES = EIG(M): the eigenvalues of a matrix of numbers, as a column");
+            fail(e.where, "EIG() with names for the eigenvalues and eigenvectors is translated as a statement of its "
+                          "own: EIG(M, VALUES, VECTORS) alone on its line",
+                 "write EIG(M, VALUES, VECTORS), then use VALUES and VECTORS; VALUES = EIG(M) gives the eigenvalues");
         count(1, 1, "EIG(M)");
         Text m = matrix_arg(0);
         square(m);
         return Text{"eig(" + m.s + ")", false, 5, false, m.rows, 1};
     }
     if (f == "POLYNOMIAL") {
-        // POLYNOMIAL([C1, C2, C3], X) = C1*X^2 + C2*X + C3
-        count(2, 2, "POLYNOMIAL([1, -3, 2], X)");
+        // POLYNOMIAL([C1, C2, C3], X) = C1*X^2 + C2*X + C3; POLYNOMIAL(P, X): P's coefficients,
+        // highest power first, as a row (as long as P's degree, known when the script runs)
+        count(2, 2, "POLYNOMIAL([1, -3, 2], X) or POLYNOMIAL(P, X)");
         Text c = expr(a[0]);
-        if (!c.matrix() || (c.rows != 1 && c.cols != 1))
-            fail(a[0].where, "POLYNOMIAL() is translated for a row or column of coefficients, highest power first",
-                 "write POLYNOMIAL([C1, C2, C3], X); COEF(P, X^n) gives a polynomial's coefficients");
+        if (c.vector)
+            fail(a[0].where, "POLYNOMIAL() takes a polynomial or a row or column of coefficients, not a vector",
+                 "take a measure first: POLYNOMIAL(DOT(V>, N1>), X)");
+        if (c.size_known() && c.rows != 1 && c.cols != 1)
+            fail(a[0].where, "POLYNOMIAL() takes a row or column of coefficients, highest power first, and this is " +
+                                 std::to_string(c.rows) + " by " + std::to_string(c.cols),
+                 "write POLYNOMIAL([C1, C2, C3], X), or POLYNOMIAL(P, X) for the coefficients of P");
         const Expr& x = a[1];
         const Entry* en = x.kind == Expr::Kind::name && !x.vector ? find(x.text) : nullptr;
         if (!en || (en->kind != Kind::constant && en->kind != Kind::variable && en->kind != Kind::specified))
             fail(x.where, "POLYNOMIAL() takes a constant, variable or specified quantity as its variable",
                  "write POLYNOMIAL([1, -3, 2], X)");
         numeric = false;
-        return Text{"polynomial(" + c.s + ", " + scalar(x).s + ")", false, 5};
+        const std::string s = "polynomial(" + c.s + ", " + scalar(x).s + ")";
+        if (c.matrix()) return Text{s, false, 5};
+        return Text{s, false, 5, false, 1, -1};
     }
     if (f == "ROOTS") {
         // ROOTS(P, X): the real roots of a polynomial of numbers; ROOTS([C1, C2, C3])
@@ -150,10 +158,10 @@ std::optional<Text> Translator::matrix_call(const Expr& e, const std::string& f,
         numeric = false;
         if (a.size() == 1) {
             Text c = expr(a[0]);
-            if (!c.matrix() || (c.rows != 1 && c.cols != 1))
+            if (!c.matrix() || (c.size_known() && c.rows != 1 && c.cols != 1))
                 fail(a[0].where, "ROOTS() with one argument takes a row or column of coefficients, highest power first",
                      "write ROOTS([1, -3, 2]) or ROOTS(P, X)");
-            const int n = c.rows > 0 ? std::max(c.rows, c.cols) - 1 : -1;
+            const int n = c.size_known() ? std::max(c.rows, c.cols) - 1 : -1;
             return Text{"roots(" + c.s + ")", false, 5, false, n, 1};
         }
         Text p = scalar(a[0]);

@@ -542,6 +542,7 @@ void Translator::expression_statement(const Statement& st) {
                  std::string("write ") + form);
     };
     if (f == "SOLVE") return solve_statement(e);
+    if (f == "EIG" && e.args.size() > 1) return eig_statement(e);
     if (f == "SIMPROT") {
         nargs(4, "SIMPROT(A, B, 3, Q1)");
         std::string a = frame_name(e.args[0]), b = frame_name(e.args[1]);
@@ -672,7 +673,7 @@ void Translator::solve_statement(const Expr& e) {
         count = e.args.size() - 1;
     } else if (const Entry* en = m.kind == Expr::Kind::name && !m.vector ? find(m.text) : nullptr;
         en && en->kind == Kind::matrix) {
-        if (en->rows < 0)
+        if (en->rows < 0 || en->cols < 0)
             fail(m.where, "SOLVE() takes a matrix whose size is known here, and the size of '" + m.text +
                               "' is known only when the script runs", "write the equations out: EQ = [e1; e2]");
         if (en->rows != 1 && en->cols != 1)

@@ -64,6 +64,8 @@ struct Text {
     bool numeric = false;  // numbers and unit vectors only: no quantity with a dimension
     int rows = 0, cols = 0;  // a matrix's size (0: not a matrix; -1: known when the script runs)
     bool matrix() const { return rows != 0; }
+    // both the rows and the columns known (POLYNOMIAL(P, X) is a row of a length not known)
+    bool size_known() const { return rows > 0 && cols > 0; }
 };
 
 // A declared constant: its declaration group (one `constant` line each) and its value.
@@ -290,6 +292,11 @@ private:
     std::optional<Text> matrix_call(const Expr& e, const std::string& f, bool& numeric);
     // a matrix literal [a, b; c, d] inside an expression
     Text matrix_literal(const Expr& m);
+    // EXCLUDE(E, X, ...) and INCLUDE(E, X, ...) (autolev_algebra.cpp), or nothing if `f` is
+    // neither
+    std::optional<Text> term_call(const Expr& e, const std::string& f, bool& numeric);
+    // EIG(M, VALUES, VECTORS), a statement: VALUES = eig(M) and VECTORS = eigvec(M)
+    void eig_statement(const Expr& e);
     // a whole number written in the file (a size or an index), or an error naming `what`
     int whole_number(const Expr& e, const std::string& what);
 

@@ -389,7 +389,8 @@ INSTANTIATE_TEST_SUITE_P(Files, AutolevAcceptance, ::testing::ValuesIn(cases()),
 TEST(AutolevAcceptanceFiles, EveryFileIsChecked) {
     std::vector<std::string> checked{"vector_algebra.al", "no_newtonian_kinematics.al", "algebra_functions.al",
                                      "matrix_values.al", "series_and_solve.al",
-                                     "solve_zero_pendulum.al", "matrix_operations.al", "mass_functions.al"};
+                                     "solve_zero_pendulum.al", "matrix_operations.al", "mass_functions.al",
+                                     "terms_and_coefficients.al", "normal_modes.al"};
     for (const Case& c : cases()) checked.push_back(c.file);
     int files = 0;
     for (const auto& e : std::filesystem::directory_iterator(kDir)) {
@@ -614,6 +615,79 @@ TEST(AutolevAcceptanceFiles, MassFunctionsAgreeWithTheHandResults) {
         for (std::size_t i = 0; i < expected.size(); ++i)
             EXPECT_NEAR(v[i], expected[i], 1e-12 * std::max(1.0, std::abs(expected[i]))) << i << " at " << at;
     }
+}
+
+// Terms and coefficients, by hand: E = M L^2 U^2/2 - M G L cos Q + K Q^2/2 (U is Q') has the
+// kinetic term KE = M L^2 U^2/2, the rest PE = -M G L cos Q + K Q^2/2, of which the term with G
+// is -M G L cos Q and the term with neither U nor G is K Q^2/2; the terms of [E; K Q + G] with
+// Q are [PE; K Q] (cos Q holds Q). (Q - 1)(Q - 2)(K Q + M) = K Q^3 + (M - 3K) Q^2 +
+// (2K - 3M) Q + 2M; Q^2 - 5Q + 6 has the roots 2 and 3; the polynomial of the coefficients
+// less P is 0.
+TEST(AutolevAcceptanceFiles, TermsAndCoefficientsAgreeWithTheHandResults) {
+    AutolevTranslation t = import("terms_and_coefficients.al");
+    ASSERT_TRUE(t.ok());
+    std::mt19937 rng(2034);
+    auto uniform = [&](double a, double b) { return std::uniform_real_distribution<double>(a, b)(rng); };
+    for (int trial = 0; trial < 3; ++trial) {
+        const double m = uniform(0.5, 3), g = uniform(9, 10), l = uniform(0.2, 2), k = uniform(1, 20);
+        const double q = uniform(-3, 3), u = uniform(-4, 4);
+        std::string at = "M = " + num(m) + ", G = " + num(g) + ", L = " + num(l) + ", K = " + num(k) + ", Q = " + num(q) +
+                         ", Q' = " + num(u);
+        Vec v = evaluate(t, {"KE", "PE", "GRAV", "SPRING", "T1", "T2", "C1", "C2", "C3", "C4", "R2", "BACK"}, at);
+        const double pe = -m * g * l * std::cos(q) + k * q * q / 2;
+        Vec expected{m * l * l * u * u / 2,
+                     pe,
+                     -m * g * l * std::cos(q),
+                     k * q * q / 2,
+                     pe,
+                     k * q,
+                     k,
+                     m - 3 * k,
+                     2 * k - 3 * m,
+                     2 * m,
+                     3,
+                     0};
+        for (std::size_t i = 0; i < expected.size(); ++i)
+            EXPECT_NEAR(v[i], expected[i], 1e-12 * std::max(1.0, std::abs(expected[i]))) << i << " at " << at;
+    }
+}
+
+// Normal modes, by hand: for a 2 by 2 matrix [a, b; c, d], lambda = ((a + d) -+ sqrt((a - d)^2
+// + 4 b c))/2 with the eigenvector (-b, a - lambda), over its length, its largest component
+// positive. M^-1 K = [2K/M1, -K/M1; -K/M2, K/M2] (K = 3, M1 = 1.5, M2 = 0.5, the file's values)
+// gives the squared frequencies and the mode shapes; K alone, [2K, -K; -K, K], is symmetric.
+TEST(AutolevAcceptanceFiles, NormalModesAgreeWithTheHandResults) {
+    AutolevTranslation t = import("normal_modes.al");
+    ASSERT_TRUE(t.ok());
+    const double k = 3, m1 = 1.5, m2 = 0.5;
+    // the eigenvalues, then the eigenvectors by columns
+    auto eigen2 = [](double a, double b, double c, double d) {
+        const double root = std::sqrt((a - d) * (a - d) + 4 * b * c);
+        Vec out{((a + d) - root) / 2, ((a + d) + root) / 2};
+        for (int j = 0; j < 2; ++j) {
+            double x = -b, y = a - out[static_cast<std::size_t>(j)];
+            const double length = std::hypot(x, y);
+            const double sign = (std::abs(x) >= std::abs(y) ? x : y) < 0 ? -1 : 1;
+            out.push_back(sign * x / length);
+            out.push_back(sign * y / length);
+        }
+        return out;
+    };
+    const Vec modes = eigen2(2 * k / m1, -k / m1, -k / m2, k / m2), stiff = eigen2(2 * k, -k, -k, k);
+    std::string extra;
+    const std::vector<std::string> names{"W1SQ", "W2SQ", "OMEGA1", "X11", "X21", "X12", "X22",
+                                         "KV1",  "KV2",  "S11",    "S21", "S12", "S22"};
+    for (const std::string& n : names) extra += "evaluate " + n + "\n";
+    ScriptRun r = run(t.script, extra);
+    ASSERT_EQ(r.status, RunStatus::ok) << r.err << t.script;
+    ASSERT_GE(r.values.size(), names.size()) << r.out;
+    Vec v(r.values.end() - static_cast<std::ptrdiff_t>(names.size()), r.values.end());
+    Vec expected{modes[0], modes[1], std::sqrt(modes[0]), modes[2], modes[3], modes[4], modes[5],
+                 stiff[0], stiff[1], stiff[2],              stiff[3], stiff[4], stiff[5]};
+    for (std::size_t i = 0; i < expected.size(); ++i)
+        EXPECT_NEAR(v[i], expected[i], 1e-12 * std::max(1.0, std::abs(expected[i]))) << names[i] << "\n" << r.out;
+    // the symmetric matrix's eigenvectors are orthogonal
+    EXPECT_NEAR(v[9] * v[11] + v[10] * v[12], 0, 1e-15);
 }
 
 }  // namespace autolev_acceptance_test

@@ -241,6 +241,26 @@ CODE DYNAMICS() spring.c
     EXPECT_FALSE(contains(b.script, "codegen"));
 }
 
+// POLYNOMIAL(P, X) of an expression that is no polynomial in X translates (whether it is one
+// shows when the script runs, as P may be any expression) and is refused there, naming P; the
+// statement EIG(M, VALUES, VECTORS) of a complex or defective matrix likewise.
+TEST(AutolevImport, PolynomialAndEigenvectorsOfTheWrongKindAreRefusedWhenTheScriptRuns) {
+    auto runtime_error = [](const std::string& src) {
+        AutolevTranslation t = translate_autolev(src, "runs.al");
+        EXPECT_TRUE(t.ok()) << t.script;
+        std::ostringstream out, err;
+        Interpreter interp(out, err, false);
+        EXPECT_EQ(interp.run(t.script, "runs.alb"), RunStatus::script_error) << out.str();
+        return err.str();
+    };
+    std::string e = runtime_error("NEWTONIAN N\nCONSTANTS A\nVARIABLES Q\nP = A*SIN(Q)\nC = POLYNOMIAL(P, Q)\n");
+    EXPECT_TRUE(contains(e, "polynomial(): 'P' is not a polynomial in 'Q'")) << e;
+    e = runtime_error("NEWTONIAN N\nM = [0, -1; 1, 0]\nEIG(M, V, W)\n");
+    EXPECT_TRUE(contains(e, "eig(): the eigenvalues of 'M' are complex: 0 - 1i, 0 + 1i")) << e;
+    e = runtime_error("NEWTONIAN N\nM = [2, 1; 0, 2]\nEIG(M, V, W)\n");
+    EXPECT_TRUE(contains(e, "eigvec(): 'M' is defective: its eigenvalue 2, repeated 2 times")) << e;
+}
+
 // Malformed or untranslatable input: each gives an error at the statement's line and column,
 // and the translation is not ok (the command writes no script).
 struct BadInput {
@@ -341,7 +361,16 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"element_outside", kHead + "X = ELEMENT([1, 2], 2, 1)\n", 6, 5, "[2, 1] is outside the 1 by 2 matrix"},
         BadInput{"rows_outside", kHead + "M = [1, 2]\nX = ROWS(M, 2)\n", 7, 13, "row 2 is outside the 1 by 2 matrix"},
         BadInput{"eig_vectors", kHead + "X = EIG([1, 0; 0, 1], V, W)\n", 6, 5, "EIG() with names for the eigenvalues"},
-        BadInput{"polynomial_of_expression", kHead + "X = POLYNOMIAL(Q^2, Q)\n", 6, 17, "POLYNOMIAL() is translated for a row"},
+        BadInput{"eig_statement_count", kHead + "EIG([1, 0; 0, 1], V)\n", 6, 1, "EIG() as a statement takes the matrix"},
+        BadInput{"eig_names_alike", kHead + "EIG([1, 0; 0, 1], V, V)\n", 6, 22, "EIG() names its eigenvalues and eigenvectors alike"},
+        BadInput{"eig_into_constant", kHead + "EIG([1, 0; 0, 1], L, W)\n", 6, 19, "'L' is a constant and cannot be assigned the eigenvalues"},
+        BadInput{"eig_not_square", kHead + "EIG([1, 2], V, W)\n", 6, 5, "EIG() takes a square matrix, and this is 1 by 2"},
+        BadInput{"eig_own_matrix", kHead + "M = [1, 0; 0, 1]\nEIG(M, M, W)\n", 7, 8, "EIG() would assign 'M', its own matrix"},
+        BadInput{"polynomial_of_vector", kHead + "X = POLYNOMIAL(N1>, Q)\n", 6, 16, "POLYNOMIAL() takes a polynomial or a row or column"},
+        BadInput{"polynomial_of_matrix", kHead + "X = POLYNOMIAL([1, 2; 3, 4], Q)\n", 6, 16, "and this is 2 by 2"},
+        BadInput{"exclude_no_symbol", kHead + "X = EXCLUDE(L*Q)\n", 6, 5, "EXCLUDE() takes the expression and at least one symbol"},
+        BadInput{"include_by_number", kHead + "X = INCLUDE(L*Q, 2)\n", 6, 18, "INCLUDE() takes constants, variables or specified"},
+        BadInput{"exclude_solved", kHead + "SOLVE(L*Q - 1, Q)\nX = EXCLUDE(L*Q, Q)\n", 7, 18, "'Q' stands for its solution after SOLVE"},
         BadInput{"roots_by_number", kHead + "X = ROOTS(Q^2 - 1, 2)\n", 6, 20, "ROOTS() takes a constant, variable"},
         BadInput{"mass_of_point", kHead + "X = MASS(P)\n", 6, 10, "MASS() takes bodies and particles here"},
         BadInput{"cm_count", kHead + "X> = CM()\n", 6, 6, "CM() takes 1 argument, not 0"},
