@@ -3,7 +3,9 @@
 // (make_humanoid: 15 segments of de Leva's tables, 32 degrees of freedom) beside MuJoCo, DART
 // and Simbody on the same model, measured in the run of spatial_peers_bench; every peer is
 // checked against the generated code at a random state before it is timed (bench/README.md,
-// "Floating-base humanoid beside MuJoCo, DART and Simbody").
+// "Floating-base humanoid beside MuJoCo, DART and Simbody"); the generated derivatives of
+// inverse and forward dynamics beside MuJoCo's finite differences ("Derivatives of the
+// dynamics").
 #include <benchmark/benchmark.h>
 #include <dlfcn.h>
 #include <unistd.h>
@@ -74,6 +76,10 @@ struct Generated {
                                  const double*, double*, double*);
     using MassMatrix = void (*)(const void*, double, const double*, double*);
     using Bias = void (*)(const void*, double, const double*, const double*, double*);
+    using InverseDerivatives = void (*)(const void*, double, const double*, const double*,
+                                        const double*, double*, double*);
+    using ForwardDerivatives = int (*)(const void*, double, const double*, const double*,
+                                       const double*, double*, double*, double*);
     Generated() : model(make_humanoid()) {
         System& sys = model.system;
         SymbolTable& st = sys.symbols();
@@ -99,6 +105,9 @@ struct Generated {
         DynamicsEquations eq{q, t.residuals, model.unknowns, std::nullopt, t.accelerations};
         eq.mass_matrix = t.mass_matrix;
         eq.bias_forces = t.bias_forces;
+        // d tau/d q, d tau/d u and d u'/d q, d u'/d u, q at fixed u (docs/codegen.md, "Equations
+        // in generalized speeds: d/dq at fixed u")
+        add_dynamics_derivatives(st, eq);
         CodegenOptions options;
         options.name = "humanoid";
         options.source = "make_humanoid(), recursive formation";
@@ -114,6 +123,9 @@ struct Generated {
         const StraightLineProgram& bf = plan.bias_forces.program;
         ops_mm = mm.operation_count(mm.body), calls_mm = mm.call_count(mm.body);
         ops_bf = bf.operation_count(bf.body), calls_bf = bf.call_count(bf.body);
+        const StraightLineProgram& idd = plan.inverse_dynamics_derivatives.program;
+        ops_idd = idd.operation_count(idd.body), calls_idd = idd.call_count(idd.body);
+        symmetric_M = plan.symmetric_mass_matrix;
         dir = fs::temp_directory_path() / ("alembert-humanoid-bench-" + std::to_string(::getpid()));
         fs::create_directories(dir);
         generate_code(st, eq, Language::c, dir, options);
@@ -133,6 +145,10 @@ struct Generated {
         mass_forcing = reinterpret_cast<MassForcing>(::dlsym(handle, "humanoid_mass_forcing"));
         mass_matrix = reinterpret_cast<MassMatrix>(::dlsym(handle, "humanoid_mass_matrix"));
         bias = reinterpret_cast<Bias>(::dlsym(handle, "humanoid_bias_forces"));
+        inverse_derivatives = reinterpret_cast<InverseDerivatives>(
+            ::dlsym(handle, "humanoid_inverse_dynamics_derivatives"));
+        forward_derivatives = reinterpret_cast<ForwardDerivatives>(
+            ::dlsym(handle, "humanoid_forward_dynamics_derivatives"));
         context.resize(size() / sizeof(double) + 1);
         init(context.data(), nullptr);
         // a random state: angles, speeds, rates, loads, and per free or ball joint a unit
@@ -171,6 +187,34 @@ struct Generated {
             d_b = std::max(d_b, std::abs(bias_out[i] + f[i])), scale = std::max(scale, std::abs(f[i]));
         if (d_M > 1e-12 * scale || d_b > 1e-12 * scale)
             throw std::runtime_error("generated M alone or bias forces disagree with M and f");
+        inverse_derivatives(context.data(), 0, qg.data(), u.data(), udot.data(), dtau_dq.data(),
+                            dtau_du.data());
+        Vec udot2{};
+        if (forward_derivatives(context.data(), 0, qg.data(), u.data(), tau.data(), udot2.data(),
+                                dudot_dq.data(), dudot_du.data()) != 0)
+            throw std::runtime_error("generated forward dynamics' derivatives failed");
+    }
+    // D (row by row) with each quaternion's three columns d/d ev turned into d/d dtheta, the
+    // small rotation in the segment's axes by which MuJoCo perturbs a ball or free joint's
+    // quaternion, e <- e (x) (1, dtheta/2): d ev = 1/2 (e0 I + [ev]x) dtheta
+    Mat in_rotation_perturbations(const Mat& D) const {
+        Mat out = D;
+        for (std::size_t k = 0; k < segs.size(); ++k) {
+            const HumanoidSegment& seg = segs[k];
+            if (seg.dofs == 1) continue;
+            const std::array<double, 4>& e4 = quaternions[k];
+            Eigen::Matrix3d ev_x;
+            ev_x << 0, -e4[3], e4[2], e4[3], 0, -e4[1], -e4[2], e4[1], 0;
+            const Eigen::Matrix3d J = 0.5 * (e4[0] * Eigen::Matrix3d::Identity() + ev_x);
+            const int j0 = seg.speed + (seg.dofs == 6 ? 3 : 0);
+            for (int i = 0; i < kN; ++i)
+                for (int c = 0; c < 3; ++c) {
+                    double s = 0;
+                    for (int r = 0; r < 3; ++r) s += D[i * kN + j0 + r] * J(r, c);
+                    out[i * kN + j0 + c] = s;
+                }
+        }
+        return out;
     }
     ~Generated() {
         if (handle) ::dlclose(handle);
@@ -219,7 +263,8 @@ struct Generated {
     std::vector<TimeVariable> q;
     std::vector<TreeJoint> joints;
     std::size_t ops_id = 0, calls_id = 0, ops_mf = 0, calls_mf = 0, ops_fd = 0, calls_fd = 0;
-    std::size_t ops_mm = 0, calls_mm = 0, ops_bf = 0, calls_bf = 0;
+    std::size_t ops_mm = 0, calls_mm = 0, ops_bf = 0, calls_bf = 0, ops_idd = 0, calls_idd = 0;
+    bool symmetric_M = false;  // the derivatives' M factored by Cholesky (else LU)
     fs::path dir;
     void* handle = nullptr;
     Inverse inverse = nullptr;
@@ -227,6 +272,8 @@ struct Generated {
     MassForcing mass_forcing = nullptr;
     MassMatrix mass_matrix = nullptr;
     Bias bias = nullptr;
+    InverseDerivatives inverse_derivatives = nullptr;
+    ForwardDerivatives forward_derivatives = nullptr;
     std::vector<double> context;
     std::vector<HumanoidSegment> segs;
     std::vector<std::array<double, 4>> quaternions;  // per segment: its joint's (1 0 0 0: a hinge)
@@ -235,6 +282,8 @@ struct Generated {
     Eigen::Matrix3d R_NP;
     Vec qg{}, u{}, udot{}, tau{}, id_out{}, fd_out{}, bias_out{};
     Mat M{};
+    // d tau/d q, d tau/d u at (q, u, u'); d u'/d q, d u'/d u at (q, u, tau); q at fixed u, d/d ev
+    Mat dtau_dq{}, dtau_du{}, dudot_dq{}, dudot_du{};
 };
 
 Generated& generated() {
@@ -338,8 +387,47 @@ void HumanoidGeneratedBiasForces(benchmark::State& state) {
     counters(state, g.ops_bf, g.calls_bf);
 }
 
+// d tau/d q (q at fixed u) and d tau/d u of inverse dynamics (32 x 32 each), through the
+// intermediates
+void HumanoidGeneratedInverseDerivatives(benchmark::State& state) {
+    Generated& g = generated();
+    Mat Dq{}, Du{};
+    for (auto _ : state) {
+        g.inverse_derivatives(g.context.data(), 0, g.qg.data(), g.u.data(), g.udot.data(),
+                              Dq.data(), Du.data());
+        benchmark::DoNotOptimize(Dq.data());
+        benchmark::DoNotOptimize(Du.data());
+        benchmark::ClobberMemory();
+    }
+    counters(state, g.ops_idd, g.calls_idd);
+}
+
+// u' with d u'/d q and d u'/d u: the articulated-body accelerations, M alone, the derivatives
+// of inverse dynamics at u', then -M^-1 on the 64 columns (M factored once: Cholesky or LU, as
+// the generator decided); ops counts the three straight-line programs, solve_ops the dense
+// factorization and solves (flops)
+void HumanoidGeneratedForwardDerivatives(benchmark::State& state) {
+    Generated& g = generated();
+    Vec udot{};
+    Mat Dq{}, Du{};
+    for (auto _ : state) {
+        benchmark::DoNotOptimize(g.forward_derivatives(g.context.data(), 0, g.qg.data(),
+                                                       g.u.data(), g.tau.data(), udot.data(),
+                                                       Dq.data(), Du.data()));
+        benchmark::ClobberMemory();
+    }
+    counters(state, g.ops_fd + g.ops_mm + g.ops_idd, g.calls_fd + g.calls_mm + g.calls_idd);
+    // the factorization (Cholesky n^3/3 flops, LU 2 n^3/3), 2n right sides through both
+    // triangles (2 n^2 each), the negation
+    const double n = kN;
+    state.counters["solve_ops"] = (g.symmetric_M ? 1.0 : 2.0) * n * n * n / 3 + 4 * n * n * n + 2 * n * n;
+    state.counters["lu"] = g.symmetric_M ? 0 : 1;
+}
+
 BENCHMARK(HumanoidGeneratedInverse);
 BENCHMARK(HumanoidGeneratedForward);
+BENCHMARK(HumanoidGeneratedInverseDerivatives);
+BENCHMARK(HumanoidGeneratedForwardDerivatives);
 BENCHMARK(HumanoidGeneratedMassMatrix);
 BENCHMARK(HumanoidGeneratedMassMatrixAlone);
 BENCHMARK(HumanoidGeneratedBiasForces);
@@ -517,8 +605,145 @@ void HumanoidMujocoBiasForces(benchmark::State& state) {
     }
 }
 
+// ---- MuJoCo's derivatives (2.2: mjd_transitionFD and no analytic ones), as for the arm
+// (spatial_peers_bench.cpp): the velocity rows of the Euler step's transition, h d qacc/d x
+// and I + h d qacc/d qvel, divided by h; and central differences by hand over the forward and
+// inverse pipelines. MuJoCo perturbs a free or ball joint's quaternion by a small rotation in
+// the segment's axes (mj_integratePos), so the generated d/d ev columns are turned into d/d
+// dtheta (Generated::in_rotation_perturbations) for the check. Finite differences agree to
+// about 1e-6 relative, not to kAgree: checked to kAgreeFD.
+constexpr double kAgreeFD = 1e-5;
+constexpr double kEpsFD = 1e-6;
+
+// d tau/d x (or d u'/d x), x = q then u, the generated pair in MuJoCo's perturbations; 2 n^2
+std::vector<double> reference_fd(const Generated& g, const Mat& Dq, const Mat& Du) {
+    const Mat Dtheta = g.in_rotation_perturbations(Dq);
+    std::vector<double> ref(Dtheta.begin(), Dtheta.end());
+    ref.insert(ref.end(), Du.begin(), Du.end());
+    return ref;
+}
+
+// Agreement of finite differences to kAgreeFD relative to the largest generated entry.
+bool agrees_fd(benchmark::State& state, const std::vector<double>& D, const std::vector<double>& ref) {
+    double diff = 0, scale = 1;
+    for (std::size_t i = 0; i < ref.size(); ++i)
+        diff = std::max(diff, std::abs(D[i] - ref[i])), scale = std::max(scale, std::abs(ref[i]));
+    state.counters["max_diff"] = diff;
+    state.counters["rel_diff"] = diff / scale;
+    if (diff <= kAgreeFD * scale) return true;
+    char message[120];
+    std::snprintf(message, sizeof message,
+                  "disagrees with the generated derivatives by %.3g (relative %.3g)", diff, diff / scale);
+    state.SkipWithError(message);
+    return false;
+}
+
+void HumanoidMujocoTransitionFD(benchmark::State& state) {
+    Generated& g = generated();
+    MujocoHumanoid& h = mujoco();
+    h.set(g);
+    for (int i = 0; i < kN; ++i) h.d->qfrc_applied[i] = g.tau[i];
+    std::vector<mjtNum> A(4 * kN * kN);
+    mjd_transitionFD(h.m, h.d, kEpsFD, 1, A.data(), nullptr, nullptr, nullptr);
+    // the velocity rows: h d qacc/d x and I + h d qacc/d qvel, row by row
+    const double step = h.m->opt.timestep;
+    std::vector<double> D(2 * kN * kN);
+    for (int i = 0; i < kN; ++i)
+        for (int j = 0; j < kN; ++j) {
+            D[i * kN + j] = A[(kN + i) * 2 * kN + j] / step;
+            D[kN * kN + i * kN + j] = (A[(kN + i) * 2 * kN + kN + j] - (i == j ? 1.0 : 0.0)) / step;
+        }
+    if (agrees_fd(state, D, reference_fd(g, g.dudot_dq, g.dudot_du)))
+        for (auto _ : state) {
+            mjd_transitionFD(h.m, h.d, kEpsFD, 1, A.data(), nullptr, nullptr, nullptr);
+            benchmark::DoNotOptimize(A.data());
+            benchmark::ClobberMemory();
+        }
+    for (int i = 0; i < kN; ++i) h.d->qfrc_applied[i] = 0;
+}
+
+// qpos moved by eps along speed j as mj_integratePos moves it: a position or a hinge angle by
+// eps, a free or ball joint's quaternion by the rotation of eps about the segment's axis
+void move_along_speed(const mjModel* m, mjtNum* qpos, int j, double eps) {
+    const int joint = m->dof_jntid[j];
+    int adr = m->jnt_qposadr[joint], k = j - m->jnt_dofadr[joint];
+    if (m->jnt_type[joint] == mjJNT_HINGE || m->jnt_type[joint] == mjJNT_SLIDE) {
+        qpos[adr] += eps;
+        return;
+    }
+    if (m->jnt_type[joint] == mjJNT_FREE) {
+        if (k < 3) {
+            qpos[adr + k] += eps;
+            return;
+        }
+        adr += 3, k -= 3;
+    }
+    mjtNum axis[3] = {0, 0, 0};
+    axis[k] = 1;
+    mju_quatIntegrate(qpos + adr, axis, eps);
+}
+
+// central differences of `f` (the forward or inverse pipeline) in qpos (along each speed, as
+// above) and qvel: 4 n calls; D is d/d q then d/d u, row by row
+template <class F>
+void central_differences(MujocoHumanoid& h, F f, std::vector<double>& D) {
+    mjtNum plus[kN], minus[kN], qpos0[bench::kHumanoidCoordinates];
+    std::copy(h.d->qpos, h.d->qpos + bench::kHumanoidCoordinates, qpos0);
+    for (int j = 0; j < kN; ++j) {
+        move_along_speed(h.m, h.d->qpos, j, kEpsFD);
+        f(plus);
+        std::copy(qpos0, qpos0 + bench::kHumanoidCoordinates, h.d->qpos);
+        move_along_speed(h.m, h.d->qpos, j, -kEpsFD);
+        f(minus);
+        std::copy(qpos0, qpos0 + bench::kHumanoidCoordinates, h.d->qpos);
+        for (int i = 0; i < kN; ++i) D[i * kN + j] = (plus[i] - minus[i]) / (2 * kEpsFD);
+    }
+    for (int j = 0; j < kN; ++j) {
+        const mjtNum x0 = h.d->qvel[j];
+        h.d->qvel[j] = x0 + kEpsFD;
+        f(plus);
+        h.d->qvel[j] = x0 - kEpsFD;
+        f(minus);
+        h.d->qvel[j] = x0;
+        for (int i = 0; i < kN; ++i) D[kN * kN + i * kN + j] = (plus[i] - minus[i]) / (2 * kEpsFD);
+    }
+}
+
+void HumanoidMujocoForwardCentralDifferences(benchmark::State& state) {
+    Generated& g = generated();
+    MujocoHumanoid& h = mujoco();
+    h.set(g);
+    auto f = [&](mjtNum* out) { h.forward(g.tau.data(), out); };
+    std::vector<double> D(2 * kN * kN);
+    central_differences(h, f, D);
+    if (!agrees_fd(state, D, reference_fd(g, g.dudot_dq, g.dudot_du))) return;
+    for (auto _ : state) {
+        central_differences(h, f, D);
+        benchmark::DoNotOptimize(D.data());
+        benchmark::ClobberMemory();
+    }
+}
+
+void HumanoidMujocoInverseCentralDifferences(benchmark::State& state) {
+    Generated& g = generated();
+    MujocoHumanoid& h = mujoco();
+    h.set(g);
+    auto f = [&](mjtNum* out) { h.inverse(out); };
+    std::vector<double> D(2 * kN * kN);
+    central_differences(h, f, D);
+    if (!agrees_fd(state, D, reference_fd(g, g.dtau_dq, g.dtau_du))) return;
+    for (auto _ : state) {
+        central_differences(h, f, D);
+        benchmark::DoNotOptimize(D.data());
+        benchmark::ClobberMemory();
+    }
+}
+
 BENCHMARK(HumanoidMujocoInverse);
 BENCHMARK(HumanoidMujocoForward);
+BENCHMARK(HumanoidMujocoTransitionFD);
+BENCHMARK(HumanoidMujocoForwardCentralDifferences);
+BENCHMARK(HumanoidMujocoInverseCentralDifferences);
 BENCHMARK(HumanoidMujocoMassMatrix);
 BENCHMARK(HumanoidMujocoMassMatrixDense);
 BENCHMARK(HumanoidMujocoBiasForces);

@@ -215,12 +215,80 @@ std::string cholesky_factor_and_back(const Dialect& d) {
     return os.str();
 }
 
+// The LU factorization with partial pivoting, and the solve with it for m right sides at
+// once (forward dynamics solves for one, the derivatives for 2 nq more).
+std::string lu_factor_and_back(const Dialect& d) {
+    std::ostringstream os;
+    const std::string st = d.cpp ? "" : "static ";
+    const std::string prefix = d.cpp ? "" : d.name + "_";
+    os << "/* The LU decomposition of A (n x n, row by row, overwritten by L below the\n"
+          "   diagonal and U on and above it) with partial pivoting, p[k] the row swapped\n"
+          "   with row k; returns 0, or -1 if A is singular. */\n"
+       << st << "int " << prefix << "lu_factor(int n, double* A, int* p) {\n"
+          "    for (int k = 0; k < n; ++k) {\n"
+          "        int m = k;\n"
+          "        for (int i = k + 1; i < n; ++i)\n"
+          "            if (" << d.math("fabs") << "(A[i * n + k]) > " << d.math("fabs")
+       << "(A[m * n + k])) m = i;\n"
+          "        if (!(" << d.math("fabs") << "(A[m * n + k]) > 0.0)) return -1;\n"
+          "        p[k] = m;\n"
+          "        if (m != k)\n"
+          "            for (int j = 0; j < n; ++j) {\n"
+          "                const double s = A[k * n + j];\n"
+          "                A[k * n + j] = A[m * n + j];\n"
+          "                A[m * n + j] = s;\n"
+          "            }\n"
+          "        for (int i = k + 1; i < n; ++i) {\n"
+          "            const double l = A[i * n + k] / A[k * n + k];\n"
+          "            A[i * n + k] = l;\n"
+          "            for (int j = k + 1; j < n; ++j) A[i * n + j] -= l * A[k * n + j];\n"
+          "        }\n"
+          "    }\n"
+          "    return 0;\n"
+          "}\n\n"
+          "/* Solves A X = B in place for m right sides (X n x m, row by row, holds B on\n"
+          "   entry), A and p from lu_factor: row operations, the inner loops over the m.\n"
+          "   lu_factor swaps whole rows, L's multipliers too (P A = L U), so every swap is\n"
+          "   applied to B before L Y = P B is solved. */\n"
+       << st << "void " << prefix << "lu_back(int n, int m, const double* A, const int* p, double* X) {\n"
+          "    for (int k = 0; k < n; ++k)\n"
+          "        if (p[k] != k) {\n"
+          "            double* x = X + k * m;\n"
+          "            double* y = X + p[k] * m;\n"
+          "            for (int j = 0; j < m; ++j) {\n"
+          "                const double s = x[j];\n"
+          "                x[j] = y[j];\n"
+          "                y[j] = s;\n"
+          "            }\n"
+          "        }\n"
+          "    for (int k = 0; k < n; ++k) {\n"
+          "        const double* x = X + k * m;\n"
+          "        for (int i = k + 1; i < n; ++i) {\n"
+          "            const double l = A[i * n + k];\n"
+          "            double* y = X + i * m;\n"
+          "            for (int j = 0; j < m; ++j) y[j] -= l * x[j];\n"
+          "        }\n"
+          "    }\n"
+          "    for (int i = n - 1; i >= 0; --i) {\n"
+          "        double* x = X + i * m;\n"
+          "        for (int k = i + 1; k < n; ++k) {\n"
+          "            const double u = A[i * n + k];\n"
+          "            const double* y = X + k * m;\n"
+          "            for (int j = 0; j < m; ++j) x[j] -= u * y[j];\n"
+          "        }\n"
+          "        const double d = 1.0 / A[i * n + i];\n"
+          "        for (int j = 0; j < m; ++j) x[j] *= d;\n"
+          "    }\n"
+          "}\n";
+    return os.str();
+}
+
 std::string solvers(const CodePlan& plan, const Dialect& d) {
     std::ostringstream os;
     const std::string st = d.cpp ? "" : "static ";
+    const std::string prefix = d.cpp ? "" : d.name + "_";
     if (!plan.accelerations.empty()) return os.str();  // forward dynamics solves nothing
     if (plan.symmetric_mass_matrix) {
-        const std::string prefix = d.cpp ? "" : d.name + "_";
         os << cholesky_factor_and_back(d) << "\n"
            << "/* Solves A x = b for a symmetric positive definite A (n x n, row by row) by the\n"
               "   Cholesky factorization A = L L^T (L overwrites A's lower triangle); returns 0,\n"
@@ -232,115 +300,26 @@ std::string solvers(const CodePlan& plan, const Dialect& d) {
               "    return 0;\n"
               "}\n";
     } else {
-        os << "/* Solves A x = b (A n x n, row by row, overwritten) by LU decomposition with\n"
-              "   partial pivoting; returns 0, or -1 if A is singular. */\n"
-           << st << "int " << (d.cpp ? "" : d.name + "_") << "lu_solve(int n, double* A, "
-              "const double* b, double* x) {\n"
+        os << lu_factor_and_back(d) << "\n"
+           << "/* Solves A x = b (A n x n, row by row, overwritten by its LU decomposition, p its\n"
+              "   n pivots) by LU decomposition with partial pivoting; returns 0, or -1 if A is\n"
+              "   singular. */\n"
+           << st << "int " << prefix << "lu_solve(int n, double* A, int* p, const double* b, double* x) {\n"
+              "    if (" << prefix << "lu_factor(n, A, p) != 0) return -1;\n"
               "    for (int i = 0; i < n; ++i) x[i] = b[i];\n"
-              "    for (int k = 0; k < n; ++k) {\n"
-              "        int p = k;\n"
-              "        for (int i = k + 1; i < n; ++i)\n"
-              "            if (" << d.math("fabs") << "(A[i * n + k]) > " << d.math("fabs")
-           << "(A[p * n + k])) p = i;\n"
-              "        if (!(" << d.math("fabs") << "(A[p * n + k]) > 0.0)) return -1;\n"
-              "        if (p != k) {\n"
-              "            for (int j = 0; j < n; ++j) {\n"
-              "                const double s = A[k * n + j];\n"
-              "                A[k * n + j] = A[p * n + j];\n"
-              "                A[p * n + j] = s;\n"
-              "            }\n"
-              "            const double s = x[k];\n"
-              "            x[k] = x[p];\n"
-              "            x[p] = s;\n"
-              "        }\n"
-              "        for (int i = k + 1; i < n; ++i) {\n"
-              "            const double l = A[i * n + k] / A[k * n + k];\n"
-              "            for (int j = k + 1; j < n; ++j) A[i * n + j] -= l * A[k * n + j];\n"
-              "            x[i] -= l * x[k];\n"
-              "        }\n"
-              "    }\n"
-              "    for (int i = n - 1; i >= 0; --i) {\n"
-              "        double s = x[i];\n"
-              "        for (int j = i + 1; j < n; ++j) s -= A[i * n + j] * x[j];\n"
-              "        x[i] = s / A[i * n + i];\n"
-              "    }\n"
+              "    " << prefix << "lu_back(n, 1, A, p, x);\n"
               "    return 0;\n"
               "}\n";
     }
     return os.str();
 }
 
-// with derivatives: M factored once and solved for many right sides (qpp and 2 nq columns)
+// with derivatives: M factored once and solved for many right sides (qpp and 2 nq columns);
+// forward dynamics' cholesky_solve or lu_solve brought the factorization and the solve, unless
+// the accelerations are explicit
 std::string derivative_solvers(const CodePlan& plan, const Dialect& d) {
-    std::ostringstream os;
-    if (plan.inverse_dynamics_derivatives.empty()) return os.str();
-    const std::string st = d.cpp ? "" : "static ";
-    const std::string prefix = d.cpp ? "" : d.name + "_";
-    if (plan.symmetric_mass_matrix) {
-        // forward dynamics' cholesky_solve brought them, unless the accelerations are explicit
-        if (!plan.accelerations.empty()) os << cholesky_factor_and_back(d);
-    } else {
-        os << "/* The LU decomposition of A (n x n, row by row, overwritten by L below the\n"
-              "   diagonal and U on and above it) with partial pivoting, p[k] the row swapped\n"
-              "   with row k; returns 0, or -1 if A is singular. */\n"
-           << st << "int " << prefix << "lu_factor(int n, double* A, int* p) {\n"
-              "    for (int k = 0; k < n; ++k) {\n"
-              "        int m = k;\n"
-              "        for (int i = k + 1; i < n; ++i)\n"
-              "            if (" << d.math("fabs") << "(A[i * n + k]) > " << d.math("fabs")
-           << "(A[m * n + k])) m = i;\n"
-              "        if (!(" << d.math("fabs") << "(A[m * n + k]) > 0.0)) return -1;\n"
-              "        p[k] = m;\n"
-              "        if (m != k)\n"
-              "            for (int j = 0; j < n; ++j) {\n"
-              "                const double s = A[k * n + j];\n"
-              "                A[k * n + j] = A[m * n + j];\n"
-              "                A[m * n + j] = s;\n"
-              "            }\n"
-              "        for (int i = k + 1; i < n; ++i) {\n"
-              "            const double l = A[i * n + k] / A[k * n + k];\n"
-              "            A[i * n + k] = l;\n"
-              "            for (int j = k + 1; j < n; ++j) A[i * n + j] -= l * A[k * n + j];\n"
-              "        }\n"
-              "    }\n"
-              "    return 0;\n"
-              "}\n\n"
-              "/* Solves A X = B in place for m right sides (X n x m, row by row, holds B on\n"
-              "   entry), A and p from lu_factor: row operations, the inner loops over the m.\n"
-              "   lu_factor swaps whole rows, L's multipliers too (P A = L U), so every swap is\n"
-              "   applied to B before L Y = P B is solved. */\n"
-           << st << "void " << prefix << "lu_back(int n, int m, const double* A, const int* p, double* X) {\n"
-              "    for (int k = 0; k < n; ++k)\n"
-              "        if (p[k] != k) {\n"
-              "            double* x = X + k * m;\n"
-              "            double* y = X + p[k] * m;\n"
-              "            for (int j = 0; j < m; ++j) {\n"
-              "                const double s = x[j];\n"
-              "                x[j] = y[j];\n"
-              "                y[j] = s;\n"
-              "            }\n"
-              "        }\n"
-              "    for (int k = 0; k < n; ++k) {\n"
-              "        const double* x = X + k * m;\n"
-              "        for (int i = k + 1; i < n; ++i) {\n"
-              "            const double l = A[i * n + k];\n"
-              "            double* y = X + i * m;\n"
-              "            for (int j = 0; j < m; ++j) y[j] -= l * x[j];\n"
-              "        }\n"
-              "    }\n"
-              "    for (int i = n - 1; i >= 0; --i) {\n"
-              "        double* x = X + i * m;\n"
-              "        for (int k = i + 1; k < n; ++k) {\n"
-              "            const double u = A[i * n + k];\n"
-              "            const double* y = X + k * m;\n"
-              "            for (int j = 0; j < m; ++j) x[j] -= u * y[j];\n"
-              "        }\n"
-              "        const double d = 1.0 / A[i * n + i];\n"
-              "        for (int j = 0; j < m; ++j) x[j] *= d;\n"
-              "    }\n"
-              "}\n";
-    }
-    return os.str();
+    if (plan.inverse_dynamics_derivatives.empty() || plan.accelerations.empty()) return "";
+    return plan.symmetric_mass_matrix ? cholesky_factor_and_back(d) : lu_factor_and_back(d);
 }
 
 // forward dynamics with its derivatives: qpp, then d u/d q and d u/d qp of inverse dynamics at
@@ -584,8 +563,13 @@ std::string forward_and_rhs(const CodePlan& plan, const Dialect& d) {
     const std::string cnst = d.cpp ? " const" : "";
     const std::string c_arg = d.cpp ? "" : "c, ";
     const std::string nq = d.size("nq"), nu = d.size("nu");
-    const std::string solver = (d.cpp ? "" : d.name + "_") +
-                               std::string(plan.symmetric_mass_matrix ? "cholesky_solve" : "lu_solve");
+    const bool lu = !plan.symmetric_mass_matrix;
+    const std::string solver = (d.cpp ? "" : d.name + "_") + std::string(lu ? "lu_solve" : "cholesky_solve");
+    // the solver's call on n unknowns; LU's pivots, `pivots(n)`, declared before it
+    auto solve = [&](const std::string& n, const std::string& A, const std::string& b, const std::string& x) {
+        return solver + "(" + n + ", " + A + (lu ? ", p, " : ", ") + b + ", " + x + ")";
+    };
+    auto pivots = [&](const std::string& n) { return lu ? "    int p[" + n + "];\n" : std::string(); };
     const std::size_t nc = plan.constraint_count();
     if (plan.speed_form) {
         // x = (q, ur): q' from the kinematic equations, ur' = M^-1 f
@@ -594,8 +578,9 @@ std::string forward_and_rhs(const CodePlan& plan, const Dialect& d) {
            << "double t, const double* q, const double* ur, const double* u, double* urp)" << cnst
            << " {\n"
            << "    double M[" << nur << " * " << nur << "], f[" << nur << "];\n"
+           << pivots(nur)
            << "    " << d.function("mass_forcing") << "(" << c_arg << "t, q, ur, u, M, f);\n"
-           << "    return " << solver << "(" << nur << ", M, f, urp)" << (d.cpp ? " == 0" : "")
+           << "    return " << solve(nur, "M", "f", "urp") << (d.cpp ? " == 0" : "")
            << ";\n}\n\n"
            << (d.cpp ? "bool " : "int ") << owner << d.function("rhs") << "(" << ctx
            << "double t, const double* x, double* dx)" << cnst << " {\n";
@@ -619,9 +604,9 @@ std::string forward_and_rhs(const CodePlan& plan, const Dialect& d) {
            << "double t, const double* q, const double* qp, const double* u, double* qpp, "
               "double* lambda)" << cnst << " {\n"
            << "    double A[" << k << " * " << k << "], b[" << k << "], x[" << k << "];\n"
-           << "    int i;\n"
+           << pivots(k) << "    int i;\n"
            << "    " << d.function("mass_forcing") << "(" << c_arg << "t, q, qp, u, A, b);\n"
-           << "    if (" << solver << "(" << k << ", A, b, x) != 0) return " << fail << ";\n"
+           << "    if (" << solve(k, "A", "b", "x") << " != 0) return " << fail << ";\n"
            << "    for (i = 0; i < " << nq << "; ++i) qpp[i] = x[i];\n"
            << "    for (i = 0; i < " << d.size("nc") << "; ++i) lambda[i] = x[" << nq << " + i];\n"
            << "    return " << ok << ";\n}\n\n"
@@ -636,7 +621,7 @@ std::string forward_and_rhs(const CodePlan& plan, const Dialect& d) {
            << "    const double a = " << d.size("stabilization") << ";\n"
            << "    double A[" << k << " * " << k << "], b[" << k << "], y[" << k << "], e[2 * "
            << d.size("nc") << "];\n"
-           << "    int i;\n";
+           << pivots(k) << "    int i;\n";
         std::string u = d.null();
         if (plan.load_count > 0) {
             os << "    double u[" << nu << "];\n"
@@ -654,7 +639,7 @@ std::string forward_and_rhs(const CodePlan& plan, const Dialect& d) {
             else
                 os << "    b[" << nq << " + " << i << "] += a * e[" << 2 * i + 1 << "]; /* "
                    << plan.constraint_names[i] << " */\n";
-        os << "    if (" << solver << "(" << k << ", A, b, y) != 0) return " << fail << ";\n"
+        os << "    if (" << solve(k, "A", "b", "y") << " != 0) return " << fail << ";\n"
            << "    for (i = 0; i < " << nq << "; ++i) {\n"
            << "        dx[i] = x[" << nq << " + i];\n"
            << "        dx[" << nq << " + i] = y[i];\n"
@@ -673,8 +658,9 @@ std::string forward_and_rhs(const CodePlan& plan, const Dialect& d) {
            << "    return " << (d.cpp ? "true" : "0") << ";\n}\n\n";
     else
         os << "    double M[" << nq << " * " << nq << "], f[" << nq << "];\n"
+           << pivots(nq)
            << "    " << d.function("mass_forcing") << "(" << c_arg << "t, q, qp, u, M, f);\n"
-           << "    return " << solver << "(" << nq << ", M, f, qpp)" << (d.cpp ? " == 0" : "")
+           << "    return " << solve(nq, "M", "f", "qpp") << (d.cpp ? " == 0" : "")
            << ";\n}\n\n";
     os << (d.cpp ? "bool " : "int ") << owner << d.function("rhs") << "(" << ctx
        << "double t, const double* x, double* dx)" << cnst << " {\n";
@@ -1022,7 +1008,7 @@ std::vector<GeneratedFile> emit_c_family(const CodePlan& plan, const Dialect& d,
       << d.name << ext_h << "\"\n\n";
     if (d.cpp) c << "namespace " << d.name << " {\n\nnamespace {\n\n";
     c << solvers(plan, d) << "\n";
-    if (!plan.inverse_dynamics_derivatives.empty()) c << derivative_solvers(plan, d) << "\n";
+    if (const std::string ds = derivative_solvers(plan, d); !ds.empty()) c << ds << "\n";
     if (d.cpp) {
         c << "}  // namespace\n\nModel::Model(const Parameters& p) { set_parameters(p); }\n\n"
           << "void Model::set_parameters(const Parameters& p) {\n    p_ = p;\n";
