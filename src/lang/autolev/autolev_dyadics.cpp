@@ -20,18 +20,29 @@ Text dyadic_text(std::string s, int prec, bool numeric = false) {
 
 }  // namespace
 
+std::string Translator::unit_dyadic(const Expr& e) {
+    // the unit dyadic is the same in every frame: the script names it in the Newtonian frame
+    std::string F = newtonian_;
+    for (const auto& [key, en] : objects_)
+        if (F.empty() && (en.kind == Kind::frame || en.kind == Kind::body)) F = en.name;
+    if (F.empty()) fail(e.where, "the unit dyadic needs a frame", "declare one: NEWTONIAN N");
+    return "unitdyadic(" + F + ")";
+}
+
+Text Translator::inertia_about(const Expr& e, const std::string& b, const std::string& p) {
+    const bool body = find_object(b) && find_object(b)->kind == Kind::body;
+    const std::string cm = body ? b + "cm" : b;
+    if (body && p == cm) return dyadic_text("inertia(" + b + ")", 5);
+    const std::string r = "pos(" + cm + ", " + p + ")";
+    const std::string transfer =
+        "mass(" + b + ")*(dot(" + r + ", " + r + ")*" + unit_dyadic(e) + " - outer(" + r + ", " + r + "))";
+    return body ? dyadic_text("(inertia(" + b + ") + " + transfer + ")", 5) : dyadic_text(transfer, 2);
+}
+
 Text Translator::dyadic_name(const Expr& e) {
     if (e.primes) fail(e.where, "a prime on a dyadic", "the derivative of a dyadic is not translated");
-    // the unit dyadic is the same in every frame: the script names it in the Newtonian frame
-    auto unit = [&]() -> std::string {
-        std::string F = newtonian_;
-        for (const auto& [key, en] : objects_)
-            if (F.empty() && (en.kind == Kind::frame || en.kind == Kind::body)) F = en.name;
-        if (F.empty()) fail(e.where, e.text + ">> needs a frame", "declare one: NEWTONIAN N");
-        return "unitdyadic(" + F + ")";
-    };
-    if (e.text == "1") return dyadic_text(unit(), 5, true);
-    if (e.text == "0") return dyadic_text("0*" + unit(), 2, true);
+    if (e.text == "1") return dyadic_text(unit_dyadic(e), 5, true);
+    if (e.text == "0") return dyadic_text("0*" + unit_dyadic(e), 2, true);
     if (const Entry* en = find(e.text); en && en->kind == Kind::dyadic) return dyadic_text(en->name + ">>", 5, en->numeric);
     // I_B_P>>: the inertia dyadic of body B about P (its mass centre BO: inertia(B)), or of a
     // particle about P; about another point the parallel-axis term m (r.r 1 - r r), r from P to
@@ -44,16 +55,7 @@ Text Translator::dyadic_name(const Expr& e) {
             return std::nullopt;
         };
         auto pt = [this](std::string_view n) { return point_of(n); };
-        if (auto s = split(std::string_view(e.text).substr(2), massive, pt)) {
-            const auto& [b, p] = *s;
-            const bool body = find_object(b) && find_object(b)->kind == Kind::body;
-            const std::string cm = body ? b + "cm" : b;
-            if (body && p == cm) return dyadic_text("inertia(" + b + ")", 5);
-            const std::string r = "pos(" + cm + ", " + p + ")";
-            const std::string transfer =
-                "mass(" + b + ")*(dot(" + r + ", " + r + ")*" + unit() + " - outer(" + r + ", " + r + "))";
-            return dyadic_text(body ? "(inertia(" + b + ") + " + transfer + ")" : transfer, body ? 5 : 2);
-        }
+        if (auto s = split(std::string_view(e.text).substr(2), massive, pt)) return inertia_about(e, s->first, s->second);
     }
     fail(e.where, "the dyadic '" + e.text + ">>' is not defined",
          "dyadics are assigned before they are used (D>> = A1>*A2>); 1>> is the unit dyadic and I_B_BO>> "
@@ -133,7 +135,34 @@ Text Translator::dyadic_dot(const Expr& e, const Text& a, const Text& b) {
     return {"dot(" + a.s + ", " + b.s + ")", true, 5};
 }
 
-std::optional<Text> Translator::measure_call(const Expr& e, const std::string& f, bool& numeric) {
+std::optional<Text> Translator::dyadic_call(const Expr& e, const std::string& f, bool& numeric) {
+    if (f == "INERTIA") {
+        // INERTIA(O): the inertia of every body and particle about O; INERTIA(O, B, P): of those
+        if (e.args.empty()) fail(e.where, "INERTIA() takes the point first", "write INERTIA(O) or INERTIA(O, B, P)");
+        const std::string p = point_name(e.args[0]);
+        std::vector<const Entry*> of;
+        if (e.args.size() == 1) {
+            for (const auto& [key, en] : objects_)
+                if (en.kind == Kind::body || en.kind == Kind::particle) of.push_back(&en);
+            std::sort(of.begin(), of.end(), [](const Entry* a, const Entry* b) {
+                return std::make_pair(a->where.line, a->where.column) < std::make_pair(b->where.line, b->where.column);
+            });
+        }
+        for (std::size_t i = 1; i < e.args.size(); ++i) {
+            const Expr& x = e.args[i];
+            const Entry* en = x.kind == Expr::Kind::name && !x.vector && x.primes == 0 ? find_object(x.text) : nullptr;
+            if (!en || (en->kind != Kind::body && en->kind != Kind::particle))
+                fail(x.where, "INERTIA() takes bodies and particles after the point", "write INERTIA(O, B, P)");
+            if (std::find(of.begin(), of.end(), en) != of.end())
+                fail(x.where, "INERTIA(): '" + x.text + "' is listed twice", "list each body once");
+            of.push_back(en);
+        }
+        if (of.empty()) fail(e.where, "INERTIA(): the model has no bodies or particles", "declare them: BODIES B");
+        numeric = false;
+        std::string s;
+        for (const Entry* en : of) s += (s.empty() ? "" : " + ") + inertia_about(e, en->name, p).s;
+        return dyadic_text(s, of.size() > 1 ? 1 : 5);
+    }
     if (f != "MATRIX" && f != "VECTOR") return std::nullopt;
     if (e.args.size() != 2)
         fail(e.where, e.text + "() takes 2 arguments, not " + std::to_string(e.args.size()),

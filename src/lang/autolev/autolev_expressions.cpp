@@ -325,7 +325,7 @@ Text Translator::call_text(const Expr& e, bool& numeric) {
         Text v = scalar_arg(0);
         return {"factor(" + v.s + ")", false, 5};
     }
-    if (auto m = measure_call(e, f, numeric)) return *m;
+    if (auto m = dyadic_call(e, f, numeric)) return *m;
     if (auto m = matrix_call(e, f, numeric)) return *m;
     if (f == "SOLVE")
         fail(e.where, "SOLVE() is translated as a statement of its own: SOLVE(M, X1, X2) alone on its line",
@@ -345,7 +345,7 @@ Text Translator::call_text(const Expr& e, bool& numeric) {
          "the translator knows SIN, COS, TAN, ASIN, ACOS, ATAN, SQRT, EXP, LOG, ABS, DOT, CROSS, MAG, "
          "UNITVEC, EXPRESS, DT, D, EXPAND, EXPLICIT, ARRANGE, RHS, COEF, REPLACE, EVALUATE, TAYLOR, FLOOR, "
          "FACTOR, SOLVE, TRANSPOSE, INV, DET, DIAGMAT, ELEMENT, ROWS, COLS, EIG, POLYNOMIAL, ROOTS, MASS, CM, "
-         "ANGVEL, MATRIX and VECTOR");
+         "ANGVEL, MATRIX, VECTOR and INERTIA");
 }
 
 Text Translator::matrix_element(const Expr& e, const Entry& m) {

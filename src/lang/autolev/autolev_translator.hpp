@@ -346,8 +346,13 @@ private:
     Text dyadic_combine(const Expr& e, Text a, Text b);
     // DOT(a, b) with a or b a dyadic (D>> . v> or v> . D>>)
     Text dyadic_dot(const Expr& e, const Text& a, const Text& b);
-    // MATRIX(A, v>), MATRIX(A, D>>) and VECTOR(A, M), or nothing if `f` is none of them
-    std::optional<Text> measure_call(const Expr& e, const std::string& f, bool& numeric);
+    // MATRIX(A, v>), MATRIX(A, D>>), VECTOR(A, M) and INERTIA(O, ...), or nothing if `f` is
+    // none of them
+    std::optional<Text> dyadic_call(const Expr& e, const std::string& f, bool& numeric);
+    // unitdyadic(N), N the Newtonian frame (or the first frame)
+    std::string unit_dyadic(const Expr& e);
+    // the inertia dyadic of body or particle `b` about point `p`
+    Text inertia_about(const Expr& e, const std::string& b, const std::string& p);
     // the error for a dyadic where `wanted` (a scalar, a vector) stands
     [[noreturn]] static void not_a_dyadic(const Expr& e, const std::string& wanted) {
         fail(e.where, "a dyadic where " + wanted + " is expected",

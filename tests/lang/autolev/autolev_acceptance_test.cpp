@@ -595,7 +595,9 @@ TEST(AutolevAcceptanceFiles, MatrixOperationsAgreeWithTheHandResults) {
 // transfer M (L^2 U - L^2 B3> B3>) adds M L^2 about B1> and B2> only: J1 = I1 + M L^2, J3 = I3,
 // and H about the fixed point NO has B2> measure (I2 + M L^2) Q1' sin Q2; the trace of the
 // central inertia in N is I1 + I2 + I3 in any frame; the particle at R A1> has about NO
-// MP (R^2 U - R^2 A1> A1>): 0 along A1>, MP R^2 across, no products.
+// MP (R^2 U - R^2 A1> A1>): 0 along A1>, MP R^2 across, no products. INERTIA(NO), both about
+// NO, has I1 + M L^2 along A1> = B1> and, A2> = cos Q2 B2> - sin Q2 B3>, (I2 + M L^2) cos^2 Q2
+// + I3 sin^2 Q2 + MP R^2 along A2>; INERTIA(BO, B) is the central inertia, I3 along B3>.
 TEST(AutolevAcceptanceFiles, InertiaDyadicsAgreeWithTheHandResults) {
     AutolevTranslation t = import("dyadic_inertia.al");
     ASSERT_TRUE(t.ok());
@@ -608,7 +610,8 @@ TEST(AutolevAcceptanceFiles, InertiaDyadicsAgreeWithTheHandResults) {
         std::string at = "L = " + num(l) + ", R = " + num(r) + ", M = " + num(m) + ", MP = " + num(mp) +
                          ", I1 = " + num(i1) + ", I2 = " + num(i2) + ", I3 = " + num(i3) + ", Q1 = " + num(q1) +
                          ", Q2 = " + num(q2) + ", Q1' = " + num(u1) + ", Q2' = " + num(u2);
-        Vec v = evaluate(t, {"H1", "H2", "H3", "KE", "J1", "J3", "HO2", "TRACE", "P11", "P22", "P12"}, at);
+        Vec v = evaluate(t, {"H1", "H2", "H3", "KE", "J1", "J3", "HO2", "TRACE", "P11", "P22", "P12", "IS11", "IS22", "IB33"},
+                         at);
         const double w1 = u2, w2 = u1 * std::sin(q2), w3 = u1 * std::cos(q2);
         Vec expected{i1 * w1,
                      i2 * w2,
@@ -620,7 +623,10 @@ TEST(AutolevAcceptanceFiles, InertiaDyadicsAgreeWithTheHandResults) {
                      i1 + i2 + i3,
                      0,
                      mp * r * r,
-                     0};
+                     0,
+                     i1 + m * l * l,
+                     (i2 + m * l * l) * std::cos(q2) * std::cos(q2) + i3 * std::sin(q2) * std::sin(q2) + mp * r * r,
+                     i3};
         for (std::size_t i = 0; i < expected.size(); ++i)
             EXPECT_NEAR(v[i], expected[i], 1e-12 * std::max(1.0, std::abs(expected[i]))) << i << " at " << at;
     }

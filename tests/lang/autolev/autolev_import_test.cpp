@@ -296,6 +296,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"dt_of_dyadic", kHead + "D>> = 1>>\nX = DT(D>>)\n", 7, 8, "DT of a dyadic is not translated"},
         BadInput{"inertia_assigned", kHead + "I_A_AO>> = 1>>\n", 6, 1, "is an inertia dyadic"},
         BadInput{"matrix_of_scalar", kHead + "M = MATRIX(N, L)\n", 6, 15, "MATRIX() takes a vector or a dyadic"},
+        BadInput{"inertia_of_a_frame", kHead + "D>> = INERTIA(P, N)\n", 6, 18, "INERTIA() takes bodies and particles"},
         BadInput{"vector_of_two", kHead + "R> = VECTOR(N, [L, L])\n", 6, 16, "not a 1 by 2 matrix"},
         BadInput{"same_name_other_case", "NEWTONIAN N\nCONSTANTS L, l\n", 2, 14, "'l' is already declared"},
         BadInput{"assign_a_constant", kHead + "L = 3\n", 6, 1, "'L' is a constant and cannot be assigned"},

@@ -1,7 +1,8 @@
 % Inertia dyadics: a body B turned by Q1 about N3> (frame A), then by Q2 about A1>, its mass
 % centre BO at L along B3> from the fixed point NO, and a particle P at R along A1>. The
 % angular momentum about BO, the kinetic energy of rotation, the inertia about NO by the
-% parallel-axis transfer, the particle's inertia about NO, and measures of them in frames.
+% parallel-axis transfer, the particle's inertia about NO, the inertia of both about NO
+% (INERTIA(NO)), and measures of them in frames.
 NEWTONIAN N
 FRAMES A
 BODIES B
@@ -30,3 +31,8 @@ IPA = MATRIX(A, I_P_NO>>)
 P11 = IPA[1,1]
 P22 = IPA[2,2]
 P12 = IPA[1,2]
+IS>> = INERTIA(NO)
+IS11 = DOT(A1>, DOT(IS>>, A1>))
+IS22 = DOT(A2>, DOT(IS>>, A2>))
+IB>> = INERTIA(BO, B)
+IB33 = DOT(B3>, DOT(IB>>, B3>))
