@@ -15,11 +15,12 @@ namespace {
 
 using Kind = Value::Kind;
 
-// applies `op` to every measure of `v` (a scalar, a vector's components, an array's or a
-// matrix's entries), keeping its kind
+// applies `op` to every measure of `v` (a scalar, a vector's or a dyadic's components, an
+// array's or a matrix's entries), keeping its kind
 Value map_value(Value v, const std::function<ex(const ex&)>& op) {
     if (v.kind == Kind::scalar) v.s = op(v.s);
     else if (v.kind == Kind::vector) v.v = v.v.map(op);
+    else if (v.kind == Kind::dyadic) v.d = v.d.map(op);
     else if (v.kind == Kind::array)
         for (ex& s : v.a) s = op(s);
     else {

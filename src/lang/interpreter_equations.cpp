@@ -45,6 +45,8 @@ std::vector<ex> measures_of(const Value& v) {
     else if (v.kind == Kind::array) out = v.a;
     else if (v.kind == Kind::vector) v.v.map([&](const ex& x) { out.push_back(x); return x; });
     else if (v.kind == Kind::matrix) out.assign(v.m.m.begin(), v.m.m.end());
+    else if (v.kind == Kind::dyadic)
+        for (const auto& part : v.d.components()) out.insert(out.end(), std::get<2>(part).m.begin(), std::get<2>(part).m.end());
     return out;
 }
 
@@ -155,9 +157,9 @@ std::string Interpreter::Impl::definitions_for(const Value& v) const {
 
 void Interpreter::Impl::assign(const Statement& s) {
     const Word& target = s.word("target");
-    bool want_vector = s.flag("vector");
-    std::string key = target.text + (want_vector ? ">" : "");
-    if (!want_vector) {
+    bool want_vector = s.flag("vector"), want_dyadic = s.flag("dyadic");
+    std::string key = target.text + (want_vector ? ">" : want_dyadic ? ">>" : "");
+    if (!want_vector && !want_dyadic) {
         if (is_reserved(target.text))
             throw ScriptError(target.location, "'" + target.text + "' is a word of the language and cannot be assigned",
                               "choose another name");
@@ -173,14 +175,24 @@ void Interpreter::Impl::assign(const Statement& s) {
     }
     Value v = eval(*s.exprs.at("value"));
     if (want_vector && v.kind == Kind::scalar && v.s.is_zero()) v.kind = Kind::vector, v.v = Vector();
+    if (want_dyadic && v.kind == Kind::scalar && v.s.is_zero()) v.kind = Kind::dyadic, v.d = Dyadic();
     if (want_vector && v.kind != Kind::vector)
         throw ScriptError(s.exprs.at("value")->location,
                           "'" + target.text + ">' names a vector, but this is not a vector",
-                          "drop the '>' to assign a scalar, or multiply by a unit vector");
-    if (!want_vector && v.kind == Kind::vector)
+                          v.kind == Kind::dyadic ? "name a dyadic with '>>': " + target.text + ">> = ..."
+                                                 : "drop the '>' to assign a scalar, or multiply by a unit vector");
+    if (want_dyadic && v.kind != Kind::dyadic)
+        throw ScriptError(s.exprs.at("value")->location,
+                          "'" + target.text + ">>' names a dyadic, but this is " +
+                              (v.kind == Kind::vector ? "a vector" : v.kind == Kind::scalar ? "a scalar" : "not a dyadic"),
+                          "form a dyadic with outer(a>, b>), inertia(B) or unitdyadic(N), or drop the '>>'");
+    if (!want_vector && !want_dyadic && v.kind == Kind::vector)
         throw ScriptError(target.location, "a vector must be named with a trailing '>': " + target.text + ">",
                           "write " + target.text + "> = ...");
-    if (!want_vector) names[target.text] = {NameKind::value, target.location};
+    if (!want_vector && !want_dyadic && v.kind == Kind::dyadic)
+        throw ScriptError(target.location, "a dyadic must be named with a trailing '>>': " + target.text + ">>",
+                          "write " + target.text + ">> = ...");
+    if (!want_vector && !want_dyadic) names[target.text] = {NameKind::value, target.location};
     values[key] = v;
     if (v.kind == Kind::array) print_equations(target.text, v.a);
     else transcript.result(definitions_for(v) + key + " = " + print(v));
@@ -195,6 +207,7 @@ void Interpreter::Impl::show(const Statement& s) {
         v = guard(e.location, [&] {
             if (v.kind == Kind::scalar) v.s = alembert::simplify(v.s);
             else if (v.kind == Kind::vector) v.v = v.v.simplify();
+            else if (v.kind == Kind::dyadic) v.d = v.d.map([](const ex& x) { return alembert::simplify(x); });
             else if (v.kind == Kind::matrix) {
                 for (ex& x : v.a) x = alembert::simplify(x);
                 v = matrix_value(v.rows, v.cols, v.a, v.dim);
@@ -212,6 +225,7 @@ void Interpreter::Impl::show(const Statement& s) {
     std::string label;
     if (e.kind == Expr::Kind::name) label = e.text + " = ";
     else if (e.kind == Expr::Kind::vector_name) label = e.text + "> = ";
+    else if (e.kind == Expr::Kind::dyadic_name) label = e.text + ">> = ";
     else if (e.kind == Expr::Kind::index)
         label = e.text + "[" + to_string(eval(*e.args[0]).s) +
                 (e.args.size() > 1 ? ", " + to_string(eval(*e.args[1]).s) : std::string()) + "] = ";

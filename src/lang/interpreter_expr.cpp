@@ -20,6 +20,7 @@ const char* kind_name(Kind k) {
         case Kind::vector: return "a vector";
         case Kind::array: return "an array";
         case Kind::matrix: return "a matrix";
+        case Kind::dyadic: return "a dyadic";
     }
     return "a value";
 }
@@ -79,7 +80,9 @@ ex Interpreter::Impl::scalar(const Expr& e, const Dimension& expected, const std
     Value v = eval(e);
     if (v.kind != Kind::scalar)
         throw ScriptError(e.location, what + " must be a scalar, but this is " + kind_name(v.kind),
-                          v.kind == Kind::vector ? "take a measure with dot(v>, Nx>) or mag(v>)" : "");
+                          v.kind == Kind::vector   ? "take a measure with dot(v>, Nx>) or mag(v>)"
+                          : v.kind == Kind::dyadic ? "take a measure with dot(Nx>, D>>, Ny>)"
+                                                   : "");
     check_dimension(v.dim, expected, what, e.location);
     return v.s;
 }
@@ -89,7 +92,9 @@ Vector Interpreter::Impl::vector(const Expr& e, const Dimension& expected, const
     if (v.kind == Kind::scalar && v.s.is_zero()) return Vector();
     if (v.kind != Kind::vector)
         throw ScriptError(e.location, what + " must be a vector, but this is " + kind_name(v.kind),
-                          "multiply by a unit vector such as Nx>, or write 0> for the zero vector");
+                          v.kind == Kind::dyadic
+                              ? "dot the dyadic with a vector: dot(D>>, v>)"
+                              : "multiply by a unit vector such as Nx>, or write 0> for the zero vector");
     check_dimension(v.dim, expected, what, e.location);
     return v.v;
 }
@@ -216,10 +221,12 @@ Value Interpreter::Impl::eval(const Expr& e) {
         case Expr::Kind::name: return eval_name(e);
         case Expr::Kind::vector_name: return eval_vector_name(e);
         case Expr::Kind::zero_vector: return vector_value(Vector(), Dimension::open());
+        case Expr::Kind::dyadic_name: return eval_dyadic_name(e);
         case Expr::Kind::negate: {
             Value v = eval(*e.args[0]);
             if (v.kind == Kind::scalar) v.s = -v.s;
             else if (v.kind == Kind::vector) v.v = -v.v;
+            else if (v.kind == Kind::dyadic) v.d = ex(-1) * v.d;
             else if (v.kind == Kind::matrix) {
                 for (ex& x : v.a) x = -x;
                 v = matrix_value(v.rows, v.cols, std::move(v.a), v.dim);
@@ -231,6 +238,11 @@ Value Interpreter::Impl::eval(const Expr& e) {
             for (std::size_t i = 0; i < e.args.size(); ++i) {
                 Value v = eval(*e.args[i]);
                 Location where = e.args[i]->location;
+                if (v.kind == Kind::dyadic || (i > 0 && acc.kind == Kind::dyadic)) {
+                    if (i == 0) acc = e.inverted[0] ? dyadic_product(v, scalar_value(-1, Dimension::none()), false, where) : v;
+                    else acc = dyadic_sum(std::move(acc), v, e.inverted[i], where);
+                    continue;
+                }
                 if (v.kind == Kind::matrix && i == 0) {
                     acc = v;
                     if (e.inverted[0]) acc = matrix_product(acc, scalar_value(-1, Dimension::none()), false, where);
@@ -271,12 +283,17 @@ Value Interpreter::Impl::eval(const Expr& e) {
             for (std::size_t i = 0; i < e.args.size(); ++i) {
                 Value v = eval(*e.args[i]);
                 Location where = e.args[i]->location;
+                if (i > 0 && (v.kind == Kind::dyadic || acc.kind == Kind::dyadic)) {
+                    acc = dyadic_product(std::move(acc), v, e.inverted[i], where);
+                    continue;
+                }
                 if (i > 0 && (v.kind == Kind::matrix || acc.kind == Kind::matrix || acc.kind == Kind::array)) {
                     acc = guard(where, [&] { return matrix_product(std::move(acc), v, e.inverted[i], where); });
                     continue;
                 }
                 if (v.kind != Kind::scalar && v.kind != Kind::vector &&
-                    !(i == 0 && (v.kind == Kind::matrix || v.kind == Kind::array) && e.args.size() > 1))
+                    !(i == 0 && (v.kind == Kind::matrix || v.kind == Kind::array || v.kind == Kind::dyadic) &&
+                      e.args.size() > 1))
                     throw ScriptError(where, std::string("cannot multiply ") + kind_name(v.kind),
                                       "index an array, e.g. E[1]");
                 if (i == 0) {
@@ -294,7 +311,7 @@ Value Interpreter::Impl::eval(const Expr& e) {
                 }
                 if (v.kind == Kind::vector && acc.kind == Kind::vector)
                     throw ScriptError(where, "cannot multiply two vectors with '*'",
-                                      "use dot(a>, b>) or cross(a>, b>)");
+                                      "use dot(a>, b>), cross(a>, b>) or outer(a>, b>) (the dyad)");
                 acc.dim = acc.dim * v.dim;
                 if (v.kind == Kind::vector) acc.v = acc.s * v.v, acc.kind = Kind::vector;
                 else if (acc.kind == Kind::vector) acc.v = v.s * acc.v;
@@ -416,6 +433,9 @@ std::string Interpreter::Impl::monogram(const Expr& c) const {
         if (f == "momentum") return "L_" + arg(0) + "_" + sys->newtonian().name() + ">";
         if (f == "kinetic") return "KE_" + arg(0);
         if (f == "resultant") return "F_" + arg(0) + ">";
+        if (f == "inertia")  // a rigid body's central inertia: I_B_Bcm>>
+            if (auto it = names.find(c.args[0]->text); it != names.end() && it->second.kind == NameKind::body)
+                return "I_" + arg(0) + "_" + monogram_part(c.args[0]->text + "cm") + ">>";
     }
     if (n == 0 && f == "potential") return "PE";
     return "";
@@ -507,9 +527,13 @@ Value Interpreter::Impl::eval_call(const Expr& e) {
         }
         return scalar_value(guarded([&] { return minimum_jerk(x.s, ends[0], ends[1]); }), Dimension::none());
     }
+    if (f == "outer" || f == "unitdyadic" || f == "inertia" || f == "matrix" || f == "vector" ||
+        (f == "dot" && a.size() == 3))
+        return eval_dyadic(e);
     if (f == "dot" || f == "cross") {
         want(2, f + "(a>, b>)");
         Value x = eval(*a[0]), y = eval(*a[1]);
+        if (f == "dot" && (x.kind == Kind::dyadic || y.kind == Kind::dyadic)) return dyadic_dot(e, x, y);
         for (std::size_t i = 0; i < 2; ++i)
             if ((i ? y : x).kind != Kind::vector)
                 throw ScriptError(a[i]->location, f + "() takes two vectors", "");
@@ -519,7 +543,13 @@ Value Interpreter::Impl::eval_call(const Expr& e) {
     if (f == "express") {
         want(2, "express(v>, F)");
         Value x = eval(*a[0]);
-        if (x.kind != Kind::vector) throw ScriptError(a[0]->location, "express() takes a vector", "");
+        if (x.kind == Kind::dyadic) {
+            Frame& F = frame(word(1, "a frame"));
+            x.d = guarded([&] { return x.d.express_in(F); });
+            return x;
+        }
+        if (x.kind != Kind::vector)
+            throw ScriptError(a[0]->location, "express() takes a vector or a dyadic", "write express(v>, N)");
         Frame& F = frame(word(1, "a frame"));
         return vector_value(guarded([&] { return x.v.express_in(F); }), x.dim);
     }
@@ -567,6 +597,7 @@ Value Interpreter::Impl::eval_call(const Expr& e) {
         guarded([&] {
             if (x.kind == Kind::scalar) x.s = op(x.s);
             else if (x.kind == Kind::vector) x.v = x.v.map(op);
+            else if (x.kind == Kind::dyadic) x.d = x.d.map(op);
             else if (x.kind == Kind::array)
                 for (ex& s : x.a) s = op(s);
             else x = matrix_value(x.rows, x.cols, [&] {
@@ -750,7 +781,7 @@ Value Interpreter::Impl::eval_call(const Expr& e) {
                       "mag unit simplify expand angvel angacc vel acc pos rotation mass momentum "
                       "angmomentum kinetic potential resultant moment massmatrix jacobian diff coef "
                       "replace taylor factor floor exclude include transpose inv det diagmat element rows cols "
-                      "eig eigvec polynomial roots cm");
+                      "eig eigvec polynomial roots cm outer unitdyadic inertia matrix vector");
 }
 
 // ---- output ----------------------------------------------------------------------------
@@ -759,6 +790,7 @@ std::string Interpreter::Impl::print(const Value& v) const {
     switch (v.kind) {
         case Kind::scalar: return to_string(v.s);
         case Kind::vector: return v.v.to_string();
+        case Kind::dyadic: return v.d.to_string();
         case Kind::array: {
             std::string s = "[";
             for (std::size_t i = 0; i < v.a.size(); ++i) s += (i ? ", " : "") + to_string(v.a[i]);

@@ -18,13 +18,14 @@
 
 namespace alembert::lang {
 
-/// A value of an expression: a scalar, a vector, an array of scalars or a 3x3 matrix, with
-/// the dimension of its measures.
+/// A value of an expression: a scalar, a vector, a dyadic, an array of scalars or a matrix,
+/// with the dimension of its measures.
 struct Value {
-    enum class Kind { scalar, vector, array, matrix };
+    enum class Kind { scalar, vector, array, matrix, dyadic };
     Kind kind = Kind::scalar;
     ex s{};
     Vector v{};
+    Dyadic d{};
     std::vector<ex> a{};
     Mat3 m{};  ///< a 3 by 3 matrix's entries (rotation, direction cosines), mirroring `a`
     int rows = 0, cols = 0;  ///< a matrix's size; its entries are `a`, row by row
@@ -347,6 +348,17 @@ struct Interpreter::Impl {
     Value eval_name(const Expr& e);
     Value number_with_unit(const Expr& e, const ex& n);  ///< `0.1575 m`: n in SI, with its dimension
     Value eval_vector_name(const Expr& e);
+    // ---- dyadics (interpreter_dyadic.cpp) --------------------------------------------------
+    Value eval_dyadic_name(const Expr& e);
+    /// outer(), unitdyadic(), inertia(), matrix(), vector(), and dot() of three arguments.
+    Value eval_dyadic(const Expr& e);
+    /// dot(x, y) with x or y a dyadic: D . v, v . D (a vector); two dyadics are refused.
+    Value dyadic_dot(const Expr& e, const Value& x, const Value& y);
+    /// acc + v (acc - v when `subtract`), one of them a dyadic: both dyadics.
+    Value dyadic_sum(Value acc, const Value& v, bool subtract, Location where);
+    /// acc * v (acc / v when `divide`), one of them a dyadic: a dyadic times or divided by a
+    /// scalar.
+    Value dyadic_product(Value acc, const Value& v, bool divide, Location where);
     ex scalar(const Expr& e, const Dimension& expected, const std::string& what);
     Vector vector(const Expr& e, const Dimension& expected, const std::string& what);
     std::vector<ex> array(const Expr& e, const std::string& what);

@@ -104,7 +104,10 @@ Value Interpreter::Impl::matrix_sum(Value acc, const Value& given, bool subtract
     acc = as_row(std::move(acc));
     const Value v = as_row(given);
     if (acc.kind != Kind::matrix || v.kind != Kind::matrix) {
-        auto word = [](Kind k) { return k == Kind::matrix ? "a matrix" : k == Kind::vector ? "a vector" : k == Kind::array ? "an array" : "a scalar"; };
+        auto word = [](Kind k) {
+            return k == Kind::matrix ? "a matrix" : k == Kind::vector ? "a vector" : k == Kind::array ? "an array"
+                                                  : k == Kind::dyadic ? "a dyadic" : "a scalar";
+        };
         throw ScriptError(where, std::string("cannot add ") + word(v.kind) + " to " + word(acc.kind),
                           "add matrices of the same size; diagmat(n, x) is x times the n by n identity");
     }
@@ -167,8 +170,9 @@ Value Interpreter::Impl::eval_matrix(const Expr& e) {
         if (m.kind == Kind::array) return matrix_value(1, static_cast<int>(m.a.size()), m.a, m.dim);
         if (m.kind != Kind::matrix)
             throw ScriptError(a[i]->location, f + "() takes a matrix, but this is a " +
-                                                  std::string(m.kind == Kind::vector ? "vector" : "scalar"),
-                              "write " + form + " with a matrix such as [a, b; c, d]");
+                                                  std::string(m.kind == Kind::vector ? "vector" : m.kind == Kind::dyadic ? "dyadic" : "scalar"),
+                              m.kind == Kind::dyadic ? "take the dyadic's matrix in a frame: matrix(N, D>>)"
+                                                     : "write " + form + " with a matrix such as [a, b; c, d]");
         return m;
     };
     auto square = [&](const Value& m, const std::string& form) {

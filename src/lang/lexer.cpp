@@ -181,6 +181,10 @@ Token Lexer::lex_token() {
         if (pos_ < src_.size() && src_[pos_] == '>') {
             advance(1);
             t.kind = TokenKind::vector_name;
+            if (pos_ < src_.size() && src_[pos_] == '>') {
+                advance(1);
+                t.kind = TokenKind::dyadic_name;
+            }
         }
     } else if (is_digit(c) || (c == '.' && is_digit(peek_char(pos_ + 1)))) {
         while (pos_ < src_.size() && is_digit(peek_char(pos_))) advance(1);

@@ -20,7 +20,8 @@ const std::set<std::string, std::less<>>& function_words() {
         "pos", "rotation", "mass", "momentum", "angmomentum", "kinetic", "potential",
         "resultant", "moment", "pi", "minimum_jerk", "massmatrix", "jacobian", "diff", "coef",
         "replace", "taylor", "floor", "factor", "transpose", "inv", "det", "diagmat", "element",
-        "rows", "cols", "eig", "eigvec", "polynomial", "roots", "cm", "exclude", "include"};
+        "rows", "cols", "eig", "eigvec", "polynomial", "roots", "cm", "exclude", "include", "outer",
+        "unitdyadic", "matrix", "vector"};
     return w;
 }
 
@@ -36,6 +37,7 @@ std::string describe(const Token& t) {
         case TokenKind::number: return "the number " + t.text;
         case TokenKind::string: return "the text \"" + t.text + "\"";
         case TokenKind::vector_name: return "the vector " + t.text + ">";
+        case TokenKind::dyadic_name: return "the dyadic " + t.text + ">>";
         case TokenKind::zero_vector: return "0>";
         case TokenKind::punct: return "'" + t.text + "'";
         default: return "'" + t.text + "'";
@@ -354,6 +356,11 @@ ExprPtr StatementParser::primary() {
             node->text = t.text;
             next();
             return node;
+        case TokenKind::dyadic_name:
+            node->kind = Expr::Kind::dyadic_name;
+            node->text = t.text;
+            next();
+            return node;
         case TokenKind::name: {
             node->text = t.text;
             next();
@@ -473,10 +480,13 @@ Statement StatementParser::parse() {
         expect_end("the '" + s.keyword + "' statement");
         return s;
     }
-    if ((first.kind == TokenKind::name || first.kind == TokenKind::vector_name) && peek(1).is("=")) {
+    if ((first.kind == TokenKind::name || first.kind == TokenKind::vector_name ||
+         first.kind == TokenKind::dyadic_name) &&
+        peek(1).is("=")) {
         s.keyword = "=";
         s.words["target"] = {first.text, first.location};
         if (first.kind == TokenKind::vector_name) s.flags["vector"] = true;
+        if (first.kind == TokenKind::dyadic_name) s.flags["dyadic"] = true;
         next();
         next();
         s.exprs["value"] = expression();

@@ -150,7 +150,7 @@ std::string fuzz_dictionary() {
     for (const StatementSpec& s : statements()) add(std::string(s.keyword) + " ");
     for (const std::string& w : statement_clause_words()) add(" " + w + " ");
     for (const std::string& f : function_names()) add(f + "(");
-    for (const char* p : {">", "0>", "''", " = ", ", ", "[", "]", "; ", "#", " deg", " m/s^2", " N*m"})
+    for (const char* p : {">", ">>", "0>", "''", " = ", ", ", "[", "]", "; ", "#", " deg", " m/s^2", " N*m"})
         add(p);
     return out;
 }

@@ -18,7 +18,9 @@ std::vector<std::vector<std::string>> statements(const std::string& text) {
         out.emplace_back();
         for (const Token& k : t)
             if (k.kind != TokenKind::end)
-                out.back().push_back((k.kind == TokenKind::vector_name ? k.text + ">" : k.text));
+                out.back().push_back(k.kind == TokenKind::vector_name   ? k.text + ">"
+                                     : k.kind == TokenKind::dyadic_name ? k.text + ">>"
+                                                                        : k.text);
     }
     return out;
 }
@@ -29,6 +31,18 @@ TEST(Lexer, NamesKeepTheirPrimesAndVectorsTheirArrow) {
     auto s = statements("z = qA'' * Ax> + 0>\n");
     ASSERT_EQ(s.size(), 1u);
     EXPECT_EQ(s[0], (std::vector<std::string>{"z", "=", "qA''", "*", "Ax>", "+", "0"}));
+}
+
+TEST(Lexer, DyadicsEndInTwoArrows) {
+    Lexer lx("I_B>> = outer(Ax>, By>)\n");
+    auto t = lx.next_statement();
+    ASSERT_GE(t.size(), 3u);
+    EXPECT_EQ(t[0].kind, TokenKind::dyadic_name);
+    EXPECT_EQ(t[0].text, "I_B");
+    EXPECT_EQ(t[4].kind, TokenKind::vector_name);
+    auto s = statements("D>> = 2*E>> - F>>\n");
+    ASSERT_EQ(s.size(), 1u);
+    EXPECT_EQ(s[0], (std::vector<std::string>{"D>>", "=", "2", "*", "E>>", "-", "F>>"}));
 }
 
 TEST(Lexer, StatementsEndAtNewlinesAndSemicolonsButNotInsideBrackets) {

@@ -35,6 +35,7 @@ struct Expr {
         number,       ///< `number`
         name,         ///< a scalar, array or object name (`text`)
         vector_name,  ///< Ax>, r> (`text` without '>')
+        dyadic_name,  ///< D>> (`text` without '>>')
         zero_vector,  ///< 0>
         sum,          ///< args[i] added, or subtracted where `inverted[i]`
         product,      ///< args[i] multiplied, or divided where `inverted[i]`

@@ -25,6 +25,7 @@ struct Limits {
 enum class TokenKind {
     name,         ///< qA, qA'', L_A
     vector_name,  ///< Ax>, r>, w_A_N> (text without the '>')
+    dyadic_name,  ///< D>>, I_B>> (text without the '>>')
     zero_vector,  ///< 0>
     number,       ///< 9.81, 1e-3
     string,       ///< "motion.csv" (text without the quotes; one line, no escapes)

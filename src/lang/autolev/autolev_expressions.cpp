@@ -33,6 +33,7 @@ Text Translator::expr(const Expr& e) {
                 }
                 return {"t/" + time_unit_, false, 2, false};
             }
+            if (e.dyadic) return dyadic_name(e);
             if (const Entry* m = e.vector || e.primes ? nullptr : find(e.text); m && m->kind == Kind::matrix)
                 return {m->name, false, 5, false, m->rows, m->cols};
             resolved_numeric_ = false;
@@ -48,7 +49,7 @@ Text Translator::expr(const Expr& e) {
         case Expr::Kind::unary: {
             Text a = expr(e.args[0]);
             if (e.text == "+") return a;
-            return {"-" + paren(a, 4), a.vector, 3, a.numeric, a.rows, a.cols};
+            return {"-" + paren(a, 4), a.vector, 3, a.numeric, a.rows, a.cols, a.dyadic};
         }
         case Expr::Kind::binary: return binary(e);
         case Expr::Kind::matrix: return matrix_literal(e);
@@ -81,6 +82,7 @@ Text Translator::binary(const Expr& e) {
 
 Text Translator::combine(const Expr& e, Text a, Text b) {
     const std::string& op = e.text;
+    if (a.dyadic || b.dyadic || (op == "*" && a.vector && b.vector)) return dyadic_combine(e, std::move(a), std::move(b));
     auto wrapped = [](Text& t, bool wrap) { return wrap ? "(" + std::move(t.s) + ")" : std::move(t.s); };
     auto size = [](const Text& t) { return std::to_string(t.rows) + " by " + std::to_string(t.cols); };
     auto known = [](const Text& t) { return t.size_known(); };
@@ -125,8 +127,6 @@ Text Translator::combine(const Expr& e, Text a, Text b) {
         return {std::move(s), a.vector, 1, false, rows, cols};
     }
     if (op == "*" || op == "/") {
-        if (op == "*" && a.vector && b.vector)
-            fail(e.where, "'*' between two vectors", "use DOT(a>, b>) or CROSS(a>, b>)");
         if (op == "/" && b.vector) fail(e.where, "division by a vector", "divide by a scalar such as MAG(v>)");
         bool vector = a.vector || b.vector;
         std::string s = wrapped(a, a.prec < 2);
@@ -165,6 +165,7 @@ Text Translator::call_text(const Expr& e, bool& numeric) {
             fail(e.args[i].where, e.text + "() takes a scalar here, not a vector", "take a measure: DOT(v>, N1>)");
         if (t.matrix())
             fail(e.args[i].where, e.text + "() takes a scalar here, not a matrix", "take an element: M[i, j]");
+        if (t.dyadic) not_a_dyadic(e.args[i], "a scalar");
         return t;
     };
     auto vector_arg = [&](std::size_t i) {
@@ -183,7 +184,12 @@ Text Translator::call_text(const Expr& e, bool& numeric) {
     }
     if (f == "DOT") {
         args(2, 2);
-        return {"dot(" + vector_arg(0).s + ", " + vector_arg(1).s + ")", false, 5};
+        Text a = expr(e.args[0]), b = expr(e.args[1]);
+        numeric = numeric && a.numeric && b.numeric;
+        if (a.dyadic || b.dyadic) return dyadic_dot(e, a, b);
+        for (std::size_t i = 0; i < 2; ++i)
+            if (!(i ? b : a).vector) fail(e.args[i].where, e.text + "() takes a vector here (a name ending in '>')");
+        return {"dot(" + a.s + ", " + b.s + ")", false, 5};
     }
     if (f == "CROSS") {
         args(2, 2);
@@ -201,6 +207,7 @@ Text Translator::call_text(const Expr& e, bool& numeric) {
         args(2, 2);
         Text v = expr(e.args[0]);
         numeric = v.numeric;
+        if (v.dyadic) return {"express(" + v.s + ", " + frame_name(e.args[1]) + ")", false, 5, false, 0, 0, true};
         if (!v.vector) return v;  // a scalar is the same in every frame
         return {"express(" + v.s + ", " + frame_name(e.args[1]) + ")", true, 5};
     }
@@ -208,6 +215,9 @@ Text Translator::call_text(const Expr& e, bool& numeric) {
         args(1, 2);
         Text v = expr(e.args[0]);
         numeric = v.numeric;
+        if (v.dyadic)
+            fail(e.args[0].where, "DT of a dyadic is not translated",
+                 "differentiate its measures: DT(DOT(N1>, DOT(D>>, N1>)))");
         if (v.vector) {
             if (e.args.size() != 2) fail(e.where, "DT of a vector needs the frame: DT(v>, N)");
             return {"dt(" + v.s + ", " + frame_name(e.args[1]) + ")", true, 5};
@@ -221,7 +231,7 @@ Text Translator::call_text(const Expr& e, bool& numeric) {
                  "Alembert's expand() keeps every term: write EXPAND(e)");
         Text v = expr(e.args[0]);
         numeric = v.numeric;
-        return {"expand(" + v.s + ")", v.vector, 5};
+        return {"expand(" + v.s + ")", v.vector, 5, false, 0, 0, v.dyadic};
     }
     if (f == "EXPLICIT" || f == "ARRANGE") {
         // the same value, printed another way: EXPLICIT writes intermediates out, ARRANGE
@@ -256,7 +266,7 @@ Text Translator::call_text(const Expr& e, bool& numeric) {
         args(1, 1);
         const Expr& x = e.args[0];
         const Entry* en = x.kind == Expr::Kind::name && x.primes == 0 ? find(x.text) : nullptr;
-        if (!en || (en->kind != Kind::scalar && en->kind != Kind::vector))
+        if (!en || (en->kind != Kind::scalar && en->kind != Kind::vector && en->kind != Kind::dyadic))
             fail(x.where, "RHS() is translated for a name the file assigns (X = ..., V> = ...)",
                  "RHS of an equation other than an assignment has no counterpart; write the expression");
         Text v = expr(x);
@@ -280,7 +290,7 @@ Text Translator::call_text(const Expr& e, bool& numeric) {
         std::string s = "replace(" + v.s;
         for (std::size_t i = 1; i < e.args.size(); ++i) s += ", " + substitution(e.args[i], e.text);
         numeric = false;
-        return {s + ")", v.vector, 5};
+        return {s + ")", v.vector, 5, false, 0, 0, v.dyadic};
     }
     if (f == "TAYLOR") {
         // TAYLOR(e, m:n, X = X0, ...): the terms of orders m to n of the Taylor polynomial,
@@ -304,8 +314,8 @@ Text Translator::call_text(const Expr& e, bool& numeric) {
         for (std::size_t i = 2; i < e.args.size(); ++i) at += ", " + substitution(e.args[i], e.text);
         numeric = false;
         std::string s = "taylor(" + v.s + at + ", " + std::to_string(hi) + ")";
-        if (lo == 0) return {s, v.vector, 5};
-        return {"(" + s + " - taylor(" + v.s + at + ", " + std::to_string(lo - 1) + "))", v.vector, 5};
+        if (lo == 0) return {s, v.vector, 5, false, 0, 0, v.dyadic};
+        return {"(" + s + " - taylor(" + v.s + at + ", " + std::to_string(lo - 1) + "))", v.vector, 5, false, 0, 0, v.dyadic};
     }
     if (f == "FLOOR") {
         args(1, 1);
@@ -315,6 +325,7 @@ Text Translator::call_text(const Expr& e, bool& numeric) {
         Text v = scalar_arg(0);
         return {"factor(" + v.s + ")", false, 5};
     }
+    if (auto m = dyadic_call(e, f, numeric)) return *m;
     if (auto m = matrix_call(e, f, numeric)) return *m;
     if (auto t = term_call(e, f, numeric)) return *t;
     if (f == "SOLVE")
@@ -322,8 +333,6 @@ Text Translator::call_text(const Expr& e, bool& numeric) {
              "solve first, then use X1 and X2 in the expressions after it");
     static const std::map<std::string, std::string> missing{
         {"FACTOR", "FACTOR(e) is factor(e); Alembert takes no factor chosen by name (FACTOR(e, X))"},
-        {"MATRIX", "write the matrix by its elements: [A, B; C, D]"},
-        {"VECTOR", "write the vector from unit vectors: X*N1> + Y*N2>"},
         {"NICHECK", "the translation has no nonholonomic checks"}};
     if (auto it = missing.find(f); it != missing.end())
         fail(e.where, "the Autolev function " + f + "() is not translated: " + it->second,
@@ -335,7 +344,7 @@ Text Translator::call_text(const Expr& e, bool& numeric) {
          "the translator knows SIN, COS, TAN, ASIN, ACOS, ATAN, SQRT, EXP, LOG, ABS, DOT, CROSS, MAG, "
          "UNITVEC, EXPRESS, DT, D, EXPAND, EXPLICIT, ARRANGE, RHS, COEF, REPLACE, EVALUATE, TAYLOR, FLOOR, "
          "FACTOR, SOLVE, TRANSPOSE, INV, DET, DIAGMAT, ELEMENT, ROWS, COLS, EIG, POLYNOMIAL, ROOTS, MASS, CM, "
-         "ANGVEL, EXCLUDE and INCLUDE");
+         "ANGVEL, EXCLUDE, INCLUDE, MATRIX, VECTOR and INERTIA");
 }
 
 Text Translator::matrix_element(const Expr& e, const Entry& m) {

@@ -72,6 +72,7 @@ public:
                 t.text = std::string(s_.substr(b, i_ - b));
                 while (i_ < s_.size() && s_[i_] == '\'') { advance(); ++t.primes; }
                 if (i_ < s_.size() && s_[i_] == '>') { advance(); t.vector = true; }
+                if (t.vector && i_ < s_.size() && s_[i_] == '>') { advance(); t.dyadic = true; }
             } else if (is_digit(c) || (c == '.' && i_ + 1 < s_.size() && is_digit(s_[i_ + 1]))) {
                 std::size_t b = i_;
                 while (i_ < s_.size() && (is_digit(s_[i_]) || s_[i_] == '.')) advance();
@@ -94,6 +95,14 @@ public:
                         advance();
                         t.kind = Token::Kind::name;
                         t.vector = true;
+                    }
+                    // 0>> the zero dyadic, 1>> the unit dyadic
+                    if ((t.text == "0" || t.text == "1") && i_ + (t.vector ? 0 : 1) < s_.size() &&
+                        s_[i_ + (t.vector ? 0 : 1)] == '>') {
+                        if (!t.vector) advance();
+                        advance();
+                        t.kind = Token::Kind::name;
+                        t.vector = t.dyadic = true;
                     }
                 }
             } else if (std::string_view("+-*/^()[]{},=':;").find(c) != std::string_view::npos) {
@@ -194,7 +203,8 @@ public:
     }
     std::string describe(const Token& t) const {
         if (t.kind == Token::Kind::end) return "the end of the statement";
-        return "'" + t.text + std::string(static_cast<std::size_t>(t.primes), '\'') + (t.vector ? ">" : "") + "'";
+        return "'" + t.text + std::string(static_cast<std::size_t>(t.primes), '\'') +
+               (t.dyadic ? ">>" : t.vector ? ">" : "") + "'";
     }
     void expect(const char* s) {
         if (!is_symbol(s))
@@ -262,6 +272,7 @@ public:
             e.text = t.text;
             e.primes = t.primes;
             e.vector = t.vector;
+            e.dyadic = t.dyadic;
             if (t.vector) {
                 e.kind = Expr::Kind::name;
                 if (t.text == "0") e.text = "0";
@@ -531,6 +542,7 @@ Statement parse_statement(Parser& p, const Lexer& lex, const std::vector<Token>&
         lhs.text = first.text;
         lhs.primes = first.primes;
         lhs.vector = first.vector;
+        lhs.dyadic = first.dyadic;
         lhs.where = first.where;
         p.take();
         const Token& op = p.take();

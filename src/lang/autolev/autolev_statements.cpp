@@ -234,6 +234,7 @@ void Translator::assignment(const Statement& st) {
     if (lhs.kind == Expr::Kind::index) return array_assignment(st);
     if (lhs.kind != Expr::Kind::name)
         fail(lhs.where, "the left side of '=' must be a name", "write NAME = ..., NAME> = ... or Q1' = ...");
+    if (lhs.dyadic) return dyadic_assignment(st);
     if (lhs.vector) return vector_assignment(st);
     std::string key = upper(lhs.text);
     const Entry* en = find(lhs.text);
@@ -273,6 +274,7 @@ void Translator::assignment(const Statement& st) {
             if (r.matrix())
                 fail(st.rhs.where, "'" + lhs.text + "' is a scalar and is assigned only a scalar", "give the matrix another name");
             if (r.vector) fail(st.rhs.where, "a vector where a scalar is expected", "take a measure: DOT(v>, N1>)");
+            if (r.dyadic) not_a_dyadic(st.rhs, "a scalar");
             names_[upper(lhs.text)].numeric = r.numeric;
             emit(en->name + " = " + r.s);
             return;
@@ -298,6 +300,7 @@ void Translator::assignment(const Statement& st) {
         return emit(ne.name + " = " + r.s);
     }
     if (r.vector) fail(st.rhs.where, "a vector where a scalar is expected", "take a measure: DOT(v>, N1>)");
+    if (r.dyadic) fail(st.rhs.where, "a dyadic assigned to a name without '>>'", "write " + lhs.text + ">> = ...");
     const Entry& ne = add(lhs.text, Kind::scalar, lhs.where);
     names_[upper(lhs.text)].numeric = r.numeric;
     emit(ne.name + " = " + r.s);

@@ -10,13 +10,15 @@
 namespace alembert::lang::autolev {
 
 /// A token of an Autolev file. Names carry their primes (`Q1'`) and a trailing `>` (`A1>`,
-/// `V_P_N>`, and `0>` the zero vector) when written without a space.
+/// `V_P_N>`, and `0>` the zero vector) or `>>` (a dyadic: `D>>`, `I_B_BO>>`, `1>>` the unit
+/// dyadic, `0>>`) when written without a space.
 struct Token {
     enum class Kind { name, number, symbol, end };
     Kind kind = Kind::end;
-    std::string text{};  ///< the name, number or symbol as written (without primes and '>')
+    std::string text{};  ///< the name, number or symbol as written (without primes, '>' and '>>')
     int primes = 0;
-    bool vector = false;
+    bool vector = false;  ///< also set for a dyadic
+    bool dyadic = false;
     Location where{};
 };
 
@@ -25,7 +27,7 @@ struct Token {
 struct Expr {
     enum class Kind {
         number,  ///< text: the number
-        name,    ///< text, primes, vector
+        name,    ///< text, primes, vector, dyadic
         call,    ///< text: function; args
         index,   ///< text: array name; args: the subscripts (`DEPENDENT[U3]`, `ZERO[1]`)
         unary,   ///< text "-" or "+"; args[0]
@@ -36,7 +38,8 @@ struct Expr {
     Kind kind = Kind::number;
     std::string text{};
     int primes = 0;
-    bool vector = false;
+    bool vector = false;  ///< a name written with '>' (with '>>' too: `dyadic` tells)
+    bool dyadic = false;
     std::vector<Expr> args{};
     Location where{};
 };

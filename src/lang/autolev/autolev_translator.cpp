@@ -153,7 +153,7 @@ const Entry& Translator::add(const std::string& name, Kind kind, Location where)
             {Kind::newtonian, "frame"}, {Kind::frame, "frame"},  {Kind::body, "body"},
             {Kind::particle, "particle"}, {Kind::point, "point"}, {Kind::constant, "const"},
             {Kind::variable, "var"},     {Kind::specified, "spec"}, {Kind::scalar, "val"},
-            {Kind::vector, "vec"},       {Kind::matrix, "mat"}};
+            {Kind::vector, "vec"},       {Kind::matrix, "mat"},       {Kind::dyadic, "dyad"}};
         std::string base = name + "_" + suffix.at(kind), renamed = base;
         for (int k = 2; find(renamed) || object_spelt(renamed); ++k) renamed = base + std::to_string(k);
         e.name = renamed;

@@ -21,7 +21,7 @@
 namespace alembert::lang::autolev {
 
 // What an Autolev name stands for.
-enum class Kind { newtonian, frame, body, particle, point, constant, variable, specified, scalar, vector, matrix };
+enum class Kind { newtonian, frame, body, particle, point, constant, variable, specified, scalar, vector, matrix, dyadic };
 
 inline const char* kind_word(Kind k) {
     switch (k) {
@@ -36,6 +36,7 @@ inline const char* kind_word(Kind k) {
         case Kind::scalar: return "a scalar";
         case Kind::vector: return "a vector";
         case Kind::matrix: return "a matrix";
+        case Kind::dyadic: return "a dyadic";
     }
     return "a name";
 }
@@ -66,6 +67,7 @@ struct Text {
     bool matrix() const { return rows != 0; }
     // both the rows and the columns known (POLYNOMIAL(P, X) is a row of a length not known)
     bool size_known() const { return rows > 0 && cols > 0; }
+    bool dyadic = false;  // a dyadic (`vector` is then false)
 };
 
 // A declared constant: its declaration group (one `constant` line each) and its value.
@@ -258,10 +260,12 @@ private:
         if (t.vector) fail(e.where, "a vector where a scalar is expected", "take a measure: DOT(v>, N1>)");
         if (t.matrix())
             fail(e.where, "a matrix where a scalar is expected", "take an element: M[i, j] or ELEMENT(M, i, j)");
+        if (t.dyadic) not_a_dyadic(e, "a scalar");
         return t;
     }
     Text vec(const Expr& e) {
         Text t = expr(e);
+        if (t.dyadic) not_a_dyadic(e, "a vector");
         if (!t.vector)
             fail(e.where, std::string("a ") + (t.matrix() ? "matrix" : "scalar") + " where a vector is expected",
                  "multiply by a unit vector such as N1>");
@@ -338,6 +342,29 @@ private:
     std::string frame_or_body(const Expr& e) { return frame_name(e); }
 
     std::string simprot_axis(const Expr& ax, const std::string& a, const std::string& b);
+
+    // ---- dyadics (autolev_dyadics.cpp) ----------------------------------------------------
+
+    // D>> assigned, 1>>, 0>>, or I_B_P>> (B's inertia about P, or a particle's about P)
+    Text dyadic_name(const Expr& e);
+    // D>> = ...: a dyadic of the script
+    void dyadic_assignment(const Statement& st);
+    // `a op b` with a or b a dyadic, or a>*b> (the dyad, Autolev's product of two vectors)
+    Text dyadic_combine(const Expr& e, Text a, Text b);
+    // DOT(a, b) with a or b a dyadic (D>> . v> or v> . D>>)
+    Text dyadic_dot(const Expr& e, const Text& a, const Text& b);
+    // MATRIX(A, v>), MATRIX(A, D>>), VECTOR(A, M) and INERTIA(O, ...), or nothing if `f` is
+    // none of them
+    std::optional<Text> dyadic_call(const Expr& e, const std::string& f, bool& numeric);
+    // unitdyadic(N), N the Newtonian frame (or the first frame)
+    std::string unit_dyadic(const Expr& e);
+    // the inertia dyadic of body or particle `b` about point `p`
+    Text inertia_about(const Expr& e, const std::string& b, const std::string& p);
+    // the error for a dyadic where `wanted` (a scalar, a vector) stands
+    [[noreturn]] static void not_a_dyadic(const Expr& e, const std::string& wanted) {
+        fail(e.where, "a dyadic where " + wanted + " is expected",
+             wanted == "a scalar" ? "take a measure: DOT(N1>, DOT(D>>, N1>))" : "dot it with a vector: DOT(D>>, v>)");
+    }
 
     // ---- the script -----------------------------------------------------------------------
 

@@ -392,6 +392,7 @@ TEST(AutolevAcceptanceFiles, EveryFileIsChecked) {
                                      "solve_zero_pendulum.al", "matrix_operations.al", "mass_functions.al",
                                      "terms_and_coefficients.al", "normal_modes.al"};
     for (const Case& c : cases()) checked.push_back(c.file);
+    for (const char* f : {"dyadic_inertia.al", "dyadic_algebra.al"}) checked.push_back(f);
     int files = 0;
     for (const auto& e : std::filesystem::directory_iterator(kDir)) {
         if (e.path().extension() != ".al") continue;
@@ -584,6 +585,85 @@ TEST(AutolevAcceptanceFiles, MatrixOperationsAgreeWithTheHandResults) {
                      6,
                      1.5,
                      b};
+        for (std::size_t i = 0; i < expected.size(); ++i)
+            EXPECT_NEAR(v[i], expected[i], 1e-12 * std::max(1.0, std::abs(expected[i]))) << i << " at " << at;
+    }
+}
+
+// Inertia dyadics, by hand: B turned by Q1 about N3> then Q2 about A1> has w = (Q2', Q1' sin Q2,
+// Q1' cos Q2) in B's unit vectors (A3> = sin Q2 B2> + cos Q2 B3>), so about BO H = I w =
+// (I1 Q2', I2 Q1' sin Q2, I3 Q1' cos Q2) and KE = w.I.w/2; about NO, L from BO along B3>, the
+// transfer M (L^2 U - L^2 B3> B3>) adds M L^2 about B1> and B2> only: J1 = I1 + M L^2, J3 = I3,
+// and H about the fixed point NO has B2> measure (I2 + M L^2) Q1' sin Q2; the trace of the
+// central inertia in N is I1 + I2 + I3 in any frame; the particle at R A1> has about NO
+// MP (R^2 U - R^2 A1> A1>): 0 along A1>, MP R^2 across, no products. INERTIA(NO), both about
+// NO, has I1 + M L^2 along A1> = B1> and, A2> = cos Q2 B2> - sin Q2 B3>, (I2 + M L^2) cos^2 Q2
+// + I3 sin^2 Q2 + MP R^2 along A2>; INERTIA(BO, B) is the central inertia, I3 along B3>.
+TEST(AutolevAcceptanceFiles, InertiaDyadicsAgreeWithTheHandResults) {
+    AutolevTranslation t = import("dyadic_inertia.al");
+    ASSERT_TRUE(t.ok());
+    std::mt19937 rng(2034);
+    auto uniform = [&](double a, double b) { return std::uniform_real_distribution<double>(a, b)(rng); };
+    for (int trial = 0; trial < 3; ++trial) {
+        const double l = uniform(0.2, 2), r = uniform(0.2, 2), m = uniform(0.5, 3), mp = uniform(0.5, 3);
+        const double i1 = uniform(0.1, 2), i2 = uniform(0.1, 2), i3 = uniform(0.1, 2);
+        const double q1 = uniform(-3, 3), q2 = uniform(-3, 3), u1 = uniform(-4, 4), u2 = uniform(-4, 4);
+        std::string at = "L = " + num(l) + ", R = " + num(r) + ", M = " + num(m) + ", MP = " + num(mp) +
+                         ", I1 = " + num(i1) + ", I2 = " + num(i2) + ", I3 = " + num(i3) + ", Q1 = " + num(q1) +
+                         ", Q2 = " + num(q2) + ", Q1' = " + num(u1) + ", Q2' = " + num(u2);
+        Vec v = evaluate(t, {"H1", "H2", "H3", "KE", "J1", "J3", "HO2", "TRACE", "P11", "P22", "P12", "IS11", "IS22", "IB33"},
+                         at);
+        const double w1 = u2, w2 = u1 * std::sin(q2), w3 = u1 * std::cos(q2);
+        Vec expected{i1 * w1,
+                     i2 * w2,
+                     i3 * w3,
+                     (i1 * w1 * w1 + i2 * w2 * w2 + i3 * w3 * w3) / 2,
+                     i1 + m * l * l,
+                     i3,
+                     (i2 + m * l * l) * w2,
+                     i1 + i2 + i3,
+                     0,
+                     mp * r * r,
+                     0,
+                     i1 + m * l * l,
+                     (i2 + m * l * l) * std::cos(q2) * std::cos(q2) + i3 * std::sin(q2) * std::sin(q2) + mp * r * r,
+                     i3};
+        for (std::size_t i = 0; i < expected.size(); ++i)
+            EXPECT_NEAR(v[i], expected[i], 1e-12 * std::max(1.0, std::abs(expected[i]))) << i << " at " << at;
+    }
+}
+
+// Dyadics as values, by hand (c = cos Q, s = sin Q, B1> = c N1> + s N2>, B2> = -s N1> + c N2>):
+// D = diag(3, 1, 2) in N has in B [3c^2 + s^2, -2sc, 0; -2sc, 3s^2 + c^2, 0; 0, 0, 2]; V =
+// X1 B1> + X2 B2> + X3 B3> is (X1 c - X2 s, X1 s + X2 c, X3) in N, so D.V = (3(X1 c - X2 s),
+// X1 s + X2 c, 2 X3) = V.D (D symmetric); 1>>.V = V; F = N1> B2>/2 - B2> N1>/4 has
+// N1>.F.B2> = 1/2 - (N1>.B2>)^2/4 = 1/2 - s^2/4; D less itself in B is 0; VECTOR(N, [1, 2, 3])
+// has 2 along N2>, and VECTOR(N, MATRIX(N, V>)) is V.
+TEST(AutolevAcceptanceFiles, DyadicValuesAgreeWithTheHandResults) {
+    AutolevTranslation t = import("dyadic_algebra.al");
+    ASSERT_TRUE(t.ok());
+    std::mt19937 rng(2035);
+    auto uniform = [&](double a, double b) { return std::uniform_real_distribution<double>(a, b)(rng); };
+    for (int trial = 0; trial < 3; ++trial) {
+        const double x1 = uniform(-2, 2), x2 = uniform(-2, 2), x3 = uniform(-2, 2), q = uniform(-3, 3);
+        std::string at = "X1 = " + num(x1) + ", X2 = " + num(x2) + ", X3 = " + num(x3) + ", Q = " + num(q);
+        Vec v = evaluate(t, {"B11", "B12", "B22", "B33", "E12", "W1", "W2", "W3", "VD1", "U1", "S", "Z11", "R2", "BACK1"},
+                         at);
+        const double c = std::cos(q), s = std::sin(q);
+        Vec expected{3 * c * c + s * s,
+                     -2 * s * c,
+                     3 * s * s + c * c,
+                     2,
+                     -2 * s * c,
+                     3 * (x1 * c - x2 * s),
+                     x1 * s + x2 * c,
+                     2 * x3,
+                     3 * (x1 * c - x2 * s),
+                     x1,
+                     0.5 - s * s / 4,
+                     0,
+                     2,
+                     0};
         for (std::size_t i = 0; i < expected.size(); ++i)
             EXPECT_NEAR(v[i], expected[i], 1e-12 * std::max(1.0, std::abs(expected[i]))) << i << " at " << at;
     }
