@@ -68,9 +68,10 @@ C3dFile read_c3d(const std::string& path);
 ///  - the plate's axes from its corners (corner 1 in the +x +y quadrant, 2 in -x +y, 3 in
 ///    -x -y, 4 in +x -y): x along (c1 + c4 - c2 - c3), z = x × (c1 + c2 - c3 - c4), y = z × x;
 ///    its surface centre S the corners' mean;
-///  - the channels, in the plate's axes, are the load the body applies to the plate (the
-///    plate's force F and moment M); each column of the table is the reaction on the body, -F,
-///    with the free moment -T, both taken into the lab's axes;
+///  - the channels, in the plate's axes, are the ground's reaction on the body (its force F
+///    and moment M), as capture systems write them and C3D readers (BTK, ezc3d, Visual3D) take
+///    them: under a standing subject Fz, along the plate's downward z, is negative; the table
+///    holds F and the free moment T taken into the lab's axes;
 ///  - type 2: Fx, Fy, Fz, Mx, My, Mz, the moment about the plate's origin O, ORIGIN the vector
 ///    from O to S in the plate's axes; type 4: the same after the calibration matrix
 ///    (CAL_MATRIX times the six channels, the channels' units read as those of its outputs); type 3 (eight channels Fx12, Fx34, Fy14, Fy23,
