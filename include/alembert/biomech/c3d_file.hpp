@@ -55,6 +55,9 @@ struct C3dFile {
 /// USED, LABELS (LABELS2, ...), UNITS, RATE; ANALOG USED, LABELS (LABELS2, ...), UNITS, RATE,
 /// SCALE, GEN_SCALE, OFFSET, FORMAT (SIGNED/UNSIGNED); FORCE_PLATFORM USED, TYPE, ZERO,
 /// CORNERS, ORIGIN, CHANNEL, CAL_MATRIX. A label named twice gets "_2", "_3" (a note says so).
+/// The frames are the header's first to last; where the data hold fewer and POINT:FRAMES fits
+/// them (an exporter that left the header's last frame wrong), POINT:FRAMES frames are read
+/// from the header's first, and a note says so.
 /// @throws alembert::ArgumentError "path: what is wrong (byte N); how to fix it" for a file
 ///         that cannot be opened, is not a C3D file, is truncated (the block or frame that
 ///         runs past its end), has a parameter block pointer past the end, an unknown processor
