@@ -136,6 +136,45 @@ TEST(ReadC3d, AnalogChannelsAreOffsetScaledAndGenScaled) {
     }
 }
 
+// ---- frame counts ----------------------------------------------------------------------
+
+bool has_note(const C3dFile& f, const std::string& text) {
+    for (const std::string& n : f.notes)
+        if (n.find(text) != std::string::npos) return true;
+    return false;
+}
+
+TEST(ReadC3d, AHeaderThatOverstatesTheFramesIsReadByPointFramesOrTheWholeFramesTheFileEndsWith) {
+    // the 12 frames of 48 bytes (3 points of 4 floats), from frame 7, unpadded: the data end
+    // with the file after frame 18
+    C3dScratch s;
+    C3dSpec spec = marker_spec(C3dProcessor::intel, true);
+    spec.pad_data = false;
+    spec.header_frames = 1149, spec.param_frames = 1149;
+    const C3dFile whole = read_c3d(s.write("whole.c3d", spec));
+    expect_markers(whole, true);
+    EXPECT_TRUE(has_note(whole, "the header gives 1149 frames (7 to 1155) and POINT:FRAMES 1149, but the file ends "
+                                "after 12 whole frames; these are read, frames 7 to 18"));
+    // POINT:FRAMES right, the header wrong: POINT:FRAMES frames, as ezc3d takes them
+    spec.param_frames = 10;
+    const C3dFile by_param = read_c3d(s.write("param.c3d", spec));
+    ASSERT_EQ(by_param.markers.table.row_count(), 10u);
+    EXPECT_NEAR(by_param.markers.table.columns[0].back(), 15.0 / 120, 1e-15);
+    EXPECT_TRUE(has_note(by_param, "the header gives 1149 frames (7 to 1155), more than the data hold; POINT:FRAMES "
+                                   "(10) is read, frames 7 to 16"));
+    // padded to 1024 bytes of data: it ends 16 bytes into a 22nd frame, and both counts
+    // overstate it: truncated
+    spec.pad_data = true, spec.param_frames = 1149;
+    EXPECT_THROW_MSG(read_c3d(s.write("cut.c3d", spec)), ArgumentError,
+                     "the file holds 1149 frames (7 to 1155) of 48 bytes");
+    // the header right, POINT:FRAMES not: the header's count, and a note
+    spec.header_frames = 0, spec.param_frames = 30;
+    const C3dFile by_header = read_c3d(s.write("header.c3d", spec));
+    expect_markers(by_header, true);
+    EXPECT_TRUE(has_note(by_header, "POINT:FRAMES is 30 but the header gives 12 frames (7 to 18); the header's count "
+                                    "is read"));
+}
+
 // ---- force plates ------------------------------------------------------------------------
 
 // A 600 x 400 mm plate in a z-up lab, its surface in the floor Z = 0, centred at S (mm), its
