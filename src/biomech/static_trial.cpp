@@ -64,4 +64,51 @@ StaticLength calc_static_length(const MarkerTable& trial, const std::string& fro
     return out;
 }
 
+StaticPlace calc_static_place(const MarkerTable& trial, const std::string& from, const std::string& to,
+                              const std::string& marker, SagittalPlane plane) {
+    const std::string what = "calc_static_place(" + from + ", " + to + ", " + marker + "): ";
+    if (from == to || marker == from || marker == to)
+        throw ArgumentError(what + "a marker is given twice; a place is measured from two joint-centre markers to a third");
+    std::size_t c[3][2];  // P, D, M: horizontal and vertical columns
+    const std::string names[3] = {from, to, marker};
+    for (int i = 0; i < 3; ++i) {
+        try {
+            c[i][0] = trial.column(names[i], plane.horizontal), c[i][1] = trial.column(names[i], plane.vertical);
+        } catch (const ArgumentError& e) {
+            throw ArgumentError(what + e.what());
+        }
+    }
+    const Table& t = trial.table;
+    std::vector<double> along, across;
+    for (std::size_t k = 0; k < t.row_count(); ++k) {
+        const double P[2] = {t.columns[c[0][0]][k], t.columns[c[0][1]][k]};
+        const double D[2] = {t.columns[c[1][0]][k], t.columns[c[1][1]][k]};
+        const double M[2] = {t.columns[c[2][0]][k], t.columns[c[2][1]][k]};
+        const double ux = D[0] - P[0], uy = D[1] - P[1], len = std::hypot(ux, uy);
+        if (std::isnan(len + M[0] + M[1])) continue;
+        if (!(len > 0))
+            throw ArgumentError(what + "'" + from + "' and '" + to + "' are at one place at t = " +
+                                format_csv_number(t.columns[0][k]) + " s; a segment's axis needs two distinct points");
+        // u = (ux, uy) / len, n = (-uy, ux) / len
+        const double rx = M[0] - P[0], ry = M[1] - P[1];
+        along.push_back((rx * ux + ry * uy) / len);
+        across.push_back((-rx * uy + ry * ux) / len);
+    }
+    if (along.empty())
+        throw ArgumentError(what + "no frame of the trial (" + std::to_string(t.row_count()) + " frames) sees '" + from +
+                            "', '" + to + "' and '" + marker + "' together; record a static trial where all are seen");
+    auto mean_sd = [](const std::vector<double>& x, double& mean, double& sd) {
+        double sum = 0, ss = 0;
+        for (double v : x) sum += v;
+        mean = sum / static_cast<double>(x.size());
+        for (double v : x) ss += (v - mean) * (v - mean);
+        sd = x.size() > 1 ? std::sqrt(ss / static_cast<double>(x.size() - 1)) : 0.0;
+    };
+    StaticPlace out;
+    out.marker = marker, out.frames = along.size();
+    mean_sd(along, out.along_m, out.sd_along_m);
+    mean_sd(across, out.across_m, out.sd_across_m);
+    return out;
+}
+
 }  // namespace alembert

@@ -20,7 +20,7 @@ namespace {
 // The right leg standing for 2 s at 100 Hz: the hip sways 4 mm forward and back, the thigh and
 // the leg lean by a few degrees, the knee's marker 6 cm lateral of the hip's (Z), so the
 // lengths are distances in space: thigh 0.4123 m (HIP to KNEE), leg 0.4317 m (KNEE to ANKLE).
-constexpr double kThigh = 0.4123, kLeg = 0.4317, kLateral = 0.06;
+constexpr double kThigh = 0.4123, kLeg = 0.4317, kLateral = 0.06, kAlong = 0.18, kAcross = 0.06;
 constexpr std::size_t kFrames = 200;
 
 // uniform on (-h, h), a fixed sequence (the standard minimal generator of Park and Miller)
@@ -34,7 +34,7 @@ struct StaticNoise {
 
 MarkerTable standing_trial(double noise_m) {
     MarkerTable m;
-    m.markers = {"HIP", "KNEE", "ANKLE"};
+    m.markers = {"HIP", "KNEE", "ANKLE", "THI"};
     m.data_rate_hz = 100, m.file_unit = "m";
     m.table.add_column("time", "s");
     for (const std::string& name : m.markers)
@@ -49,9 +49,13 @@ MarkerTable standing_trial(double noise_m) {
         const double knee[3] = {hip[0] + thigh_sagittal * std::sin(a), hip[1] - thigh_sagittal * std::cos(a),
                                 hip[2] + kLateral};
         const double ankle[3] = {knee[0] + kLeg * std::sin(b), knee[1] - kLeg * std::cos(b), knee[2]};
+        // a thigh marker kAlong down the thigh's line in the plane (u) and kAcross in front of it
+        // (n, u turned a quarter turn counterclockwise: (cos a, sin a)), 3 cm lateral
+        const double thi[3] = {hip[0] + kAlong * std::sin(a) + kAcross * std::cos(a),
+                               hip[1] - kAlong * std::cos(a) + kAcross * std::sin(a), hip[2] + 0.03};
         m.table.columns[0].push_back(t);
         std::size_t col = 1;
-        for (const double* p : {hip, knee, ankle})
+        for (const double* p : {hip, knee, ankle, thi})
             for (int i = 0; i < 3; ++i) m.table.columns[col++].push_back(p[i] + noise(noise_m));
     }
     return m;
@@ -101,7 +105,7 @@ TEST(StaticLength, TrialsThatCannotGiveALengthAreRefusedWithTheReason) {
     MarkerTable m = standing_trial(0);
     EXPECT_THROW_MSG(calc_static_length(m, "HIP", "TOE"), ArgumentError,
                      "calc_static_length(HIP, TOE): MarkerTable::column(): no marker 'TOE' in the marker file; its "
-                     "markers are: HIP, KNEE, ANKLE");
+                     "markers are: HIP, KNEE, ANKLE, THI");
     EXPECT_THROW_MSG(calc_static_length(m, "HIP", "HIP"), ArgumentError, "the marker 'HIP' is given twice");
     // a marker swapped with another for one frame: the distance jumps, and the time is named
     MarkerTable swapped = m;
@@ -112,6 +116,33 @@ TEST(StaticLength, TrialsThatCannotGiveALengthAreRefusedWithTheReason) {
     for (std::size_t k = 0; k < kFrames; ++k) m.table.columns[m.column("ANKLE", 1)][k] = std::numeric_limits<double>::quiet_NaN();
     EXPECT_THROW_MSG(calc_static_length(m, "KNEE", "ANKLE"), ArgumentError,
                      "no frame of the trial (200 frames) sees both 'KNEE' and 'ANKLE'");
+}
+
+TEST(StaticPlace, AThighMarkerIsPlacedAlongAndAcrossTheHipToKneeLine) {
+    // the rigid sway: 0.18 m down the line from the hip, 0.06 m in front of it, at every frame
+    const StaticPlace p = calc_static_place(standing_trial(0), "HIP", "KNEE", "THI");
+    EXPECT_EQ(p.marker, "THI");
+    EXPECT_EQ(p.frames, kFrames);
+    EXPECT_NEAR(p.along_m, kAlong, 1e-14);
+    EXPECT_NEAR(p.across_m, kAcross, 1e-14);
+    EXPECT_LT(p.sd_along_m, 1e-14);
+    EXPECT_LT(p.sd_across_m, 1e-14);
+    // measured from the knee towards the hip the line turns by half a turn: along is the
+    // distance from the knee, kThigh's projection in the plane less kAlong, across changes sign
+    const double thigh_in_plane = std::sqrt(kThigh * kThigh - kLateral * kLateral);
+    const StaticPlace q = calc_static_place(standing_trial(0), "KNEE", "HIP", "THI");
+    EXPECT_NEAR(q.along_m, thigh_in_plane - kAlong, 1e-14);
+    EXPECT_NEAR(q.across_m, -kAcross, 1e-14);
+}
+
+TEST(StaticPlace, MarkersGivenTwiceOrNeverSeenTogetherAreRefused) {
+    MarkerTable m = standing_trial(0);
+    EXPECT_THROW_MSG(calc_static_place(m, "HIP", "KNEE", "HIP"), ArgumentError, "a marker is given twice");
+    EXPECT_THROW_MSG(calc_static_place(m, "HIP", "KNEE", "TOE"), ArgumentError,
+                     "calc_static_place(HIP, KNEE, TOE): MarkerTable::column(): no marker 'TOE'");
+    for (std::size_t k = 0; k < kFrames; ++k) m.table.columns[m.column("THI", 0)][k] = std::numeric_limits<double>::quiet_NaN();
+    EXPECT_THROW_MSG(calc_static_place(m, "HIP", "KNEE", "THI"), ArgumentError,
+                     "no frame of the trial (200 frames) sees 'HIP', 'KNEE' and 'THI' together");
 }
 
 }  // namespace

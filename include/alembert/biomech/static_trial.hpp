@@ -5,6 +5,7 @@
 #include <string>
 
 #include "alembert/biomech/lab_files.hpp"
+#include "alembert/biomech/segment_angles.hpp"
 
 namespace alembert {
 
@@ -37,5 +38,26 @@ struct StaticLengthOptions {
 ///         one was swapped or slid).
 StaticLength calc_static_length(const MarkerTable& trial, const std::string& from, const std::string& to,
                                 const StaticLengthOptions& options = {});
+
+/// A marker's place in a planar segment's frame, measured on a trial.
+struct StaticPlace {
+    std::string marker{};
+    double along_m = 0;          ///< mean of (M - P) . u, m
+    double across_m = 0;         ///< mean of (M - P) . n, m
+    double sd_along_m = 0, sd_across_m = 0;  ///< their standard deviations over the frames, m
+    std::size_t frames = 0;      ///< the frames where the three markers are seen
+};
+
+/// Where marker M sits in a segment, in the plane `plane`, from a (static) trial: with P and D
+/// the segment's markers `from` and `to` (its joint centres), u the unit vector from P to D
+/// in the plane and n = u turned a quarter turn counterclockwise (about h x v, the axis at the
+/// viewer), along = (M - P) . u and across = (M - P) . n, each averaged over the frames where
+/// the three markers are seen. A model whose segment B has its origin at P, Bx> along u and
+/// By> along n puts M at along*Bx> + across*By> (a thigh stated hanging along -Thighy> from the
+/// hip, Thighx> forward, has u = -Thighy> and n = Thighx>: M at across*Thighx> - along*Thighy>).
+/// @throws alembert::ArgumentError as calc_static_length for the markers, for no frame that
+///         sees all three, or for P and D at one place.
+StaticPlace calc_static_place(const MarkerTable& trial, const std::string& from, const std::string& to,
+                              const std::string& marker, SagittalPlane plane = {});
 
 }  // namespace alembert
