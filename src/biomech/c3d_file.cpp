@@ -275,7 +275,8 @@ C3dFile read_c3d(const std::string& path) {
 
     const std::size_t points = in.u16(2);
     const std::size_t analog_words = in.u16(4);
-    const long first_frame = in.u16(6), last_frame = in.u16(8);
+    const long first_frame = in.u16(6);
+    long last_frame = in.u16(8);
     const double scale = in.f32(12);
     std::size_t data_block = in.u16(16);
     const std::size_t per_frame = in.u16(18);
@@ -294,7 +295,7 @@ C3dFile read_c3d(const std::string& path) {
         in.fail_at(16, "the data start at block " + std::to_string(data_block) + ", inside the header; the file "
                                                                                    "is damaged: export it again");
     out.float_data = scale < 0;
-    const std::size_t frames = static_cast<std::size_t>(last_frame - first_frame + 1);
+    std::size_t frames = static_cast<std::size_t>(last_frame - first_frame + 1);
     const double used_points = par.count("POINT:USED", static_cast<double>(points));
     if (used_points != static_cast<double>(points))
         out.notes.push_back(path + ": POINT:USED is " + format_csv_number(used_points) + " but the header stores " +
@@ -321,6 +322,33 @@ C3dFile read_c3d(const std::string& path) {
         in.fail_at(16, "the data start at block " + std::to_string(data_block) + " (byte " + std::to_string(data_start) +
                            "), past the end of the file (" + std::to_string(in.size()) +
                            " bytes); the file is truncated: export it again");
+    // the frame count: the header's (last - first + 1); where the data hold fewer, POINT:FRAMES
+    // if they hold that many, else the whole frames the data hold if the file ends with the
+    // last of them (some exporters leave the header's count wrong); a frame cut short is an error
+    const double param_frames = par.count("POINT:FRAMES", 0);
+    const std::size_t fit = frame_bytes > 0 ? (in.size() - data_start) / frame_bytes : frames;
+    const bool param_ok = param_frames >= 1 && param_frames <= 1e9 && param_frames == std::floor(param_frames);
+    if (frames > fit) {
+        const std::string claimed = path + ": the header gives " + std::to_string(frames) + " frames (" +
+                                    std::to_string(first_frame) + " to " + std::to_string(last_frame) + ")";
+        const bool by_param = param_ok && static_cast<std::size_t>(param_frames) <= fit;
+        const bool whole = fit >= 1 && data_start + fit * frame_bytes == in.size();
+        if (by_param || whole) {
+            frames = by_param ? static_cast<std::size_t>(param_frames) : fit;
+            last_frame = first_frame + static_cast<long>(frames) - 1;
+            const std::string range = std::to_string(first_frame) + " to " + std::to_string(last_frame);
+            out.notes.push_back(
+                by_param ? claimed + ", more than the data hold; POINT:FRAMES (" + std::to_string(frames) +
+                               ") is read, frames " + range
+                         : claimed + (param_ok ? " and POINT:FRAMES " + format_csv_number(param_frames) : std::string()) +
+                               ", but the file ends after " + std::to_string(frames) + " whole frames; these are read, "
+                               "frames " + range + " (if the file was cut short, copy or export it again)");
+        }
+    } else if (param_ok && param_frames != static_cast<double>(frames)) {
+        out.notes.push_back(path + ": POINT:FRAMES is " + format_csv_number(param_frames) + " but the header gives " +
+                            std::to_string(frames) + " frames (" + std::to_string(first_frame) + " to " +
+                            std::to_string(last_frame) + "); the header's count is read");
+    }
     if (frame_bytes > 0 && (in.size() - data_start) / frame_bytes < frames) {
         const std::size_t whole = (in.size() - data_start) / frame_bytes;
         in.fail_at(data_start + (whole + 1) * frame_bytes,

@@ -151,7 +151,7 @@ Table calc_c3d_ground_forces(const C3dFile& file, const std::string& source, std
         for (const char* s : {"_px", "_py", "_pz"}) out.add_column(prefix + s, "m");
         for (const char* s : {"_x", "_y", "_z"}) out.add_column(torque + s, "N m");
         for (std::size_t f = 0; f < frames; ++f) {
-            PlateVec F{}, P{}, T{};  // in the plate's axes: force on the plate, centre of pressure, free moment
+            PlateVec F{}, P{}, T{};  // in the plate's axes: the reaction on the body, its centre of pressure, free moment
             PlateVec base = S;      // the point P is measured from
             if (fp.type == 1) {
                 F = {ch[0][f], ch[1][f], ch[2][f]};
@@ -192,9 +192,9 @@ Table calc_c3d_ground_forces(const C3dFile& file, const std::string& source, std
             }
             const PlateVec F_lab = to_lab(F), T_lab = to_lab(T), P_rel = to_lab(P);
             for (int a = 0; a < 3; ++a) {
-                out.columns[col + static_cast<std::size_t>(a)].push_back(-F_lab[a]);  // the reaction on the body
+                out.columns[col + static_cast<std::size_t>(a)].push_back(F_lab[a]);
                 out.columns[col + 3 + static_cast<std::size_t>(a)].push_back(base[a] + P_rel[a]);
-                out.columns[col + 6 + static_cast<std::size_t>(a)].push_back(F[2] != 0 || fp.type == 1 ? -T_lab[a]
+                out.columns[col + 6 + static_cast<std::size_t>(a)].push_back(F[2] != 0 || fp.type == 1 ? T_lab[a]
                                                                                        : std::numeric_limits<double>::quiet_NaN());
             }
         }

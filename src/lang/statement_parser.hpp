@@ -98,6 +98,7 @@ std::vector<StatementSpec> kinematics_statements();   // statements_kinematics.c
 std::vector<StatementSpec> load_statements();         // statements_loads.cpp
 std::vector<StatementSpec> biomech_statements();      // statements_biomech.cpp
 std::vector<StatementSpec> lab_statements();          // statements_lab.cpp
+std::vector<StatementSpec> scale_statements();        // statements_scale.cpp
 std::vector<StatementSpec> constraint_statements();   // statements_kinematics.cpp
 std::vector<StatementSpec> equation_statements();     // interpreter_equations.cpp
 std::vector<StatementSpec> number_statements();       // interpreter_numbers.cpp

@@ -53,7 +53,7 @@ const std::vector<StatementSpec>& statements() {
         std::vector<StatementSpec> out;
         using Family = std::vector<StatementSpec> (*)();
         for (Family family : {include_statements, declaration_statements, kinematics_statements, load_statements,
-                              biomech_statements, lab_statements,
+                              biomech_statements, lab_statements, scale_statements,
                               constraint_statements, equation_statements, linearize_statements,
                               number_statements})
             for (StatementSpec& s : family()) out.push_back(std::move(s));

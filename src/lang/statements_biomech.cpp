@@ -24,6 +24,22 @@ void parse_segment(StatementParser& p, Statement& s) {
 
 // ---- meaning -----------------------------------------------------------------------------
 
+// the segment's length: a number with its unit (41.65 cm), or constants with values and their
+// units (L_T, from `scale L_T from "static.trc" between HIP and KNEE`)
+double segment_length(Interpreter::Impl& m, System& sys, const Quantity& q) {
+    const Value v = m.eval(*q.value);
+    const bool number = v.kind == Value::Kind::scalar && GiNaC::is_a<GiNaC::numeric>(GiNaC::evalf(v.s));
+    if (number || !q.unit.empty())
+        return m.number_of(q, Dimension::length(), "the segment's length", q.value->location);
+    const ex e = m.scalar(*q.value, Dimension::length(), "the segment's length");
+    const ex n = m.guard(q.value->location, [&] { return GiNaC::evalf(e.subs(sys.symbols().constant_values())); });
+    if (!GiNaC::is_a<GiNaC::numeric>(n) || !GiNaC::ex_to<GiNaC::numeric>(n).is_real())
+        throw ScriptError(q.value->location, "the segment's length " + to_string(e) + " has no value",
+                          "give a number with its unit (length 41.65 cm) or constants with values (constant L = 0.4 m; "
+                          "scale L from \"static.trc\" between HIP and KNEE)");
+    return GiNaC::ex_to<GiNaC::numeric>(n).to_double();
+}
+
 void run_segment(Interpreter::Impl& m, const Statement& s) {
     System& sys = m.model(s.location);
     const std::vector<Word>& names = s.lists.at("names");
@@ -48,7 +64,7 @@ void run_segment(Interpreter::Impl& m, const Statement& s) {
     const Quantity& mass_q = s.quantities.at("mass");
     const Quantity& length_q = s.quantities.at("length");
     const double body_mass = m.number_of(mass_q, Dimension::mass(), "the subject's mass", mass_q.value->location);
-    const double length = m.number_of(length_q, Dimension::length(), "the segment's length", length_q.value->location);
+    const double length = segment_length(m, sys, length_q);
     const SegmentParameters p = m.guard(row_word.location, [&] {
         return calc_segment_parameters(table, row_word.text, body_mass, length);
     });
@@ -86,7 +102,9 @@ std::vector<StatementSpec> biomech_statements() {
          .help = "a segment's mass, centre-of-mass distance and inertia from a published table (Winter, de Leva)",
          .forms = {{"`segment` *m*, *d*, *I* `from` `winter`/`de_leva_male`/`de_leva_female` *segment* `mass` *M* `length` *L*",
                     "segment m_B, d_B, I_B from winter thigh mass 56.7 kg length 41.65 cm",
-                    "`calc_segment_parameters` (declares the three constants; prints the table's row and source)"}},
+                    "`calc_segment_parameters` (declares the three constants; prints the table's row and source); "
+                    "the length a number with its unit or constants with values (`scale L_T from ...`, then "
+                    "`length L_T`)"}},
          .clauses = {"from", "length"},
          .parse = parse_segment, .run = run_segment},
     };

@@ -136,6 +136,45 @@ TEST(ReadC3d, AnalogChannelsAreOffsetScaledAndGenScaled) {
     }
 }
 
+// ---- frame counts ----------------------------------------------------------------------
+
+bool has_note(const C3dFile& f, const std::string& text) {
+    for (const std::string& n : f.notes)
+        if (n.find(text) != std::string::npos) return true;
+    return false;
+}
+
+TEST(ReadC3d, AHeaderThatOverstatesTheFramesIsReadByPointFramesOrTheWholeFramesTheFileEndsWith) {
+    // the 12 frames of 48 bytes (3 points of 4 floats), from frame 7, unpadded: the data end
+    // with the file after frame 18
+    C3dScratch s;
+    C3dSpec spec = marker_spec(C3dProcessor::intel, true);
+    spec.pad_data = false;
+    spec.header_frames = 1149, spec.param_frames = 1149;
+    const C3dFile whole = read_c3d(s.write("whole.c3d", spec));
+    expect_markers(whole, true);
+    EXPECT_TRUE(has_note(whole, "the header gives 1149 frames (7 to 1155) and POINT:FRAMES 1149, but the file ends "
+                                "after 12 whole frames; these are read, frames 7 to 18"));
+    // POINT:FRAMES right, the header wrong: POINT:FRAMES frames, as ezc3d takes them
+    spec.param_frames = 10;
+    const C3dFile by_param = read_c3d(s.write("param.c3d", spec));
+    ASSERT_EQ(by_param.markers.table.row_count(), 10u);
+    EXPECT_NEAR(by_param.markers.table.columns[0].back(), 15.0 / 120, 1e-15);
+    EXPECT_TRUE(has_note(by_param, "the header gives 1149 frames (7 to 1155), more than the data hold; POINT:FRAMES "
+                                   "(10) is read, frames 7 to 16"));
+    // padded to 1024 bytes of data: it ends 16 bytes into a 22nd frame, and both counts
+    // overstate it: truncated
+    spec.pad_data = true, spec.param_frames = 1149;
+    EXPECT_THROW_MSG(read_c3d(s.write("cut.c3d", spec)), ArgumentError,
+                     "the file holds 1149 frames (7 to 1155) of 48 bytes");
+    // the header right, POINT:FRAMES not: the header's count, and a note
+    spec.header_frames = 0, spec.param_frames = 30;
+    const C3dFile by_header = read_c3d(s.write("header.c3d", spec));
+    expect_markers(by_header, true);
+    EXPECT_TRUE(has_note(by_header, "POINT:FRAMES is 30 but the header gives 12 frames (7 to 18); the header's count "
+                                    "is read"));
+}
+
 // ---- force plates ------------------------------------------------------------------------
 
 // A 600 x 400 mm plate in a z-up lab, its surface in the floor Z = 0, centred at S (mm), its
@@ -159,14 +198,15 @@ struct BodyLoad {
     Vec G, Q;
     double tau;
 };
-// What a type 2 plate measures of it, in its axes: the load on the plate is -G at Q and the
-// couple -tau Z; its moment about the plate's origin O = S - R ORIGIN is (Q - O) x (-G) - tau Z.
-// Forces in N, moments in N mm.
+// What a type 2 plate records of it, in its axes: the reaction on the body, G at Q with the
+// couple tau Z (the convention of C3D files: a plate's Fz, along its downward z, is negative
+// under a standing subject); its moment about the plate's origin O = S - R ORIGIN is
+// (Q - O) x G + tau Z. Forces in N, moments in N mm.
 std::array<double, 6> type2_channels(const BodyLoad& b, const std::array<double, 3>& origin_mm) {
     const Vec O{(kSx - origin_mm[0]) / 1000, (kSy + origin_mm[1]) / 1000, origin_mm[2] / 1000};
-    const Vec F{-b.G[0], -b.G[1], -b.G[2]};
+    const Vec F = b.G;
     Vec M = cross3({b.Q[0] - O[0], b.Q[1] - O[1], b.Q[2] - O[2]}, F);
-    M[2] -= b.tau;
+    M[2] += b.tau;
     const Vec f = in_plate(F), m = in_plate(M);
     return {f[0], f[1], f[2], 1000 * m[0], 1000 * m[1], 1000 * m[2]};
 }
@@ -206,17 +246,18 @@ void expect_load(const Table& forces, const std::string& prefix, std::size_t row
 
 TEST(ReadC3dPlates, AType2PlateWorkedByHand) {
     // The plate centred at the lab's origin, ORIGIN (0, 0, -40) mm: the body pushed up by
-    // 800 N at (0.1, 0.05, 0) m. The plate feels (0, 0, -800) N in the lab, (0, 0, 800) N in its
-    // axes; about O = (0, 0, -0.04) m its moment is (0.1, 0.05, 0.04) x (0, 0, -800) =
-    // (-40, 80, 0) N m in the lab, (-40, -80, 0) in its axes. Then px = (oz Fx - My) / Fz =
-    // 80 / 800 = 0.1 and py = (Mx + oz Fy) / Fz = -0.05 in its axes: (0.1, 0.05) in the lab.
+    // 800 N at (0.1, 0.05, 0) m. The plate records that reaction, (0, 0, 800) N in the lab,
+    // (0, 0, -800) N in its axes (its z down); about O = (0, 0, -0.04) m its moment is
+    // (0.1, 0.05, 0.04) x (0, 0, 800) = (40, -80, 0) N m in the lab, (40, 80, 0) in its axes.
+    // Then px = (oz Fx - My) / Fz = -80 / -800 = 0.1 and py = (Mx + oz Fy) / Fz = 40 / -800 =
+    // -0.05 in its axes: (0.1, 0.05) in the lab.
     C3dScratch s;
     C3dSpec spec = plate_spec(1);
     add_channels(spec, "");
     C3dPlateSpec p = floor_plate(2, {0, 0, -40}, 1);
     p.corners = {300, -200, 0, -300, -200, 0, -300, 200, 0, 300, 200, 0};
     spec.plates = {p};
-    for (int j = 0; j < 10; ++j) spec.analog.push_back({0, 0, 800, -40000, -80000, 0});
+    for (int j = 0; j < 10; ++j) spec.analog.push_back({0, 0, -800, 40000, 80000, 0});
     const C3dFile f = read_c3d(s.write("hand.c3d", spec));
     expect_load(f.forces, "ground_force", 4, {{0, 0, 800}, {0.1, 0.05, 0}, 0}, 1e-9, 1e-12);
 }
@@ -291,7 +332,7 @@ TEST(ReadC3dPlates, Type3SensorsAndType1CentreOfPressureGiveBackTheLoad) {
     C3dSpec spec = plate_spec(1);
     const std::array<double, 3> o3{210, 160, -45};  // sensors at (±210, ±160) mm, 45 mm below
     const BodyLoad b3{{14, -9, 610}, {0.34, 0.62, 0}, 0.8}, b1{{-6, 11, 380}, {0.18, 0.79, 0}, -1.1};
-    // type 3: the load on the plate about the sensors' centre O = S + 0.045 m down, shared by
+    // type 3: the reaction about the sensors' centre O = S + 0.045 m down, shared by
     // four sensors 1 (+a, +b), 2 (-a, +b), 3 (-a, -b), 4 (+a, -b): the shear halves in y, the
     // x shear split so the pairs give Mz, the vertical loads so that they give Fz, Mx, My
     const std::array<double, 6> fm = type2_channels(b3, {0, 0, o3[2]});
@@ -303,9 +344,9 @@ TEST(ReadC3dPlates, Type3SensorsAndType1CentreOfPressureGiveBackTheLoad) {
     const std::vector<double> sensors{fx12, fx34, fy14, fy23, (Fz + u - v) / 4, (Fz + u + v) / 4, (Fz - u + v) / 4,
                                       (Fz - u - v) / 4};
     // type 1: Fx, Fy, Fz, the centre of pressure from S in the plate's axes (mm), Tz (N mm)
-    const Vec f1 = in_plate({-b1.G[0], -b1.G[1], -b1.G[2]});
+    const Vec f1 = in_plate(b1.G);
     const Vec p1 = in_plate({b1.Q[0] * 1000 - kSx, b1.Q[1] * 1000 - kSy, 0});
-    const std::vector<double> type1{f1[0], f1[1], f1[2], p1[0], p1[1], 1000 * b1.tau};  // -tau Z is +tau z
+    const std::vector<double> type1{f1[0], f1[1], f1[2], p1[0], p1[1], -1000 * b1.tau};  // tau Z is -tau z
     for (int c = 0; c < 14; ++c) {
         spec.analog_labels.push_back("C" + std::to_string(c + 1));
         spec.analog_units.push_back(c == 11 || c == 12 ? "mm" : c == 13 ? "Nmm" : "N");

@@ -51,8 +51,8 @@ float marker_mm(double t, int marker, int axis) {
 }
 
 // The plate in the floor Y = 0, centred at the lab's origin, 600 x 400 mm, its axes x = X,
-// y = Z, z = -Y (down), ORIGIN (0, 0, -40) mm: its channels are the load on the plate, -G at Q
-// with the couple -tau Y, in its axes, the moment about O = (0, -0.04, 0) m in N mm.
+// y = Z, z = -Y (down), ORIGIN (0, 0, -40) mm: its channels are the reaction on the body, G at
+// Q with the couple tau Y, in its axes, the moment about O = (0, -0.04, 0) m in N mm.
 C3dSpec c3d_trial() {
     C3dSpec s;
     s.rate = 100;
@@ -73,9 +73,9 @@ C3dSpec c3d_trial() {
         s.points.push_back({{marker_mm(t, 0, 0), marker_mm(t, 0, 1), marker_mm(t, 0, 2)},
                             {marker_mm(t, 1, 0), marker_mm(t, 1, 1), marker_mm(t, 1, 2)}});
         const Push b = push_at(t);
-        const double F[3] = {-b.G[0], -b.G[1], -b.G[2]}, r[3] = {b.Q[0], b.Q[1] + 0.04, b.Q[2]};
+        const double F[3] = {b.G[0], b.G[1], b.G[2]}, r[3] = {b.Q[0], b.Q[1] + 0.04, b.Q[2]};
         double M[3] = {r[1] * F[2] - r[2] * F[1], r[2] * F[0] - r[0] * F[2], r[0] * F[1] - r[1] * F[0]};
-        M[1] -= b.tau_y;
+        M[1] += b.tau_y;
         // the plate's components of a lab vector: (v.x, v.z, -v.y)
         s.analog.push_back({F[0], F[2], -F[1], 1000 * M[0], 1000 * M[2], -1000 * M[1]});
     }

@@ -44,6 +44,9 @@ struct C3dSpec {
     std::vector<std::vector<double>> analog{};  ///< [frame * analog_per_frame + s][channel]
     std::vector<C3dPlateSpec> plates{};
     std::array<int, 2> zero{0, 0};
+    long header_frames = 0;  ///< the header's frame count if not 0 (else the frames given)
+    long param_frames = 0;   ///< POINT:FRAMES if not 0 (else the frames given)
+    bool pad_data = true;    ///< pad the data to whole 512-byte blocks
 };
 
 class C3dWriter {
@@ -120,7 +123,7 @@ inline std::string c3d_bytes(const C3dSpec& s) {
     w.numbers(par, 1, "USED", 2, {}, {static_cast<double>(points)});
     w.numbers(par, 1, "SCALE", 4, {}, {s.floats ? -std::abs(s.scale) : s.scale});
     w.numbers(par, 1, "RATE", 4, {}, {s.rate});
-    w.numbers(par, 1, "FRAMES", 2, {}, {static_cast<double>(frames)});
+    w.numbers(par, 1, "FRAMES", 2, {}, {static_cast<double>(s.param_frames != 0 ? s.param_frames : static_cast<long>(frames))});
     w.strings(par, 1, "UNITS", {s.units}, s.units.size());
     if (points > 0) w.strings(par, 1, "LABELS", s.labels, 8);
     w.group(par, 2, "ANALOG");
@@ -170,7 +173,7 @@ inline std::string c3d_bytes(const C3dSpec& s) {
     w.i16(header, static_cast<long>(points));
     w.i16(header, static_cast<long>(channels * static_cast<std::size_t>(s.analog_per_frame)));
     w.i16(header, s.first_frame);
-    w.i16(header, s.first_frame + static_cast<long>(frames) - 1);
+    w.i16(header, s.first_frame + (s.header_frames != 0 ? s.header_frames : static_cast<long>(frames)) - 1);
     w.i16(header, 0);
     w.f32(header, s.floats ? -std::abs(s.scale) : s.scale);
     w.i16(header, static_cast<long>(2 + blocks));
@@ -198,7 +201,7 @@ inline std::string c3d_bytes(const C3dSpec& s) {
                 else w.i16(data, std::lround(v));
             }
     }
-    data.resize((data.size() + 511) / 512 * 512, '\0');
+    if (s.pad_data) data.resize((data.size() + 511) / 512 * 512, '\0');
     return header + section + data;
 }
 

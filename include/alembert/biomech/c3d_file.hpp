@@ -55,6 +55,9 @@ struct C3dFile {
 /// USED, LABELS (LABELS2, ...), UNITS, RATE; ANALOG USED, LABELS (LABELS2, ...), UNITS, RATE,
 /// SCALE, GEN_SCALE, OFFSET, FORMAT (SIGNED/UNSIGNED); FORCE_PLATFORM USED, TYPE, ZERO,
 /// CORNERS, ORIGIN, CHANNEL, CAL_MATRIX. A label named twice gets "_2", "_3" (a note says so).
+/// The frames are the header's first to last; where the data hold fewer and POINT:FRAMES fits
+/// them (an exporter that left the header's last frame wrong), POINT:FRAMES frames are read
+/// from the header's first, and a note says so.
 /// @throws alembert::ArgumentError "path: what is wrong (byte N); how to fix it" for a file
 ///         that cannot be opened, is not a C3D file, is truncated (the block or frame that
 ///         runs past its end), has a parameter block pointer past the end, an unknown processor
@@ -68,9 +71,10 @@ C3dFile read_c3d(const std::string& path);
 ///  - the plate's axes from its corners (corner 1 in the +x +y quadrant, 2 in -x +y, 3 in
 ///    -x -y, 4 in +x -y): x along (c1 + c4 - c2 - c3), z = x × (c1 + c2 - c3 - c4), y = z × x;
 ///    its surface centre S the corners' mean;
-///  - the channels, in the plate's axes, are the load the body applies to the plate (the
-///    plate's force F and moment M); each column of the table is the reaction on the body, -F,
-///    with the free moment -T, both taken into the lab's axes;
+///  - the channels, in the plate's axes, are the ground's reaction on the body (its force F
+///    and moment M), as capture systems write them and C3D readers (BTK, ezc3d, Visual3D) take
+///    them: under a standing subject Fz, along the plate's downward z, is negative; the table
+///    holds F and the free moment T taken into the lab's axes;
 ///  - type 2: Fx, Fy, Fz, Mx, My, Mz, the moment about the plate's origin O, ORIGIN the vector
 ///    from O to S in the plate's axes; type 4: the same after the calibration matrix
 ///    (CAL_MATRIX times the six channels, the channels' units read as those of its outputs); type 3 (eight channels Fx12, Fx34, Fy14, Fy23,
