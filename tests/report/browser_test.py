@@ -93,6 +93,7 @@ class Dom(html.parser.HTMLParser):
         self.raw = 0             # .tex-raw boxes (TeX left untypeset)
         self.text_backslashes = 0  # backslashes in visible text (TeX not rendered)
         self.plots = 0
+        self.view_controls = 0   # div#view-controls: the sliders that turn a spatial model's diagrams
         self.series = 0
         self.legend_boxes = 0
         self.anim = 0
@@ -187,6 +188,8 @@ class Dom(html.parser.HTMLParser):
             self.anim += 1
         if tag == "line" and "stick" in c and self.inside("svg", "anim"):
             self.anim_sticks += 1
+        if a.get("id") == "view-controls":
+            self.view_controls += 1
         if a.get("id") == "play":
             self.play = True
         if a.get("id") == "time-slider":
@@ -882,6 +885,10 @@ def examples(cli, source, work, browser, names):
         rows = len(data["roadmap"])
         drawn = [f for f in dom.fbds]
         with_diagram = sum(1 for row in data["roadmap"] if row["diagram"])
+        # the sliders that turn the diagrams only where a spatial model has diagrams to turn
+        check(dom.view_controls == (1 if with_diagram and not data["geometry"]["planar"] else 0),
+              "%s: sliders to turn the diagrams where there are spatial diagrams (%d sliders' boxes, %d diagrams)"
+              % (name, dom.view_controls, with_diagram))
         check(dom.rows == rows and len(drawn) == with_diagram and dom.constraint_rows == rows - with_diagram,
               "%s: one free-body diagram per road-map row (%d rows, %d diagrams, %d constraint rows)"
               % (name, rows, len(drawn), dom.constraint_rows))

@@ -1021,11 +1021,12 @@
     while (main.firstChild) main.removeChild(main.firstChild);
     el("h1", {}, main, data.title);
     el("p", {"class": "note subtitle"}, main, "Alembert report");
-    if (!data.geometry.planar) {
-      // a spatial model: sliders turn the drawings
+    if (!data.geometry.planar && data.roadmap.some(function (row) { return row.diagram; })) {
+      // a spatial model's free-body diagrams: sliders turn them (none where there are none:
+      // the 3D view is turned by dragging)
       var turn = el("div", {"class": "controls", id: "view-controls"}, main);
       [["turn", -3.1416, 3.1416], ["tilt", -1.5, 1.5]].forEach(function (c) {
-        var lab = el("label", {}, turn, c[0] + " ");
+        var lab = el("label", {}, turn, c[0] + " the diagrams ");
         var input = el("input", {type: "range", min: c[1], max: c[2], step: 0.01, value: view[c[0]], id: "view-" + c[0]}, lab);
         input.addEventListener("input", function () { view[c[0]] = Number(input.value); redrawDiagrams(data); });
       });
