@@ -907,8 +907,8 @@ std::string report_detail::render_json(const ReportContent& c,
         .add("notes", str_arr(c.notes))
         .add("model", model_json(c));
     o.add("configuration", arr(config))
-        .add("configuration_data", arr(config_data))
         .add("configuration_source", str(c.configuration_source))
+        .add("configuration_data", arr(config_data))
         .add("closure", arr(closure))
         .add("geometry", geometry)
         .add("roadmap", arr(rows));
