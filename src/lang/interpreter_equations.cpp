@@ -397,7 +397,8 @@ void Interpreter::Impl::methods(const Statement& s) {
     print_equations(n.text, eqs, accelerations);
 }
 
-void Interpreter::Impl::remember_solved_configuration(const exmap& at, const std::vector<ex>& xs,
+void Interpreter::Impl::remember_solved_configuration(const SymbolTable& st, const exmap& at,
+                                                       const std::vector<ex>& xs,
                                                        const std::vector<double>& values, int line) {
     exmap found;
     for (const auto& [x, v] : at)
@@ -405,6 +406,12 @@ void Interpreter::Impl::remember_solved_configuration(const exmap& at, const std
     for (std::size_t i = 0; i < xs.size() && i < values.size(); ++i)
         if (is_coordinate(xs[i], 0)) found[xs[i]] = values[i];
     if (found.empty()) return;
+    // with the state's rates and specified quantities the solve took (a push's F, a speed)
+    for (const auto& [x, v] : at)
+        if (!found.count(x) && st.owns(x) &&
+            (st.kind(x) == SymbolKind::specified ||
+             (st.kind(x) == SymbolKind::variable && st.derivative_order(x) > 0)))
+            found[x] = v;
     solved_configuration = std::move(found);
     solved_line = line;
     solved_after_histories = histories.size();
@@ -521,7 +528,7 @@ void Interpreter::Impl::solve(const Statement& s) {
         }, "try another guess, nearer the solution you want");
         for (std::size_t i = 0; i < xs.size(); ++i) out += format_value(printed[i], q.values[i]) + "\n";
         keep_values(std::vector<ex>(q.values.begin(), q.values.end()));
-        remember_solved_configuration(at, xs, q.values, s.location.line);
+        remember_solved_configuration(table, at, xs, q.values, s.location.line);
     } else {
         // with values, rows that are not linear together may still be solved one block after
         // another (a friction's |Fn| is a number once the row of Fn is solved)
@@ -562,7 +569,7 @@ void Interpreter::Impl::solve(const Statement& s) {
             std::vector<ex> numbers;
             for (std::size_t i = 0; i < xs.size(); ++i) numbers.push_back(x(static_cast<Eigen::Index>(i)));
             keep_values(numbers);
-            remember_solved_configuration(at, {}, {}, s.location.line);
+            remember_solved_configuration(table, at, {}, {}, s.location.line);
         } else {
             SymbolicSolveOptions options;
             if (s.quantities.count("limit")) {

@@ -185,9 +185,9 @@ struct Interpreter::Impl {
     /// What solve, evaluate and linearize printed, in run order, for the report.
     std::vector<ReportResult> results{};
     /// The coordinates the last solve found or was given (its `at` values and the
-    /// coordinates solved for), where it was, and how many histories were recorded before it:
-    /// the report draws its diagrams there unless a later motion or the report's `at` says
-    /// otherwise.
+    /// coordinates solved for) with the rates and specified quantities its `at` gives, where it
+    /// was, and how many histories were recorded before it: the report draws its diagrams
+    /// there unless a later motion or the report's `at` says otherwise.
     exmap solved_configuration{};
     int solved_line = 0;
     std::size_t solved_after_histories = 0;
@@ -282,8 +282,10 @@ struct Interpreter::Impl {
                         const Table& table, const MotionSamples* motion,
                         const exmap& first_row_data = {});
     /// Keeps the coordinates a solve was given (`at`) or found (`xs`, `values`) for the
-    /// report's diagrams.
-    void remember_solved_configuration(const exmap& at, const std::vector<ex>& xs,
+    /// report's diagrams, with the rates and specified quantities its `at` gives (symbols of
+    /// `st`).
+    void remember_solved_configuration(const SymbolTable& st, const exmap& at,
+                                       const std::vector<ex>& xs,
                                        const std::vector<double>& values, int line);
     ex quantity_expression(const Quantity& q, const Dimension& expected, const std::string& what);
     bool is_coordinate(const ex& x, int order);

@@ -8,6 +8,7 @@
 
 #include "alembert/eom/statics.hpp"
 #include "alembert/lang/equation_units.hpp"
+#include "alembert/lang/units.hpp"
 #include "interpreter_impl.hpp"
 
 namespace alembert::lang {
@@ -176,7 +177,13 @@ std::string Interpreter::Impl::write_report_to(const std::string& dir, const exm
         }
     }
     // the configuration of the diagrams: as given, else where the later of the last solve and
-    // the first motion puts the model, else the initial values; then the loops closed
+    // the first motion puts the model, else the initial values; then the loops closed. With
+    // it the rates and specified quantities that state gives (the loads that need them are
+    // drawn with their values there; those it does not give, with none): the initial state's
+    // rates (0 where the script gives none, as simulate starts), the solve's `at` values, the
+    // data the motion's run read at its first row
+    for (const TimeVariable& q : c.coordinates)
+        for (int k = 1; k < q.order(); ++k) c.configuration[q.d(k)] = 0;
     for (const auto& [x, v] : numbers.initial) c.configuration[x] = v;
     c.configuration_source = "the initial values";
     auto motion = std::find_if(histories.begin(), histories.end(),
@@ -185,10 +192,23 @@ std::string Interpreter::Impl::write_report_to(const std::string& dir, const exm
         !solved_configuration.empty() &&
         (motion == histories.end() ||
          solved_after_histories > static_cast<std::size_t>(motion - histories.begin()));
+    const auto is_rate = [&](const ex& x) {
+        return std::any_of(c.coordinates.begin(), c.coordinates.end(), [&](const TimeVariable& q) {
+            for (int k = 1; k <= q.order(); ++k)
+                if (x.is_equal(q.d(k))) return true;
+            return false;
+        });
+    };
+    const auto keep_coordinates = [&](const exmap& also) {
+        for (auto it = c.configuration.begin(); it != c.configuration.end();)
+            it = is_rate(it->first) && !also.count(it->first) ? c.configuration.erase(it) : std::next(it);
+    };
     if (solved_last) {
+        keep_coordinates(solved_configuration);  // the solve's state has its own rates
         for (const auto& [x, v] : solved_configuration) c.configuration[x] = v;
         c.configuration_source = "where solve at line " + std::to_string(solved_line) + " puts it";
     } else if (motion != histories.end()) {
+        keep_coordinates({});  // the motion's rates are not the initial state's
         for (std::size_t k = 0; k < motion->coordinates.size(); ++k)
             if (!motion->motion[k].empty())
                 c.configuration[motion->coordinates[k].symbol()] = motion->motion[k].front();
@@ -202,16 +222,25 @@ std::string Interpreter::Impl::write_report_to(const std::string& dir, const exm
                                      [&](const TimeVariable& q) { return configuration.count(q.symbol()); });
         c.configuration_source = all ? "given with report at"
                                      : "given with report at, the other coordinates from " + c.configuration_source;
-        // drawn at no row of the motion: its data (a plate's) are not those of this configuration
-        if (all && !solved_last && motion != histories.end())
-            for (const auto& [x, v] : motion->first_row_data) c.configuration.erase(x);
+        // drawn at no state of the run: the rates and data (a plate's) of the state the other
+        // source gives are not those of this configuration
+        if (all)
+            for (auto it = c.configuration.begin(); it != c.configuration.end();)
+                it = !is_coordinate(it->first, 0) && !configuration.count(it->first)
+                         ? c.configuration.erase(it)
+                         : std::next(it);
     }
     close_loops(sys, c.coordinates, configuration, c.configuration, c.configuration_source);
     for (const auto& [x, v] : configuration) c.configuration[x] = v;
+    const SymbolTable& st = sys.symbols();
     for (const auto& [name, u] : units)
         if (u.display) {
             c.units[name] = u.display->text;
             c.unit_scales[name] = u.display->scale;
+        } else if (u.dim.known && !u.dim.is_none()) {
+            // a data symbol declared by its dimension (a plate's chair_Fx): shown in SI
+            if (st.contains(name) && st.kind(st.symbol(name)) == SymbolKind::specified)
+                c.units[name] = si_unit(u.dim);
         }
     // a coordinate declared without a unit that turns a frame is an angle: shown in degrees,
     // as a reader measures a joint, not in radians

@@ -126,6 +126,25 @@ bool Evaluation::places(const Point* p) const {
     return places_.emplace(p, placed).first->second;
 }
 
+bool Evaluation::gives(const Load& l) const {
+    auto it = gives_.find(&l);
+    if (it != gives_.end()) return it->second;
+    bool given = true;
+    try {
+        const SymbolTable& st = sys.symbols();
+        const Col3 c = l.vector.components_in(sys.newtonian());
+        for (int k = 0; k < 3 && given; ++k)
+            for (const ex& s : symbols_of(c[k]))
+                if (st.owns(s) && !given_.count(s) &&
+                    (st.kind(s) == SymbolKind::specified ||
+                     (st.kind(s) == SymbolKind::variable && st.derivative_order(s) > 0)))
+                    given = false;
+    } catch (const Error&) {
+        given = false;  // not expressible in N
+    }
+    return gives_.emplace(&l, given).first->second;
+}
+
 WeightLabel weight_label(const System& sys, const Evaluation& ev, const Body& b) {
     // the gravity constant: gravity's one component in N (its sign made positive at the
     // configuration), else the one constant every component holds, else "g"
@@ -182,12 +201,17 @@ std::vector<DiagramLoad> diagram_loads(const System& sys, const Evaluation& ev,
         d.at = torque ? torque_point(sys, l.on) : l.point;
         d.on = l.on;
         d.placed = ev.places(d.at);
-        d.vector = ev.load_vector(l);
+        // the load's vector with what the configuration does not give taken as 0: shown only
+        // where the configuration gives it; else it only tells that the load's part in the
+        // equation is not zero everywhere
+        const std::vector<double>& at_configuration = ev.load_vector(l);
         const std::vector<ex> measures = unknown_measures(sys, l.vector);
         d.unknown = !measures.empty();
+        d.given = d.unknown || ev.gives(l);
+        if (d.given) d.vector = at_configuration;
         if (!d.unknown && !(norm3(d.vector) > 0)) d.sense = positive_sense(sys, ev, l.vector);
         d.role = d.unknown ? unknown_role(measures)
-                 : known_load_appears(sys, ev, r, u, torque, d.at, l.vector, d.vector)
+                 : known_load_appears(sys, ev, r, u, torque, d.at, l.vector, at_configuration)
                      ? LoadRole::known
                      : LoadRole::drops_out;
         loads.push_back(std::move(d));

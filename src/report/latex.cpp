@@ -19,18 +19,22 @@ std::string latex_name(const std::string& name) {
     std::size_t end = name.size();
     while (end > 0 && name[end - 1] == '\'') --end;
     std::string base = name.substr(0, end), primes = name.substr(end);
-    std::string out;
+    // the first underscore starts the subscript; later ones are the name's own characters
+    // (ankle_angle_l: ankle_{angle\_l}, not a subscript's subscript)
     std::size_t us = base.find('_');
-    if (us != std::string::npos && us > 0 && us + 1 < base.size())
-        out = base.substr(0, us) + "_{" + base.substr(us + 1) + "}";
-    else
-        out = base;
+    const bool subscript = us != std::string::npos && us > 0 && us + 1 < base.size();
     // TeX specials other than the subscript are escaped
     std::string safe;
-    for (char c : out) {
-        if (c == '#' || c == '$' || c == '%' || c == '&') safe += '\\';
+    for (std::size_t i = 0; i < base.size(); ++i) {
+        const char c = base[i];
+        if (subscript && i == us) {
+            safe += "_{";
+            continue;
+        }
+        if (c == '#' || c == '$' || c == '%' || c == '&' || c == '_') safe += '\\';
         safe += c;
     }
+    if (subscript) safe += "}";
     if (!primes.empty()) safe = "{" + safe + "}" + primes;
     return safe;
 }

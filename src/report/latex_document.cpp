@@ -352,7 +352,9 @@ std::string tikz_diagram(const System& sys, const Evaluation& ev,
         }
     const std::vector<DiagramLoad> loads = diagram_loads(sys, ev, r);
     bool own_load = false, drops = false, held = false;
-    std::string zero, unplaced;  // the loads zero here; those at a point not placed here
+    // the loads zero here; those whose value this configuration does not give; those at a
+    // point not placed here
+    std::string zero, not_given, unplaced;
     for (const DiagramLoad& l : loads) {
         if (!l.placed) {
             unplaced += (unplaced.empty() ? "" : ", ") + tex_text(l.label) + " at " + tex_text(l.at->name());
@@ -373,11 +375,13 @@ std::string tikz_diagram(const System& sys, const Evaluation& ev,
         own_load = own_load || l.role == LoadRole::own;
         drops = drops || l.role == LoadRole::drops_out;
         held = held || l.role == LoadRole::held;
-        // a known load zero here (a damper at rest): along its positive sense, labelled zero
+        // a known load zero here (a damper at rest), or whose value this configuration does
+        // not give: along its positive sense, labelled zero (or with no value)
         const std::vector<double>& v = l.sense.empty() ? l.vector : l.sense;
-        if (!l.sense.empty()) zero += (zero.empty() ? "" : ", ") + tex_text(l.label);
+        std::string& listed = l.given ? zero : not_given;
+        if (!l.sense.empty() || !l.given) listed += (listed.empty() ? "" : ", ") + tex_text(l.label);
         const std::string label = (l.tex.empty() ? tex_text(l.label) : "$" + l.tex + "$") +
-                                  (l.sense.empty() ? "" : " $= 0$");
+                                  (l.sense.empty() || !l.given ? "" : " $= 0$");
         const std::string text_style =
             colour + (l.role == LoadRole::own ? ", font=\\scriptsize\\bfseries" : "") +
             (l.role == LoadRole::drops_out ? ", text opacity=0.7" : "");
@@ -494,6 +498,8 @@ std::string tikz_diagram(const System& sys, const Evaluation& ev,
                             : "square to $\\hat u$") +
                        ").";
         if (!zero.empty()) *legend += " Zero at this configuration, drawn in its positive sense: " + zero + ".";
+        if (!not_given.empty())
+            *legend += " Value not given at this configuration, drawn in its positive sense: " + not_given + ".";
         if (!unplaced.empty())
             *legend += " Not drawn, acting where this configuration does not say: " + unplaced + ".";
     }

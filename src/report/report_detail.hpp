@@ -92,6 +92,11 @@ struct Evaluation {
     /// configuration leaves out (a force plate's centre of pressure, which its record gives
     /// only where the diagrams are drawn at a row of the motion it was read with). Once per point.
     bool places(const Point* p) const;
+    /// Whether the configuration gives `l`'s value: its vector holds no specified quantity
+    /// and no rate (q', q'', ...) the configuration leaves out (a force plate's free moment
+    /// drawn at `report at` angles, whose record gives it only at its own rows; a damper
+    /// where the configuration gives no speed). Once per load.
+    bool gives(const Load& l) const;
     /// The value of `e`, or NaN if it needs what is not known.
     double at(const ex& e) const {
         try {
@@ -132,6 +137,7 @@ struct Evaluation {
 private:
     GiNaC::exset given_;
     mutable std::map<const Point*, bool> places_;
+    mutable std::map<const Load*, bool> gives_;
     // every intermediate evaluated once over all the page's expressions (the values are fixed)
     std::unique_ptr<SymbolTable::EvaluationMemo> memo_;
     mutable std::map<const Point*, std::vector<double>> positions_;
@@ -142,7 +148,20 @@ private:
 /// those of them its configuration places (Evaluation::places).
 std::vector<const Point*> placed_points(const System& sys, const Evaluation* ev = nullptr);
 
-/// "qA = 60 deg, qB = -41.6 deg (the configuration solve found at line 31)"
+/// A rate or specified quantity the configuration gives (a speed, a push, a plate's force at
+/// a motion's first row): its value in SI and as shown, in its unit.
+struct ConfigurationDatum {
+    std::string name;
+    double si = 0, shown = 0;
+    std::string unit;
+};
+
+/// The configuration's rates (the coordinates' order) and specified quantities (the symbol
+/// table's order), those it gives.
+std::vector<ConfigurationDatum> configuration_data(const ReportContent& c);
+
+/// "qA = 60 deg, qB = -41.6 deg (the configuration solve found at line 31)", its data after
+/// the coordinates ("x = 0.6 m, with x' = 0 m/s, F = 10 N (...)")
 std::string configuration_words(const ReportContent& c);
 
 /// A stick of the drawing: `body`'s (empty: the ground's) from point `from` to point `to`.
@@ -187,12 +206,16 @@ struct DiagramLoad {
     std::string tex{};        ///< the label as TeX math (a weight's), empty: the label as text
     const Point* at = nullptr;
     const Body* on = nullptr;      ///< the body of S it acts on
-    std::vector<double> vector{};  ///< in N at the configuration (empty for a joint)
-    /// A known load that is zero at the configuration (a damper at rest, a push of 0 N there):
-    /// its positive sense in N, with its rates and specified quantities taken as 1, to draw
-    /// its arrow along at its point (labelled as zero there); empty otherwise, or if that is
-    /// zero too
+    std::vector<double> vector{};  ///< in N at the configuration (empty for a joint, or not given)
+    /// A known load that is zero at the configuration (a damper at rest, a push of 0 N there),
+    /// or whose value the configuration does not give (`given` false): its positive sense in
+    /// N, with its rates and specified quantities taken as 1, to draw its arrow along at its
+    /// point (labelled as zero there, or with no value); empty otherwise, or if that is zero too
     std::vector<double> sense{};
+    /// False for a known load whose value the configuration does not give
+    /// (Evaluation::gives): `vector` is empty, the label holds no value, and the diagram's
+    /// legend says the value is not given at this configuration
+    bool given = true;
     /// False for a load at a point the configuration does not place (Evaluation::places): it
     /// is not drawn, and the diagram's legend says so
     bool placed = true;

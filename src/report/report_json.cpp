@@ -111,6 +111,32 @@ double shown_value(const ReportContent& c, const std::string& name, double si) {
 
 namespace report_detail {
 
+std::vector<ConfigurationDatum> configuration_data(const ReportContent& c) {
+    std::vector<ConfigurationDatum> out;
+    const auto add = [&](const ex& x, const std::string& name, const std::string& unit, double scale) {
+        auto it = c.configuration.find(x);
+        if (it == c.configuration.end() || !GiNaC::is_a<GiNaC::numeric>(it->second)) return;
+        const double si = GiNaC::ex_to<GiNaC::numeric>(it->second).to_double();
+        out.push_back({name, si, scale > 0 ? si / scale : si, unit});
+    };
+    // the rates in the coordinates' units per second (qA' in deg/s where qA is in deg)
+    for (const TimeVariable& q : c.coordinates)
+        for (int k = 1; k <= q.order(); ++k) {
+            const std::string unit = unit_of(c, q.name());
+            auto scale = c.unit_scales.find(q.name());
+            add(q.d(k), q.name() + std::string(static_cast<std::size_t>(k), '\''),
+                unit.empty() ? "" : unit + (k == 1 ? "/s" : "/s^" + std::to_string(k)),
+                scale == c.unit_scales.end() ? 1.0 : scale->second);
+        }
+    const SymbolTable& st = c.system->symbols();
+    for (const ex& x : st.symbols(SymbolKind::specified)) {
+        const std::string name = st.name(x);
+        auto scale = c.unit_scales.find(name);
+        add(x, name, unit_of(c, name), scale == c.unit_scales.end() ? 1.0 : scale->second);
+    }
+    return out;
+}
+
 // "qA = 60 deg, qB = -41.6 deg (the configuration solve found at line 31)"
 std::string configuration_words(const ReportContent& c) {
     std::string out;
@@ -124,6 +150,10 @@ std::string configuration_words(const ReportContent& c) {
                (unit.empty() ? "" : " " + unit);
     }
     if (out.empty()) out = "the model's configuration";
+    std::string data;
+    for (const ConfigurationDatum& d : configuration_data(c))
+        data += (data.empty() ? "" : ", ") + d.name + " = " + num(d.shown) + (d.unit.empty() ? "" : " " + d.unit);
+    if (!data.empty()) out += ", with " + data;
     if (!c.configuration_source.empty()) out += " (" + c.configuration_source + ")";
     return out;
 }
@@ -303,6 +333,7 @@ std::string diagram_json(const System& sys, const Evaluation& ev, const RoadmapR
         o.add("role", str(role_word(l.role)));
         if (!l.sense.empty()) o.add("sense", num_arr(l.sense));
         if (!l.placed) o.add("placed", "false");
+        if (!l.given) o.add("given", "false");
         loads.push_back(o.done());
     }
     for (const Point* p : diagram_points(sys, r, drawn)) points.push_back(p->name());
@@ -834,6 +865,14 @@ std::string report_detail::render_json(const ReportContent& c,
                              .add("unit", str(unit_of(c, q.name())))
                              .done());
     }
+    std::vector<std::string> config_data;
+    for (const ConfigurationDatum& d : configuration_data(c))
+        config_data.push_back(Obj()
+                                  .add("name", str(d.name))
+                                  .add("value", num(d.si))
+                                  .add("shown", num(d.shown))
+                                  .add("unit", str(d.unit))
+                                  .done());
     // how far the drawn configuration is from closing each loop the model declares
     std::vector<std::string> closure;
     for (const Constraint& k : sys.constraints())
@@ -869,6 +908,7 @@ std::string report_detail::render_json(const ReportContent& c,
         .add("model", model_json(c));
     o.add("configuration", arr(config))
         .add("configuration_source", str(c.configuration_source))
+        .add("configuration_data", arr(config_data))
         .add("closure", arr(closure))
         .add("geometry", geometry)
         .add("roadmap", arr(rows));

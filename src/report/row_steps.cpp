@@ -311,7 +311,8 @@ std::string brute_force_words(const BruteForceCount& b, std::size_t rows) {
     std::string asked;
     for (std::size_t k = 0; k < b.asked.size(); ++k) asked += (k ? ", " : "") + b.asked[k];
     std::string s = std::string("Free-body diagrams of every body separately (brute-force Newton\u2013Euler, ") +
-                    (n.planar ? "planar" : "spatial") + "): " + bodies + " give " +
+                    (n.planar ? "planar" : "spatial") + "): " + bodies +
+                    (n.rigid_bodies + n.particles == 1 ? " gives " : " give ") +
                     count(n.equations + b.constraint_rows, "equation", "equations") + " (" + rule + ") in " +
                     count(n.unknowns, "unknown", "unknowns") + ": " +
                     count(n.force_reactions + n.torque_reactions, "joint-reaction component",

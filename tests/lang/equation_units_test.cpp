@@ -153,6 +153,18 @@ TEST(EquationUnits, TheReportOfAScriptShowsEachRowsUnits) {
               std::string::npos);
 }
 
+TEST(EquationUnits, TheBruteForceCountOfOneBodyIsASentence) {
+    // one particle in the plane: its two equations of motion, said of the one body
+    test::TempDir dir;
+    test::ScriptInDir r(dir.path);
+    r.run("newtonian N\nparticle P\nconstant m = 2 kg\nvariable x'' m\nunknown F N\n"
+          "translate P from N_o by x*Nx>\nmass P = m\nforce push on P = F*Nx>\n"
+          "roadmap E for x''\nreport to \"rep\"\n");
+    const std::string page = test::read_text(dir.path / "rep" / "index.html");
+    EXPECT_NE(page.find("(brute-force Newton\u2013Euler, planar): 1 particle gives 2 equations (2 per particle)"),
+              std::string::npos);
+}
+
 TEST(EquationUnits, AScriptWithoutUnitsSaysNotChecked) {
     test::TempDir dir;
     test::ScriptInDir r(dir.path);

@@ -156,6 +156,47 @@ TEST(ReportPage, ConstantsAndTheConfigurationAreShownInTheUnitsTheScriptDeclared
     EXPECT_NE(page.find("\"configuration_source\":\"the initial values\""), std::string::npos);
 }
 
+TEST(ReportPage, TheLoadsAreDrawnWithTheValuesTheSolveTookAndNoneItDidNot) {
+    // a block on a spring (k = 50 N/m, L0 = 0.4 m) and a damper, pushed by F: solve takes
+    // x' = 0 and F = 10 N, and finds x = L0 + F/k = 0.6 m; there the spring pulls back with
+    // k (x - L0) = 10 N, the push is 10 N along Nx, the damper's c x' = 0
+    const std::string model =
+        "newtonian N\nparticle Q\nconstant m = 2 kg, k = 50 N/m, c = 3 N*s/m, L0 = 0.4 m\n"
+        "variable x'' m\nspecified F N\ntranslate Q from N_o by x*Nx>\nmass Q = m\n"
+        "spring k1 between Q and N_o stiffness k length L0\ndamper c1 between Q and N_o coefficient c\n"
+        "force push on Q = F*Nx>\nkane K for x\n"
+        "solve K for x guess x = 0.5 m at x' = 0, x'' = 0, F = 10 N\n";
+    TempDir dir;
+    ScriptInDir r(dir.path);
+    r.run(model + "report to \"rep\"\n");
+    std::string page = read_text(dir.path / "rep" / "index.html");
+    EXPECT_NE(page.find("\"label\":\"push\",\"at\":\"Q\",\"on\":\"Q\",\"vector\":[10,0,0],"), std::string::npos);
+    EXPECT_NE(page.find("\"label\":\"k1\",\"at\":\"Q\",\"on\":\"Q\",\"vector\":[-10,0,0],"), std::string::npos);
+    EXPECT_NE(page.find("\"label\":\"c1\",\"at\":\"Q\",\"on\":\"Q\",\"vector\":[0,0,0],"), std::string::npos);
+    EXPECT_EQ(page.find("\"given\":false"), std::string::npos);
+    EXPECT_NE(page.find("\"configuration_data\":[{\"name\":\"x'\",\"value\":0,\"shown\":0,\"unit\":\"m/s\"},"
+                        "{\"name\":\"x''\",\"value\":0,\"shown\":0,\"unit\":\"m/s^2\"},"
+                        "{\"name\":\"F\",\"value\":10,\"shown\":10,\"unit\":\"N\"}]"),
+              std::string::npos);
+    std::string tex = read_text(dir.path / "rep" / "roadmap.tex");
+    EXPECT_NE(tex.find("Drawn at x = 0.6 m, with x' = 0 m/s, x'' = 0 m/s\\textasciicircum{}2, F = 10 N (where solve at "
+                       "line 12 puts it)."),
+              std::string::npos);
+    // drawn at a chosen x, at no state of the run: neither F nor x' is given there, so the
+    // push and the damper have no value (not the 0 they would be evaluated at)
+    TempDir other;
+    ScriptInDir at(other.path);
+    at.run(model + "report at x = 0.5 m to \"rep\"\n");
+    page = read_text(other.path / "rep" / "index.html");
+    EXPECT_NE(page.find("\"label\":\"push\",\"at\":\"Q\",\"on\":\"Q\",\"vector\":[],"), std::string::npos);
+    EXPECT_NE(page.find("\"label\":\"c1\",\"at\":\"Q\",\"on\":\"Q\",\"vector\":[],"), std::string::npos);
+    EXPECT_NE(page.find("\"label\":\"k1\",\"at\":\"Q\",\"on\":\"Q\",\"vector\":[-5,0,0],"), std::string::npos);
+    EXPECT_NE(page.find("\"configuration_data\":[]"), std::string::npos);
+    tex = read_text(other.path / "rep" / "roadmap.tex");
+    EXPECT_EQ(tex.find("$= 0$"), std::string::npos);
+    EXPECT_NE(tex.find("Value not given at this configuration, drawn in its positive sense: c1, push."), std::string::npos);
+}
+
 TEST(ReportPage, LongResultLinesAreBrokenInTheLatexDocument) {
     // a result line longer than the page is continued on indented lines of at most 80
     // characters, so the verbatim block stays inside the margins

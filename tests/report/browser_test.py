@@ -93,6 +93,7 @@ class Dom(html.parser.HTMLParser):
         self.raw = 0             # .tex-raw boxes (TeX left untypeset)
         self.text_backslashes = 0  # backslashes in visible text (TeX not rendered)
         self.plots = 0
+        self.view_controls = 0   # div#view-controls: the sliders that turn a spatial model's diagrams
         self.series = 0
         self.legend_boxes = 0
         self.anim = 0
@@ -187,6 +188,8 @@ class Dom(html.parser.HTMLParser):
             self.anim += 1
         if tag == "line" and "stick" in c and self.inside("svg", "anim"):
             self.anim_sticks += 1
+        if a.get("id") == "view-controls":
+            self.view_controls += 1
         if a.get("id") == "play":
             self.play = True
         if a.get("id") == "time-slider":
@@ -583,6 +586,22 @@ def segment_meets_box(a, b, box):
     return False
 
 
+def data_symbols(vector, data):
+    """The names a load's vector (as the page's model table writes it) holds that are no
+    constant, unknown, coordinate, unit vector (Nx>) or function (sqrt): its rates (x') and
+    specified quantities (a push F, a plate's chair_Tz), whose values the configuration may
+    not give."""
+    model = data["model"]
+    fixed = set(c["name"] for c in model["constants"] + model["unknowns"] + model["coordinates"])
+    out = []
+    for m in re.finditer(r"(?<![A-Za-z0-9_.])([A-Za-z_][A-Za-z0-9_]*)('*)(>|\()?", vector):
+        name, primes, after = m.group(1), m.group(2), m.group(3)
+        if after or (not primes and name in fixed):
+            continue
+        out.append(name + primes)
+    return out
+
+
 def diagram_checks(browser, index, who):
     """Each free-body diagram as drawn, against the page's data: every load arrow acts on a body
     of S (its data attributes, checked against the model's tables) and starts or ends at its
@@ -614,7 +633,9 @@ def diagram_checks(browser, index, who):
     bodies = {b["name"]: b for b in data["model"]["bodies"]}
     unknowns = set(u["name"] for u in data["model"]["unknowns"])
     bad = {"on": [], "at": [], "overlap": [], "direction": [], "named": [], "weight": [], "own": [], "drops": [],
-           "zero": []}
+           "zero": [], "given": []}
+    # what the configuration gives: its coordinates, and the rates and data it lists
+    given = set(c["name"] for c in data["configuration"] + data.get("configuration_data", []))
     for row, d in zip(rows, drawn):
         dia, S, var = row["diagram"], set(row["diagram"]["system"]), row["variable"]
         vb = d["view"]
@@ -719,9 +740,27 @@ def diagram_checks(browser, index, who):
         # a known load zero here: drawn along its positive sense, labelled as zero, said in the legend
         texts_drawn = [l["text"] for l in d["labels"]]
         for spec in placed:
-            if spec["kind"] in ("force", "torque") and not spec["unknown"] and not any(spec["vector"]):
+            if spec["kind"] in ("force", "torque") and not spec["unknown"] and spec.get("given", True) \
+                    and not any(spec["vector"]):
                 if (spec["label"] + " = 0") not in texts_drawn or "zero" not in d["legend"]:
                     bad["zero"].append("%s: %s, zero here, not labelled so (%s)" % (var, spec["label"], d["legend"]))
+        # a known load whose value the configuration does not give (a specified quantity or a
+        # rate it leaves out): no value in the data, none in its label, and the legend says so;
+        # every other known load's vector is the model's at the configuration's values
+        for spec in dia["loads"]:
+            if spec["kind"] not in ("force", "torque") or spec["unknown"]:
+                continue
+            needs = [x for x in data_symbols(load_vector.get(spec["label"], ""), data) if x not in given]
+            if spec.get("given", True) == bool(needs):
+                bad["given"].append("%s: %s holds %s the configuration does not give, marked given %s"
+                                    % (var, spec["label"], needs, spec.get("given", True)))
+            if spec.get("given", True):
+                continue
+            valued = [t for t in texts_drawn if t.startswith(spec["label"] + " =")]
+            if spec["vector"] or (spec.get("placed", True) and (valued or spec["label"] not in texts_drawn
+                                                                 or "not-given" not in d["legend"])):
+                bad["given"].append("%s: %s, not given here, drawn with %s labelled %s (legend %s)"
+                                    % (var, spec["label"], spec["vector"], valued, d["legend"]))
         for load, spec in zip(d["loads"], placed):
             dashed = load["dash"] not in ("", "none")
             if (load["role"] == "drops") != dashed or (dashed and "drops" not in d["legend"]):
@@ -752,7 +791,8 @@ def diagram_checks(browser, index, who):
                        ("weight", "each weight labelled with its mass times g"),
                        ("own", "the row's own unknown drawn apart"),
                        ("drops", "loads the equation does not hold dashed, others not"),
-                       ("zero", "a known load zero at the configuration labelled = 0, the legend saying so")):
+                       ("zero", "a known load zero at the configuration labelled = 0, the legend saying so"),
+                       ("given", "a known load the configuration gives no value of labelled with none, the legend saying so")):
         check(not bad[what], "%s: %s (%d diagrams; %s)" % (who, text, len(drawn), bad[what][:3]))
 
 
@@ -845,6 +885,10 @@ def examples(cli, source, work, browser, names):
         rows = len(data["roadmap"])
         drawn = [f for f in dom.fbds]
         with_diagram = sum(1 for row in data["roadmap"] if row["diagram"])
+        # the sliders that turn the diagrams only where a spatial model has diagrams to turn
+        check(dom.view_controls == (1 if with_diagram and not data["geometry"]["planar"] else 0),
+              "%s: sliders to turn the diagrams where there are spatial diagrams (%d sliders' boxes, %d diagrams)"
+              % (name, dom.view_controls, with_diagram))
         check(dom.rows == rows and len(drawn) == with_diagram and dom.constraint_rows == rows - with_diagram,
               "%s: one free-body diagram per road-map row (%d rows, %d diagrams, %d constraint rows)"
               % (name, rows, len(drawn), dom.constraint_rows))
@@ -990,6 +1034,14 @@ def chair_unplaced(cli, source, work, browser):
     check(chair and all(l.get("placed") is False for l in chair) and "chair_CoP" not in names,
           "sit_to_stand_lab at report at: chair_CoP has no place and the chair's force is not drawn (%s)"
           % [(l["at"], l.get("placed")) for l in chair][:1])
+    # the free moment acts on B wherever it is drawn, but its value (chair_Tz) is the record's
+    # at its own rows: drawn with no value (diagram_checks: no "= 0", the legend says so)
+    moment = [l for row in data["roadmap"] if row["diagram"] for l in row["diagram"]["loads"]
+              if l["label"] == "chair free moment"]
+    check(moment and all(l.get("placed", True) and l.get("given") is False and not l["vector"] for l in moment)
+          and not data.get("configuration_data"),
+          "sit_to_stand_lab at report at: the chair's free moment drawn with no value, none given (%s; data %s)"
+          % ([(l.get("given"), l["vector"]) for l in moment][:1], data.get("configuration_data")))
     diagram_checks(browser, index, "sit_to_stand_lab at report at")
 
 

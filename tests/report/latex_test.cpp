@@ -19,6 +19,12 @@ TEST(Latex, SubscriptsPrimesFunctionsAndFractions) {
     EXPECT_EQ(to_latex(T - m * L), "-L \\, m_{A} + T_{A}");
     EXPECT_EQ(to_latex(GiNaC::pow(L, 2)), "L^{2}");
     EXPECT_EQ(to_latex(GiNaC::sqrt(L)), "\\sqrt{L}");
+    // a name of several words: the first underscore starts the subscript, the others are
+    // characters of it (one subscript, not a subscript's subscript)
+    EXPECT_EQ(to_latex(st.add_variable("ankle_angle_l", 2).symbol()), "ankle_{angle\\_l}");
+    EXPECT_EQ(to_latex(st.add_constant("a_b_c_d")), "a_{b\\_c\\_d}");
+    // a name that starts or ends with one has no subscript: every underscore is a character
+    EXPECT_EQ(to_latex(st.add_constant("_x")), "\\_x");
 }
 
 TEST(Latex, SameExpressionBuiltInAnyOrderPrintsTheSame) {

@@ -212,11 +212,55 @@ TEST(Report, AKnownLoadZeroAtTheConfigurationCarriesItsPositiveSense) {
     System& sys = s.m.system;
     const ex P = sys.symbols().add_specified("P").symbol();
     sys.add_force(sys.point("Ccm"), Vector(sys.newtonian(), Col3{-P, 0, 0}), "push");
+    s.content.configuration[P] = 0;
     const std::string json = render_report_json(s.content);
     // every row's S (T_A: {A, B, C}, T_B: {B, C}, T_C: {C}) holds C: the push on each diagram, 0 N
     // here, its sense -Nx
     EXPECT_EQ(count(json, "\"label\":\"push\",\"at\":\"Ccm\",\"on\":\"C\",\"vector\":[0,0,0]"), 3u);
     EXPECT_EQ(count(json, "\"sense\":[-1,0,0]"), 3u);
+    EXPECT_EQ(count(json, "\"given\":false"), 0u);
+    const std::string tex = render_report_latex(s.content);
+    EXPECT_EQ(count(tex, "{push $= 0$}"), 3u);
+    EXPECT_EQ(count(tex, "Zero at this configuration, drawn in its positive sense: push."), 3u);
+}
+
+// A known load whose value the configuration does not give (a specified push, a damper's
+// force where no speed is given) is drawn along its positive sense with no value: not the
+// 0 the evaluation would take for what it lacks, on the page and in TikZ alike.
+TEST(Report, AKnownLoadTheConfigurationGivesNoValueOfIsLabelledWithNone) {
+    SitToStand s;
+    System& sys = s.m.system;
+    const ex P = sys.symbols().add_specified("P").symbol();
+    sys.add_force(sys.point("Ccm"), Vector(sys.newtonian(), Col3{-P, 0, 0}), "push");
+    // a rotational damper on C (coefficient 2): -2 qC' about Nz
+    const ex qC1 = s.m.q[2].d(1);
+    sys.add_torque(sys.body("C"), Vector(sys.newtonian(), Col3{0, 0, -2 * qC1}), "damper");
+    std::string json = render_report_json(s.content);
+    EXPECT_EQ(count(json, "\"label\":\"push\",\"at\":\"Ccm\",\"on\":\"C\",\"vector\":[],"), 3u);
+    EXPECT_EQ(count(json, "\"label\":\"damper\",\"at\":\"C_o\",\"on\":\"C\",\"vector\":[],"), 3u);
+    EXPECT_EQ(count(json, "\"given\":false"), 6u);
+    EXPECT_EQ(count(json, "\"sense\":[-1,0,0]"), 3u);  // the push taken as 1
+    EXPECT_EQ(count(json, "\"sense\":[0,0,-2]"), 3u);  // qC' taken as 1
+    std::string tex = render_report_latex(s.content);
+    EXPECT_EQ(count(tex, "$= 0$"), 0u);
+    EXPECT_EQ(count(tex, "{push}"), 3u);
+    EXPECT_EQ(count(tex, "{damper}"), 3u);
+    EXPECT_EQ(count(tex, "Value not given at this configuration, drawn in its positive sense: push, damper."), 3u);
+    EXPECT_EQ(count(tex, "Zero at this configuration"), 0u);
+    // given: the push of 5 N along -Nx, the damper's -2 * 0.5 = -1 N*m about Nz
+    s.content.configuration[P] = 5;
+    s.content.configuration[qC1] = 0.5;
+    json = render_report_json(s.content);
+    EXPECT_EQ(count(json, "\"label\":\"push\",\"at\":\"Ccm\",\"on\":\"C\",\"vector\":[-5,0,0],"), 3u);
+    EXPECT_EQ(count(json, "\"label\":\"damper\",\"at\":\"C_o\",\"on\":\"C\",\"vector\":[0,0,-1],"), 3u);
+    EXPECT_EQ(count(json, "\"given\":false"), 0u);
+    // the values the configuration gives besides the coordinates, named on the page and in TikZ
+    EXPECT_NE(json.find("\"configuration_data\":[{\"name\":\"qC'\",\"value\":0.5,\"shown\":0.5,\"unit\":\"\"},"
+                        "{\"name\":\"P\",\"value\":5,\"shown\":5,\"unit\":\"\"}]"),
+              std::string::npos);
+    tex = render_report_latex(s.content);
+    EXPECT_EQ(count(tex, "Value not given"), 0u);
+    EXPECT_NE(tex.find(", with qC' = 0.5, P = 5"), std::string::npos);
 }
 
 TEST(Report, PointsArePlacedAtTheConfiguration) {

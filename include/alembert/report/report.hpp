@@ -78,6 +78,8 @@ struct ReportContent {
     /// missing are 0. Constants take their values from the model's symbol table. A point
     /// placed by a specified quantity missing here (a plate's centre of pressure out of the
     /// data's reach) has no place at the configuration: it is not drawn, nor the loads at it.
+    /// A known load whose vector holds a specified quantity or a rate missing here has no
+    /// value at the configuration: it is drawn along its positive sense, labelled with none.
     exmap configuration{};
     /// Where the configuration comes from, for the reader ("the configuration solve found at
     /// line 31", "the initial values"); empty: not said.

@@ -345,8 +345,9 @@
         anchor = [p[0] + 0.3 * arrowLength, p[1] + 0.03 * L];
         prefer = [1, 1];
       } else {
-        // a known load zero here (a damper at rest) along its positive sense, labelled zero
-        var u = unit2(project(load.vector)) || (load.sense && unit2(project(load.sense)));
+        // a known load zero here (a damper at rest), or whose value this configuration does
+        // not give, along its positive sense, labelled zero (or with no value)
+        var u = (load.vector.length ? unit2(project(load.vector)) : null) || (load.sense && unit2(project(load.sense)));
         if (u) {
           var tail = load.kind === "gravity" ? p : [p[0] - u[0] * arrowLength, p[1] - u[1] * arrowLength];
           var tipp = load.kind === "gravity" ? [p[0] + u[0] * arrowLength, p[1] + u[1] * arrowLength] : p;
@@ -358,7 +359,7 @@
           svg("circle", {cx: p[0], cy: p[1], r: 0.04 * L, "class": "shaft", fill: "none"}, lg);
         }
       }
-      label(load.label + (load.sense ? " = 0" : ""), anchor, prefer, "load-label " + load.kind + (load.unknown ? " unknown" : " known") + " role-" + role,
+      label(load.label + (load.sense && load.given !== false ? " = 0" : ""), anchor, prefer, "load-label " + load.kind + (load.unknown ? " unknown" : " known") + " role-" + role,
             {"data-label": load.label, "data-at": load.at});
     });
     // the about point O
@@ -443,11 +444,17 @@
       el("span", {"class": "swatch held"}, lh);
       el("span", {}, lh, "unknown the equation also holds: " + row.additional_unknowns.join(", "));
     }
-    var zero = dia.loads.filter(function (l) { return l.sense && l.placed !== false; });
+    var zero = dia.loads.filter(function (l) { return l.sense && l.given !== false && l.placed !== false; });
     if (zero.length) {
       var lz = el("li", {"class": "zero"}, ul);
       el("span", {}, lz, "zero at this configuration, drawn in its positive sense: " +
          zero.map(function (l) { return l.label; }).join(", "));
+    }
+    var unknownHere = dia.loads.filter(function (l) { return l.given === false && l.placed !== false; });
+    if (unknownHere.length) {
+      var lg = el("li", {"class": "not-given"}, ul);
+      el("span", {}, lg, "value not given at this configuration, drawn in its positive sense: " +
+         unknownHere.map(function (l) { return l.label; }).join(", "));
     }
     var unplaced = dia.loads.filter(function (l) { return l.placed === false; });
     if (unplaced.length) {
@@ -533,6 +540,8 @@
     el("h2", {}, sec, "MG road-map");
     el("p", {"class": "note", id: "configuration"}, sec, "Free-body diagrams at " + data.configuration.map(function (c) {
       return c.name + " = " + fmt(c.shown) + (c.unit ? " " + c.unit : ""); }).join(", ") +
+      ((data.configuration_data || []).length ? ", with " + data.configuration_data.map(function (c) {
+        return c.name + " = " + fmt(c.shown) + (c.unit ? " " + c.unit : ""); }).join(", ") : "") +
       (data.configuration_source ? " (" + data.configuration_source + ")" : "") +
       ". Unknown loads in red, known in blue, gravity in green; each equation is E = applied \u2212 inertial = 0, " +
       "shown solved for the row's unknown where it holds it linearly with a constant coefficient.");
@@ -1012,11 +1021,12 @@
     while (main.firstChild) main.removeChild(main.firstChild);
     el("h1", {}, main, data.title);
     el("p", {"class": "note subtitle"}, main, "Alembert report");
-    if (!data.geometry.planar) {
-      // a spatial model: sliders turn the drawings
+    if (!data.geometry.planar && data.roadmap.some(function (row) { return row.diagram; })) {
+      // a spatial model's free-body diagrams: sliders turn them (none where there are none:
+      // the 3D view is turned by dragging)
       var turn = el("div", {"class": "controls", id: "view-controls"}, main);
       [["turn", -3.1416, 3.1416], ["tilt", -1.5, 1.5]].forEach(function (c) {
-        var lab = el("label", {}, turn, c[0] + " ");
+        var lab = el("label", {}, turn, c[0] + " the diagrams ");
         var input = el("input", {type: "range", min: c[1], max: c[2], step: 0.01, value: view[c[0]], id: "view-" + c[0]}, lab);
         input.addEventListener("input", function () { view[c[0]] = Number(input.value); redrawDiagrams(data); });
       });
