@@ -3,12 +3,14 @@
 // derivations: the rolling disk keeps its energy, turns steadily at the lean, spin and turn
 // rates of Euler's equations about its mass centre and rolls straight at r w; the Chaplygin
 // sled follows its closed-form speed and turn rate; a double pendulum in absolute angular
-// speeds moves as the same model simulated in q''; the errors a user can meet.
+// speeds moves as the same model simulated in q''; the Whipple bicycle's weave grows at
+// Meijaard et al.'s rate; the errors a user can meet.
 #include "alembert/sim/speed_simulation.hpp"
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <complex>
 #include <cstdio>
 #include <string>
 
@@ -16,6 +18,7 @@
 #include "alembert/mech/rigid_body.hpp"
 #include "alembert/mech/sample_models.hpp"
 #include "support/expect.hpp"
+#include "support/meijaard2007.hpp"
 
 namespace alembert {
 namespace {
@@ -306,6 +309,47 @@ TEST(SpeedSimulation, DoublePendulumInAbsoluteSpeedsMovesAsInTheCoordinatesRates
     // both runs keep the energy
     const Table& t = speeds.table;
     EXPECT_LT(largest_change(t.columns[t.column_index("energy")]), 1e-9);
+}
+
+TEST(SpeedSimulation, WhippleBicyclesWeaveGrowsAtTheBenchmarkRate) {
+    // At 3 m/s the benchmark bicycle's weave is unstable, lambda = 1.70675605663975 +-
+    // 2.31582447384325 i (Meijaard et al. 2007, Table 2); the capsize (-2.63) and castering
+    // (-10.35) modes decay. Released upright with a tiny lean rate, the motion stays linear and
+    // after 2.5 s is the weave alone (the others below 1e-4 of it), so one weave period
+    // T = 2 pi / omega later every state scales by exp(sigma T).
+    SampleNonholonomicModel bike = make_whipple_bicycle();
+    std::vector<ex> u;
+    for (const TimeVariable& ui : bike.u) u.push_back(ui.symbol());
+    const KaneEquations kane = form_kane_equations(
+        bike.system, KaneOptions{.coordinates = bike.q,
+                                 .speeds = u,
+                                 .kinematic_equations = bike.kinematic_equations,
+                                 .motion_constraints = bike.motion_constraints,
+                                 .dependent_speeds = bike.dependent_speeds,
+                                 .simplify = false});
+    const std::complex<double> weave = test::kMeijaardTable2[3].eig[2];
+    ASSERT_EQ(test::kMeijaardTable2[3].v, 3.0);
+    const double sigma = weave.real(), omega = std::abs(weave.imag()), T = 2 * std::acos(-1.0) / omega;
+    SimulationRequest r;
+    r.model = "bicycle";
+    r.initial_values = {{u[2], 3.0 / 0.3}, {u[1], 1e-6}};  // rear wheel at v / r_R; lean rate
+    r.outputs = {{"q2", bike.q[1].symbol(), ""}, {"q5", bike.q[4].symbol(), ""}, {"u2", u[1], ""},
+                 {"u5", u[4], ""}};
+    r.options = {.t_final = 2.5 + T, .output_times = {2.5, 2.5 + T}, .abs_tol = 1e-14, .rel_tol = 1e-12};
+    const SimulationResult res = run_speed_simulation(bike.system, kane, r);
+    const Table& t = res.table;
+    ASSERT_EQ(t.row_count(), 2u);
+    // the ratio of the largest state over the period
+    std::size_t c = 1;
+    for (std::size_t k = 2; k <= 4; ++k)
+        if (std::abs(t.columns[k][0]) > std::abs(t.columns[c][0])) c = k;
+    const double ratio = t.columns[c][1] / t.columns[c][0];
+    EXPECT_NEAR(ratio / std::exp(sigma * T), 1.0, 1e-3) << t.names[c];
+    std::printf("bicycle at 3 m/s: growth over a weave period %.6g, exp(sigma T) = %.6g\n", ratio,
+                std::exp(sigma * T));
+    // the motion stays small (linear): the lean below 0.01 rad at the end
+    EXPECT_LT(std::abs(res.q_end[1]), 1e-2);
+    EXPECT_GT(std::abs(res.q_end[1]), 1e-6);
 }
 
 TEST(SpeedSimulation, ATorqueThatDoesWorkLeavesTheEnergyColumnOut) {

@@ -28,7 +28,8 @@ namespace alembert {
 /// in the state and u_r'). The result's table is that of run_simulation; with
 /// `request.checks` it adds "energy" (kinetic plus potential) when energy is conserved (the
 /// loads without a potential do no work once the inputs are substituted, nothing is
-/// specified, and q' and u_s vanish with u_r: no driven motion, constraints without B_s),
+/// specified, and q' and u_s vanish with u_r: no driven motion, constraints without B_s; and
+/// the potential energy can be formed: every mass centre located from N_o),
 /// one "drift_motion_<i>" column per motion constraint of `kane` (its residual evaluated with
 /// the dependent speeds from their values: 0 up to rounding), and one "drift_<name>" column
 /// per constraint declared on `sys` (System::add_configuration_constraint, which Kane's
