@@ -57,6 +57,7 @@
 #include "alembert/sim/plot.hpp"
 #include "alembert/sim/progress.hpp"
 #include "alembert/sim/simulation.hpp"
+#include "alembert/sim/speed_simulation.hpp"
 #include "alembert/sim/table.hpp"
 #include "alembert/sim/time_grid.hpp"
 #include "alembert/report/report.hpp"

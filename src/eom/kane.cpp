@@ -530,6 +530,7 @@ KaneEquations form_kane_equations(const System& sys, const KaneOptions& o) {
     for (const ex& s : o.dependent_speeds) dep_rates.push_back(Ud[index_of(U, s)]);
     out.independent_speeds = ind;
     out.dependent_speeds = o.dependent_speeds;
+    out.motion_constraints = o.motion_constraints;
     const std::size_t na = o.auxiliary_speeds.size();
     exmap depmap;  // u_s -> sum A_sr u_r + B_s (auxiliary speeds zero)
     out.constraint_coefficients = GiNaC::matrix(static_cast<unsigned>(m),

@@ -64,30 +64,17 @@ void Interpreter::Impl::run_codegen(const CodegenRequest& r, Location where) {
     if (q.empty())
         throw ScriptError(where, "the model has no coordinates to generate code for",
                           "declare variables (variable q'') and use them in rotations or translations");
-    // equations in generalized speeds (a kane statement with speeds) when a coordinate has no
-    // q'': the generated code's state is then (q, u_r)
-    const KaneEquations* speeds = nullptr;
-    if (std::any_of(q.begin(), q.end(), [](const TimeVariable& v) { return v.order() < 2; })) {
-        std::vector<std::string> named;
-        for (const auto& [name, fe] : formed)
-            if (fe.kane && !fe.kane->kinematic_equations.empty()) {
-                speeds = &*fe.kane;
-                named.push_back(name);
-            }
-        if (named.size() > 1)
-            throw ScriptError(where, "the script forms Kane's equations in generalized speeds " +
-                                         std::to_string(named.size()) + " times (" + named.front() + ", " +
-                                         named.back() + "); codegen generates one set",
-                              "keep one kane statement with speeds");
-        if (speeds && !sys.constraints().empty())
-            throw ScriptError(where, "the model has both constraint statements and Kane's equations in "
-                                     "generalized speeds; codegen generates one form",
-                              "give the rolling as the kane statement's constraints, or declare the "
-                              "coordinates with q'' and drop the speeds");
-        if (speeds) {
-            q.clear();
-            for (const ex& x : speeds->coordinates) q.push_back(table.variable(table.name(x)));
-        }
+    // equations in generalized speeds (a kane statement with speeds): the generated code's
+    // state is then (q, u_r)
+    const KaneEquations* speeds = speed_equations(where, "codegen");
+    if (speeds && !sys.constraints().empty())
+        throw ScriptError(where, "the model has both constraint statements and Kane's equations in "
+                                 "generalized speeds; codegen generates one form",
+                          "give the rolling as the kane statement's constraints, or declare the "
+                          "coordinates with q'' and drop the speeds");
+    if (speeds) {
+        q.clear();
+        for (const ex& x : speeds->coordinates) q.push_back(table.variable(table.name(x)));
     }
     for (const TimeVariable& v : q)
         if (!speeds && v.order() < 2)

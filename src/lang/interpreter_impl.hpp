@@ -222,6 +222,10 @@ struct Interpreter::Impl {
     void add_outputs(const Statement& s);
     void add_event(const Statement& s);
     void simulate(const Statement& s);
+    /// The Kane's equations in generalized speeds (a kane statement with speeds and
+    /// kinematics) that simulate and codegen take, with their name; nullptr when the script
+    /// formed none. @throws ScriptError at `where` when it formed more than one.
+    const KaneEquations* speed_equations(Location where, const char* statement, std::string* name = nullptr);
     void inverse(const Statement& s);
     void codegen(const Statement& s);
     void run_inverse(const InverseRequest& r, Location where);

@@ -18,6 +18,7 @@
 #include "alembert/eom/planner.hpp"
 #include "alembert/eom/tree_dynamics.hpp"
 #include "alembert/lang/parser.hpp"
+#include "alembert/sim/speed_simulation.hpp"
 #include "interpreter_impl.hpp"
 #include "statement_parser.hpp"
 
@@ -443,21 +444,58 @@ std::string Interpreter::Impl::input_path(const std::string& written) const {
     return (fs::path(base_dir) / p).string();
 }
 
+const KaneEquations* Interpreter::Impl::speed_equations(Location where, const char* statement,
+                                                        std::string* name) {
+    const KaneEquations* speeds = nullptr;
+    std::vector<std::string> named;
+    for (const auto& [n, fe] : formed)
+        if (fe.kane && !fe.kane->kinematic_equations.empty()) {
+            speeds = &*fe.kane;
+            named.push_back(n);
+        }
+    if (named.size() > 1)
+        throw ScriptError(where, "the script forms Kane's equations in generalized speeds " +
+                                     std::to_string(named.size()) + " times (" + named.front() + ", " +
+                                     named.back() + "); " + statement + " takes one set",
+                          "keep one kane statement with speeds");
+    if (name && speeds) *name = named.front();
+    return speeds;
+}
+
 void Interpreter::Impl::simulate(const Statement& s) {
     if (model_only) return;
     System& sys = model(s.location);
     const SymbolTable& table = sys.symbols();
     const std::string dir = output_path(s);  // refused before the work starts
+    std::string kane_name;
+    const KaneEquations* speeds = speed_equations(s.location, "simulate", &kane_name);
     SimulationRequest r;
     r.model = script_name;
-    r.coordinates = default_coordinates();
+    if (speeds) {
+        for (const ex& x : speeds->coordinates) r.coordinates.push_back(table.variable(table.name(x)));
+        int line = 0;
+        for (const ReportEquationSet& e : formed_sets)
+            if (e.name == kane_name) line = e.line;
+        const std::string kane_at = kane_name + " (line " + std::to_string(line) + ")";
+        if (!speeds->auxiliary_speeds.empty())
+            throw ScriptError(s.location, "simulate takes Kane's equations " + kane_at +
+                                              " in generalized speeds, and they have auxiliary speeds (" +
+                                              to_string(speeds->auxiliary_speeds.front()) +
+                                              (speeds->auxiliary_speeds.size() > 1 ? ", ..." : "") +
+                                              "), whose equations give constraint forces that a simulation "
+                                              "in speeds does not solve for",
+                              "form the equations to simulate without 'auxiliary', in a script of their own");
+    } else {
+        r.coordinates = default_coordinates();
+    }
     if (r.coordinates.empty())
         throw ScriptError(s.location, "the model has no coordinates to simulate",
                           "declare variables (variable q'') and use them in rotations or translations");
     for (const TimeVariable& v : r.coordinates)
-        if (v.order() < 2)
+        if (!speeds && v.order() < 2)
             throw ScriptError(s.location, "the coordinate " + v.name() + " has no second derivative declared",
-                              "declare it as variable " + v.name() + "''");
+                              "declare it as variable " + v.name() + "'', or form Kane's equations in "
+                              "generalized speeds (kane K for ... speeds ... kinematics [...])");
     r.inputs = numbers.inputs;
     for (const auto& [x, f] : numbers.specified) {
         // the quantity and each declared derivative: x, x' = dx/dt, ...
@@ -468,30 +506,39 @@ void Interpreter::Impl::simulate(const Statement& s) {
             r.specified[v.d(k)] = d;
         }
     }
-    if (!sys.constraints().empty())
+    if (!speeds && !sys.constraints().empty())
         for (const ex& u : table.symbols(SymbolKind::unknown))
             if (!numbers.inputs.count(u)) r.constraint_forces.push_back(u);
     for (const auto& [x, value] : numbers.initial) r.initial_values[x] = value;
     r.outputs = numbers.outputs;
-    if (r.outputs.empty())
+    const auto add_default_output = [&](const std::string& n, const ex& x) {
+        std::optional<Unit> u = display_unit(n);
+        r.outputs.push_back({n, x, u ? u->text : "", u ? u->scale : 1.0});
+    };
+    if (r.outputs.empty() && speeds) {
+        // the coordinates and every speed
+        for (const TimeVariable& v : r.coordinates) add_default_output(v.name(), v.symbol());
+        for (const ex& u : speeds->speeds) add_default_output(table.name(u), u);
+    } else if (r.outputs.empty()) {
         for (const TimeVariable& v : r.coordinates)
-            for (int k = 0; k < 2; ++k) {
-                std::string n = k ? v.name() + "'" : v.name();
-                std::optional<Unit> u = display_unit(n);
-                r.outputs.push_back({n, v.d(k), u ? u->text : "", u ? u->scale : 1.0});
-            }
+            for (int k = 0; k < 2; ++k) add_default_output(k ? v.name() + "'" : v.name(), v.d(k));
+    }
     r.events = numbers.events;
     r.options = numbers.options;
     // the unit of each constraint's residual, for its drift column and messages
-    for (const Constraint& c : sys.constraints()) {
-        Dimension d = residual_dimension_of(table.expand_intermediates(c.residual),
+    const auto residual_unit = [&](const std::string& name, const ex& residual) {
+        Dimension d = residual_dimension_of(table.expand_intermediates(residual),
                                             [&](const std::string& n) { return symbol_dimension(n); });
-        if (d.known && !d.is_none()) r.constraint_units[c.name] = si_unit(d);
-    }
+        if (d.known && !d.is_none()) r.constraint_units[name] = si_unit(d);
+    };
+    for (const Constraint& c : sys.constraints()) residual_unit(c.name, c.residual);
+    if (speeds)
+        for (std::size_t i = 0; i < speeds->motion_constraints.size(); ++i)
+            residual_unit("motion_" + std::to_string(i + 1), speeds->motion_constraints[i]);
     // a spring, damper or attraction between coincident points has no direction at the start
     exmap at{{table.time(), r.options.t_initial}};
     for (const TimeVariable& v : r.coordinates)
-        for (int k = 0; k < 2; ++k) at[v.d(k)] = 0;
+        for (int k = 0; k < 2 && k <= v.order(); ++k) at[v.d(k)] = 0;
     for (const auto& [x, value] : r.initial_values) at[x] = value;
     check_line_loads_apart(at, r.coordinates);
     r.options.progress = isatty(STDERR_FILENO) != 0;
@@ -501,11 +548,14 @@ void Interpreter::Impl::simulate(const Statement& s) {
     // the hint is for a failed solve; other errors carry their own fix
     SimulationResult res = guard(s.location, [&] {
         try {
-            return run_simulation(sys, r);
+            return speeds ? run_speed_simulation(sys, *speeds, r) : run_simulation(sys, r);
         } catch (const SolveError& e) {
             throw ScriptError(s.location, in_script_words(e.what()),
-                              "check the initial values and the loads; a singular mass matrix "
-                              "means the coordinates do not fix the model's configuration");
+                              speeds ? "check the initial values and the loads; a singular mass matrix or "
+                                       "dependent speed means the speeds or the constraints do not fix "
+                                       "the motion there (choose other dependent speeds)"
+                                     : "check the initial values and the loads; a singular mass matrix "
+                                       "means the coordinates do not fix the model's configuration");
         }
     });
     PlotOptions plot_options = plot_options_of(s, res.table.names);
@@ -753,7 +803,7 @@ std::vector<StatementSpec> number_statements() {
          .help = "integrates the equations of motion; writes a table and its plots",
          .forms = {{"`simulate` [`compiled` \\| `tape`] [`plot` *columns* \\| `plot none`] [`to` *\"dir\"*]",
                     "simulate to \"fall\"",
-                    "`run_simulation`, then `write_table_and_plot(..., \"simulation\")`: `simulation.csv`, `.png`, `.svg`; prints a table of about ten rows, the energy check (conservative models: an `energy` column) and the drift of each constraint (a contact load it solves for that changes sign ends the run with an error naming it and the time, the rows up to then written: `SimulationResult::contact_lost`); `plot` chooses the columns drawn, `plot none` draws none (runs over 4000 rows are drawn from rows keeping each column's extremes)"}},
+                    "`run_simulation` (after a `kane` statement with speeds and kinematics, `run_speed_simulation` on those equations: state q and the independent speeds, the dependent speeds from the constraints), then `write_table_and_plot(..., \"simulation\")`: `simulation.csv`, `.png`, `.svg`; prints a table of about ten rows, the energy check (conservative models: an `energy` column) and the drift of each constraint (a contact load it solves for that changes sign ends the run with an error naming it and the time, the rows up to then written: `SimulationResult::contact_lost`); `plot` chooses the columns drawn, `plot none` draws none (runs over 4000 rows are drawn from rows keeping each column's extremes)"}},
          .clauses = {"compiled", "tape", "plot", "to"}, .parse = parse_run,
          .run = [](M& m, const Statement& s) { m.simulate(s); }},
         {.keyword = "motion", .family = family,
@@ -791,7 +841,7 @@ std::vector<StatementSpec> number_statements() {
          .help = "generates C, C++, MATLAB or Python code for the model's equations",
          .forms = {{"`codegen` *c\\|cpp\\|matlab\\|python* [`name` *N*] [`for` *loads*] [`jacobian` *points, bodies*] [`derivatives`] [`to` *\"dir\"*]",
                     "codegen c name fall jacobian C derivatives to \"code\"",
-                    "`generate_code` on Kane's equations (a tree's recursive rows when the model is one): functions for M and f, forward and inverse dynamics, M alone and the bias forces (trees), the outputs, and a simulation program with the script's settings (the declared joint reactions without an `input` computed at every sample from their road-map rows, `NAME_reactions`; refused for constrained models and equations in speeds); per `jacobian` name its position, Jacobian and J' q' (`form_point_jacobian`, or `form_frame_jacobian` of a body at its origin B_o, else its mass centre); with `derivatives`, d u/d q and d u/d q' of inverse dynamics and q'' with d q''/d q and d q''/d q' (`add_dynamics_derivatives`; one load per coordinate, no constraints, not in generalized speeds)"}},
+                    "`generate_code` on Kane's equations (a tree's recursive rows when the model is one; after a `kane` statement with speeds and kinematics, on those equations in speeds): functions for M and f, forward and inverse dynamics, M alone and the bias forces (trees), the outputs, and a simulation program with the script's settings (the declared joint reactions without an `input` computed at every sample from their road-map rows, `NAME_reactions`; refused for constrained models and equations in speeds); per `jacobian` name its position, Jacobian and J' q' (`form_point_jacobian`, or `form_frame_jacobian` of a body at its origin B_o, else its mass centre); with `derivatives`, d u/d q and d u/d q' of inverse dynamics and q'' with d q''/d q and d q''/d q' (`add_dynamics_derivatives`; one load per coordinate, no constraints, not in generalized speeds)"}},
          .clauses = {"for", "jacobian", "derivatives", "to"}, .parse = parse_run, .run = [](M& m, const Statement& s) { m.codegen(s); }},
     };
 }

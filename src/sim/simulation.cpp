@@ -18,6 +18,7 @@
 #include "alembert/sym/print.hpp"
 #include "alembert/sym/simplify.hpp"
 #include "dense_stepper.hpp"
+#include "ode_run.hpp"
 #include "number_text.hpp"
 
 namespace alembert {
@@ -257,28 +258,20 @@ double calc_output_row_count(const SimulationOptions& options, const std::string
     return rows;
 }
 
-SimulationResult simulate(const ForwardDynamics& fd, const std::vector<double>& q0,
-                          const std::vector<double>& qd0, const SimulationOptions& options,
-                          const OutputFunction& outputs, const EventFunction& events,
-                          const InputFunction& inputs,
-                          const std::function<void(const Table&, std::size_t)>& check_row) {
-    const std::size_t n = fd.coordinate_count();
-    const std::string who = "simulate('" + fd.model() + "'): ";
+namespace detail {
+
+SimulationResult integrate_with_outputs(const std::string& model, const OdeState& x0,
+                                        const OdeRhs& rhs, const OdeGather& gather,
+                                        const SimulationOptions& options,
+                                        const OutputFunction& outputs, const EventFunction& events,
+                                        const std::function<void(const Table&, std::size_t)>& check_row,
+                                        OdeState& x_end) {
+    const std::string who = "simulate('" + model + "'): ";
     const double t0 = options.t_initial, tf = options.t_final;
-    ALEMBERT_CHECK_ARG(q0.size() == n && qd0.size() == n,
-                       who + "the initial state has " + std::to_string(q0.size()) +
-                           " coordinates and " + std::to_string(qd0.size()) +
-                           " rates; the model has " + std::to_string(n) + " coordinates");
     ALEMBERT_CHECK_ARG(tf > t0, who + "the final time " + number(tf) +
                                     " s must follow the initial time " + number(t0) + " s");
     ALEMBERT_CHECK_ARG(options.abs_tol > 0 && options.rel_tol >= 0,
                        who + "the error tolerances must be positive");
-    const std::size_t width = 1 + 2 * n + fd.unknown_count() + fd.input_count();
-    ALEMBERT_CHECK_ARG(outputs.function.input_count == width &&
-                           (events.names.empty() || events.function.input_count == width),
-                       who +
-                           "the outputs or events were compiled for another layout; compile "
-                           "them with this model's layout()");
 
     // the output times
     calc_output_row_count(options, who);
@@ -301,17 +294,16 @@ SimulationResult simulate(const ForwardDynamics& fd, const std::vector<double>& 
     table.add_column("t", "s");
     for (std::size_t c = 0; c < outputs.names.size(); ++c)
         table.add_column(outputs.names[c], outputs.units[c]);
-    Evaluator at(fd, inputs);
-    std::vector<double> out(outputs.names.size()), g(events.names.size());
+    std::vector<double> out(outputs.names.size());
     auto emit = [&](double t, const State& x) {
-        outputs.function.evaluate(at.gather(t, x), out.data());
+        outputs.function.evaluate(gather(t, x), out.data());
         table.columns[0].push_back(t);
         for (std::size_t c = 0; c < out.size(); ++c)
             table.columns[c + 1].push_back(out[c] / outputs.factors[c]);
         if (check_row) check_row(table, table.row_count() - 1);
     };
     auto event_values = [&](double t, const State& x, std::vector<double>& values) {
-        if (!values.empty()) events.function.evaluate(at.gather(t, x), values.data());
+        if (!values.empty()) events.function.evaluate(gather(t, x), values.data());
     };
     auto crossed = [&](std::size_t j, double before, double after) {
         const bool up = before < 0 && after >= 0, down = before > 0 && after <= 0;
@@ -326,17 +318,7 @@ SimulationResult simulate(const ForwardDynamics& fd, const std::vector<double>& 
         return up || down;
     };
 
-    // the right-hand side x' = [q', q''(t, q, q', inputs)]
-    std::vector<double> u(fd.input_count(), 0.0);
-    auto rhs = [&](const State& x, State& dxdt, double t) {
-        if (inputs) inputs(t, x.data(), x.data() + n, u.data());
-        std::copy(x.begin() + static_cast<std::ptrdiff_t>(n), x.end(), dxdt.begin());
-        fd.calc_accelerations(t, x.data(), x.data() + n, u.data(), dxdt.data() + n);
-    };
-
-    State x(2 * n);
-    std::copy(q0.begin(), q0.end(), x.begin());
-    std::copy(qd0.begin(), qd0.end(), x.begin() + static_cast<std::ptrdiff_t>(n));
+    State x = x0;
     std::unique_ptr<detail::DenseStepper> method =
         detail::make_dense_stepper(options.integrator, options.abs_tol, options.rel_tol, rhs);
     detail::DenseStepper& stepper = *method;
@@ -346,11 +328,11 @@ SimulationResult simulate(const ForwardDynamics& fd, const std::vector<double>& 
             : std::min(tf - t0, times.size() > 1 ? times[1] - times[0] : tf - t0) / 100;
     stepper.initialize(x, t0, first_step, tf);
 
-    ProgressIndicator progress("simulating '" + fd.model() + "'", t0, tf, options.progress);
+    ProgressIndicator progress("simulating '" + model + "'", t0, tf, options.progress);
     std::vector<double> g_before(events.names.size()), g_after(events.names.size());
     event_values(t0, x, g_before);
     std::size_t next = 0;
-    State xi(2 * n);
+    State xi(x0.size());
     double t_end = tf;
     try {
         while (next < times.size() && times[next] <= t0) emit(t0, x), ++next;
@@ -419,8 +401,52 @@ SimulationResult simulate(const ForwardDynamics& fd, const std::vector<double>& 
             xi = stepper.current_state();
     }
     result.t_end = t_end;
-    result.q_end.assign(xi.begin(), xi.begin() + static_cast<std::ptrdiff_t>(n));
-    result.qd_end.assign(xi.begin() + static_cast<std::ptrdiff_t>(n), xi.end());
+    x_end = xi;
+    return result;
+}
+
+}  // namespace detail
+
+SimulationResult simulate(const ForwardDynamics& fd, const std::vector<double>& q0,
+                          const std::vector<double>& qd0, const SimulationOptions& options,
+                          const OutputFunction& outputs, const EventFunction& events,
+                          const InputFunction& inputs,
+                          const std::function<void(const Table&, std::size_t)>& check_row) {
+    const std::size_t n = fd.coordinate_count();
+    const std::string who = "simulate('" + fd.model() + "'): ";
+    const double t0 = options.t_initial, tf = options.t_final;
+    ALEMBERT_CHECK_ARG(q0.size() == n && qd0.size() == n,
+                       who + "the initial state has " + std::to_string(q0.size()) +
+                           " coordinates and " + std::to_string(qd0.size()) +
+                           " rates; the model has " + std::to_string(n) + " coordinates");
+    ALEMBERT_CHECK_ARG(tf > t0, who + "the final time " + number(tf) +
+                                    " s must follow the initial time " + number(t0) + " s");
+    ALEMBERT_CHECK_ARG(options.abs_tol > 0 && options.rel_tol >= 0,
+                       who + "the error tolerances must be positive");
+    const std::size_t width = 1 + 2 * n + fd.unknown_count() + fd.input_count();
+    ALEMBERT_CHECK_ARG(outputs.function.input_count == width &&
+                           (events.names.empty() || events.function.input_count == width),
+                       who +
+                           "the outputs or events were compiled for another layout; compile "
+                           "them with this model's layout()");
+
+    // the right-hand side x' = [q', q''(t, q, q', inputs)]
+    std::vector<double> u(fd.input_count(), 0.0);
+    auto rhs = [&](const State& x, State& dxdt, double t) {
+        if (inputs) inputs(t, x.data(), x.data() + n, u.data());
+        std::copy(x.begin() + static_cast<std::ptrdiff_t>(n), x.end(), dxdt.begin());
+        fd.calc_accelerations(t, x.data(), x.data() + n, u.data(), dxdt.data() + n);
+    };
+    State x(2 * n);
+    std::copy(q0.begin(), q0.end(), x.begin());
+    std::copy(qd0.begin(), qd0.end(), x.begin() + static_cast<std::ptrdiff_t>(n));
+    Evaluator at(fd, inputs);
+    State x_end;
+    SimulationResult result = detail::integrate_with_outputs(
+        fd.model(), x, rhs, [&](double t, const State& xs) { return at.gather(t, xs); }, options,
+        outputs, events, check_row, x_end);
+    result.q_end.assign(x_end.begin(), x_end.begin() + static_cast<std::ptrdiff_t>(n));
+    result.qd_end.assign(x_end.begin() + static_cast<std::ptrdiff_t>(n), x_end.end());
     return result;
 }
 

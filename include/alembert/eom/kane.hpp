@@ -102,6 +102,8 @@ struct KaneEquations {
     std::vector<ex> coordinate_rate_symbols{};
     /// The kinematic differential equations as given (empty when u_r = q_r').
     std::vector<ex> kinematic_equations{};
+    /// The motion constraints as given (empty without them).
+    std::vector<ex> motion_constraints{};
     /// q_i' = k_i(q, u_r, t), i = 1..n: the kinematic equations solved for q', the dependent
     /// speeds replaced (the q_i' themselves when u = q' and q_i' is independent).
     std::vector<ex> coordinate_rates{};

@@ -112,6 +112,9 @@ struct SimulationResult {
     std::string stopped_by{};
     double t_end = 0.0;
     std::vector<double> q_end{}, qd_end{};  ///< state at t_end (SI)
+    /// run_speed_simulation: the independent speeds u_r at t_end (SI); qd_end then holds the
+    /// coordinates' rates from the kinematical equations there.
+    std::vector<double> u_end{};
     std::size_t steps = 0;                  ///< accepted steps
     /// run_simulation: empty, or why the run stopped early because a contact load it solves
     /// for changed sign (stopped_by then reads "contact lost: 'N_w' changes sign"): the measure,

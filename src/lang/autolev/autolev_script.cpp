@@ -207,12 +207,12 @@ void Translator::assemble() {
         if (!kane_at_) {
             report(Severity::error, where, "CODE DYNAMICS() without KANE()",
                    "form Kane's equations (ZERO = FR() + FRSTAR(), KANE()) before generating code");
-        } else if (!kinematics_.empty()) {
-            // Alembert generates code with the coordinates' rates as the speeds
-            not_translated(where, "CODE DYNAMICS()",
-                           "Alembert's codegen takes the coordinates' rates as the speeds, and this model has "
-                           "speeds of its own (kinematical equations such as " + kinematics_.front().coordinate +
-                               "' = ...)");
+        } else if (!kinematics_.empty() && l.rfind("codegen matlab", 0) == 0) {
+            // code in generalized speeds is generated in C, C++ and Python
+            not_translated(where, "CODE DYNAMICS() to a MATLAB file",
+                           "Alembert generates code for Kane's equations in generalized speeds (this model's "
+                           "kinematical equations such as " + kinematics_.front().coordinate +
+                               "' = ...) in C, C++ and Python");
         } else {
             s += l + "\n";
         }

@@ -390,7 +390,7 @@ TEST(AutolevAcceptanceFiles, EveryFileIsChecked) {
     std::vector<std::string> checked{"vector_algebra.al", "no_newtonian_kinematics.al", "algebra_functions.al",
                                      "matrix_values.al", "series_and_solve.al",
                                      "solve_zero_pendulum.al", "matrix_operations.al", "mass_functions.al",
-                                     "terms_and_coefficients.al", "normal_modes.al"};
+                                     "terms_and_coefficients.al", "normal_modes.al", "chaplygin_sled.al"};
     for (const Case& c : cases()) checked.push_back(c.file);
     for (const char* f : {"dyadic_inertia.al", "dyadic_algebra.al"}) checked.push_back(f);
     int files = 0;
@@ -768,6 +768,45 @@ TEST(AutolevAcceptanceFiles, NormalModesAgreeWithTheHandResults) {
         EXPECT_NEAR(v[i], expected[i], 1e-12 * std::max(1.0, std::abs(expected[i]))) << names[i] << "\n" << r.out;
     // the symmetric matrix's eigenvectors are orthogonal
     EXPECT_NEAR(v[9] * v[11] + v[10] * v[12], 0, 1e-15);
+}
+
+// A model with a motion constraint (DEPENDENT[1], CONSTRAIN) and speeds of its own: the
+// Chaplygin sled, a body on a knife edge at P that cannot slide sideways, its mass centre a
+// ahead of P. By hand, with v = U1 (P's forward speed), w = U2 (the turn rate) and
+// J = IZ + M A^2: along B1> M (v' - A w^2) = 0, and about the mass centre IZ w' = -A lambda with
+// lambda = M (v w + A w') the knife's force, so
+//   v' = A w^2,  J w' = -M A v w.
+// The energy (M v^2 + J w^2)/2 is kept, so v' = k (V^2 - v^2) with k = M A / J and
+// V^2 = v0^2 + J w0^2 / M:
+//   v = V tanh(k V t + c0), c0 = atanh(v0 / V),  w = w0 cosh(c0) / cosh(k V t + c0).
+// The imported file simulates in its speeds, follows that closed form at every row and keeps
+// its constraint; its CODE DYNAMICS() generates C for the same equations.
+TEST(AutolevAcceptanceFiles, ConstrainedSledSimulatesAsItsClosedForm) {
+    AutolevTranslation t = import("chaplygin_sled.al");
+    ASSERT_TRUE(t.ok());
+    EXPECT_NE(t.script.find("constraints [dot(vel(P, N), By>)] dependent U3"), std::string::npos) << t.script;
+    EXPECT_NE(t.script.find("codegen c name sled"), std::string::npos) << t.script;
+    const std::string dir = "acceptance_chaplygin_sled";
+    ScriptRun r = run(t.script, "tolerance abs 1e-12 rel 1e-12\nsimulate plot none to \"" + dir + "\"");
+    ASSERT_EQ(r.status, RunStatus::ok) << r.err << t.script;
+    EXPECT_NE(r.out.find("generated C for 'sled'"), std::string::npos) << r.out;
+    auto table = read_table((std::filesystem::path(::testing::TempDir()) / dir / "simulation.csv").string());
+    ASSERT_TRUE(table.count("U1") && table.count("U2") && table.count("energy") && table.count("drift_motion_1"))
+        << t.script;
+    const double m = 3, iz = 0.2, a = 0.4, v0 = -0.5, w0 = 2;
+    const double J = iz + m * a * a, V = std::sqrt(v0 * v0 + J * w0 * w0 / m), k = m * a / J;
+    const double c0 = std::atanh(v0 / V);
+    const Vec& time = table["t"];
+    ASSERT_EQ(time.size(), 31u);
+    EXPECT_DOUBLE_EQ(time.back(), 3.0);
+    const double e0 = (m * v0 * v0 + J * w0 * w0) / 2;
+    for (std::size_t i = 0; i < time.size(); ++i) {
+        const double ti = time[i];
+        EXPECT_NEAR(table["U1"][i], V * std::tanh(k * V * ti + c0), 1e-9) << "t = " << ti;
+        EXPECT_NEAR(table["U2"][i], w0 * std::cosh(c0) / std::cosh(k * V * ti + c0), 1e-9) << "t = " << ti;
+        EXPECT_NEAR(table["energy"][i], e0, 1e-10) << "t = " << ti;
+        EXPECT_LE(std::abs(table["drift_motion_1"][i]), 1e-14) << "t = " << ti;
+    }
 }
 
 }  // namespace autolev_acceptance_test

@@ -216,11 +216,12 @@ TEST(AutolevImport, StatementsWithoutCounterpartAreLeftOutWithAWarning) {
     run(t.script);
 }
 
-TEST(AutolevImport, CodeDynamicsNeedsTheCoordinatesRatesAsSpeeds) {
+TEST(AutolevImport, CodeDynamicsOfSpeedsIsGeneratedInCCppAndPython) {
     AutolevTranslation a = translate_autolev(std::string(kPendulum) + "CODE DYNAMICS() pendulum.m\n", "a.al");
     EXPECT_TRUE(a.ok());
     EXPECT_TRUE(contains(a.script, "codegen matlab name pendulum\n")) << a.script;
-    AutolevTranslation b = translate_autolev(R"(NEWTONIAN N
+    // speeds of its own (Q' = 2 U): code in the speeds, in C, C++ and Python
+    const std::string spring = R"(NEWTONIAN N
 PARTICLES P
 MOTIONVARIABLES' Q', U'
 P_NO_P> = Q*N1>
@@ -230,15 +231,20 @@ FORCE_P> = -Q*N1>
 Q' = 2*U
 ZERO = FR() + FRSTAR()
 KANE()
-CODE DYNAMICS() spring.c
-)",
-                                             "b.al");
+)";
+    AutolevTranslation b = translate_autolev(spring + "CODE DYNAMICS() spring.c\n", "b.al");
     EXPECT_TRUE(b.ok());
-    ASSERT_EQ(b.diagnostics.size(), 1u);
-    EXPECT_EQ(b.diagnostics[0].severity, Severity::warning);
-    EXPECT_EQ(b.diagnostics[0].location.line, 11);
-    EXPECT_TRUE(contains(b.diagnostics[0].message, "speeds of its own")) << b.diagnostics[0].message;
-    EXPECT_FALSE(contains(b.script, "codegen"));
+    EXPECT_TRUE(b.diagnostics.empty());
+    EXPECT_TRUE(contains(b.script, "codegen c name spring\n")) << b.script;
+    run(b.script);
+    // MATLAB has no code for equations in speeds: left out, with a warning at its line
+    AutolevTranslation c = translate_autolev(spring + "CODE DYNAMICS() spring.m\n", "c.al");
+    EXPECT_TRUE(c.ok());
+    ASSERT_EQ(c.diagnostics.size(), 1u);
+    EXPECT_EQ(c.diagnostics[0].severity, Severity::warning);
+    EXPECT_EQ(c.diagnostics[0].location.line, 11);
+    EXPECT_TRUE(contains(c.diagnostics[0].message, "CODE DYNAMICS() to a MATLAB file")) << c.diagnostics[0].message;
+    EXPECT_FALSE(contains(c.script, "codegen"));
 }
 
 // POLYNOMIAL(P, X) of an expression that is no polynomial in X translates (whether it is one
