@@ -7,6 +7,7 @@
 
 #include "alembert/eom/kane.hpp"
 #include "alembert/error.hpp"
+#include "alembert/sym/derivative.hpp"
 
 namespace alembert {
 
@@ -50,7 +51,8 @@ LoadRates::LoadRates(const System& sys, const std::vector<TimeVariable>& q,
                            "LoadRates(): '" + name + "' is not a symbol; list the load measures");
         const auto& s = GiNaC::ex_to<GiNaC::symbol>(T);
         ex rate = 0;
-        for (std::size_t r = 0; r < q.size(); ++r) rate += F[r].diff(s) * q[r].d(1);
+        DerivativeMemo d_ds(s);  // the F_r share most of their terms
+        for (std::size_t r = 0; r < q.size(); ++r) rate += d_ds(F[r]) * q[r].d(1);
         ALEMBERT_CHECK_ARG(!rate.has(T),
                            "LoadRates(): the model's loads hold '" + name +
                                "' other than linearly, so it has no one rate it works "

@@ -10,6 +10,7 @@
 #include <sstream>
 
 #include "alembert/error.hpp"
+#include "alembert/sym/derivative.hpp"
 #include "alembert/sym/evaluator.hpp"
 #include "alembert/sym/print.hpp"
 #include "alembert/sym/simplify.hpp"
@@ -96,7 +97,7 @@ LinearSystem form_linear_system(const std::vector<ex>& residuals, const std::vec
                 continue;
             }
             const GiNaC::symbol& xj = GiNaC::ex_to<GiNaC::symbol>(unknowns[j]);
-            ex a = residuals[i].diff(xj);
+            ex a = calc_derivative(residuals[i], xj);
             for (const ex& x : in_row)
                 if (a.has(x))
                     throw SolveError("form_linear_system(): equation " + std::to_string(i + 1) +

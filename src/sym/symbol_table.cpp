@@ -12,6 +12,7 @@
 #include <ginac/hash_map.h>
 
 #include "alembert/error.hpp"
+#include "alembert/sym/derivative.hpp"
 #include "alembert/sym/simplify.hpp"
 
 namespace alembert {
@@ -332,7 +333,7 @@ ex SymbolTable::dt(const ex& e) {
             }
         }
         if (ds.is_zero()) continue;
-        result += e.diff(GiNaC::ex_to<GiNaC::symbol>(s)) * ds;
+        result += calc_derivative(e, GiNaC::ex_to<GiNaC::symbol>(s)) * ds;
     }
     return result;
 }
@@ -345,13 +346,13 @@ ex SymbolTable::diff(const ex& e, const ex& s) {
     }
     const Info& is = info(s, "SymbolTable::diff()");
     const bool s_is_z = is.kind == SymbolKind::intermediate;
-    ex result = e.diff(GiNaC::ex_to<GiNaC::symbol>(s));
+    ex result = calc_derivative(e, GiNaC::ex_to<GiNaC::symbol>(s));
     for (const ex& z : symbols_of(e)) {
         const Info& iz = info(z, "SymbolTable::diff()");
         if (iz.kind != SymbolKind::intermediate || z.is_equal(s)) continue;
         if (!iz.leaves.count(s) && !(s_is_z && depends_on(iz.definition, s))) continue;
         ex dz = diff_intermediate(z, s);
-        if (!dz.is_zero()) result += e.diff(GiNaC::ex_to<GiNaC::symbol>(z)) * dz;
+        if (!dz.is_zero()) result += calc_derivative(e, GiNaC::ex_to<GiNaC::symbol>(z)) * dz;
     }
     return result;
 }
