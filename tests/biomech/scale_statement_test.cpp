@@ -10,8 +10,10 @@
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "alembert/lang/interpreter.hpp"
+#include "alembert/mech/system.hpp"
 
 namespace {
 
@@ -30,25 +32,43 @@ struct ScaleSession {
 
 // A subject standing 2 s at 100 Hz, swaying as a rigid chain: the hip 3 mm back and forth, the
 // thigh (HIP to KNEE, 0.40 m, the knee's marker 5 cm lateral) and the leg (KNEE to ANKLE,
-// 0.43 m) leaning by a few degrees. Coordinates in mm to 1e-9 mm.
+// 0.43 m) leaning by a few degrees. Coordinates in mm to 1e-9 mm. With `thigh_marker`, a
+// fourth marker THI rides on the thigh at thi_along down the line from HIP to KNEE (in the X-Y
+// plane) and thi_across forward of it, 3 cm lateral.
 struct StaticTrc {
+    static constexpr double thi_along = 0.182, thi_across = 0.061;  // m
     fs::path dir = fs::temp_directory_path() / ("alembert_scale_" + std::to_string(::getpid()));
     fs::path path = dir / "static.trc";
-    StaticTrc() {
+    // the hip and the thigh's angle (rad, from -Ny> counterclockwise) at frame k; mm
+    static void pose(int k, double hip[3], double& a) {
+        const double t = k / 100.0;
+        a = 0.04 * std::sin(1.7 * t);
+        hip[0] = 3 * std::sin(2.3 * t), hip[1] = 930, hip[2] = 100;
+    }
+    explicit StaticTrc(bool thigh_marker = false) {
         fs::create_directories(dir);
         std::ofstream out(path);
         const int frames = 200;
         out << "PathFileType\t4\t(X/Y/Z)\tstatic.trc\nDataRate\tCameraRate\tNumFrames\tNumMarkers\tUnits\n100\t100\t"
-            << frames << "\t3\tmm\nFrame#\tTime\tHIP\t\t\tKNEE\t\t\tANKLE\t\t\n\t\tX1\tY1\tZ1\tX2\tY2\tZ2\tX3\tY3\tZ3\n\n";
+            << frames << (thigh_marker ? "\t4" : "\t3") << "\tmm\nFrame#\tTime\tHIP\t\t\tKNEE\t\t\tANKLE\t\t"
+            << (thigh_marker ? "\tTHI\t\t" : "") << "\n\t\tX1\tY1\tZ1\tX2\tY2\tZ2\tX3\tY3\tZ3"
+            << (thigh_marker ? "\tX4\tY4\tZ4" : "") << "\n\n";
         const double T = 400, L = 430, lateral = 50, Ts = std::sqrt(T * T - lateral * lateral);
         char cell[64];
         for (int k = 0; k < frames; ++k) {
-            const double t = k / 100.0, a = 0.04 * std::sin(1.7 * t), b = -0.03 * std::sin(1.1 * t + 0.5);
-            const double hip[3] = {3 * std::sin(2.3 * t), 930, 100};
+            const double t = k / 100.0, b = -0.03 * std::sin(1.1 * t + 0.5);
+            double hip[3], a;
+            pose(k, hip, a);
             const double knee[3] = {hip[0] + Ts * std::sin(a), hip[1] - Ts * std::cos(a), hip[2] + lateral};
             const double ankle[3] = {knee[0] + L * std::sin(b), knee[1] - L * std::cos(b), knee[2]};
+            // u = (sin a, -cos a) from HIP to KNEE, n = (cos a, sin a) a quarter turn counterclockwise
+            const double A = thi_along * 1000, C = thi_across * 1000;
+            const double thi[3] = {hip[0] + A * std::sin(a) + C * std::cos(a), hip[1] - A * std::cos(a) + C * std::sin(a),
+                                   hip[2] + 30};
             out << k + 1 << "\t" << t;
-            for (const double* p : {hip, knee, ankle})
+            std::vector<const double*> rows = {hip, knee, ankle};
+            if (thigh_marker) rows.push_back(thi);
+            for (const double* p : rows)
                 for (int i = 0; i < 3; ++i) {
                     std::snprintf(cell, sizeof cell, "%.9f", p[i]);
                     out << "\t" << cell;
@@ -103,6 +123,65 @@ TEST(ScaleStatement, MistakesNameTheMarkerTheFileOrTheDeviation) {
     // a segment's length that has no value
     EXPECT_EQ(s.run("constant L\nsegment m, d, I from winter thigh mass 60 kg length L\n"), RunStatus::script_error);
     EXPECT_NE(s.err.str().find("the segment's length L has no value"), std::string::npos) << s.err.str();
+}
+
+TEST(PlaceStatement, DeclaresAMarkersPlaceOnTheThighAndAModelPointFromItMatchesTheTrial) {
+    StaticTrc trc(true);
+    ScaleSession s;
+    const std::string file = trc.path.string();
+    ASSERT_EQ(s.run("newtonian N\nbody T\nvariable qT\n"
+                    "place A_K, C_K from \"" + file + "\" marker THI between HIP and KNEE\n"),
+              RunStatus::ok)
+        << s.err.str();
+    EXPECT_NE(s.out.str().find("A_K = 0.182 m, C_K = 0.061 m: the mean place of THI along the line from HIP to KNEE "
+                               "and across it"),
+              std::string::npos)
+        << s.out.str();
+    EXPECT_NE(s.out.str().find(" over 200 frames of " + file), std::string::npos) << s.out.str();
+    // the constants are the place written, up to the file's rounding (1e-9 mm = 1e-12 m per
+    // coordinate, averaged over 200 frames)
+    const alembert::SymbolTable& table = s.interp.system()->symbols();
+    EXPECT_NEAR(*table.value(table.symbol("A_K")), StaticTrc::thi_along, 1e-12);
+    EXPECT_NEAR(*table.value(table.symbol("C_K")), StaticTrc::thi_across, 1e-12);
+    // a thigh hanging along -Ty> from the hip, Tx> forward, turned by qT about Nz: its marker
+    // point at C_K*Tx> - A_K*Ty> from the hip is the trial's THI at the pose of frame 90
+    double hip[3], a;
+    StaticTrc::pose(90, hip, a);
+    s.interp.set_digits(15);
+    char setup[256];
+    std::snprintf(setup, sizeof setup,
+                  "rotate T from N about z by qT\npoint HIP_P, THI_M\ntranslate HIP_P from N_o by %.17g m*Nx> + %.17g m*Ny>\n",
+                  hip[0] / 1000, hip[1] / 1000);
+    ASSERT_EQ(s.run(std::string(setup) + "translate THI_M from HIP_P by C_K*Tx> - A_K*Ty>\n"), RunStatus::ok)
+        << s.err.str();
+    const double want[2] = {
+        (hip[0] + 1000 * (StaticTrc::thi_along * std::sin(a) + StaticTrc::thi_across * std::cos(a))) / 1000,
+        (hip[1] + 1000 * (-StaticTrc::thi_along * std::cos(a) + StaticTrc::thi_across * std::sin(a))) / 1000};
+    const char* axes[2] = {"Nx>", "Ny>"};
+    for (int i = 0; i < 2; ++i) {
+        char line[128];
+        std::snprintf(line, sizeof line, "evaluate dot(pos(THI_M, N_o), %s) at qT = %.17g\n", axes[i], a);
+        ASSERT_EQ(s.run(line), RunStatus::ok) << s.err.str();
+        const std::string out = s.out.str();
+        const std::size_t eq = out.rfind("= ");
+        ASSERT_NE(eq, std::string::npos) << out;
+        EXPECT_NEAR(std::stod(out.substr(eq + 2)), want[i], 2e-12) << axes[i] << ": " << out;
+    }
+}
+
+TEST(PlaceStatement, AMissingMarkerIsNamedAtItsPlaceInTheScript) {
+    StaticTrc trc(true);
+    ScaleSession s;
+    const std::string file = trc.path.string();
+    ASSERT_EQ(s.run("newtonian N\nbody T\n"), RunStatus::ok);
+    EXPECT_EQ(s.run("place A_K, C_K from \"" + file + "\" marker LKNE between HIP and KNEE\n"), RunStatus::script_error);
+    EXPECT_NE(s.err.str().find("scale.alb:1:"), std::string::npos) << s.err.str();
+    EXPECT_NE(s.err.str().find("no marker 'LKNE' in the marker file; its markers are: HIP, KNEE, ANKLE, THI"),
+              std::string::npos)
+        << s.err.str();
+    // nothing declared: the names are free for the corrected statement
+    EXPECT_EQ(s.run("place A_K, C_K from \"" + file + "\" marker THI between HIP and KNEE\n"), RunStatus::ok)
+        << s.err.str();
 }
 
 }  // namespace
