@@ -339,8 +339,9 @@ SimulationResult run_speed_simulation(System& sys, const KaneEquations& kane,
     const double t0 = request.options.t_initial, tol = request.options.constraint_tolerance;
     detail::OdeState x0(n + k, 0.0);
     std::vector<std::pair<ex, double>> checked;  // u_s or q' given, with its value
-    for (const auto& [symbol, value] : request.initial_values) {
-        const double v = table.evaluate(value);
+    for (const auto& given : request.initial_values) {
+        const ex& symbol = given.first;  // named, not bound: a lambda may capture it
+        const double v = table.evaluate(given.second);
         const auto at = [&](const std::vector<ex>& list) {
             return static_cast<std::size_t>(
                 std::find_if(list.begin(), list.end(), [&](const ex& x) { return x.is_equal(symbol); }) -
