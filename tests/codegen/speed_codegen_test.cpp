@@ -28,46 +28,9 @@
 namespace alembert::test {
 namespace {
 
-// A thin disk D (m, r) rolling without slip on the plane of Nx, Ny (Nz up), as
-// examples/rolling_disk/model.alb has it: heading q1, lean q2, spin q3, contact point at
-// x Nx + y Ny; speeds u1..u3 the measures of D's angular velocity in L, u4 = x', u5 = y';
-// the no-slip constraints (the velocity of D's point at the contact, along Nx and Ny) solved
-// for u4, u5. A torque T Ly on D (about its axle) is the load.
-SampleNonholonomicModel rolling_disk_in_speeds() {
-    SampleNonholonomicModel out{System("N"), {}, {}, {}, {}, {}, {}};
-    System& sys = out.system;
-    SymbolTable& s = sys.symbols();
-    Frame& N = sys.newtonian();
-    ex m = s.add_constant("m", 2.0), r = s.add_constant("r", 0.3), g = s.add_constant("g", 9.81);
-    for (const char* n : {"q1", "q2", "q3", "x", "y"}) out.q.push_back(s.add_variable(n, 1));
-    for (const char* n : {"u1", "u2", "u3", "u4", "u5"}) out.u.push_back(s.add_variable(n, 1));
-    Frame& Y = sys.add_frame("Y");
-    Frame& L = sys.add_frame("L");
-    RigidBody& D = sys.add_rigid_body("D");
-    Y.orient_axis(N, Axis::z, out.q[0].symbol());
-    L.orient_axis(Y, Axis::x, out.q[1].symbol());
-    D.body_frame().orient_axis(L, Axis::y, out.q[2].symbol());
-    Point& P = sys.add_point("P");
-    P.set_pos(sys.origin(), out.q[3].symbol() * N.x() + out.q[4].symbol() * N.y());
-    D.cm().set_pos(P, r * L.z());
-    Point& DP = sys.add_point("D_P", &D);
-    DP.set_pos(D.cm(), -r * L.z());
-    DP.set_vel_two_point(N, D.cm(), D.body_frame());
-    D.set_mass(m);
-    D.set_inertia(D.cm(), m * r * r / 4, m * r * r / 2, m * r * r / 4);
-    sys.set_gravity(-g * N.z());
-    ex T = s.add_unknown("T");
-    sys.add_torque(D, T * L.y(), "T");
-    Vector w_ND = D.body_frame().ang_vel_in(N);
-    out.kinematic_equations = {out.u[0].symbol() - dot(w_ND, L.x()),
-                               out.u[1].symbol() - dot(w_ND, L.y()),
-                               out.u[2].symbol() - dot(w_ND, L.z()),
-                               out.u[3].symbol() - out.q[3].d(1), out.u[4].symbol() - out.q[4].d(1)};
-    out.motion_constraints = {dot(DP.vel_in(N), N.x()), dot(DP.vel_in(N), N.y())};
-    out.dependent_speeds = {out.u[3].symbol(), out.u[4].symbol()};
-    out.links = {&D};
-    return out;
-}
+// The rolling disk of examples/rolling_disk/model.alb in speeds (make_rolling_disk), with a
+// torque T Ly on D about its axle as the load.
+SampleNonholonomicModel rolling_disk_in_speeds() { return make_rolling_disk(2.0, 0.3, 9.81, true); }
 
 KaneEquations kane_of(const SampleNonholonomicModel& m, bool simplify) {
     std::vector<ex> u;

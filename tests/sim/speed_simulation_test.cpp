@@ -25,48 +25,17 @@ namespace {
 
 constexpr double kDiskMass = 2.0, kDiskRadius = 0.3, kGravity = 9.81;
 
-// A thin disk D (m, r) rolling without slip on the plane of Nx, Ny (Nz up), as
-// examples/rolling_disk/model.alb has it: heading q1 about Nz (frame Y), lean q2 about Yx
-// (frame L), spin q3 about Ly; the contact point P at x Nx + y Ny; speeds u1..u3 the measures
-// of D's angular velocity in L, u4 = x', u5 = y'; no slip at D's point at the contact, solved
-// for u4 and u5. With `torque`, a torque T Ly on D about its axle (a load measure).
+// The rolling disk of examples/rolling_disk/model.alb in speeds (make_rolling_disk) with its
+// Kane equations; with `torque`, a torque T Ly on D about its axle (a load measure).
 struct RollingDisk {
     SampleNonholonomicModel model{System("N"), {}, {}, {}, {}, {}, {}};
     KaneEquations kane{};
 };
 
-RollingDisk make_rolling_disk(bool torque = false) {
-    RollingDisk out;
+RollingDisk rolling_disk_with_kane(bool torque = false) {
+    RollingDisk out{make_rolling_disk(kDiskMass, kDiskRadius, kGravity, torque)};
     SampleNonholonomicModel& d = out.model;
     System& sys = d.system;
-    SymbolTable& s = sys.symbols();
-    Frame& N = sys.newtonian();
-    ex m = s.add_constant("m", kDiskMass), r = s.add_constant("r", kDiskRadius),
-       g = s.add_constant("g", kGravity);
-    for (const char* n : {"q1", "q2", "q3", "x", "y"}) d.q.push_back(s.add_variable(n, 1));
-    for (const char* n : {"u1", "u2", "u3", "u4", "u5"}) d.u.push_back(s.add_variable(n, 1));
-    Frame& Y = sys.add_frame("Y");
-    Frame& L = sys.add_frame("L");
-    RigidBody& D = sys.add_rigid_body("D");
-    Y.orient_axis(N, Axis::z, d.q[0].symbol());
-    L.orient_axis(Y, Axis::x, d.q[1].symbol());
-    D.body_frame().orient_axis(L, Axis::y, d.q[2].symbol());
-    Point& P = sys.add_point("P");
-    P.set_pos(sys.origin(), d.q[3].symbol() * N.x() + d.q[4].symbol() * N.y());
-    D.cm().set_pos(P, r * L.z());
-    Point& DP = sys.add_point("D_P", &D);
-    DP.set_pos(D.cm(), -r * L.z());
-    DP.set_vel_two_point(N, D.cm(), D.body_frame());
-    D.set_mass(m);
-    D.set_inertia(D.cm(), m * r * r / 4, m * r * r / 2, m * r * r / 4);
-    sys.set_gravity(-g * N.z());
-    if (torque) sys.add_torque(D, s.add_unknown("T") * L.y(), "T");
-    Vector w = D.body_frame().ang_vel_in(N);
-    d.kinematic_equations = {d.u[0].symbol() - dot(w, L.x()), d.u[1].symbol() - dot(w, L.y()),
-                             d.u[2].symbol() - dot(w, L.z()), d.u[3].symbol() - d.q[3].d(1),
-                             d.u[4].symbol() - d.q[4].d(1)};
-    d.motion_constraints = {dot(DP.vel_in(N), N.x()), dot(DP.vel_in(N), N.y())};
-    d.dependent_speeds = {d.u[3].symbol(), d.u[4].symbol()};
     std::vector<ex> u;
     for (const TimeVariable& ui : d.u) u.push_back(ui.symbol());
     out.kane = form_kane_equations(sys, KaneOptions{.coordinates = d.q,
@@ -86,7 +55,7 @@ double largest_change(const std::vector<double>& v) {
 }
 
 TEST(SpeedSimulation, RollingDiskKeepsItsEnergyAndItsContactAtRest) {
-    RollingDisk disk = make_rolling_disk();
+    RollingDisk disk = rolling_disk_with_kane();
     const auto& q = disk.model.q;
     const auto& u = disk.model.u;
     SimulationRequest r;
@@ -133,7 +102,7 @@ TEST(SpeedSimulation, RollingDiskTurnsSteadilyAtTheRatesOfEulersEquations) {
     //   W^2 cos(theta) sin(theta) - 6 W u2 cos(theta) - 4 g sin(theta) / r = 0
     // (A = m r^2/4, C = m r^2/2), u2 = (W^2 cos sin - 4 g sin / r) / (6 W cos). The ground
     // contact P moves at r (u2 - W sin theta) Lx: a circle of radius R = r (u2 - W sin) / W.
-    RollingDisk disk = make_rolling_disk();
+    RollingDisk disk = rolling_disk_with_kane();
     const auto& q = disk.model.q;
     const auto& u = disk.model.u;
     const double theta = 0.25, W = -4.0, s = std::sin(theta), c = std::cos(theta);
@@ -161,7 +130,7 @@ TEST(SpeedSimulation, RollingDiskTurnsSteadilyAtTheRatesOfEulersEquations) {
 
 TEST(SpeedSimulation, UprightDiskRollsStraightAtItsRadiusTimesItsSpin) {
     // upright (q2 = 0) with spin w about the axle only: x = r w t, the spin angle w t
-    RollingDisk disk = make_rolling_disk();
+    RollingDisk disk = rolling_disk_with_kane();
     const auto& q = disk.model.q;
     const auto& u = disk.model.u;
     const double w = 7.0;
@@ -353,7 +322,7 @@ TEST(SpeedSimulation, WhippleBicyclesWeaveGrowsAtTheBenchmarkRate) {
 }
 
 TEST(SpeedSimulation, ATorqueThatDoesWorkLeavesTheEnergyColumnOut) {
-    RollingDisk disk = make_rolling_disk(/*torque=*/true);
+    RollingDisk disk = rolling_disk_with_kane(/*torque=*/true);
     const SymbolTable& s = disk.model.system.symbols();
     SimulationRequest r;
     r.inputs = {{s.symbol("T"), ex(0.05)}};
@@ -368,7 +337,7 @@ TEST(SpeedSimulation, ATorqueThatDoesWorkLeavesTheEnergyColumnOut) {
 }
 
 TEST(SpeedSimulation, RefusesWhatItCannotTakeByName) {
-    RollingDisk disk = make_rolling_disk(/*torque=*/true);
+    RollingDisk disk = rolling_disk_with_kane(/*torque=*/true);
     const auto& u = disk.model.u;
     const SymbolTable& s = disk.model.system.symbols();
     SimulationRequest r;

@@ -120,4 +120,13 @@ struct SampleNonholonomicModel {
 /// u1, u4, u6. Upright straight running at speed v: every q and u zero but u3 = v/r_R.
 SampleNonholonomicModel make_whipple_bicycle();
 
+/// A thin disk D (mass, radius) rolling without slip on the plane of Nx, Ny (Nz up), as
+/// examples/rolling_disk/model.alb has it: heading q1 about Nz (frame Y), lean q2 about Yx
+/// (frame L), spin q3 about Ly; the contact point P at x Nx + y Ny; speeds u1..u3 the measures
+/// of D's angular velocity in L, u4 = x', u5 = y'; no slip at D's point at the contact (D_P),
+/// solved for u4 and u5. With `axle_torque`, a torque T Ly on D about its axle (an unknown
+/// load measure T).
+SampleNonholonomicModel make_rolling_disk(double mass, double radius, double gravity,
+                                          bool axle_torque);
+
 }  // namespace alembert
