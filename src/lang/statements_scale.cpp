@@ -20,17 +20,21 @@ namespace {
 
 // ---- grammar -----------------------------------------------------------------------------
 
+// a marker's name in the trial: a name, or a string for a label that is not one ("R.KNE")
+Word parse_marker_name(StatementParser& p) {
+    return p.peek().kind == TokenKind::string ? p.text("a marker's name in the trial")
+                                              : p.name("a marker's name in the trial");
+}
+
 void parse_scale(StatementParser& p, Statement& s) {
     const std::string example = "(scale L_T from \"static.trc\" between HIP and KNEE)";
     s.words["name"] = p.name("the name of the length to declare");
     p.expect_word("from", example);
     s.words["from"] = p.text("the static trial's path (.trc or .c3d)");
     p.expect_word("between", example);
-    s.words["a"] = p.peek().kind == TokenKind::string ? p.text("a marker's name in the trial")
-                                                      : p.name("a marker's name in the trial");
+    s.words["a"] = parse_marker_name(p);
     p.expect_word("and", example);
-    s.words["b"] = p.peek().kind == TokenKind::string ? p.text("a marker's name in the trial")
-                                                      : p.name("a marker's name in the trial");
+    s.words["b"] = parse_marker_name(p);
     if (p.accept_word("within")) s.quantities["within"] = p.quantity();
     if (!p.at_end()) p.fail_expected("'within' (... between HIP and KNEE within 5 mm) or the end of the statement");
 }
@@ -43,15 +47,11 @@ void parse_place(StatementParser& p, Statement& s) {
     p.expect_word("from", example);
     s.words["from"] = p.text("the static trial's path (.trc or .c3d)");
     p.expect_word("marker", example);
-    auto marker = [&] {
-        return p.peek().kind == TokenKind::string ? p.text("a marker's name in the trial")
-                                                  : p.name("a marker's name in the trial");
-    };
-    s.words["marker"] = marker();
+    s.words["marker"] = parse_marker_name(p);
     p.expect_word("between", example);
-    s.words["a"] = marker();
+    s.words["a"] = parse_marker_name(p);
     p.expect_word("and", example);
-    s.words["b"] = marker();
+    s.words["b"] = parse_marker_name(p);
     if (!p.at_end()) p.fail_expected("the end of the statement");
 }
 
