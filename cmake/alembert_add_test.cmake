@@ -10,6 +10,9 @@ include(${CMAKE_CURRENT_LIST_DIR}/alembert_warnings.cmake)
 # --gtest_filter pattern, e.g. "WhippleBicycle.*:BicycleScript.*") get the label `large`
 # instead: models that take seconds here and minutes under the sanitizers, whose code paths
 # smaller models of the same kind cover (the sanitizer pass of scripts/test.sh leaves them out).
+# With ALEMBERT_TEST_SHARDS = N > 0 the program is registered as N tests <name>.shard<i>, each
+# running every N-th of its cases but LARGE's in one process (GoogleTest's sharding), and
+# <name>.large running LARGE's cases: a failure names its case in the test's output.
 function(alembert_add_test name)
   cmake_parse_arguments(PARSE_ARGV 1 ARG "" "LARGE" "SOURCES;LIBS;LABELS")
   if(NOT ARG_LABELS)
@@ -23,7 +26,21 @@ function(alembert_add_test name)
     separate_arguments(_alembert_test_flags UNIX_COMMAND "${ALEMBERT_TEST_PROGRAM_FLAGS}")
     target_compile_options(${target} PRIVATE ${_alembert_test_flags})
   endif()
-  if(ARG_LARGE)
+  if(ALEMBERT_TEST_SHARDS GREATER 0)
+    math(EXPR _last "${ALEMBERT_TEST_SHARDS} - 1")
+    set(_filter "*")
+    if(ARG_LARGE)
+      set(_filter "-${ARG_LARGE}")
+      add_test(NAME ${name}.large COMMAND ${target} --gtest_filter=${ARG_LARGE})
+      set_tests_properties(${name}.large PROPERTIES LABELS large)
+    endif()
+    foreach(_shard RANGE ${_last})
+      add_test(NAME ${name}.shard${_shard} COMMAND ${target} --gtest_filter=${_filter})
+      set_tests_properties(${name}.shard${_shard} PROPERTIES
+        LABELS "${ARG_LABELS}"
+        ENVIRONMENT "GTEST_TOTAL_SHARDS=${ALEMBERT_TEST_SHARDS};GTEST_SHARD_INDEX=${_shard}")
+    endforeach()
+  elseif(ARG_LARGE)
     gtest_discover_tests(${target}
       DISCOVERY_TIMEOUT 60
       TEST_FILTER "-${ARG_LARGE}"

@@ -16,6 +16,8 @@ esac
 
 packages=(
   build-essential cmake pkg-config
+  ninja-build                  # the presets' generator: compiles a target's sources without
+                               # waiting for the libraries it links, so both cores stay busy
   libginac-dev libcln-dev libeigen3-dev
   libboost-dev libfmt-dev libcli11-dev libedit-dev
   gnuplot-nox                  # the plots simulate and inverse draw
