@@ -62,6 +62,11 @@ AutolevTranslation Translator::run(std::string_view source) {
         }
     }
     flush_problems({}, true);
+    for (const auto& [body, waiting] : inertia_waiting_)
+        report(Severity::error, waiting.second,
+               "INERTIA " + body + "(...) gives the inertia about another point than the mass centre, and '" + body +
+                   "' has no MASS, which moving it to the mass centre needs",
+               "give MASS " + body + " = ...");
     while (next_declaration_problem < declaration_problems.size())
         out_.diagnostics.push_back(declaration_problems[next_declaration_problem++]);
     if (newtonian_.empty() && !parsed.statements.empty())
