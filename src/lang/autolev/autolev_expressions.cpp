@@ -45,6 +45,9 @@ Text Translator::expr(const Expr& e) {
         case Expr::Kind::index:
             if (const Entry* m = find(e.text); m && m->kind == Kind::matrix)
                 return m->indices ? array_element(e, *m) : matrix_element(e, *m);
+            if (upper(e.text) == "ZERO" && kane_at_)
+                fail(e.where, "an element of Kane's equations (ZERO = FR() + FRSTAR()) is not translated",
+                     "use them whole: SOLVE(ZERO, U1', ...); in the script, the kane statement's K[i] is an equation");
             if (const Entry* other = find(e.text))
                 fail(e.where, "'" + e.text + "' is " + kind_word(other->kind) + ", not an array",
                      "an array is assigned by its elements first: NAME[1] = ...");

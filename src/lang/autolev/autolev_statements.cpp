@@ -283,7 +283,12 @@ void Translator::assignment(const Statement& st) {
         kinematics_.push_back({en->name, en->name + "' - " + (r.prec <= 1 ? "(" + r.s + ")" : r.s), st.where});
         return;
     }
-    if (key == "ZERO" && !(en && en->indices)) {
+    if (key == "ZERO" && en && en->indices && is_fr_plus_frstar(st.rhs)) {
+        // Kane's equations replace the file's own array ZERO[i] from here on
+        names_.erase(en->key);
+        en = nullptr;
+    }
+    if (key == "ZERO" && !en) {
         if (!is_fr_plus_frstar(st.rhs))
             fail(st.rhs.where, "ZERO is translated only as ZERO = FR() + FRSTAR()",
                  "Kane's equations are formed by ZERO = FR() + FRSTAR() and KANE()");

@@ -414,6 +414,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"array_of_another_kind", kHead + "X = Q[1]\n", 6, 5, "'Q' is a variable, not an array"},
         BadInput{"zero_element_after_kane", kHead + "ZERO = FR() + FRSTAR()\nZERO[1] = L\n", 7, 1,
                  "ZERO holds Kane's equations here"},
+        BadInput{"zero_element_of_kane", kHead + "ZERO = FR() + FRSTAR()\nX = ZERO[1]\n", 7, 5,
+                 "an element of Kane's equations (ZERO = FR() + FRSTAR()) is not translated"},
         BadInput{"kane_after_zero_elements", kHead + "ZERO[1] = L*Q''\nKANE()\n", 7, 1,
                  "KANE() forms Kane's equations from the bodies and loads"},
         // inertia about another point than the mass centre
@@ -437,6 +439,16 @@ TEST(AutolevImport, EveryBadStatementIsReportedInFileOrder) {
     EXPECT_EQ(t.diagnostics[1].location.line, 8);
     EXPECT_EQ(t.diagnostics[2].location.line, 9);
     EXPECT_TRUE(contains(t.script, "R> = L*Nx>\n"));
+}
+
+// ZERO = FR() + FRSTAR() after ZERO[i] = ...: Kane's equations replace the file's own array, as
+// an assignment replaces a value, and SOLVE(ZERO, ...) then solves Kane's equations.
+TEST(AutolevImport, KanesEquationsReplaceAnArrayZero) {
+    AutolevTranslation t = translate_autolev(
+        kHead + "ZERO[1] = L*Q''\nX = ZERO[1]\nZERO = FR() + FRSTAR()\nKANE()\nSOLVE(ZERO, Q'')\n", "zero.al");
+    EXPECT_TRUE(t.ok()) << t.script;
+    EXPECT_TRUE(contains(t.script, "ZERO_1 = L*Q''\nX = ZERO_1\n")) << t.script;
+    EXPECT_TRUE(contains(t.script, "solve K for Q'' as Qdd_solved")) << t.script;
 }
 
 TEST(AutolevImport, EmptyFileGivesAnEmptyScript) {
