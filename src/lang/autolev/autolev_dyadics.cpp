@@ -31,6 +31,7 @@ std::string Translator::unit_dyadic(const Expr& e) {
 
 Text Translator::inertia_about(const Expr& e, const std::string& b, const std::string& p) {
     const bool body = find_object(b) && find_object(b)->kind == Kind::body;
+    if (body) need_placed_inertia(e.where, "the inertia of '" + b + "'", b);
     const std::string cm = body ? b + "cm" : b;
     if (body && p == cm) return dyadic_text("inertia(" + b + ")", 5);
     const std::string r = "pos(" + cm + ", " + p + ")";

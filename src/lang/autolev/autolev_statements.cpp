@@ -38,11 +38,7 @@ void Translator::list(const Statement& st) {
             if (!it.unit.empty()) fail(it.where, "a unit in MASS", "give units in INPUT");
             emit("mass " + en->name + " = " + dimensioned(scalar(it.value), "m_" + en->name));
             massive_.insert(en->name);
-            // INERTIA B(P) before MASS B: its transfer to the mass centre needs the mass
-            if (auto p = inertia_waiting_.find(en->name); p != inertia_waiting_.end()) {
-                emit(p->second.first);
-                inertia_waiting_.erase(p);
-            }
+            release_inertias();  // INERTIA B(P) before MASS B
         }
         return;
     }
@@ -75,12 +71,15 @@ void Translator::list(const Statement& st) {
         std::string line = "inertia " + body + " = " + join(m);
         if (about.empty()) return emit(line);
         // the script moves the inertia to the mass centre where it stands (I - m((r.r) U - r r),
-        // r from P to the mass centre), so it needs the mass: after MASS B if that comes later
+        // r from P to the mass centre), so it needs the mass and that position: it is written
+        // after MASS B and P_P_BO> (directly or through other points) if they come later
         line += " about " + about;
         if (inertia_waiting_.count(body))
-            fail(b.where, "a second INERTIA " + b.lhs.text + "(...) before MASS " + b.lhs.text, "give MASS first");
-        if (massive_.count(body)) return emit(line);
-        inertia_waiting_[body] = {line, b.where};
+            fail(b.where, "a second INERTIA " + b.lhs.text + "(...) before the first is placed (MASS " + b.lhs.text +
+                              " and the position of its mass centre from the point come later)",
+                 "give the inertia once");
+        inertia_waiting_[body] = {line, about, b.where, b.lhs.text + "(" + b.lhs.args[0].text + ")"};
+        release_inertias();
         return;
     }
     if (w == "INPUT") {
@@ -292,6 +291,7 @@ void Translator::assignment(const Statement& st) {
         if (!is_fr_plus_frstar(st.rhs))
             fail(st.rhs.where, "ZERO is translated only as ZERO = FR() + FRSTAR()",
                  "Kane's equations are formed by ZERO = FR() + FRSTAR() and KANE()");
+        need_placed_inertia(st.where, "ZERO = FR() + FRSTAR()");
         if (!kane_at_) kane_at_ = model_.size(), emit("");
         kane_where_ = st.where;
         return;
@@ -458,9 +458,13 @@ void Translator::vector_assignment(const Statement& st) {
     const Entry* existing = find(lhs.text);
     if (!existing) {
         if (key.rfind("P_", 0) == 0)
-            if (auto s = split(name.substr(2), pt, pt))
-                return emit("translate " + s->second + " from " + s->first + " by " +
-                            dimensioned(vec(st.rhs), "r_" + s->second));
+            if (auto s = split(name.substr(2), pt, pt)) {
+                emit("translate " + s->second + " from " + s->first + " by " +
+                     dimensioned(vec(st.rhs), "r_" + s->second));
+                joined_[s->first].insert(s->second);
+                joined_[s->second].insert(s->first);
+                return release_inertias();
+            }
         if (key.rfind("V_", 0) == 0)
             if (auto s = split(name.substr(2), pt, fr))
                 return emit("velocity " + s->first + " in " + s->second + " = " +
@@ -609,6 +613,7 @@ void Translator::expression_statement(const Statement& st) {
             fail(e.where, "KANE() forms Kane's equations from the bodies and loads, and ZERO holds the file's own "
                           "equations (assigned by element at line " + std::to_string(z->where.line) + ")",
                  "solve the file's equations with SOLVE(ZERO, U1', ...), or form Kane's with ZERO = FR() + FRSTAR()");
+        need_placed_inertia(st.where, "KANE()");
         if (!kane_at_) kane_at_ = model_.size(), emit("");
         kane_where_ = st.where;
         return;
@@ -633,6 +638,41 @@ void Translator::expression_statement(const Statement& st) {
         return;
     }
     emit(expr(e).s);
+}
+
+bool Translator::located(const std::string& a, const std::string& b) const {
+    std::set<std::string> seen{a};
+    std::vector<std::string> todo{a};
+    while (!todo.empty()) {
+        const std::string p = todo.back();
+        todo.pop_back();
+        if (p == b) return true;
+        if (auto it = joined_.find(p); it != joined_.end())
+            for (const std::string& q : it->second)
+                if (seen.insert(q).second) todo.push_back(q);
+    }
+    return false;
+}
+
+void Translator::need_placed_inertia(Location where, const std::string& what, const std::string& body) {
+    for (const auto& [b, w] : inertia_waiting_)
+        if (body.empty() || b == body)
+            fail(where,
+                 what + " needs the inertia of INERTIA " + w.said + " at line " + std::to_string(w.where.line) +
+                     ", which is moved to the mass centre only once the mass and the position of the mass centre "
+                     "from the point are given, and they are not yet",
+                 "give MASS and the position before this line");
+}
+
+void Translator::release_inertias() {
+    for (auto it = inertia_waiting_.begin(); it != inertia_waiting_.end();) {
+        if (massive_.count(it->first) && located(it->first + "cm", it->second.about)) {
+            emit(it->second.line);
+            it = inertia_waiting_.erase(it);
+        } else {
+            ++it;
+        }
+    }
 }
 
 Text Translator::dimensioned_text(const Text& t, const std::string& base) {

@@ -359,6 +359,16 @@ private:
 
     // ---- dyadics (autolev_dyadics.cpp) ----------------------------------------------------
 
+    // ---- inertia about another point (autolev_statements.cpp) ------------------------------
+
+    // true if positions the file gave join points a and b, directly or through others
+    bool located(const std::string& a, const std::string& b) const;
+    // the `inertia B = ... about P` of INERTIA B(P) whose mass and position are now given,
+    // written here: the script moves the inertia to the mass centre where it stands
+    void release_inertias();
+    // the error for `what` (KANE(), the inertia of B) needing an inertia still waiting
+    void need_placed_inertia(Location where, const std::string& what, const std::string& body = "");
+
     // D>> assigned, 1>>, 0>>, or I_B_P>> (B's inertia about P, or a particle's about P)
     Text dyadic_name(const Expr& e);
     // D>> = ...: a dyadic of the script
@@ -407,8 +417,16 @@ private:
     std::map<std::string, std::string> point_body_{};  // point -> the body V2PTS fixes it on
     std::vector<std::pair<std::string, Location>> forced_points_{};
     std::set<std::string> massive_{};  // bodies and particles MASS gave a mass, so far
-    // INERTIA B(P) waiting for MASS B: the script's `inertia ... about P` and where it stands
-    std::map<std::string, std::pair<std::string, Location>> inertia_waiting_{};
+    // points joined by a position P_O_Q> so far (both ways)
+    std::map<std::string, std::set<std::string>> joined_{};
+    // INERTIA B(P) waiting for MASS B and the position of B's mass centre from P
+    struct WaitingInertia {
+        std::string line{};   // the script's `inertia B = ... about P`
+        std::string about{};  // P
+        Location where{};
+        std::string said{};  // B(P) as the file writes it
+    };
+    std::map<std::string, WaitingInertia> inertia_waiting_{};
     Location statement_where_{};
     std::map<std::string, int> extra_names_{};
     std::map<std::string, std::string> solved_{};  // X (with its primes) SOLVE assigned -> its value's name

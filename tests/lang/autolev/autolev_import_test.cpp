@@ -420,6 +420,12 @@ INSTANTIATE_TEST_SUITE_P(
                  "KANE() forms Kane's equations from the bodies and loads"},
         // inertia about another point than the mass centre
         BadInput{"inertia_about_without_mass", kHead + "INERTIA A(P), 1, 1, 1\n", 6, 9, "'A' has no MASS"},
+        BadInput{"inertia_about_without_position", kHead + "MASS A = L\nINERTIA A(P), 1, 1, 1\n", 7, 9,
+                 "the file gives no position of A's mass centre from that point"},
+        BadInput{"kane_before_inertia_placed", kHead + "MASS A = L\nINERTIA A(P), 1, 1, 1\nKANE()\nP_P_AO> = L*A1>\n", 8, 1,
+                 "KANE() needs the inertia of INERTIA A(P) at line 7"},
+        BadInput{"inertia_dyadic_before_placed", kHead + "INERTIA A(P), 1, 1, 1\nD>> = I_A_AO>>\n", 7, 7,
+                 "the inertia of 'A' needs the inertia of INERTIA A(P) at line 6"},
         BadInput{"inertia_about_two_points", kHead + "INERTIA A(P, P), 1, 1, 1\n", 6, 9, "takes one point"},
         BadInput{"inertia_about_a_frame", kHead + "INERTIA A(N), 1, 1, 1\n", 6, 11, "expected a point"},
         BadInput{"non_ascii", kHead + "X = 2\xC2\xB7L\n", 6, 6, "unexpected character"},

@@ -1,13 +1,14 @@
-% A rod pendulum whose inertia is given about its pivot NO, before its mass: INERTIA A(NO).
+% A rod pendulum whose inertia is given about its pivot NO, before its mass and before the
+% position of its mass centre from the pivot: INERTIA A(NO).
 NEWTONIAN N
 BODIES A
 CONSTANTS L, M, G
 VARIABLES Q''
 SIMPROT(N, A, 3, Q)
-P_NO_AO> = -L/2*A2>
-V_AO_N> = DT(P_NO_AO>, N)
 INERTIA A(NO), M*L^2/3, 0, M*L^2/3
 MASS A = M
+P_NO_AO> = -L/2*A2>
+V_AO_N> = DT(P_NO_AO>, N)
 GRAVITY(-G*N2>)
 ZERO = FR() + FRSTAR()
 KANE()
