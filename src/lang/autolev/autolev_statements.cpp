@@ -579,9 +579,17 @@ void Translator::expression_statement(const Statement& st) {
         }
         return emit(what + q + " in " + n + " from " + p + (f == "V1PT" ? " moving on " : " fixed on ") + b);
     }
-    if (f == "A1PT")
-        fail(e.where, "A1PT() is not translated",
-             "Alembert forms accelerations from velocities; give V1PT() and leave the acceleration to it");
+    if (f == "A1PT") {
+        // Q moving on B, P fixed on B: a_Q_N = a_Q_B + a_P_N + alf_B_N x r + w_B_N x (w_B_N x r)
+        // + 2 w_B_N x v_Q_B, r from P to Q (the one-point theorem for accelerations)
+        nargs(4, "A1PT(N, B, P, Q)");
+        const std::string n = frame_name(e.args[0]), b = frame_name(e.args[1]);
+        const std::string p = point_name(e.args[2]), q = point_name(e.args[3]);
+        const std::string r = "pos(" + q + ", " + p + ")", w = "angvel(" + b + ", " + n + ")";
+        return emit("acceleration " + q + " in " + n + " = acc(" + q + ", " + b + ") + acc(" + p + ", " + n +
+                    ") + cross(angacc(" + b + ", " + n + "), " + r + ") + cross(" + w + ", cross(" + w + ", " + r +
+                    ")) + 2*cross(" + w + ", vel(" + q + ", " + b + "))");
+    }
     if (f == "GRAVITY") {
         if (e.args.empty()) fail(e.where, "GRAVITY() needs the vector", "write GRAVITY(-G*N2>)");
         if (e.args.size() > 1)

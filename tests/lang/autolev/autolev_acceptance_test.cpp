@@ -399,7 +399,8 @@ TEST(AutolevAcceptanceFiles, EveryFileIsChecked) {
                                      "matrix_values.al", "series_and_solve.al",
                                      "solve_zero_pendulum.al", "matrix_operations.al", "mass_functions.al",
                                      "terms_and_coefficients.al", "normal_modes.al", "chaplygin_sled.al",
-                                     "arrays_by_element.al", "eig_values.al", "dyadic_products.al"};
+                                     "arrays_by_element.al", "eig_values.al", "dyadic_products.al",
+                                     "one_point_acceleration.al"};
     for (const Case& c : cases()) checked.push_back(c.file);
     for (const char* f : {"dyadic_inertia.al", "dyadic_algebra.al"}) checked.push_back(f);
     int files = 0;
@@ -847,6 +848,26 @@ TEST(AutolevAcceptanceFiles, DyadicProductsAndRatesAgreeWithTheHandResults) {
         std::string at = "A = " + num(a) + ", K = " + num(k) + ", Q = " + num(q) + ", Q' = " + num(u);
         Vec v = evaluate(t, {"F12", "F23", "F11", "G12", "G11", "H21", "H23"}, at);
         Vec expected{a * k, 1, 0, u, -2 * std::sin(q) * std::cos(q) * u, -a * u, 0};
+        for (std::size_t i = 0; i < expected.size(); ++i)
+            EXPECT_NEAR(v[i], expected[i], 1e-12 * std::max(1.0, std::abs(expected[i]))) << i << " at " << at;
+    }
+}
+
+// A1PT, by hand: the cart's point O at X N1> accelerates by X'' N1> = X'' (cos Q B1> - sin Q B2>),
+// and the slider P at R B1> on the arm B turning by Q adds (R'' - R Q'^2) B1> + (2 R' Q' + R Q'')
+// B2>, so along B1> X'' cos Q + R'' - R Q'^2, along B2> -X'' sin Q + 2 R' Q' + R Q'', along N3> 0.
+TEST(AutolevAcceptanceFiles, OnePointAccelerationAgreesWithTheHandDerivation) {
+    AutolevTranslation t = import("one_point_acceleration.al");
+    ASSERT_TRUE(t.ok());
+    std::mt19937 rng(2037);
+    auto uniform = [&](double a, double b) { return std::uniform_real_distribution<double>(a, b)(rng); };
+    for (int trial = 0; trial < 3; ++trial) {
+        const double q = uniform(-3, 3), r = uniform(-2, 2), qd = uniform(-3, 3), rd = uniform(-3, 3);
+        const double qdd = uniform(-5, 5), rdd = uniform(-5, 5), xdd = uniform(-5, 5), x = uniform(-2, 2);
+        std::string at = "X = " + num(x) + ", Q = " + num(q) + ", R = " + num(r) + ", Q' = " + num(qd) +
+                         ", R' = " + num(rd) + ", X'' = " + num(xdd) + ", Q'' = " + num(qdd) + ", R'' = " + num(rdd);
+        Vec v = evaluate(t, {"AR", "AT", "AZ"}, at);
+        Vec expected{xdd * std::cos(q) + rdd - r * qd * qd, -xdd * std::sin(q) + 2 * rd * qd + r * qdd, 0};
         for (std::size_t i = 0; i < expected.size(); ++i)
             EXPECT_NEAR(v[i], expected[i], 1e-12 * std::max(1.0, std::abs(expected[i]))) << i << " at " << at;
     }

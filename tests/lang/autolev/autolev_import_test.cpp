@@ -426,6 +426,8 @@ INSTANTIATE_TEST_SUITE_P(
                  "KANE() needs the inertia of INERTIA A(P) at line 7"},
         BadInput{"inertia_dyadic_before_placed", kHead + "INERTIA A(P), 1, 1, 1\nD>> = I_A_AO>>\n", 7, 7,
                  "the inertia of 'A' needs the inertia of INERTIA A(P) at line 6"},
+        BadInput{"a1pt_count", kHead + "A1PT(N, A, P)\n", 6, 1, "takes 4 arguments, not 3"},
+        BadInput{"a1pt_point_not_frame", kHead + "A1PT(N, P, P, P)\n", 6, 9, "expected a frame or body"},
         BadInput{"inertia_about_two_points", kHead + "INERTIA A(P, P), 1, 1, 1\n", 6, 9, "takes one point"},
         BadInput{"inertia_about_a_frame", kHead + "INERTIA A(N), 1, 1, 1\n", 6, 11, "expected a point"},
         BadInput{"non_ascii", kHead + "X = 2\xC2\xB7L\n", 6, 6, "unexpected character"},
