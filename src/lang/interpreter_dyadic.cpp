@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
-// Dyadics in expressions: D>> names, sums and scalar multiples, outer(), dot() with a dyadic,
+// Dyadics in expressions: D>> names, sums and scalar multiples, outer(), dot() with a dyadic
+// (a vector, or a dyadic between two dyadics), dt() of a dyadic in a frame,
 // unitdyadic(), inertia(), and matrix() and vector() between measures and vectors or dyadics.
 #include "interpreter_impl.hpp"
 
@@ -8,17 +9,6 @@ namespace alembert::lang {
 namespace {
 
 using Kind = Value::Kind;
-
-const char* dyadic_kind_word(Kind k) {
-    switch (k) {
-        case Kind::scalar: return "a scalar";
-        case Kind::vector: return "a vector";
-        case Kind::array: return "an array";
-        case Kind::matrix: return "a matrix";
-        case Kind::dyadic: return "a dyadic";
-    }
-    return "a value";
-}
 
 Value dyadic_value(Dyadic d, Dimension dim) {
     Value v;
@@ -42,8 +32,8 @@ Value Interpreter::Impl::dyadic_sum(Value acc, const Value& v, bool subtract, Lo
     const bool zero_acc = acc.kind == Kind::scalar && acc.s.is_zero();
     if ((v.kind != Kind::dyadic && !zero_v) || (acc.kind != Kind::dyadic && !zero_acc))
         throw ScriptError(where,
-                          std::string("cannot ") + (subtract ? "subtract " : "add ") + dyadic_kind_word(v.kind) +
-                              (subtract ? " from " : " to ") + dyadic_kind_word(acc.kind),
+                          std::string("cannot ") + (subtract ? "subtract " : "add ") + kind_name(v.kind) +
+                              (subtract ? " from " : " to ") + kind_name(acc.kind),
                           v.kind == Kind::matrix || acc.kind == Kind::matrix
                               ? "take the dyadic's matrix in a frame first: matrix(N, D>>)"
                               : "the terms of a sum of dyadics are dyadics: outer(a>, b>), inertia(B), "
@@ -68,7 +58,7 @@ Value Interpreter::Impl::dyadic_product(Value acc, const Value& v, bool divide, 
         throw ScriptError(where, "cannot multiply a dyadic and a vector with '*'",
                           "dot them: dot(D>>, v>) or dot(v>, D>>)");
     if (other.kind != Kind::scalar)
-        throw ScriptError(where, std::string("cannot multiply a dyadic by ") + dyadic_kind_word(other.kind),
+        throw ScriptError(where, std::string("cannot multiply a dyadic by ") + kind_name(other.kind),
                           "a dyadic is multiplied or divided by scalars only");
     if (divide) {
         if (v.kind == Kind::dyadic)
@@ -84,19 +74,34 @@ Value Interpreter::Impl::dyadic_product(Value acc, const Value& v, bool divide, 
 
 Value Interpreter::Impl::dyadic_dot(const Expr& e, const Value& x, const Value& y) {
     const auto& a = e.args;
-    if (x.kind == Kind::dyadic && y.kind == Kind::dyadic)
-        throw ScriptError(a[1]->location, "dot() of two dyadics is not supported",
-                          "dot a dyadic with vectors: dot(D>>, v>), dot(v>, D>>) or dot(a>, D>>, b>)");
+    if (x.kind == Kind::dyadic && y.kind == Kind::dyadic) {
+        // (A_i m_ij B_j) . E = A_i m_ij (B_j . E) = A_i (m [E]_B)_il B_l, summed over x's parts
+        Dyadic out = guard(e.location, [&] {
+            Dyadic r;
+            for (const auto& [A, B, m] : x.d.components()) r += Dyadic(*A, *B, m * y.d.components_in(*B));
+            return r;
+        });
+        return dyadic_value(std::move(out), x.dim * y.dim);
+    }
     const std::size_t other = x.kind == Kind::dyadic ? 1 : 0;
     const Value& w = other ? y : x;
     if (w.kind != Kind::vector && !(w.kind == Kind::scalar && w.s.is_zero()))
         throw ScriptError(a[other]->location,
-                          std::string("dot() takes a vector beside a dyadic, but this is ") + dyadic_kind_word(w.kind),
+                          std::string("dot() takes a vector beside a dyadic, but this is ") + kind_name(w.kind),
                           "write dot(D>>, v>) or dot(v>, D>>)");
     Value out;
     out.kind = Kind::vector, out.dim = x.dim * y.dim;
     out.v = guard(e.location, [&] { return other ? alembert::dot(x.d, w.v) : alembert::dot(w.v, y.d); });
     return out;
+}
+
+Value Interpreter::Impl::dyadic_dt(const Expr& e, const Value& x, Frame& F) {
+    // D = F_i [D]_F(i, j) F_j with F's unit vectors fixed in F: dD/dt in F = F_i [D]_F'(i, j) F_j
+    SymbolTable& table = F.symbols();
+    Dyadic out = guard(e.location, [&] {
+        return Dyadic(F, F, x.d.components_in(F).map([&](const ex& c) { return table.dt(c); }));
+    });
+    return dyadic_value(std::move(out), x.dim / Dimension::time());
 }
 
 Value Interpreter::Impl::eval_dyadic(const Expr& e) {
@@ -118,7 +123,7 @@ Value Interpreter::Impl::eval_dyadic(const Expr& e) {
         if (k == Kind::vector && x.kind == Kind::scalar && x.s.is_zero()) x.kind = Kind::vector, x.v = Vector();
         if (x.kind != k)
             throw ScriptError(a[i]->location,
-                              f + "() takes " + dyadic_kind_word(k) + " here, but this is " + dyadic_kind_word(x.kind),
+                              f + "() takes " + kind_name(k) + " here, but this is " + kind_name(x.kind),
                               "write " + form);
         return x;
     };
@@ -164,7 +169,7 @@ Value Interpreter::Impl::eval_dyadic(const Expr& e) {
             return matrix_value(3, 3, std::vector<ex>(m.m.begin(), m.m.end()), x.dim);
         }
         throw ScriptError(a[1]->location, "matrix() takes a vector or a dyadic, but this is " +
-                                              std::string(dyadic_kind_word(x.kind)),
+                                              std::string(kind_name(x.kind)),
                           "write matrix(N, v>) or matrix(N, D>>)");
     }
     // vector(F, M): M's three entries (a column, a row or a list) as measures in F
@@ -177,7 +182,7 @@ Value Interpreter::Impl::eval_dyadic(const Expr& e) {
         throw ScriptError(a[1]->location,
                           "vector() takes three measures (a column, a row or a list of 3), but this is " +
                               (m.kind == Kind::matrix ? "a " + std::to_string(m.rows) + " by " + std::to_string(m.cols) + " matrix"
-                                                      : std::string(dyadic_kind_word(m.kind))),
+                                                      : std::string(kind_name(m.kind))),
                           "write vector(N, [x; y; z])");
     Value out;
     out.kind = Kind::vector, out.dim = m.kind == Kind::array ? Dimension::open() : m.dim;

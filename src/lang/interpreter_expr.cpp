@@ -10,20 +10,20 @@
 
 namespace alembert::lang {
 
-namespace {
-
-using Kind = Value::Kind;
-
-const char* kind_name(Kind k) {
+const char* kind_name(Value::Kind k) {
     switch (k) {
-        case Kind::scalar: return "a scalar";
-        case Kind::vector: return "a vector";
-        case Kind::array: return "an array";
-        case Kind::matrix: return "a matrix";
-        case Kind::dyadic: return "a dyadic";
+        case Value::Kind::scalar: return "a scalar";
+        case Value::Kind::vector: return "a vector";
+        case Value::Kind::array: return "an array";
+        case Value::Kind::matrix: return "a matrix";
+        case Value::Kind::dyadic: return "a dyadic";
     }
     return "a value";
 }
+
+namespace {
+
+using Kind = Value::Kind;
 
 Value scalar_value(const ex& s, Dimension d) {
     Value v;
@@ -559,10 +559,13 @@ Value Interpreter::Impl::eval_call(const Expr& e) {
                               "write dt(s) for a scalar or dt(v>, N) for a vector in frame N");
         Value x = eval(*a[0]);
         if (a.size() == 2) {
-            if (x.kind != Kind::vector) throw ScriptError(a[0]->location, "dt(v>, N) takes a vector", "");
+            if (x.kind == Kind::dyadic) return dyadic_dt(e, x, frame(word(1, "a frame")));
+            if (x.kind != Kind::vector) throw ScriptError(a[0]->location, "dt(v>, N) takes a vector or a dyadic", "");
             Frame& F = frame(word(1, "a frame"));
             return vector_value(guarded([&] { return x.v.dt_in(F); }), x.dim / kT);
         }
+        if (x.kind == Kind::dyadic)
+            throw ScriptError(a[0]->location, "a dyadic's time derivative depends on the frame", "write dt(D>>, N)");
         if (x.kind != Kind::scalar)
             throw ScriptError(a[0]->location, "a vector's time derivative depends on the frame",
                               "write dt(v>, N)");

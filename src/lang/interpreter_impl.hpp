@@ -32,6 +32,10 @@ struct Value {
     Dimension dim = Dimension::open();
 };
 
+/// The kind of a value as messages name it: "a scalar", "a vector", "an array", "a matrix",
+/// "a dyadic".
+const char* kind_name(Value::Kind k);
+
 /// A matrix value of `rows` by `cols` entries given row by row (`m` set too when 3 by 3).
 Value matrix_value(int rows, int cols, std::vector<ex> entries, Dimension dim);
 
@@ -358,8 +362,10 @@ struct Interpreter::Impl {
     Value eval_dyadic_name(const Expr& e);
     /// outer(), unitdyadic(), inertia(), matrix(), vector(), and dot() of three arguments.
     Value eval_dyadic(const Expr& e);
-    /// dot(x, y) with x or y a dyadic: D . v, v . D (a vector); two dyadics are refused.
+    /// dot(x, y) with x or y a dyadic: D . v, v . D (a vector), or D . E (a dyadic).
     Value dyadic_dot(const Expr& e, const Value& x, const Value& y);
+    /// dt(D>>, F): the time derivative of dyadic x in frame F.
+    Value dyadic_dt(const Expr& e, const Value& x, Frame& F);
     /// acc + v (acc - v when `subtract`), one of them a dyadic: both dyadics.
     Value dyadic_sum(Value acc, const Value& v, bool subtract, Location where);
     /// acc * v (acc / v when `divide`), one of them a dyadic: a dyadic times or divided by a

@@ -206,6 +206,81 @@ TEST(DyadicFunctions, ParallelAxisTransferGivesTheRodsInertiaAboutItsEnd) {
     }
 }
 
+// The dot product of two dyadics, by hand in N's unit vectors: [D . E]_N = [D]_N [E]_N. With B
+// turned from N by q about z, Bx> = (c, s, 0) and By> = (-s, c, 0) in N, so D = a Nx> Bx> +
+// b By> Nz> has [D]_N = a ex bx^T + b by ez^T and E = k Bx> Ny> + h Nz> Bz> has [E]_N =
+// k bx ey^T + h ez ez^T; D . U = D for the unit dyadic.
+TEST(DyadicFunctions, DotOfTwoDyadicsIsTheProductOfTheirMatricesByHand) {
+    DyadicRun r;
+    r.ok("constant a, b, k, h\n"
+         "variable q\n"
+         "newtonian N\n"
+         "frame B\n"
+         "rotate B from N about z by q\n"
+         "digits 17\n"
+         "D>> = a*outer(Nx>, Bx>) + b*outer(By>, Nz>)\n"
+         "E>> = k*outer(Bx>, Ny>) + h*outer(Nz>, Bz>)\n"
+         "DE = matrix(N, dot(D>>, E>>))\n"
+         "ED = matrix(N, dot(E>>, D>>))\n"
+         "DU = matrix(B, dot(D>>, unitdyadic(B)) - D>>)\n");
+    std::mt19937 rng(2705);
+    std::uniform_real_distribution<double> g(-2, 2);
+    for (int trial = 0; trial < 3; ++trial) {
+        const double q = g(rng), a = g(rng), b = g(rng), k = g(rng), h = g(rng);
+        const std::string at = "q = " + digits17(q) + ", a = " + digits17(a) + ", b = " + digits17(b) + ", k = " +
+                               digits17(k) + ", h = " + digits17(h);
+        const double c = std::cos(q), s = std::sin(q);
+        const Vec3 ex{1, 0, 0}, ey{0, 1, 0}, ez{0, 0, 1}, bx{c, s, 0}, by{-s, c, 0};
+        Mat D{}, E{};
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j) {
+                D[i][j] = a * ex[i] * bx[j] + b * by[i] * ez[j];
+                E[i][j] = k * bx[i] * ey[j] + h * ez[i] * ez[j];
+            }
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j) {
+                double de = 0, ed = 0;
+                for (int l = 0; l < 3; ++l) de += D[i][l] * E[l][j], ed += E[i][l] * D[l][j];
+                const std::string ij = "[" + std::to_string(i + 1) + ", " + std::to_string(j + 1) + "]";
+                expect_close(r.at("DE" + ij, at), de, "[D.E]_N" + ij + " at " + at);
+                expect_close(r.at("ED" + ij, at), ed, "[E.D]_N" + ij + " at " + at);
+                expect_close(r.at("DU" + ij, at), 0, "D.U - D" + ij + " at " + at);
+            }
+    }
+}
+
+// The time derivative of the dyad Bx> Bx> with B turned from N by q about z, by hand: in N,
+// Bx> = (cos q, sin q, 0) has the rate q' By>, so d/dt (Bx> Bx>) = q' (By> Bx> + Bx> By>), in B's
+// unit vectors [0, q', 0; q', 0, 0; 0, 0, 0]; in B itself the dyad is constant. The rate of the
+// inertia of a body spinning about its symmetry axis z in N is 0 in N.
+TEST(DyadicFunctions, TimeDerivativeOfADyadicInAFrameIsTheHandRate) {
+    DyadicRun r;
+    r.ok("constant I1, I3\n"
+         "variable q'\n"
+         "newtonian N\n"
+         "body B\n"
+         "rotate B from N about z by q\n"
+         "inertia B = I1, I1, I3\n"
+         "digits 17\n"
+         "DN = matrix(B, dt(outer(Bx>, Bx>), N))\n"
+         "DB = matrix(N, dt(outer(Bx>, Bx>), B))\n"
+         "IN = matrix(N, dt(inertia(B), N))\n");
+    std::mt19937 rng(2706);
+    std::uniform_real_distribution<double> g(-2, 2);
+    for (int trial = 0; trial < 3; ++trial) {
+        const double q = g(rng), u = g(rng), i1 = 1 + std::abs(g(rng)), i3 = 1 + std::abs(g(rng));
+        const std::string at =
+            "q = " + digits17(q) + ", q' = " + digits17(u) + ", I1 = " + digits17(i1) + ", I3 = " + digits17(i3);
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j) {
+                const std::string ij = "[" + std::to_string(i + 1) + ", " + std::to_string(j + 1) + "]";
+                expect_close(r.at("DN" + ij, at), (i == 0 && j == 1) || (i == 1 && j == 0) ? u : 0, "d/dt in N" + ij);
+                expect_close(r.at("DB" + ij, at), 0, "d/dt in B" + ij);
+                expect_close(r.at("IN" + ij, at), 0, "inertia rate in N" + ij);
+            }
+    }
+}
+
 // Misuse is an error at the offending argument, naming what is wrong, with file:line:col and a
 // caret; nothing is printed as a value.
 TEST(DyadicFunctions, MisuseIsAnErrorAtTheArgument) {
@@ -217,7 +292,7 @@ TEST(DyadicFunctions, MisuseIsAnErrorAtTheArgument) {
         std::string message;
     };
     const Bad bad[] = {
-        {"dot(D>>, D>>)", 10, "dot() of two dyadics is not supported"},
+        {"dot(D>>, 2)", 10, "dot() takes a vector beside a dyadic, but this is a scalar"},
         {"sin(D>>)", 5, "sin() takes a scalar"},
         {"D>> + Nx>", 7, "cannot add a vector to a dyadic"},
         {"Nx>*D>>", 5, "cannot multiply a dyadic and a vector with '*'"},
@@ -235,7 +310,7 @@ TEST(DyadicFunctions, MisuseIsAnErrorAtTheArgument) {
         {"evaluate D>> at q = 1", 10, "evaluate takes a scalar"},
         {"transpose(D>>)", 11, "transpose() takes a matrix, but this is a dyadic"},
         {"[1, 0, 0; 0, 1, 0; 0, 0, 1] + D>>", 31, "cannot add a dyadic to a matrix"},
-        {"dt(D>>, N)", 4, "dt(v>, N) takes a vector"},
+        {"dt(D>>)", 4, "a dyadic's time derivative depends on the frame"},
         {"outer(Nx>, 2)", 12, "outer() takes a vector here, but this is a scalar"},
     };
     for (const Bad& b : bad) {

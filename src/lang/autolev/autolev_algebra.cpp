@@ -30,9 +30,9 @@ std::optional<Text> Translator::term_call(const Expr& e, const std::string& f, b
 }
 
 void Translator::eig_statement(const Expr& e) {
-    if (e.args.size() != 3)
-        fail(e.where, "EIG() as a statement takes the matrix and the names of its eigenvalues and eigenvectors",
-             "write EIG(M, VALUES, VECTORS), or VALUES = EIG(M) for the eigenvalues alone");
+    if (e.args.size() != 2 && e.args.size() != 3)
+        fail(e.where, "EIG() as a statement takes the matrix and the names of its eigenvalues (and eigenvectors)",
+             "write EIG(M, VALUES) or EIG(M, VALUES, VECTORS)");
     Text m = expr(e.args[0]);
     if (!m.matrix())
         fail(e.args[0].where, "EIG() takes a matrix here, not a " + std::string(m.vector ? "vector" : "scalar"),
@@ -53,20 +53,23 @@ void Translator::eig_statement(const Expr& e) {
         Entry& stored = names_[en.key];
         stored.rows = m.rows;
         stored.cols = cols == 1 ? 1 : m.rows;
+        stored.elements.clear(), stored.indices = 0;  // assigned whole from here on
         return en.name;
     };
     const Expr& values = e.args[1];
-    const Expr& vectors = e.args[2];
-    if (values.kind == Expr::Kind::name && vectors.kind == Expr::Kind::name && upper(values.text) == upper(vectors.text))
-        fail(vectors.where, "EIG() names its eigenvalues and eigenvectors alike", "give them two names");
+    const Expr* vectors = e.args.size() == 3 ? &e.args[2] : nullptr;
+    if (vectors && values.kind == Expr::Kind::name && vectors->kind == Expr::Kind::name &&
+        upper(values.text) == upper(vectors->text))
+        fail(vectors->where, "EIG() names its eigenvalues and eigenvectors alike", "give them two names");
     const Expr& matrix = e.args[0];
-    for (const Expr* x : {&values, &vectors})
-        if (matrix.kind == Expr::Kind::name && x->kind == Expr::Kind::name && upper(matrix.text) == upper(x->text))
+    for (const Expr* x : {&values, vectors})
+        if (x && matrix.kind == Expr::Kind::name && x->kind == Expr::Kind::name && upper(matrix.text) == upper(x->text))
             fail(x->where, "EIG() would assign '" + x->text + "', its own matrix, before it is done with it",
                  "name the eigenvalues and eigenvectors apart from the matrix");
     const std::string v = target(values, 1);
     emit(v + " = eig(" + m.s + ")");
-    const std::string w = target(vectors, 0);
+    if (!vectors) return;  // EIG(M, VALUES): the eigenvalues alone
+    const std::string w = target(*vectors, 0);
     emit(w + " = eigvec(" + m.s + ")");
 }
 

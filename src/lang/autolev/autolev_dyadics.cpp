@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: MIT
 // Autolev dyadics to the script's: D>> assigned, 1>> and 0>>, I_B_P>> (inertia dyadics), the
-// dyad A1>*A2>, sums and scalar multiples, DOT with a vector, and MATRIX and VECTOR between
+// dyad A1>*A2>, sums and scalar multiples, DOT with a vector or of two dyadics, and MATRIX and VECTOR between
 // measures and vectors or dyadics.
 #include "autolev_translator.hpp"
 
@@ -31,6 +31,7 @@ std::string Translator::unit_dyadic(const Expr& e) {
 
 Text Translator::inertia_about(const Expr& e, const std::string& b, const std::string& p) {
     const bool body = find_object(b) && find_object(b)->kind == Kind::body;
+    if (body) need_placed_inertia(e.where, "the inertia of '" + b + "'", b);
     const std::string cm = body ? b + "cm" : b;
     if (body && p == cm) return dyadic_text("inertia(" + b + ")", 5);
     const std::string r = "pos(" + cm + ", " + p + ")";
@@ -108,7 +109,8 @@ Text Translator::dyadic_combine(const Expr& e, Text a, Text b) {
     if (op == "*" || op == "/") {
         if (a.dyadic && b.dyadic)
             fail(e.where, std::string("'") + op + "' between two dyadics is not translated",
-                 "dot a dyadic with vectors: DOT(D>>, v>) or DOT(v>, D>>)");
+                 "DOT(D>>, E>>) is their dot product, a dyadic; '*' between two vectors makes their dyad, and "
+                 "between two dyadics a product the script has no counterpart of");
         const Text& other = a.dyadic ? b : a;
         if (op == "/" && b.dyadic) fail(e.where, "division by a dyadic", "divide the dyadic by a scalar instead");
         if (other.vector)
@@ -126,8 +128,8 @@ Text Translator::dyadic_combine(const Expr& e, Text a, Text b) {
 }
 
 Text Translator::dyadic_dot(const Expr& e, const Text& a, const Text& b) {
-    if (a.dyadic && b.dyadic)
-        fail(e.where, "DOT() of two dyadics is not translated", "dot a dyadic with vectors: DOT(D>>, v>) or DOT(v>, D>>)");
+    // D>> . E>> is a dyadic: (a b) . (c d) = (b.c) a d
+    if (a.dyadic && b.dyadic) return dyadic_text("dot(" + a.s + ", " + b.s + ")", 5, a.numeric && b.numeric);
     const Text& other = a.dyadic ? b : a;
     if (!other.vector)
         fail(e.args[a.dyadic ? 1 : 0].where, std::string("DOT() takes a vector beside a dyadic, not ") + text_kind(other),

@@ -35,7 +35,7 @@ Text Translator::expr(const Expr& e) {
             }
             if (e.dyadic) return dyadic_name(e);
             if (const Entry* m = e.vector || e.primes ? nullptr : find(e.text); m && m->kind == Kind::matrix)
-                return {m->name, false, 5, false, m->rows, m->cols};
+                return m->indices ? whole_array(e, *m) : Text{m->name, false, 5, false, m->rows, m->cols};
             resolved_numeric_ = false;
             Text t = e.vector ? Text{vector_name(e), true, 5} : Text{scalar_name(e), false, 5};
             t.numeric = resolved_numeric_;
@@ -43,9 +43,16 @@ Text Translator::expr(const Expr& e) {
         }
         case Expr::Kind::call: return call(e);
         case Expr::Kind::index:
-            if (const Entry* m = find(e.text); m && m->kind == Kind::matrix) return matrix_element(e, *m);
-            fail(e.where, "the array element '" + e.text + "[...]' is not translated",
-                 "Alembert arrays hold equations; name the value as a scalar instead");
+            if (const Entry* m = find(e.text); m && m->kind == Kind::matrix)
+                return m->indices ? array_element(e, *m) : matrix_element(e, *m);
+            if (upper(e.text) == "ZERO" && kane_at_)
+                fail(e.where, "an element of Kane's equations (ZERO = FR() + FRSTAR()) is not translated",
+                     "use them whole: SOLVE(ZERO, U1', ...); in the script, the kane statement's K[i] is an equation");
+            if (const Entry* other = find(e.text))
+                fail(e.where, "'" + e.text + "' is " + kind_word(other->kind) + ", not an array",
+                     "an array is assigned by its elements first: NAME[1] = ...");
+            fail(e.where, "the array '" + e.text + "' is not assigned",
+                 "assign its elements before this line: " + e.text + "[1] = ...");
         case Expr::Kind::unary: {
             Text a = expr(e.args[0]);
             if (e.text == "+") return a;
@@ -215,9 +222,12 @@ Text Translator::call_text(const Expr& e, bool& numeric) {
         args(1, 2);
         Text v = expr(e.args[0]);
         numeric = v.numeric;
-        if (v.dyadic)
-            fail(e.args[0].where, "DT of a dyadic is not translated",
-                 "differentiate its measures: DT(DOT(N1>, DOT(D>>, N1>)))");
+        if (v.dyadic) {
+            if (e.args.size() != 2)
+                fail(e.where, "DT of a dyadic needs the frame: DT(D>>, N)",
+                     "a dyadic's rate depends on the frame it is taken in, as a vector's does");
+            return {"dt(" + v.s + ", " + frame_name(e.args[1]) + ")", false, 5, false, 0, 0, true};
+        }
         if (v.vector) {
             if (e.args.size() != 2) fail(e.where, "DT of a vector needs the frame: DT(v>, N)");
             return {"dt(" + v.s + ", " + frame_name(e.args[1]) + ")", true, 5};

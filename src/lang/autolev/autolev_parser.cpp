@@ -557,6 +557,27 @@ Statement parse_statement(Parser& p, const Lexer& lex, const std::vector<Token>&
                    "one statement a line; separate statements with ';'");
         return st;
     }
+    // `ZERO[1] += e` is `ZERO[1] = ZERO[1] + (e)` (also -=, *=, /=)
+    if (first.kind == Token::Kind::name && p.is_symbol("[", 1)) {
+        std::size_t k = 2;
+        for (int depth = 1; depth > 0 && p.peek(k).kind != Token::Kind::end; ++k)
+            depth += p.is_symbol("[", k) ? 1 : p.is_symbol("]", k) ? -1 : 0;
+        if (p.is_symbol("=", k + 1) &&
+            (p.is_symbol("+", k) || p.is_symbol("-", k) || p.is_symbol("*", k) || p.is_symbol("/", k))) {
+            Expr lhs = p.primary();
+            const Token& op = p.take();
+            p.take();
+            st.kind = Statement::Kind::assignment;
+            Expr rhs = p.expression();
+            st.compound = op.text[0];
+            st.rhs = p.binary(op, lhs, std::move(rhs));
+            st.lhs = std::move(lhs);
+            if (!p.at_end())
+                p.fail(p.peek(), "unexpected " + p.describe(p.peek()) + " after the statement",
+                       "one statement a line; separate statements with ';'");
+            return st;
+        }
+    }
     Expr e = p.expression();
     if (p.is_symbol("=")) {
         p.take();

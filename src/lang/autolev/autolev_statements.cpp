@@ -37,6 +37,8 @@ void Translator::list(const Statement& st) {
             if (!it.has_value) fail(it.where, "the mass of '" + it.lhs.text + "' is missing", "write MASS " + it.lhs.text + " = M");
             if (!it.unit.empty()) fail(it.where, "a unit in MASS", "give units in INPUT");
             emit("mass " + en->name + " = " + dimensioned(scalar(it.value), "m_" + en->name));
+            massive_.insert(en->name);
+            release_inertias();  // INERTIA B(P) before MASS B
         }
         return;
     }
@@ -45,17 +47,39 @@ void Translator::list(const Statement& st) {
             fail(st.where, "INERTIA takes a body and 3 or 6 measures, not " + std::to_string(st.items.empty() ? 0 : st.items.size() - 1),
                  "write INERTIA B, I11, I22, I33 [, I12, I23, I31]");
         const Item& b = st.items[0];
-        if (b.lhs.kind == Expr::Kind::call)
-            fail(b.where, "INERTIA about a point other than the mass centre ('" + b.lhs.text + "(...)') is not translated",
-                 "give the central inertia: INERTIA " + b.lhs.text + ", I11, I22, I33");
-        std::string body = body_name(b.lhs);
+        // INERTIA B(P), ...: the measures about point P (in B's unit vectors, as about BO)
+        std::string about;
+        Expr body_expr = b.lhs;
+        if (b.lhs.kind == Expr::Kind::call) {
+            if (b.lhs.args.size() != 1)
+                fail(b.where, "INERTIA " + b.lhs.text + "(...) takes one point, about which the measures are given",
+                     "write INERTIA " + b.lhs.text + "(P), I11, I22, I33");
+            body_expr = Expr{};
+            body_expr.kind = Expr::Kind::name;
+            body_expr.text = b.lhs.text;
+            body_expr.where = b.lhs.where;
+            about = point_name(b.lhs.args[0]);
+        }
+        std::string body = body_name(body_expr);
+        if (about == body + "cm") about.clear();  // INERTIA B(BO): about the mass centre
         std::vector<std::string> m;
         for (std::size_t i = 1; i < st.items.size(); ++i) {
             if (st.items[i].has_value || !st.items[i].unit.empty())
                 fail(st.items[i].where, "an inertia measure must be a scalar expression");
             m.push_back(dimensioned(scalar(st.items[i].lhs), "I" + std::to_string(i) + "_" + body));
         }
-        emit("inertia " + body + " = " + join(m));
+        std::string line = "inertia " + body + " = " + join(m);
+        if (about.empty()) return emit(line);
+        // the script moves the inertia to the mass centre where it stands (I - m((r.r) U - r r),
+        // r from P to the mass centre), so it needs the mass and that position: it is written
+        // after MASS B and P_P_BO> (directly or through other points) if they come later
+        line += " about " + about;
+        if (inertia_waiting_.count(body))
+            fail(b.where, "a second INERTIA " + b.lhs.text + "(...) before the first is placed (MASS " + b.lhs.text +
+                              " and the position of its mass centre from the point come later)",
+                 "give the inertia once");
+        inertia_waiting_[body] = {line, about, b.where, b.lhs.text + "(" + b.lhs.args[0].text + ")"};
+        release_inertias();
         return;
     }
     if (w == "INPUT") {
@@ -258,10 +282,16 @@ void Translator::assignment(const Statement& st) {
         kinematics_.push_back({en->name, en->name + "' - " + (r.prec <= 1 ? "(" + r.s + ")" : r.s), st.where});
         return;
     }
-    if (key == "ZERO") {
+    if (key == "ZERO" && en && en->indices && is_fr_plus_frstar(st.rhs)) {
+        // Kane's equations replace the file's own array ZERO[i] from here on
+        names_.erase(en->key);
+        en = nullptr;
+    }
+    if (key == "ZERO" && !en) {
         if (!is_fr_plus_frstar(st.rhs))
             fail(st.rhs.where, "ZERO is translated only as ZERO = FR() + FRSTAR()",
                  "Kane's equations are formed by ZERO = FR() + FRSTAR() and KANE()");
+        need_placed_inertia(st.where, "ZERO = FR() + FRSTAR()");
         if (!kane_at_) kane_at_ = model_.size(), emit("");
         kane_where_ = st.where;
         return;
@@ -409,27 +439,8 @@ void Translator::matrix_assignment(const Statement& st) {
     Entry& stored = names_[e.key];
     stored.rows = m.rows;
     stored.cols = m.cols;
+    stored.elements.clear(), stored.indices = 0;  // assigned whole from here on
     emit(e.name + " = " + m.s);
-}
-
-void Translator::array_assignment(const Statement& st) {
-    const Expr& lhs = st.lhs;
-    std::string key = upper(lhs.text);
-    if (key == "DEPENDENT") {
-        if (lhs.args.size() != 1 || lhs.args[0].kind != Expr::Kind::number)
-            fail(lhs.where, "DEPENDENT takes one index: DEPENDENT[1] = ...");
-        constraints_.push_back(scalar(st.rhs).s);
-        if (!constraints_where_) constraints_where_ = st.where;
-        return;
-    }
-    if (key == "AUXILIARY")
-        fail(lhs.where, "auxiliary speeds (AUXILIARY[...]) are not translated",
-             "Alembert's kane statement takes them as 'auxiliary u...'; add them by hand");
-    if (const Entry* en = find(lhs.text); en && en->kind == Kind::matrix)
-        fail(lhs.where, "an element of matrix '" + lhs.text + "' is not assigned alone",
-             "assign the whole matrix: " + lhs.text + " = [...]");
-    fail(lhs.where, "the array '" + lhs.text + "[...]' is not translated",
-         "name each element as a scalar of its own");
 }
 
 void Translator::vector_assignment(const Statement& st) {
@@ -447,9 +458,13 @@ void Translator::vector_assignment(const Statement& st) {
     const Entry* existing = find(lhs.text);
     if (!existing) {
         if (key.rfind("P_", 0) == 0)
-            if (auto s = split(name.substr(2), pt, pt))
-                return emit("translate " + s->second + " from " + s->first + " by " +
-                            dimensioned(vec(st.rhs), "r_" + s->second));
+            if (auto s = split(name.substr(2), pt, pt)) {
+                emit("translate " + s->second + " from " + s->first + " by " +
+                     dimensioned(vec(st.rhs), "r_" + s->second));
+                joined_[s->first].insert(s->second);
+                joined_[s->second].insert(s->first);
+                return release_inertias();
+            }
         if (key.rfind("V_", 0) == 0)
             if (auto s = split(name.substr(2), pt, fr))
                 return emit("velocity " + s->first + " in " + s->second + " = " +
@@ -564,9 +579,17 @@ void Translator::expression_statement(const Statement& st) {
         }
         return emit(what + q + " in " + n + " from " + p + (f == "V1PT" ? " moving on " : " fixed on ") + b);
     }
-    if (f == "A1PT")
-        fail(e.where, "A1PT() is not translated",
-             "Alembert forms accelerations from velocities; give V1PT() and leave the acceleration to it");
+    if (f == "A1PT") {
+        // Q moving on B, P fixed on B: a_Q_N = a_Q_B + a_P_N + alf_B_N x r + w_B_N x (w_B_N x r)
+        // + 2 w_B_N x v_Q_B, r from P to Q (the one-point theorem for accelerations)
+        nargs(4, "A1PT(N, B, P, Q)");
+        const std::string n = frame_name(e.args[0]), b = frame_name(e.args[1]);
+        const std::string p = point_name(e.args[2]), q = point_name(e.args[3]);
+        const std::string r = "pos(" + q + ", " + p + ")", w = "angvel(" + b + ", " + n + ")";
+        return emit("acceleration " + q + " in " + n + " = acc(" + q + ", " + b + ") + acc(" + p + ", " + n +
+                    ") + cross(angacc(" + b + ", " + n + "), " + r + ") + cross(" + w + ", cross(" + w + ", " + r +
+                    ")) + 2*cross(" + w + ", vel(" + q + ", " + b + "))");
+    }
     if (f == "GRAVITY") {
         if (e.args.empty()) fail(e.where, "GRAVITY() needs the vector", "write GRAVITY(-G*N2>)");
         if (e.args.size() > 1)
@@ -594,6 +617,11 @@ void Translator::expression_statement(const Statement& st) {
         if (!e.args.empty())
             fail(e.args[0].where, "KANE() with arguments is not translated",
                  "declare the dependent speeds with CONSTRAIN(DEPENDENT[...]) and write KANE()");
+        if (const Entry* z = find("ZERO"); z && z->indices)
+            fail(e.where, "KANE() forms Kane's equations from the bodies and loads, and ZERO holds the file's own "
+                          "equations (assigned by element at line " + std::to_string(z->where.line) + ")",
+                 "solve the file's equations with SOLVE(ZERO, U1', ...), or form Kane's with ZERO = FR() + FRSTAR()");
+        need_placed_inertia(st.where, "KANE()");
         if (!kane_at_) kane_at_ = model_.size(), emit("");
         kane_where_ = st.where;
         return;
@@ -618,6 +646,41 @@ void Translator::expression_statement(const Statement& st) {
         return;
     }
     emit(expr(e).s);
+}
+
+bool Translator::located(const std::string& a, const std::string& b) const {
+    std::set<std::string> seen{a};
+    std::vector<std::string> todo{a};
+    while (!todo.empty()) {
+        const std::string p = todo.back();
+        todo.pop_back();
+        if (p == b) return true;
+        if (auto it = joined_.find(p); it != joined_.end())
+            for (const std::string& q : it->second)
+                if (seen.insert(q).second) todo.push_back(q);
+    }
+    return false;
+}
+
+void Translator::need_placed_inertia(Location where, const std::string& what, const std::string& body) {
+    for (const auto& [b, w] : inertia_waiting_)
+        if (body.empty() || b == body)
+            fail(where,
+                 what + " needs the inertia of INERTIA " + w.said + " at line " + std::to_string(w.where.line) +
+                     ", which is moved to the mass centre only once the mass and the position of the mass centre "
+                     "from the point are given, and they are not yet",
+                 "give MASS and the position before this line");
+}
+
+void Translator::release_inertias() {
+    for (auto it = inertia_waiting_.begin(); it != inertia_waiting_.end();) {
+        if (massive_.count(it->first) && located(it->first + "cm", it->second.about)) {
+            emit(it->second.line);
+            it = inertia_waiting_.erase(it);
+        } else {
+            ++it;
+        }
+    }
 }
 
 Text Translator::dimensioned_text(const Text& t, const std::string& base) {
@@ -676,6 +739,7 @@ void Translator::solve_statement(const Expr& e) {
         count = e.args.size() - 1;
     } else if (const Entry* en = m.kind == Expr::Kind::name && !m.vector ? find(m.text) : nullptr;
         en && en->kind == Kind::matrix) {
+        if (en->indices) whole_array(m, *en);  // ZERO[1] = ...: the matrix written from its elements
         if (en->rows < 0 || en->cols < 0)
             fail(m.where, "SOLVE() takes a matrix whose size is known here, and the size of '" + m.text +
                               "' is known only when the script runs", "write the equations out: EQ = [e1; e2]");

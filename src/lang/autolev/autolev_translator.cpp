@@ -62,6 +62,17 @@ AutolevTranslation Translator::run(std::string_view source) {
         }
     }
     flush_problems({}, true);
+    for (const auto& [body, waiting] : inertia_waiting_) {
+        const bool mass = massive_.count(body) > 0;
+        const std::string b = waiting.said.substr(0, waiting.said.find('('));
+        report(Severity::error, waiting.where,
+               "INERTIA " + waiting.said + " gives the inertia about another point than the mass centre, and " +
+                   (mass ? "the file gives no position of " + b + "'s mass centre from that point"
+                         : "'" + b + "' has no MASS") +
+                   ", which moving it to the mass centre needs",
+               mass ? "give the position, P_..._" + b + "O> = ..., directly or through other points"
+                    : "give MASS " + b + " = ...");
+    }
     while (next_declaration_problem < declaration_problems.size())
         out_.diagnostics.push_back(declaration_problems[next_declaration_problem++]);
     if (newtonian_.empty() && !parsed.statements.empty())

@@ -48,6 +48,11 @@ struct Entry {
     bool numeric = false;  // a scalar or vector the file assigned from numbers alone
     std::string key{};     // the Autolev name in upper case
     int rows = 0, cols = 0;  // a matrix's size
+    // an array the file assigns by element (ZERO[1] = ..., M[1, 2] = ...): each element a
+    // scalar of the script, by its row and column; the whole matrix is written when it is used
+    std::map<std::pair<int, int>, std::string> elements{};
+    int indices = 0;          // 1 (ZERO[i]) or 2 (M[i, j]); 0: not assigned by element
+    bool whole_written = false;  // the script's matrix holds the elements as they are now
 };
 
 // Frames, bodies, particles and points are named apart from values (constants, variables,
@@ -299,7 +304,8 @@ private:
     // EXCLUDE(E, X, ...) and INCLUDE(E, X, ...) (autolev_algebra.cpp), or nothing if `f` is
     // neither
     std::optional<Text> term_call(const Expr& e, const std::string& f, bool& numeric);
-    // EIG(M, VALUES, VECTORS), a statement: VALUES = eig(M) and VECTORS = eigvec(M)
+    // EIG(M, VALUES, VECTORS), a statement: VALUES = eig(M) and VECTORS = eigvec(M); EIG(M,
+    // VALUES) the eigenvalues alone
     void eig_statement(const Expr& e);
     // a whole number written in the file (a size or an index), or an error naming `what`
     int whole_number(const Expr& e, const std::string& what);
@@ -313,7 +319,15 @@ private:
                 (is_call(e.args[0], "FRSTAR") && is_call(e.args[1], "FR")));
     }
 
+    // ZERO[1] = e (M[1, 2] = e): the element a scalar of the script, ZERO_1 = e (autolev_arrays.cpp)
     void array_assignment(const Statement& st);
+    // the row and column of ZERO[i] (a column) or M[i, j], whole numbers written in the file
+    std::pair<int, int> array_index(const Expr& e, const Entry& m);
+    // ZERO[i] of an array assigned by element: its element's scalar
+    Text array_element(const Expr& e, const Entry& m);
+    // the array assigned by element, used whole: `ZERO = [ZERO_1; ZERO_2]` written before the
+    // statement (unless written already since its last element), and its name
+    Text whole_array(const Expr& e, const Entry& m);
 
     void vector_assignment(const Statement& st);
 
@@ -345,13 +359,23 @@ private:
 
     // ---- dyadics (autolev_dyadics.cpp) ----------------------------------------------------
 
+    // ---- inertia about another point (autolev_statements.cpp) ------------------------------
+
+    // true if positions the file gave join points a and b, directly or through others
+    bool located(const std::string& a, const std::string& b) const;
+    // the `inertia B = ... about P` of INERTIA B(P) whose mass and position are now given,
+    // written here: the script moves the inertia to the mass centre where it stands
+    void release_inertias();
+    // the error for `what` (KANE(), the inertia of B) needing an inertia still waiting
+    void need_placed_inertia(Location where, const std::string& what, const std::string& body = "");
+
     // D>> assigned, 1>>, 0>>, or I_B_P>> (B's inertia about P, or a particle's about P)
     Text dyadic_name(const Expr& e);
     // D>> = ...: a dyadic of the script
     void dyadic_assignment(const Statement& st);
     // `a op b` with a or b a dyadic, or a>*b> (the dyad, Autolev's product of two vectors)
     Text dyadic_combine(const Expr& e, Text a, Text b);
-    // DOT(a, b) with a or b a dyadic (D>> . v> or v> . D>>)
+    // DOT(a, b) with a or b a dyadic (D>> . v> or v> . D>>, a vector; D>> . E>>, a dyadic)
     Text dyadic_dot(const Expr& e, const Text& a, const Text& b);
     // MATRIX(A, v>), MATRIX(A, D>>), VECTOR(A, M) and INERTIA(O, ...), or nothing if `f` is
     // none of them
@@ -392,6 +416,17 @@ private:
     std::set<std::string> assigned_loads_{};  // FORCE_P>, TORQUE_B> (upper case) assigned with '='
     std::map<std::string, std::string> point_body_{};  // point -> the body V2PTS fixes it on
     std::vector<std::pair<std::string, Location>> forced_points_{};
+    std::set<std::string> massive_{};  // bodies and particles MASS gave a mass, so far
+    // points joined by a position P_O_Q> so far (both ways)
+    std::map<std::string, std::set<std::string>> joined_{};
+    // INERTIA B(P) waiting for MASS B and the position of B's mass centre from P
+    struct WaitingInertia {
+        std::string line{};   // the script's `inertia B = ... about P`
+        std::string about{};  // P
+        Location where{};
+        std::string said{};  // B(P) as the file writes it
+    };
+    std::map<std::string, WaitingInertia> inertia_waiting_{};
     Location statement_where_{};
     std::map<std::string, int> extra_names_{};
     std::map<std::string, std::string> solved_{};  // X (with its primes) SOLVE assigned -> its value's name

@@ -186,6 +186,14 @@ std::vector<Case> cases() {
     c.push_back({"force_added.al", {"X"},
                  [](double, const Vec& q, const Vec& qd) { return Vec{(-20 * q[0] - 0.7 * qd[0] - 1) / 1.5}; }, {0.1}, {0}});
     // a uniform rod about its end, L = 1.1, M = 2: Q'' = -3 G sin(Q) / (2 L)
+    // a uniform rod (L = 0.8, M = 1.5) whose inertia is given about its pivot, M L^2/3 about A3>:
+    // (M L^2/3) Q'' = -M G (L/2) sin(Q), as its central M L^2/12 moved by M (L/2)^2
+    c.push_back({"inertia_about_point.al", {"Q"},
+                 [](double, const Vec& q, const Vec&) { return Vec{-3 * kG * std::sin(q[0]) / (2 * 0.8)}; },
+                 {20 * kDeg}, {0},
+                 [](const Vec& q, const Vec& qd) {
+                     return 0.5 * (1.5 * 0.64 / 3) * qd[0] * qd[0] - 1.5 * kG * 0.4 * std::cos(q[0]);
+                 }});
     c.push_back({"dcm_pendulum.al", {"Q"},
                  [](double, const Vec& q, const Vec&) { return Vec{-3 * kG * std::sin(q[0]) / (2 * 1.1)}; }, {0.7}, {0},
                  [](const Vec& q, const Vec& qd) {
@@ -390,7 +398,9 @@ TEST(AutolevAcceptanceFiles, EveryFileIsChecked) {
     std::vector<std::string> checked{"vector_algebra.al", "no_newtonian_kinematics.al", "algebra_functions.al",
                                      "matrix_values.al", "series_and_solve.al",
                                      "solve_zero_pendulum.al", "matrix_operations.al", "mass_functions.al",
-                                     "terms_and_coefficients.al", "normal_modes.al", "chaplygin_sled.al"};
+                                     "terms_and_coefficients.al", "normal_modes.al", "chaplygin_sled.al",
+                                     "arrays_by_element.al", "eig_values.al", "dyadic_products.al",
+                                     "one_point_acceleration.al"};
     for (const Case& c : cases()) checked.push_back(c.file);
     for (const char* f : {"dyadic_inertia.al", "dyadic_algebra.al"}) checked.push_back(f);
     int files = 0;
@@ -768,6 +778,99 @@ TEST(AutolevAcceptanceFiles, NormalModesAgreeWithTheHandResults) {
         EXPECT_NEAR(v[i], expected[i], 1e-12 * std::max(1.0, std::abs(expected[i]))) << names[i] << "\n" << r.out;
     // the symmetric matrix's eigenvectors are orthogonal
     EXPECT_NEAR(v[9] * v[11] + v[10] * v[12], 0, 1e-15);
+}
+
+// Arrays assigned by element, by hand: the masses between springs have
+//   M1 X1'' = -K1 X1 + K2 (X2 - X1),  M2 X2'' = -K2 (X2 - X1) - C X2';
+// the stiffness matrix [K1 + K2, -K2; -K2, K2] has determinant K1 K2, and with its last element
+// K2 + C, (K1 + K2)(K2 + C) - K2^2 and trace K1 + 2 K2 + C; P1 + P2 = L and P1 - P2 = H give
+// P1 = (L + H)/2, P2 = (L - H)/2; the particle M at L A1> on the arm turned by Q under gravity
+// -G N2> has, along A2>, -M G cos Q = M L Q'', so Q'' = -G cos Q / L.
+TEST(AutolevAcceptanceFiles, ArraysByElementAgreeWithTheHandResults) {
+    AutolevTranslation t = import("arrays_by_element.al");
+    ASSERT_TRUE(t.ok());
+    std::mt19937 rng(2035);
+    auto uniform = [&](double a, double b) { return std::uniform_real_distribution<double>(a, b)(rng); };
+    for (int trial = 0; trial < 3; ++trial) {
+        const double m1 = uniform(0.5, 3), m2 = uniform(0.5, 3), k1 = uniform(1, 50), k2 = uniform(1, 50);
+        const double c = uniform(0.1, 5), l = uniform(0.2, 2), h = uniform(-1, 1), m = uniform(0.5, 3);
+        const double g = uniform(9, 10), x1 = uniform(-1, 1), x2 = uniform(-1, 1), x2d = uniform(-3, 3);
+        const double q = uniform(-3, 3);
+        std::string at = "M1 = " + num(m1) + ", M2 = " + num(m2) + ", K1 = " + num(k1) + ", K2 = " + num(k2) +
+                         ", C = " + num(c) + ", L = " + num(l) + ", H = " + num(h) + ", M = " + num(m) +
+                         ", G = " + num(g) + ", X1 = " + num(x1) + ", X2 = " + num(x2) + ", X2' = " + num(x2d) +
+                         ", Q = " + num(q);
+        Vec v = evaluate(t, {"A1", "A2", "DK", "DK2", "TK", "S1", "S2", "QDD"}, at);
+        Vec expected{(-k1 * x1 + k2 * (x2 - x1)) / m1,
+                     (-k2 * (x2 - x1) - c * x2d) / m2,
+                     k1 * k2,
+                     (k1 + k2) * (k2 + c) - k2 * k2,
+                     k1 + 2 * k2 + c,
+                     (l + h) / 2,
+                     (l - h) / 2,
+                     -g * std::cos(q) / l};
+        for (std::size_t i = 0; i < expected.size(); ++i)
+            EXPECT_NEAR(v[i], expected[i], 1e-12 * std::max(1.0, std::abs(expected[i]))) << i << " at " << at;
+    }
+}
+
+// EIG(M, VALUES), by hand: [3, -1; -1, 1] has the characteristic polynomial x^2 - 4x + 2, so
+// the eigenvalues 2 - sqrt 2 and 2 + sqrt 2; [4, 1; 2, 3] has x^2 - 7x + 10, so 2 and 5.
+TEST(AutolevAcceptanceFiles, EigenvaluesAloneAgreeWithTheHandResults) {
+    AutolevTranslation t = import("eig_values.al");
+    ASSERT_TRUE(t.ok());
+    EXPECT_EQ(t.script.find("eigvec"), std::string::npos) << t.script;
+    const std::vector<std::string> names{"W2A", "W2B", "E1", "E2"};
+    std::string extra;
+    for (const std::string& n : names) extra += "evaluate " + n + "\n";
+    ScriptRun r = run(t.script, extra);
+    ASSERT_EQ(r.status, RunStatus::ok) << r.err << t.script;
+    ASSERT_GE(r.values.size(), names.size()) << r.out;
+    Vec v(r.values.end() - static_cast<std::ptrdiff_t>(names.size()), r.values.end());
+    Vec expected{2 - std::sqrt(2.0), 2 + std::sqrt(2.0), 2, 5};
+    for (std::size_t i = 0; i < expected.size(); ++i)
+        EXPECT_NEAR(v[i], expected[i], 1e-12 * std::max(1.0, std::abs(expected[i]))) << names[i] << "\n" << r.out;
+}
+
+// Products and rates of dyadics, by hand, with B turned from N by Q about N3> (N1>.B1> = cos Q,
+// N1>.B2> = -sin Q, N3> = B3>): (A N1> B1> + B2> N3>) . (K B1> N2> + N3> B3>) = A K N1> N2> +
+// B2> B3> (B1>.B1> = N3>.N3> = 1, B1>.N3> = 0), so N1>.F.N2> = A K, B2>.F.B3> = 1 and
+// N1>.F.N1> = 0; in N, B1> has the rate Q' B2>, so d/dt (B1> B1>) = Q' (B2> B1> + B1> B2>), whose
+// B1>, B2> measure is Q' and N1>, N1> measure d/dt cos^2 Q = -2 sin Q cos Q Q'; in B, N1> has the
+// rate -Q' N2> and B1>, B2>, N3> none, so d/dt D = -A Q' N2> B1>.
+TEST(AutolevAcceptanceFiles, DyadicProductsAndRatesAgreeWithTheHandResults) {
+    AutolevTranslation t = import("dyadic_products.al");
+    ASSERT_TRUE(t.ok());
+    std::mt19937 rng(2036);
+    auto uniform = [&](double a, double b) { return std::uniform_real_distribution<double>(a, b)(rng); };
+    for (int trial = 0; trial < 3; ++trial) {
+        const double a = uniform(-2, 2), k = uniform(-2, 2), q = uniform(-3, 3), u = uniform(-3, 3);
+        std::string at = "A = " + num(a) + ", K = " + num(k) + ", Q = " + num(q) + ", Q' = " + num(u);
+        Vec v = evaluate(t, {"F12", "F23", "F11", "G12", "G11", "H21", "H23"}, at);
+        Vec expected{a * k, 1, 0, u, -2 * std::sin(q) * std::cos(q) * u, -a * u, 0};
+        for (std::size_t i = 0; i < expected.size(); ++i)
+            EXPECT_NEAR(v[i], expected[i], 1e-12 * std::max(1.0, std::abs(expected[i]))) << i << " at " << at;
+    }
+}
+
+// A1PT, by hand: the cart's point O at X N1> accelerates by X'' N1> = X'' (cos Q B1> - sin Q B2>),
+// and the slider P at R B1> on the arm B turning by Q adds (R'' - R Q'^2) B1> + (2 R' Q' + R Q'')
+// B2>, so along B1> X'' cos Q + R'' - R Q'^2, along B2> -X'' sin Q + 2 R' Q' + R Q'', along N3> 0.
+TEST(AutolevAcceptanceFiles, OnePointAccelerationAgreesWithTheHandDerivation) {
+    AutolevTranslation t = import("one_point_acceleration.al");
+    ASSERT_TRUE(t.ok());
+    std::mt19937 rng(2037);
+    auto uniform = [&](double a, double b) { return std::uniform_real_distribution<double>(a, b)(rng); };
+    for (int trial = 0; trial < 3; ++trial) {
+        const double q = uniform(-3, 3), r = uniform(-2, 2), qd = uniform(-3, 3), rd = uniform(-3, 3);
+        const double qdd = uniform(-5, 5), rdd = uniform(-5, 5), xdd = uniform(-5, 5), x = uniform(-2, 2);
+        std::string at = "X = " + num(x) + ", Q = " + num(q) + ", R = " + num(r) + ", Q' = " + num(qd) +
+                         ", R' = " + num(rd) + ", X'' = " + num(xdd) + ", Q'' = " + num(qdd) + ", R'' = " + num(rdd);
+        Vec v = evaluate(t, {"AR", "AT", "AZ"}, at);
+        Vec expected{xdd * std::cos(q) + rdd - r * qd * qd, -xdd * std::sin(q) + 2 * rd * qd + r * qdd, 0};
+        for (std::size_t i = 0; i < expected.size(); ++i)
+            EXPECT_NEAR(v[i], expected[i], 1e-12 * std::max(1.0, std::abs(expected[i]))) << i << " at " << at;
+    }
 }
 
 // A model with a motion constraint (DEPENDENT[1], CONSTRAIN) and speeds of its own: the

@@ -312,14 +312,15 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"dyad_as_vector", kHead + "R> = N1>*N2>\n", 6, 9, "a dyadic where a vector is expected"},
         BadInput{"vector_as_dyadic", kHead + "D>> = N1>\n", 6, 7, "a vector where a dyadic is expected"},
         BadInput{"undefined_dyadic", kHead + "R> = DOT(D>>, N1>)\n", 6, 10, "the dyadic 'D>>' is not defined"},
-        BadInput{"dot_of_dyadics", kHead + "D>> = 1>>\nR> = DOT(D>>, D>>)\n", 7, 6, "DOT() of two dyadics"},
+        BadInput{"dot_of_dyadics_as_vector", kHead + "D>> = 1>>\nR> = DOT(D>>, D>>)\n", 7, 6, "a dyadic where a vector is expected"},
         BadInput{"dot_dyadic_scalar", kHead + "D>> = 1>>\nR> = DOT(D>>, L)\n", 7, 15, "takes a vector beside a dyadic"},
         BadInput{"dyadic_in_sin", kHead + "D>> = 1>>\nX = SIN(D>>)\n", 7, 9, "a dyadic where a scalar is expected"},
         BadInput{"dyadic_times_vector", kHead + "D>> = 1>>\nR> = D>>*N1>\n", 7, 9, "'*' between a dyadic and a vector"},
         BadInput{"dyadic_times_dyadic", kHead + "D>> = 1>>\nE>> = D>>*D>>\n", 7, 10, "between two dyadics is not translated"},
         BadInput{"dyadic_plus_scalar", kHead + "D>> = 1>>\nX = D>> + L\n", 7, 9, "'+' between a dyadic and a scalar"},
         BadInput{"dyadic_to_scalar_name", kHead + "D>> = 1>>\nX = D>>\n", 7, 5, "without '>>'"},
-        BadInput{"dt_of_dyadic", kHead + "D>> = 1>>\nX = DT(D>>)\n", 7, 8, "DT of a dyadic is not translated"},
+        BadInput{"dt_of_dyadic_no_frame", kHead + "D>> = 1>>\nX>> = DT(D>>)\n", 7, 7, "DT of a dyadic needs the frame"},
+        BadInput{"dt_of_dyadic_as_scalar", kHead + "D>> = 1>>\nX = DT(D>>, N)\n", 7, 5, "without '>>'"},
         BadInput{"inertia_assigned", kHead + "I_A_AO>> = 1>>\n", 6, 1, "is an inertia dyadic"},
         BadInput{"matrix_of_scalar", kHead + "M = MATRIX(N, L)\n", 6, 15, "MATRIX() takes a vector or a dyadic"},
         BadInput{"inertia_of_a_frame", kHead + "D>> = INERTIA(P, N)\n", 6, 18, "INERTIA() takes bodies and particles"},
@@ -381,7 +382,9 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"element_outside", kHead + "X = ELEMENT([1, 2], 2, 1)\n", 6, 5, "[2, 1] is outside the 1 by 2 matrix"},
         BadInput{"rows_outside", kHead + "M = [1, 2]\nX = ROWS(M, 2)\n", 7, 13, "row 2 is outside the 1 by 2 matrix"},
         BadInput{"eig_vectors", kHead + "X = EIG([1, 0; 0, 1], V, W)\n", 6, 5, "EIG() with names for the eigenvalues"},
-        BadInput{"eig_statement_count", kHead + "EIG([1, 0; 0, 1], V)\n", 6, 1, "EIG() as a statement takes the matrix"},
+        BadInput{"eig_statement_count", kHead + "EIG([1, 0; 0, 1], V, W, X)\n", 6, 1, "EIG() as a statement takes the matrix"},
+        BadInput{"eig_values_into_constant", kHead + "EIG([1, 0; 0, 1], L)\n", 6, 19, "'L' is a constant and cannot be assigned the eigenvalues"},
+        BadInput{"eig_values_own_matrix", kHead + "M = [1, 0; 0, 1]\nEIG(M, M)\n", 7, 8, "EIG() would assign 'M', its own matrix"},
         BadInput{"eig_names_alike", kHead + "EIG([1, 0; 0, 1], V, V)\n", 6, 22, "EIG() names its eigenvalues and eigenvectors alike"},
         BadInput{"eig_into_constant", kHead + "EIG([1, 0; 0, 1], L, W)\n", 6, 19, "'L' is a constant and cannot be assigned the eigenvalues"},
         BadInput{"eig_not_square", kHead + "EIG([1, 2], V, W)\n", 6, 5, "EIG() takes a square matrix, and this is 1 by 2"},
@@ -397,6 +400,36 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"angvel_count", kHead + "X> = ANGVEL(N)\n", 6, 6, "ANGVEL() takes 2 arguments, not 1"},
         BadInput{"matrix_outside", kHead + "M = [1, 2]\nX = M[3]\n", 7, 5, "[1, 3] is outside matrix 'M'"},
         BadInput{"matrix_element_assigned", kHead + "M = [1, 2]\nM[1] = 2\n", 7, 1, "an element of matrix 'M'"},
+        // arrays assigned by element: every element there when used whole, indices as assigned
+        BadInput{"array_gap", kHead + "Z[1] = L*Q\nZ[3] = L\nSOLVE(Z, Q, U)\n", 8, 7,
+                 "array 'Z' is used whole, and its element 'Z[2]' is not assigned"},
+        BadInput{"array_element_unassigned", kHead + "Z[1] = L\nX = Z[2]\n", 7, 5, "'Z[2]' is not assigned"},
+        BadInput{"array_index_count", kHead + "Z[1] = L\nX = Z[1, 1]\n", 7, 5, "array 'Z' is assigned with one index"},
+        BadInput{"array_index_symbol", kHead + "Z[L] = 1\n", 6, 3, "the index of array 'Z' must be a whole number"},
+        BadInput{"array_three_indices", kHead + "Z[1, 1, 1] = 1\n", 6, 1, "an array takes one index"},
+        BadInput{"array_of_constant", kHead + "L[1] = 2\n", 6, 1, "'L' is a constant and cannot be assigned as an array"},
+        BadInput{"array_element_matrix", kHead + "Z[1] = [1, 2]\n", 6, 8, "an element of array 'Z' is a scalar, not a matrix"},
+        BadInput{"array_element_vector", kHead + "Z[1] = N1>\n", 6, 8, "a vector where a scalar is expected"},
+        BadInput{"array_compound_unassigned", kHead + "Z[1] += L\n", 6, 1, "the array 'Z' is not assigned"},
+        BadInput{"array_of_another_kind", kHead + "X = Q[1]\n", 6, 5, "'Q' is a variable, not an array"},
+        BadInput{"zero_element_after_kane", kHead + "ZERO = FR() + FRSTAR()\nZERO[1] = L\n", 7, 1,
+                 "ZERO holds Kane's equations here"},
+        BadInput{"zero_element_of_kane", kHead + "ZERO = FR() + FRSTAR()\nX = ZERO[1]\n", 7, 5,
+                 "an element of Kane's equations (ZERO = FR() + FRSTAR()) is not translated"},
+        BadInput{"kane_after_zero_elements", kHead + "ZERO[1] = L*Q''\nKANE()\n", 7, 1,
+                 "KANE() forms Kane's equations from the bodies and loads"},
+        // inertia about another point than the mass centre
+        BadInput{"inertia_about_without_mass", kHead + "INERTIA A(P), 1, 1, 1\n", 6, 9, "'A' has no MASS"},
+        BadInput{"inertia_about_without_position", kHead + "MASS A = L\nINERTIA A(P), 1, 1, 1\n", 7, 9,
+                 "the file gives no position of A's mass centre from that point"},
+        BadInput{"kane_before_inertia_placed", kHead + "MASS A = L\nINERTIA A(P), 1, 1, 1\nKANE()\nP_P_AO> = L*A1>\n", 8, 1,
+                 "KANE() needs the inertia of INERTIA A(P) at line 7"},
+        BadInput{"inertia_dyadic_before_placed", kHead + "INERTIA A(P), 1, 1, 1\nD>> = I_A_AO>>\n", 7, 7,
+                 "the inertia of 'A' needs the inertia of INERTIA A(P) at line 6"},
+        BadInput{"a1pt_count", kHead + "A1PT(N, A, P)\n", 6, 1, "takes 4 arguments, not 3"},
+        BadInput{"a1pt_point_not_frame", kHead + "A1PT(N, P, P, P)\n", 6, 9, "expected a frame or body"},
+        BadInput{"inertia_about_two_points", kHead + "INERTIA A(P, P), 1, 1, 1\n", 6, 9, "takes one point"},
+        BadInput{"inertia_about_a_frame", kHead + "INERTIA A(N), 1, 1, 1\n", 6, 11, "expected a point"},
         BadInput{"non_ascii", kHead + "X = 2\xC2\xB7L\n", 6, 6, "unexpected character"},
         BadInput{"nesting", kHead + "X = " + std::string(80, '(') + "L" + std::string(80, ')') + "\n", 6, 69,
                  "nested more than 64 levels"},
@@ -414,6 +447,16 @@ TEST(AutolevImport, EveryBadStatementIsReportedInFileOrder) {
     EXPECT_EQ(t.diagnostics[1].location.line, 8);
     EXPECT_EQ(t.diagnostics[2].location.line, 9);
     EXPECT_TRUE(contains(t.script, "R> = L*Nx>\n"));
+}
+
+// ZERO = FR() + FRSTAR() after ZERO[i] = ...: Kane's equations replace the file's own array, as
+// an assignment replaces a value, and SOLVE(ZERO, ...) then solves Kane's equations.
+TEST(AutolevImport, KanesEquationsReplaceAnArrayZero) {
+    AutolevTranslation t = translate_autolev(
+        kHead + "ZERO[1] = L*Q''\nX = ZERO[1]\nZERO = FR() + FRSTAR()\nKANE()\nSOLVE(ZERO, Q'')\n", "zero.al");
+    EXPECT_TRUE(t.ok()) << t.script;
+    EXPECT_TRUE(contains(t.script, "ZERO_1 = L*Q''\nX = ZERO_1\n")) << t.script;
+    EXPECT_TRUE(contains(t.script, "solve K for Q'' as Qdd_solved")) << t.script;
 }
 
 TEST(AutolevImport, EmptyFileGivesAnEmptyScript) {
