@@ -55,19 +55,19 @@ std::string latex_numeric(const GiNaC::numeric& n) {
     return os.str();
 }
 
-std::string latex(const ex& e);
+std::string latex(const ex& e, TextPrinter& text);
 
 // a factor of a product: sums in parentheses
-std::string latex_factor(const ex& e) {
-    if (is_a<GiNaC::add>(e)) return "\\left(" + latex(e) + "\\right)";
+std::string latex_factor(const ex& e, TextPrinter& text) {
+    if (is_a<GiNaC::add>(e)) return "\\left(" + latex(e, text) + "\\right)";
     if (is_a<GiNaC::numeric>(e) && GiNaC::ex_to<GiNaC::numeric>(e).is_negative())
-        return "\\left(" + latex(e) + "\\right)";
-    return latex(e);
+        return "\\left(" + latex(e, text) + "\\right)";
+    return latex(e, text);
 }
 
-std::vector<ex> sorted_operands(const ex& e) {
+std::vector<ex> sorted_operands(const ex& e, TextPrinter& text) {
     std::vector<std::pair<std::string, ex>> keyed;
-    for (std::size_t i = 0; i < e.nops(); ++i) keyed.emplace_back(to_string(e.op(i)), e.op(i));
+    for (std::size_t i = 0; i < e.nops(); ++i) keyed.emplace_back(text(e.op(i)), e.op(i));
     std::stable_sort(keyed.begin(), keyed.end(),
                      [](const auto& a, const auto& b) { return a.first < b.first; });
     std::vector<ex> out;
@@ -75,18 +75,18 @@ std::vector<ex> sorted_operands(const ex& e) {
     return out;
 }
 
-std::string latex_mul(const ex& e) {
+std::string latex_mul(const ex& e, TextPrinter& text) {
     GiNaC::numeric coeff = 1;
     std::vector<std::string> num, den;
-    for (const ex& f : sorted_operands(e)) {
+    for (const ex& f : sorted_operands(e, text)) {
         if (is_a<GiNaC::numeric>(f)) {
             coeff *= GiNaC::ex_to<GiNaC::numeric>(f);
         } else if (is_a<GiNaC::power>(f) && is_a<GiNaC::numeric>(f.op(1)) &&
                    GiNaC::ex_to<GiNaC::numeric>(f.op(1)).is_negative()) {
             ex inv = GiNaC::pow(f.op(0), -f.op(1));
-            den.push_back(latex_factor(inv));
+            den.push_back(latex_factor(inv, text));
         } else {
-            num.push_back(latex_factor(f));
+            num.push_back(latex_factor(f, text));
         }
     }
     std::string sign = coeff.is_negative() ? "-" : "";
@@ -108,11 +108,11 @@ std::string latex_mul(const ex& e) {
     return sign + "\\frac{" + numer + "}{" + join(den) + "}";
 }
 
-std::string latex_add(const ex& e) {
+std::string latex_add(const ex& e, TextPrinter& text) {
     std::string out;
     bool first = true;
-    for (const ex& t : sorted_operands(e)) {
-        std::string s = latex(t);
+    for (const ex& t : sorted_operands(e, text)) {
+        std::string s = latex(t, text);
         if (first)
             out = s;
         else if (!s.empty() && s[0] == '-')
@@ -124,21 +124,21 @@ std::string latex_add(const ex& e) {
     return out;
 }
 
-std::string latex(const ex& e) {
+std::string latex(const ex& e, TextPrinter& text) {
     if (is_a<GiNaC::numeric>(e)) return latex_numeric(GiNaC::ex_to<GiNaC::numeric>(e));
     if (is_a<GiNaC::symbol>(e)) return latex_name(GiNaC::ex_to<GiNaC::symbol>(e).get_name());
-    if (is_a<GiNaC::add>(e)) return latex_add(e);
-    if (is_a<GiNaC::mul>(e)) return latex_mul(e);
+    if (is_a<GiNaC::add>(e)) return latex_add(e, text);
+    if (is_a<GiNaC::mul>(e)) return latex_mul(e, text);
     if (is_a<GiNaC::power>(e)) {
         const ex& b = e.op(0);
         const ex& p = e.op(1);
-        if (p.is_equal(GiNaC::numeric(1, 2))) return "\\sqrt{" + latex(b) + "}";
+        if (p.is_equal(GiNaC::numeric(1, 2))) return "\\sqrt{" + latex(b, text) + "}";
         if (is_a<GiNaC::numeric>(p) && GiNaC::ex_to<GiNaC::numeric>(p).is_negative())
-            return "\\frac{1}{" + latex_factor(GiNaC::pow(b, -p)) + "}";
-        std::string base = is_a<GiNaC::symbol>(b) && to_string(b).find('\'') == std::string::npos
-                               ? latex(b)
-                               : "\\left(" + latex(b) + "\\right)";
-        return base + "^{" + latex(p) + "}";
+            return "\\frac{1}{" + latex_factor(GiNaC::pow(b, -p), text) + "}";
+        std::string base = is_a<GiNaC::symbol>(b) && text(b).find('\'') == std::string::npos
+                               ? latex(b, text)
+                               : "\\left(" + latex(b, text) + "\\right)";
+        return base + "^{" + latex(p, text) + "}";
     }
     if (is_a<GiNaC::function>(e)) {
         std::string name = GiNaC::ex_to<GiNaC::function>(e).get_name();
@@ -146,18 +146,21 @@ std::string latex(const ex& e) {
         std::string head = "\\operatorname{" + name + "}";
         for (const char* k : known)
             if (name == k) head = std::string("\\") + k;
-        if (name == "abs") return "\\left|" + latex(e.op(0)) + "\\right|";
+        if (name == "abs") return "\\left|" + latex(e.op(0), text) + "\\right|";
         std::string args;
-        for (std::size_t i = 0; i < e.nops(); ++i) args += (i ? ", " : "") + latex(e.op(i));
+        for (std::size_t i = 0; i < e.nops(); ++i) args += (i ? ", " : "") + latex(e.op(i), text);
         return head + "\\left(" + args + "\\right)";
     }
     // anything else (relations, constants such as Pi): GiNaC's own form, escaped
-    std::string s = to_string(e);
+    const std::string& s = text(e);
     return s == "Pi" ? "\\pi" : "\\mathrm{" + s + "}";
 }
 
 }  // namespace
 
-std::string to_latex(const ex& e) { return latex(e); }
+std::string to_latex(const ex& e) {
+    TextPrinter text;  // the operands' sort keys at every level, each node printed once
+    return latex(e, text);
+}
 
 }  // namespace alembert

@@ -366,18 +366,42 @@ std::string motion_word(Motion m) {
 
 namespace {
 
+// the intermediates each intermediate's definition uses directly, found once per page: the
+// rows and steps reach the same definitions again and again
+class DefinitionUses {
+public:
+    explicit DefinitionUses(const SymbolTable& st) : st_(st) {}
+
+    // the intermediates of `st` that `e` holds, in symbols_of's order
+    std::vector<ex> in(const ex& e) const {
+        std::vector<ex> out;
+        for (const ex& s : symbols_of(e))
+            if (st_.owns(s) && st_.kind(s) == SymbolKind::intermediate) out.push_back(s);
+        return out;
+    }
+
+    // in(st.definition(z)), remembered
+    const std::vector<ex>& of(const ex& z) {
+        auto it = uses_.find(z);
+        if (it == uses_.end()) it = uses_.emplace(z, in(st_.definition(z))).first;
+        return it->second;
+    }
+
+private:
+    const SymbolTable& st_;
+    std::map<ex, std::vector<ex>, GiNaC::ex_is_less> uses_;
+};
+
 // the names of the intermediates `e` uses, with those their definitions use (at most 200)
-std::set<std::string> intermediates_used(const System& sys, const ex& e) {
-    const SymbolTable& st = sys.symbols();
+std::set<std::string> intermediates_used(const SymbolTable& st, DefinitionUses& uses, const ex& e) {
     std::set<std::string> used;
-    std::vector<ex> todo{e};
+    // each entry: the intermediates one expression holds (`e`'s, then definitions')
+    std::vector<std::vector<ex>> todo{uses.in(e)};
     while (!todo.empty() && used.size() < 200) {
-        ex x = todo.back();
+        const std::vector<ex> x = std::move(todo.back());
         todo.pop_back();
-        for (const ex& s : symbols_of(x))
-            if (st.owns(s) && st.kind(s) == SymbolKind::intermediate &&
-                used.insert(st.name(s)).second)
-                todo.push_back(st.definition(s));
+        for (const ex& s : x)
+            if (used.insert(st.name(s)).second) todo.push_back(uses.of(s));
     }
     return used;
 }
@@ -390,17 +414,18 @@ namespace report_detail {
 PageIntermediates page_intermediates(const System& sys, const std::vector<RoadmapRow>& rows,
                                      const std::vector<RowSteps>* steps) {
     const SymbolTable& st = sys.symbols();
+    DefinitionUses uses(st);
     std::vector<std::set<std::string>> used, used_by_steps;
     std::set<std::string> all;
     for (const RoadmapRow& r : rows) {
-        used.push_back(intermediates_used(sys, r.equation));
+        used.push_back(intermediates_used(st, uses, r.equation));
         all.insert(used.back().begin(), used.back().end());
     }
     if (steps)
         for (const RowSteps& s : *steps) {
             used_by_steps.emplace_back();
             for (const ex& q : s.quantities) {
-                const std::set<std::string> u = intermediates_used(sys, q);
+                const std::set<std::string> u = intermediates_used(st, uses, q);
                 used_by_steps.back().insert(u.begin(), u.end());
             }
             all.insert(used_by_steps.back().begin(), used_by_steps.back().end());

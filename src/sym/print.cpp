@@ -16,7 +16,8 @@ namespace alembert {
 
 using namespace GiNaC;
 
-namespace {
+// named, not anonymous: TextPrinter's memory holds a Printer
+namespace print_detail {
 
 enum Prec { kSum = 1, kProduct = 2, kPower = 3, kAtom = 4 };
 
@@ -321,9 +322,23 @@ private:
     }
 };
 
-}  // namespace
+}  // namespace print_detail
+
+using print_detail::Printer;
+using print_detail::PrintMemo;
 
 std::string to_string(const ex& e) { return Printer().p(e).text; }
+
+struct TextPrinter::Memo {
+    Printer printer;
+};
+
+TextPrinter::TextPrinter() : memo_(std::make_unique<Memo>()) {}
+TextPrinter::~TextPrinter() = default;
+TextPrinter::TextPrinter(TextPrinter&&) noexcept = default;
+TextPrinter& TextPrinter::operator=(TextPrinter&&) noexcept = default;
+
+const std::string& TextPrinter::operator()(const ex& e) { return memo_->printer.p(e).text; }
 
 std::vector<std::string> to_strings(const std::vector<ex>& exprs) {
     Printer printer;
@@ -371,6 +386,9 @@ private:
     std::size_t next_;
     PrintMemo<std::size_t> uses_;
     PrintMemo<ex> done_;
+    Printer printer_;  // the operands' texts, printed once for all the lines they are measured in
+
+    std::size_t length(const ex& x) { return printer_.p(x).text.size(); }
 
     ex name(const ex& x) {
         const ex z = symbol(stem_ + std::to_string(next_++));
@@ -381,14 +399,14 @@ private:
     // x, whose operands are already short, with operands named until its line fits: the
     // longest first, then, for a sum or product of many short operands, runs of them
     ex shortened(ex x) {
-        if (to_string(x).size() <= width_ || x.nops() == 0) return x;
+        if (length(x) <= width_ || x.nops() == 0) return x;
         if (is_a<add>(x) || is_a<mul>(x) || is_a<power>(x) || is_a<function>(x)) {
             std::vector<std::pair<std::size_t, std::size_t>> longest;  // (length, index)
             for (std::size_t i = 0; i < x.nops(); ++i)
-                if (x.op(i).nops() > 0) longest.push_back({to_string(x.op(i)).size(), i});
+                if (x.op(i).nops() > 0) longest.push_back({length(x.op(i)), i});
             std::sort(longest.rbegin(), longest.rend());
             exmap named;
-            std::size_t total = to_string(x).size();
+            std::size_t total = length(x);
             for (const auto& [len, i] : longest) {
                 if (total <= width_ || len <= stem_.size() + 4) break;
                 named[x.op(i)] = name(x.op(i));
@@ -396,13 +414,13 @@ private:
             }
             if (!named.empty()) x = x.subs(named, subs_options::no_pattern);
         }
-        if ((is_a<add>(x) || is_a<mul>(x)) && to_string(x).size() > width_) {
+        if ((is_a<add>(x) || is_a<mul>(x)) && length(x) > width_) {
             // runs of operands, each run a line of its own
             const bool sum = is_a<add>(x);
             ex whole = sum ? ex(0) : ex(1), run = sum ? ex(0) : ex(1);
             std::size_t run_length = 0;
             for (std::size_t i = 0; i < x.nops(); ++i) {
-                const std::size_t len = to_string(x.op(i)).size() + 3;
+                const std::size_t len = length(x.op(i)) + 3;
                 if (run_length + len > width_ && run_length > 0) {
                     const ex r = run.nops() > 0 ? name(run) : run;
                     whole = sum ? whole + r : whole * r;

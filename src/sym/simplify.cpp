@@ -245,6 +245,13 @@ bool fold_angle_sums(std::vector<Term>& terms, NodeIndex& n) {
     std::vector<bool> used(terms.size(), false);
     std::vector<Term> out;
     bool changed = false;
+    // sin and cos of each angle formed once for the call (GiNaC evaluates each one formed)
+    std::map<ex, std::pair<ex, ex>, ex_is_less> trig_of;
+    const auto sin_cos_of = [&](const ex& x) -> const std::pair<ex, ex>& {
+        auto it = trig_of.find(x);
+        if (it == trig_of.end()) it = trig_of.emplace(x, std::make_pair(sin(x), cos(x))).first;
+        return it->second;
+    };
     for (std::size_t i = 0; i < terms.size(); ++i) {
         if (used[i]) continue;
         const Term ti = terms[i];
@@ -261,7 +268,9 @@ bool fold_angle_sums(std::vector<Term>& terms, NodeIndex& n) {
                 ex a = fa.op(0), b = fb.op(0);
                 if (a.is_equal(b)) continue;
                 ex base = ti.rest / (fa * fb);
-                ex partner = sin_cos ? base * cos(a) * sin(b) : base * sin(a) * sin(b);
+                const ex& sin_b = sin_cos_of(b).first;
+                ex partner = sin_cos ? base * sin_cos_of(a).second * sin_b
+                                     : base * sin_cos_of(a).first * sin_b;
                 auto it = index.find(partner);
                 if (it == index.end() || used[it->second] || it->second == i) continue;
                 const numeric& cj = terms[it->second].c;

@@ -2,10 +2,12 @@
 // The printer: primes and an order independent of symbol creation order.
 #include "alembert/sym/print.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <functional>
 #include <limits>
 #include <map>
+#include <random>
 
 #include "alembert/sym/simplify.hpp"
 #include "alembert/sym/symbol_table.hpp"
@@ -166,4 +168,49 @@ TEST(Print, AbbreviatedLinesAreShortDefinedBeforeUseAndMeanTheExpression) {
         EXPECT_NEAR(printed, formed, 1e-9 * std::max(1.0, std::abs(formed))) << "expression " << i;
     }
     EXPECT_EQ(next, t.definitions.size());
+}
+
+namespace {
+// random expressions over a few symbols that share subexpressions (each new node built from
+// two earlier ones), with sums that lead negative inside products and trigonometric
+// arguments, powers and quotients: the cases where the printer decides a sign by printing
+std::vector<ex> shared_random_expressions(unsigned seed, int nodes) {
+    std::mt19937 rng(seed);
+    std::vector<ex> pool{GiNaC::symbol("a"), GiNaC::symbol("b"), GiNaC::symbol("c"),
+                         GiNaC::symbol("qA"), GiNaC::symbol("qB'")};
+    const auto pick = [&] { return pool[std::uniform_int_distribution<std::size_t>(0, pool.size() - 1)(rng)]; };
+    for (int i = 0; i < nodes; ++i) {
+        const ex x = pick(), y = pick();
+        const int k = std::uniform_int_distribution<int>(-3, 3)(rng);
+        switch (std::uniform_int_distribution<int>(0, 5)(rng)) {
+            case 0: pool.push_back(x + k * y); break;
+            case 1: pool.push_back(x * (y - pick())); break;
+            case 2: pool.push_back(sin(x - y) * cos(k * y + pick())); break;
+            case 3: pool.push_back(pow(x - 2 * y, 2 + (k & 1))); break;
+            case 4: pool.push_back((x + y) / (pick() - k)); break;
+            default: pool.push_back(-x + GiNaC::numeric(k, 2) * y); break;
+        }
+    }
+    return pool;
+}
+}  // namespace
+
+TEST(Print, OneTextPrinterForManyExpressionsGivesToStringsTexts) {
+    // the memo of a TextPrinter spans calls: a node printed as part of one expression is looked
+    // up when another holds it, with the text a printer of its own writes
+    for (unsigned seed : {1u, 2u, 3u}) {
+        const std::vector<ex> pool = shared_random_expressions(seed, 60);
+        std::vector<ex> order;
+        GiNaC::exset seen;
+        for (const ex& e : pool)
+            for (auto it = e.preorder_begin(); it != e.preorder_end(); ++it)
+                if (seen.insert(*it).second) order.push_back(*it);
+        // largest first (the memo then serves the parts), then the parts in random order
+        std::reverse(order.begin(), order.end());
+        std::shuffle(order.begin() + static_cast<std::ptrdiff_t>(order.size() / 2), order.end(),
+                     std::mt19937(seed));
+        TextPrinter text;
+        for (const ex& e : order) ASSERT_EQ(text(e), to_string(e)) << "seed " << seed;
+        for (const ex& e : order) ASSERT_EQ(text(e), to_string(e)) << "again, seed " << seed;
+    }
 }

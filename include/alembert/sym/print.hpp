@@ -4,6 +4,7 @@
 
 #include <ginac/ginac.h>
 
+#include <memory>
 #include <ostream>
 #include <string>
 #include <utility>
@@ -21,6 +22,25 @@ std::string to_string(const ex& e);
 
 /// The texts of `exprs` printed with one memo, so subexpressions they share are printed once.
 std::vector<std::string> to_strings(const std::vector<ex>& exprs);
+
+/// to_string with one memo across calls, for a caller that prints many overlapping
+/// expressions (the operands of a sum at every level of a TeX walk, the lines of an
+/// abbreviation): a subexpression met again is looked up, not printed again. The texts are
+/// those to_string gives; memory grows with the distinct subexpressions printed.
+class TextPrinter {
+public:
+    TextPrinter();
+    ~TextPrinter();
+    TextPrinter(TextPrinter&&) noexcept;
+    TextPrinter& operator=(TextPrinter&&) noexcept;
+
+    /// to_string(e); the reference stays valid while this printer lives
+    const std::string& operator()(const ex& e);
+
+private:
+    struct Memo;
+    std::unique_ptr<Memo> memo_;
+};
 
 /// Streams `to_string(e)`.
 void print(std::ostream& os, const ex& e);
