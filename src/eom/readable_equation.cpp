@@ -33,14 +33,15 @@ bool is_time_free(const SymbolTable& st, const ex& a) {
     return true;
 }
 
-// the symbols a row's equation is gathered by, by name: its accelerations and unknown loads,
-// and the row's own unknown
+// the symbols a row's equation is gathered by, by name: its accelerations (the highest
+// derivatives declared: the rates of speeds in Kane's equations) and unknown loads, and the
+// row's own unknown
 std::vector<ex> gathering_symbols(const SymbolTable& st, const ex& e, const ex& unknown) {
     std::vector<ex> keys;
     for (const ex& s : symbols_of(e))
         if (s.is_equal(unknown) ||
-            (st.owns(s) && ((st.kind(s) == SymbolKind::variable && st.derivative_order(s) == 2) ||
-                            st.kind(s) == SymbolKind::unknown)))
+            (st.owns(s) && (st.kind(s) == SymbolKind::variable || st.kind(s) == SymbolKind::unknown) &&
+             st.is_solve_level(s)))
             keys.push_back(s);
     std::sort(keys.begin(), keys.end(),
               [](const ex& a, const ex& b) { return to_string(a) < to_string(b); });
@@ -92,6 +93,12 @@ ex rates_of(const SymbolTable& st, const ex& term) {
     return out;
 }
 
+// c * scale, expanded: c is a part of the simplified equation, so it is simplified again
+// only when divided by a coefficient that is not a number (to cancel what they share)
+ex scaled(const ex& c, const ex& scale, Simplifier& simplifier) {
+    return GiNaC::is_a<GiNaC::numeric>(scale) ? GiNaC::expand(c * scale) : GiNaC::expand(simplifier(c * scale));
+}
+
 // factor_common(e), unless that puts a sum over a denominator (-L/2*(a + b) prints as one
 // fraction, which no line breaks): then e's terms as they stand
 ex without_fraction(const ex& e) {
@@ -130,7 +137,7 @@ ex gathered_by_rates(const SymbolTable& st, const ex& rest, const ex& scale, Sim
     std::vector<std::pair<ex, ex>> shared;  // coefficient, sum of number * rates
     std::map<ex, std::size_t, GiNaC::ex_is_less> at_coefficient;
     for (const auto& [r, c] : groups) {
-        const ex grouped = group_by_varying_factors(st, GiNaC::expand(simplifier(c * scale)));
+        const ex grouped = group_by_varying_factors(st, scaled(c, scale, simplifier));
         if (r.is_equal(1)) {  // the terms free of rates: their common factor taken out when
             shared.push_back({without_fraction(grouped), 1});  // that leaves no fraction over a sum
             continue;
@@ -186,7 +193,7 @@ ReadableRelation calc_solved_equation(const System& sys, const ex& e, const ex& 
         ex rhs = 0;
         for (std::size_t k = 0; k < keys.size(); ++k)
             if (k != u)
-                rhs += factor_common(group_by_varying_factors(st, GiNaC::expand(simplifier(p->c[k] * scale)))) *
+                rhs += factor_common(group_by_varying_factors(st, scaled(p->c[k], scale, simplifier))) *
                        keys[k];
         rhs += gathered_by_rates(st, p->rest, scale, simplifier);
         const ex lhs = u ? keys[*u] : ex(0);

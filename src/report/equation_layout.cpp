@@ -49,8 +49,8 @@ namespace {
 // whether the term holds an acceleration or an unknown load of the model
 bool holds_acceleration(const SymbolTable& st, const ex& term) {
     for (const ex& s : symbols_of(term))
-        if (st.owns(s) && ((st.kind(s) == SymbolKind::variable && st.derivative_order(s) == 2) ||
-                           st.kind(s) == SymbolKind::unknown))
+        if (st.owns(s) && (st.kind(s) == SymbolKind::variable || st.kind(s) == SymbolKind::unknown) &&
+             st.is_solve_level(s))
             return true;
     return false;
 }
@@ -209,7 +209,8 @@ std::vector<std::string> report_detail::typeset_equations(const ReportContent& c
     };
     for (const RoadmapRow& r : c.rows) out.push_back(typeset(r.equation, r.variable));
     for (const ReportEquationSet& set : c.equation_sets)
-        for (const ex& e : set.equations) out.push_back(typeset(e, ex()));
+        for (std::size_t k = 0; k < set.equations.size(); ++k)
+            out.push_back(typeset(set.equations[k], k < set.unknowns.size() ? set.unknowns[k] : ex()));
     return out;
 }
 
