@@ -29,6 +29,60 @@ bool zero(const System& sys, const Vector& v) {
     return is_zero_at_random_states(sys.symbols(), v, sys.newtonian());
 }
 
+// the constant factors of `e` (symbols of constants, to their powers), by base
+std::map<ex, GiNaC::numeric, GiNaC::ex_is_less> constant_factors(const SymbolTable& st, const ex& e) {
+    std::map<ex, GiNaC::numeric, GiNaC::ex_is_less> out;
+    const auto add = [&](const ex& f) {
+        const bool power = GiNaC::is_a<GiNaC::power>(f) && GiNaC::is_a<GiNaC::numeric>(f.op(1));
+        const ex base = power ? f.op(0) : f;
+        if (GiNaC::is_a<GiNaC::symbol>(base) && st.owns(base) && st.kind(base) == SymbolKind::constant)
+            out[base] += power ? GiNaC::ex_to<GiNaC::numeric>(f.op(1)) : GiNaC::numeric(1);
+    };
+    if (GiNaC::is_a<GiNaC::mul>(e))
+        for (std::size_t i = 0; i < e.nops(); ++i) add(e.op(i));
+    else
+        add(e);
+    return out;
+}
+
+// The unit vector along `v` (a partial velocity) for a row's direction: v without the product
+// of constants all its measures share, so that a link's length L, which GiNaC does not know to
+// be positive, leaves no L/sqrt(L^2) in it; signed as v is at the constants' values (any sign
+// gives the row's equation, up to its sign).
+Vector row_direction(const SymbolTable& st, const Vector& v) {
+    const Vector s = v.simplify();
+    std::map<ex, GiNaC::numeric, GiNaC::ex_is_less> common;
+    bool first = true;
+    for (const auto& [F, c] : s.components())
+        for (int i = 0; i < 3; ++i) {
+            if (c[i].is_zero()) continue;
+            const auto here = constant_factors(st, c[i]);
+            if (first) {
+                common = here;
+                first = false;
+                continue;
+            }
+            for (auto it = common.begin(); it != common.end();) {
+                const auto h = here.find(it->first);
+                if (h == here.end() || (h->second > 0) != (it->second > 0)) {
+                    it = common.erase(it);
+                    continue;
+                }
+                it->second = it->second > 0 ? std::min(it->second, h->second) : std::max(it->second, h->second);
+                ++it;
+            }
+        }
+    ex factor = 1;
+    for (const auto& [b, n] : common) factor *= GiNaC::pow(b, n);
+    if (factor.is_equal(1)) return s.unit();
+    double value = 1;
+    try {
+        value = st.evaluate(factor);
+    } catch (const std::exception&) {  // a constant with no value: taken positive
+    }
+    return (value < 0 ? -1 : 1) * (s / factor).unit();
+}
+
 // the geometry of one coordinate's row
 struct Plan {
     BodySet S;
@@ -176,7 +230,7 @@ std::optional<Plan> plan_coordinate_at_random_states(
         const auto turning = std::find(turns.begin(), turns.end(), true);
         if (turning == turns.end()) {
             p.motion = Motion::translate;
-            p.u = partial_v(*p.S.front()).unit();
+            p.u = row_direction(sys.symbols(), partial_v(*p.S.front()));
             for (std::size_t i = 0; i < p.S.size(); ++i)
                 if (!MeasuresAtRandomStates::agree(pv[i], pv.front()))
                     p.note = "S does not slide as one body when only " + q.name() +
@@ -186,7 +240,7 @@ std::optional<Plan> plan_coordinate_at_random_states(
         const std::size_t t = static_cast<std::size_t>(turning - turns.begin());
         p.motion = Motion::rotate;
         const Vector w0 = partial_w(*p.S[t]);
-        p.u = w0.unit();
+        p.u = row_direction(sys.symbols(), w0);
         // the about point: a point of S that stays put when only q changes (the joint)
         for (const Point* P : sys.points()) {
             if (!P->owner() || std::find(p.S.begin(), p.S.end(), P->owner()) == p.S.end()) continue;
@@ -249,7 +303,7 @@ Plan plan_coordinate(const System& sys, const TimeVariable& q,
     if (turning == pw.end()) {
         // translation: every body slides the same way
         p.motion = Motion::translate;
-        p.u = pv.front().unit();
+        p.u = row_direction(sys.symbols(), pv.front());
         for (std::size_t i = 0; i < p.S.size(); ++i)
             if (!zero(sys, pv[i] - pv.front()))
                 p.note = "S does not slide as one body when only " + q.name() +
@@ -258,7 +312,7 @@ Plan plan_coordinate(const System& sys, const TimeVariable& q,
     }
     p.motion = Motion::rotate;
     const Vector& w0 = *turning;
-    p.u = w0.unit();
+    p.u = row_direction(sys.symbols(), w0);
     // the about point: a point of S that stays put when only q changes (the joint)
     for (const Point* P : sys.points()) {
         if (!P->owner() || std::find(p.S.begin(), p.S.end(), P->owner()) == p.S.end()) continue;

@@ -385,15 +385,15 @@ void Interpreter::Impl::methods(const Statement& s) {
     values[n.text] = array_value(eqs);
     formed_here.residuals = eqs;
     formed[n.text] = std::move(formed_here);
-    std::erase_if(formed_sets, [&](const ReportEquationSet& e) { return e.name == n.text; });
-    formed_sets.push_back({n.text, s.keyword == "lagrange" ? "Lagrange's method" : "Kane's method",
-                           s.location.line, eqs});
     // what the equations are in: the accelerations, or the rates of the independent speeds
     std::vector<ex> accelerations;
     if (formed[n.text].kane && !formed[n.text].kane->independent_speeds.empty())
         for (const ex& u : formed[n.text].kane->independent_speeds) accelerations.push_back(m.symbols().dt(u));
     else
         for (const TimeVariable& x : q) accelerations.push_back(x.d(x.order()));
+    std::erase_if(formed_sets, [&](const ReportEquationSet& e) { return e.name == n.text; });
+    formed_sets.push_back({n.text, s.keyword == "lagrange" ? "Lagrange's method" : "Kane's method",
+                           s.location.line, eqs, accelerations});
     print_equations(n.text, eqs, accelerations);
 }
 

@@ -166,10 +166,22 @@ std::string Interpreter::Impl::write_report_to(const std::string& dir, const exm
             c.rows = plan_default_roadmap(sys, c.coordinates);
         } catch (const Error& e) {
             // the rest of the report stands without it
-            std::string formed;
-            for (const ReportEquationSet& set : formed_sets) formed += (formed.empty() ? "" : ", ") + set.name;
+            std::string formed, in_rates;
+            for (const ReportEquationSet& set : formed_sets) {
+                formed += (formed.empty() ? "" : ", ") + set.name;
+                std::string rates;
+                for (const ex& u : set.unknowns) rates += (rates.empty() ? "" : ", ") + to_string(u);
+                in_rates += std::string(in_rates.empty() ? "" : "; ") + set.name + " by " + set.method +
+                            (rates.empty() ? "" : ", in " + rates);
+            }
+            const bool in_speeds = std::any_of(c.coordinates.begin(), c.coordinates.end(),
+                                               [](const TimeVariable& q) { return q.order() < 2; });
             c.notes.push_back(
-                formed.empty()
+                !formed.empty() && in_speeds
+                    ? "This model is written in generalized speeds: the page shows its equations of motion (" +
+                          in_rates + ") below, in place of a road-map, whose rows are formed for coordinates "
+                          "declared with their second derivatives."
+                : formed.empty()
                     ? std::string("No road-map: the script forms none and planning one failed: ") +
                           in_script_words(e.what()) + "; form one in the script (roadmap E for ...) to see it here."
                     : "No road-map: the script forms none; its equations of motion (" + formed +

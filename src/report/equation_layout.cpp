@@ -3,6 +3,7 @@
 // collected in the accelerations, and written so that TeX and KaTeX break a long one between
 // its terms (no \left( ... \right) group around a sum, which neither can break inside).
 #include <algorithm>
+#include <map>
 #include <string>
 #include <utility>
 #include <vector>
@@ -45,16 +46,29 @@ std::size_t report_detail::longest_unbreakable(const std::string& tex) {
 
 namespace {
 
-// whether the term holds an acceleration of the model
+// whether the term holds an acceleration or an unknown load of the model
 bool holds_acceleration(const SymbolTable& st, const ex& term) {
     for (const ex& s : symbols_of(term))
-        if (st.owns(s) && st.kind(s) == SymbolKind::variable && st.derivative_order(s) == 2)
+        if (st.owns(s) && (st.kind(s) == SymbolKind::variable || st.kind(s) == SymbolKind::unknown) &&
+             st.is_solve_level(s))
             return true;
     return false;
 }
 
+// the names of the accelerations and unknown loads `term` holds, in order: the key that
+// sorts the terms of qA'', qB'', F_x, F_y by their symbol
+std::string gathering_names(const SymbolTable& st, const ex& term) {
+    std::vector<std::string> names;
+    for (const ex& s : symbols_of(term))
+        if (holds_acceleration(st, s)) names.push_back(to_string(s));
+    std::sort(names.begin(), names.end());
+    std::string out;
+    for (const std::string& n : names) out += n + " ";
+    return out;
+}
+
 // "lhs = t1 + t2 ...": the terms holding the row's variable first (in 0 = E), then those of
-// the accelerations (their coefficients gathered), then the rest, each group in the order of
+// the accelerations and unknown loads (their coefficients gathered), then the rest, each group in the order of
 // the terms' printed form
 std::string terms_tex(const SymbolTable& st, const ReadableRelation& r, const ex& variable) {
     std::vector<std::string> terms;
@@ -66,9 +80,11 @@ std::string terms_tex(const SymbolTable& st, const ReadableRelation& r, const ex
             ex term;
         };
         std::vector<Term> keyed;
-        for (std::size_t i = 0; i < e.nops(); ++i)
-            keyed.push_back({e.op(i).has(variable) ? 0 : holds_acceleration(st, e.op(i)) ? 1 : 2,
-                             to_string(e.op(i)), e.op(i)});
+        for (std::size_t i = 0; i < e.nops(); ++i) {
+            const ex& t = e.op(i);
+            const int group = t.has(variable) ? 0 : holds_acceleration(st, t) ? 1 : 2;
+            keyed.push_back({group, group == 1 ? gathering_names(st, t) : to_string(t), t});
+        }
         std::stable_sort(keyed.begin(), keyed.end(), [](const Term& a, const Term& b) {
             return a.group != b.group ? a.group < b.group : a.key < b.key;
         });
@@ -99,12 +115,56 @@ std::string abbreviated_equation_tex(const std::string& lhs, const ex& e) {
     return out;
 }
 
-// the relation as terms_tex writes it, or, when a piece of it too long for a line would be
-// left unbroken (a fraction over a long root), abbreviated with named parts
-std::string relation_tex(const SymbolTable& st, const ReadableRelation& r, const ex& variable) {
+// radicands of more operations than this are named when a root leaves a line unbroken
+constexpr std::size_t kNamedRadicandOps = 8;
+
+// each root of a long sum in an expression (a spring's length sqrt(h^2 + L^2 - ...)) with the
+// sum named w1, w2, ... in the order met; the names and what they stand for in `names`
+struct NamedRadicands : GiNaC::map_function {
+    NamedRadicands(const SymbolTable& table, Simplifier& simplify) : st(table), simplifier(simplify) {}
+    const SymbolTable& st;
+    Simplifier& simplifier;
+    std::vector<std::pair<ex, ex>> names;
+    std::map<ex, ex, GiNaC::ex_is_less> of;
+    ex operator()(const ex& e) override {
+        if (GiNaC::is_a<GiNaC::symbol>(e) || GiNaC::is_a<GiNaC::numeric>(e)) return e;
+        const ex m = e.map(*this);
+        if (!GiNaC::is_a<GiNaC::power>(m) || !GiNaC::is_a<GiNaC::add>(m.op(0)) ||
+            !GiNaC::is_a<GiNaC::numeric>(m.op(1)) || GiNaC::ex_to<GiNaC::numeric>(m.op(1)).is_integer() ||
+            count_ops(m.op(0)) <= kNamedRadicandOps)
+            return m;
+        auto [it, added] = of.try_emplace(m.op(0), ex());
+        if (added) {
+            it->second = GiNaC::symbol("w" + std::to_string(names.size() + 1));
+            names.push_back({it->second, group_by_varying_factors(st, simplifier(m.op(0)))});
+        }
+        return GiNaC::pow(it->second, m.op(1));
+    }
+};
+
+// whether no line of `tex` (lines split by kTexLineBreak) has a piece too long to break
+bool breaks_well(const std::string& tex) {
+    for (const std::string& line : report_detail::tex_lines(report_detail::breakable_tex(tex)))
+        if (longest_unbreakable(line) > kUnbreakableChars) return false;
+    return true;
+}
+
+// the relation as terms_tex writes it; when a piece of it too long for a line would be left
+// unbroken, with the long sums under its roots named on the lines below it (w1 = ...); when
+// that is not enough (a fraction over a long sum), abbreviated with named parts
+std::string relation_tex(const SymbolTable& st, const ReadableRelation& r, const ex& variable,
+                         Simplifier& simplifier) {
     const std::string whole = terms_tex(st, r, variable);
-    if (longest_unbreakable(report_detail::breakable_tex(whole)) <= kUnbreakableChars)
-        return whole;
+    if (breaks_well(whole)) return whole;
+    NamedRadicands named(st, simplifier);
+    const ReadableRelation shorter{r.lhs, named(r.rhs)};
+    if (!named.names.empty()) {
+        std::string out = terms_tex(st, shorter, variable);
+        for (std::size_t i = 0; i < named.names.size(); ++i)
+            out += std::string(report_detail::kTexLineBreak) + (i == 0 ? "\\text{with } " : "") +
+                   to_latex(named.names[i].first) + " = " + to_latex(named.names[i].second);
+        if (breaks_well(out)) return out;
+    }
     return abbreviated_equation_tex(r.solved() ? to_latex(r.lhs) : "0", r.rhs);
 }
 
@@ -145,11 +205,12 @@ std::vector<std::string> report_detail::typeset_equations(const ReportContent& c
                                  ? abbreviated_equation_tex("0", e)
                                  : relation_tex(c.system->symbols(),
                                                 calc_solved_equation(*c.system, e, variable, simplifier),
-                                                variable));
+                                                variable, simplifier));
     };
     for (const RoadmapRow& r : c.rows) out.push_back(typeset(r.equation, r.variable));
     for (const ReportEquationSet& set : c.equation_sets)
-        for (const ex& e : set.equations) out.push_back(typeset(e, ex()));
+        for (std::size_t k = 0; k < set.equations.size(); ++k)
+            out.push_back(typeset(set.equations[k], k < set.unknowns.size() ? set.unknowns[k] : ex()));
     return out;
 }
 

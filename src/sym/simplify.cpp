@@ -571,6 +571,43 @@ std::vector<ex> solve_level_symbols(const SymbolTable& table, const ex& e) {
     return out;
 }
 
+// the terms of a sum gathered by the factors they share that vary in time: first by their
+// functions (sin(qB)), then by the rest (qA'*qB'), each group's constant coefficient with
+// its common factors out: sin(qB)*L_A*(L_B*m_C + d_B*m_B)*(2*qA'*qB' + qB'^2)
+ex group_by_varying_factors(const SymbolTable& table, const ex& e) {
+    if (!is_a<add>(e)) return e;
+    // term = constant part * function part * other varying part
+    struct Split {
+        ex constant = 1, functions = 1, others = 1;
+    };
+    auto split_term = [&](const ex& t) {
+        Split p;
+        Term nt = split(t);
+        p.constant = nt.c;
+        for (const auto& [b, n] : factors(nt.rest)) {
+            bool fixed = true;
+            for (const ex& sym : symbols_of(b)) fixed = fixed && (!table.owns(sym) || table.kind(sym) == SymbolKind::constant);
+            ex f = pow(b, n);
+            if (fixed) p.constant *= f;
+            else if (is_a<function>(b)) p.functions *= f;
+            else p.others *= f;
+        }
+        return p;
+    };
+    std::map<ex, std::map<ex, ex, ex_is_less>, ex_is_less> groups;  // functions -> others -> constant
+    for (std::size_t i = 0; i < e.nops(); ++i) {
+        Split p = split_term(e.op(i));
+        groups[p.functions][p.others] += p.constant;
+    }
+    ex out = 0;
+    for (const auto& [functions, by_others] : groups) {
+        ex inner = 0;
+        for (const auto& [others, constant] : by_others) inner += factor_common(constant) * others;
+        out += functions * factor_common(inner);
+    }
+    return count_ops(out) < count_ops(e) ? out : e;
+}
+
 namespace {
 
 // the intermediates of a table written out where short, and equations made readable
@@ -631,47 +668,7 @@ private:
         return out + part(xe.subs(zero, subs_options::no_pattern));
     }
 
-    // True if `s` stays the same in time (a constant, or a symbol of no table)
-    bool is_fixed(const ex& s) const {
-        return !t_.owns(s) || t_.kind(s) == SymbolKind::constant;
-    }
-
-    // the terms of a sum gathered by the factors they share that vary in time: first by their
-    // functions (sin(qB)), then by the rest (qA'*qB'), each group's constant coefficient with
-    // its common factors out: sin(qB)*L_A*(L_B*m_C + d_B*m_B)*(2*qA'*qB' + qB'^2)
-    ex grouped(const ex& e) const {
-        if (!is_a<add>(e)) return e;
-        // term = constant part * function part * other varying part
-        struct Split {
-            ex constant = 1, functions = 1, others = 1;
-        };
-        auto split_term = [&](const ex& t) {
-            Split p;
-            Term nt = split(t);
-            p.constant = nt.c;
-            for (const auto& [b, n] : factors(nt.rest)) {
-                bool fixed = true;
-                for (const ex& sym : symbols_of(b)) fixed = fixed && is_fixed(sym);
-                ex f = pow(b, n);
-                if (fixed) p.constant *= f;
-                else if (is_a<function>(b)) p.functions *= f;
-                else p.others *= f;
-            }
-            return p;
-        };
-        std::map<ex, std::map<ex, ex, ex_is_less>, ex_is_less> groups;  // functions -> others -> constant
-        for (std::size_t i = 0; i < e.nops(); ++i) {
-            Split p = split_term(e.op(i));
-            groups[p.functions][p.others] += p.constant;
-        }
-        ex out = 0;
-        for (const auto& [functions, by_others] : groups) {
-            ex inner = 0;
-            for (const auto& [others, constant] : by_others) inner += factor_common(constant) * others;
-            out += functions * factor_common(inner);
-        }
-        return count_ops(out) < count_ops(e) ? out : e;
-    }
+    ex grouped(const ex& e) const { return group_by_varying_factors(t_, e); }
 
     const SymbolTable& t_;
     std::size_t inline_ops_;

@@ -6,6 +6,7 @@
 
 #include <random>
 
+#include "alembert/eom/planner.hpp"
 #include "alembert/eom/roadmap.hpp"
 #include "alembert/mech/sample_models.hpp"
 #include "models.hpp"
@@ -57,6 +58,17 @@ int terms_holding(const ex& e, const ex& s) {
     return n;
 }
 
+// how many terms of the sum `e` hold the product a^i b^j of rates (in their expansion)
+int terms_with_rates(const ex& e, const ex& a, int i, const ex& b, int j) {
+    const auto holds = [&](const ex& t) {
+        return !GiNaC::expand(t).coeff(a, i).coeff(b, j).is_zero();
+    };
+    if (!GiNaC::is_a<GiNaC::add>(e)) return holds(e) ? 1 : 0;
+    int n = 0;
+    for (std::size_t k = 0; k < e.nops(); ++k) n += holds(e.op(k)) ? 1 : 0;
+    return n;
+}
+
 }  // namespace
 
 TEST(ReadableEquation, HipRowIsSolvedForItsTorqueAsDerivedByHand) {
@@ -92,18 +104,84 @@ TEST(ReadableEquation, HipRowIsSolvedForItsTorqueAsDerivedByHand) {
     EXPECT_LE(worst_difference(t.s, r.rhs.coeff(qC.d(2), 1), cC), kAgree);
 }
 
-TEST(ReadableEquation, RowForAnAccelerationStaysZeroEqualsEGroupedByAccelerations) {
-    // the hip row read for qC'': its coefficient -(I_C + m_C d_C^2) is a sum, not a constant
-    // monomial, so the row stays 0 = E, with E's meaning and each acceleration in one term
+TEST(ReadableEquation, RowForAnAccelerationIsSolvedByItsConstantCoefficientAndGathered) {
+    // the hip row read for qC'': its coefficient -(I_C + m_C d_C^2) is the same at every state,
+    // so qC'' = [T_C + m_C g d_C sin(theta) - (I_C + m_C d_C^2)(qA'' + qB'')
+    //            - m_C d_C (L_A (qA'' cos(beta) + qA'^2 sin(beta)) + L_B (phi'' cos(qC)
+    //            + phi'^2 sin(qC)))] / (I_C + m_C d_C^2)
     Triple t;
+    const TimeVariable &qA = t.qA, &qB = t.qB, &qC = t.qC;
     const ex E = t.hip_row();
     Simplifier simplifier;
-    const ReadableRelation r = calc_solved_equation(t.m.system, E, t.qC.d(2), simplifier);
-    EXPECT_FALSE(r.solved());
-    EXPECT_LE(worst_difference(t.s, r.rhs, E), kAgree);
-    for (const TimeVariable* q : {&t.qA, &t.qB, &t.qC}) EXPECT_EQ(terms_holding(r.rhs, q->d(2)), 1);
-    EXPECT_LE(worst_difference(t.s, r.rhs.coeff(t.qC.d(2), 1), -(t.I_C + t.m_C * t.d_C * t.d_C)),
+    const ReadableRelation r = calc_solved_equation(t.m.system, E, qC.d(2), simplifier);
+    ASSERT_TRUE(r.solved());
+    EXPECT_TRUE(r.lhs.is_equal(qC.d(2)));
+    EXPECT_FALSE(r.rhs.has(qC.d(2)));
+    const ex J = t.I_C + t.m_C * t.d_C * t.d_C, beta = qB + qC, theta = qA + qB + qC;
+    const ex ph1 = qA.d(1) + qB.d(1), ph2 = qA.d(2) + qB.d(2);
+    const ex by_hand = (t.T_C + t.m_C * t.g * t.d_C * sin(theta) - J * ph2 -
+                        t.m_C * t.d_C *
+                            (t.L_A * (qA.d(2) * cos(beta) + pow(qA.d(1), 2) * sin(beta)) +
+                             t.L_B * (ph2 * cos(qC) + pow(ph1, 2) * sin(qC)))) /
+                       J;
+    EXPECT_LE(worst_difference(t.s, r.rhs, by_hand), kAgree);
+    EXPECT_LE(worst_difference(t.s, E.subs(GiNaC::lst{qC.d(2) == r.rhs}), 0), kAgree);
+    // each acceleration, the torque and each product of rates in one term of the right side
+    for (const TimeVariable* q : {&qA, &qB}) EXPECT_EQ(terms_holding(r.rhs, q->d(2)), 1);
+    EXPECT_EQ(terms_holding(r.rhs, t.T_C), 1);
+    const ex a = qA.d(1), b = qB.d(1);
+    EXPECT_EQ(terms_with_rates(r.rhs, a, 2, b, 0), 1);
+    EXPECT_EQ(terms_with_rates(r.rhs, a, 1, b, 1), 1);
+    EXPECT_EQ(terms_with_rates(r.rhs, a, 0, b, 2), 1);
+    EXPECT_LE(worst_difference(t.s, r.rhs.coeff(qA.d(2), 1),
+                               -(J + t.m_C * t.d_C * (t.L_A * cos(beta) + t.L_B * cos(qC))) / J),
               kAgree);
+}
+
+TEST(ReadableEquation, AnEquationNotLinearInItsUnknownIsGatheredByItsUnknownLoads) {
+    // a statics row for qA: qA sits inside sines, so 0 = E stays, its torques gathered
+    // (T_C: L_A sin(qA) + L_B cos(qB); T_B: -L_A), the rest by its functions
+    Triple t;
+    const ex qA = t.qA.symbol(), qB = t.qB.symbol();
+    const ex T_B = t.s.symbol("T_B");
+    const ex e = t.T_C * t.L_A * sin(qA) - T_B * t.L_A + t.g * t.m_C * sin(qA) + t.T_C * t.L_B * cos(qB) +
+                 t.g * t.d_C * t.m_C * sin(qA) - 2 * T_B * t.L_A;
+    Simplifier simplifier;
+    const ReadableRelation r = calc_solved_equation(t.m.system, e, qA, simplifier);
+    EXPECT_FALSE(r.solved());
+    EXPECT_LE(worst_difference(t.s, r.rhs, e), kAgree);
+    EXPECT_EQ(terms_holding(r.rhs, t.T_C), 1);
+    EXPECT_EQ(terms_holding(r.rhs, T_B), 1);
+    EXPECT_LE(worst_difference(t.s, r.rhs.coeff(t.T_C, 1), t.L_A * sin(qA) + t.L_B * cos(qB)), kAgree);
+}
+
+TEST(ReadableEquation, ParticleDoublePendulumRowsRunAlongTheRodsAndAreSolved) {
+    // Q1 moves along Ax when only q1 changes (v = L1 q1' Ax, L1 = 1.1 m): the row's direction is
+    // Ax itself, with no L1/sqrt(L1^2); E = -(m1 + m2)(g sin(q1) + L1 q1'')
+    //   - m2 L2 (q2'' cos(q2 - q1) + q2'^2 sin(q1 - q2)), so
+    // q1'' = -g sin(q1)/L1 - m2 L2 (q2'' cos(q1 - q2) + q2'^2 sin(q1 - q2)) / ((m1 + m2) L1)
+    test::Model md = test::make_particle_double_pendulum();
+    const SymbolTable& s = md.sys.symbols();
+    const std::vector<RoadmapRow> rows = plan_default_roadmap(md.sys, md.q);
+    ASSERT_EQ(rows.size(), 2u);
+    const Col3 u1 = rows[0].direction.components_in(md.sys.frame("A"));
+    const Col3 u2 = rows[1].direction.components_in(md.sys.frame("B"));
+    for (int i = 0; i < 3; ++i) {
+        EXPECT_TRUE(u1[i].is_equal(i == 0 ? 1 : 0)) << u1[i];
+        EXPECT_TRUE(u2[i].is_equal(i == 0 ? 1 : 0)) << u2[i];
+    }
+    const ex q1 = md.q[0].symbol(), q2 = md.q[1].symbol();
+    const ex L1 = s.symbol("L1"), L2 = s.symbol("L2"), m1 = s.symbol("m1"), m2 = s.symbol("m2"), g = s.symbol("g");
+    Simplifier simplifier;
+    const ReadableRelation r = calc_solved_equation(md.sys, rows[0].equation, md.q[0].d(2), simplifier);
+    ASSERT_TRUE(r.solved());
+    EXPECT_TRUE(r.lhs.is_equal(md.q[0].d(2)));
+    const ex by_hand = -g * sin(q1) / L1 - m2 * L2 *
+                                               (md.q[1].d(2) * cos(q1 - q2) +
+                                                pow(md.q[1].d(1), 2) * sin(q1 - q2)) /
+                                               ((m1 + m2) * L1);
+    EXPECT_LE(worst_difference(s, r.rhs, by_hand), kAgree);
+    EXPECT_EQ(terms_holding(r.rhs, md.q[1].d(2)), 1);
 }
 
 TEST(ReadableEquation, SolvedOnlyWhereTheCoefficientIsAConstantAndTheUnknownLinear) {

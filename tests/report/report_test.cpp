@@ -803,3 +803,32 @@ TEST(Report, GravityPointsDownThePageWhicheverAxisIsUp) {
 }
 
 }  // namespace alembert
+
+namespace alembert {
+namespace {
+
+TEST(ReportLatex, ARootOfALongSumIsNamedOnItsOwnLineAndTheRestLeftWhole) {
+    // a spring's pull over its length sqrt(...): the sum under the root is too long to leave
+    // unbroken inside a fraction, so it is named w1 on the next line; nothing else is named
+    SitToStand s;
+    SymbolTable& st = s.m.system.symbols();
+    const ex qA = s.m.q[0].symbol(), qB = s.m.q[1].symbol(), qC = s.m.q[2].symbol();
+    const ex L_A = st.symbol("L_A"), L_B = st.symbol("L_B"), d_C = st.symbol("d_C"), g = st.symbol("g"),
+             m_A = st.symbol("m_A"), T_A = st.symbol("T_A");
+    const ex length2 = L_A * L_A + L_B * L_B + 2 * L_A * L_B * GiNaC::cos(qB) + d_C * d_C +
+                       2 * d_C * L_B * GiNaC::cos(qC) + 2 * L_A * d_C * GiNaC::cos(qB + qC);
+    const ex e = T_A - g * L_A * m_A * GiNaC::sin(qA) * L_B * d_C / GiNaC::sqrt(length2);
+    s.content.equation_sets.push_back({"P", "Kane's method", 1, {e}, {}});
+    const std::string tex = render_report_latex(s.content);
+    const std::size_t at = tex.find("\\eqline{\\mathrm{P}[1]\\colon\\ 0 = ");
+    ASSERT_NE(at, std::string::npos) << tex;
+    const std::size_t end = tex.find("\\end{eqlines}", at);
+    const std::string shown = tex.substr(at, end - at);
+    EXPECT_NE(shown.find("\\sqrt{w1}"), std::string::npos) << shown;
+    EXPECT_NE(shown.find("\n\\eqline{\\text{with } w1 = "), std::string::npos) << shown;
+    EXPECT_EQ(shown.find("w2"), std::string::npos) << shown;
+    EXPECT_EQ(count(shown, "\\eqline{"), 2u) << shown;
+}
+
+}  // namespace
+}  // namespace alembert

@@ -53,6 +53,9 @@ struct ReportEquationSet {
     std::string method{};             ///< "Kane's method", "Lagrange's method"
     int line = 0;                     ///< the statement's line in the script
     std::vector<ex> equations{};      ///< each 0 = equations[i]
+    /// what each equation is read for (shown solved for it where its coefficient is a nonzero
+    /// constant): the accelerations, or the independent speeds' rates; none when empty
+    std::vector<ex> unknowns{};
 };
 
 /// The units of one road-map row's equation checked term by term, from the units the script

@@ -70,6 +70,13 @@ private:
 /// coefficients of a collected form). Equal to `e` in meaning; no expansion.
 ex factor_common(const ex& e);
 
+/// The terms of the sum `e` gathered by the factors they share that vary in time (symbols of
+/// `table` other than constants): first by their functions (sin(qB)), then by the rest
+/// (qA'*qB'), each group's constant coefficient with its common factors out:
+/// sin(qB)*L_A*(L_B*m_C + d_B*m_B)*(2*qA'*qB' + qB'^2). `e` itself when that is not shorter.
+/// Equal to `e` in meaning; one pass over the terms, no expansion.
+ex group_by_varying_factors(const SymbolTable& table, const ex& e);
+
 /// `e` collected in the listed symbols (e.g. the accelerations qA'', qB''), each coefficient
 /// simplified.
 ex collect_in(const ex& e, const std::vector<ex>& symbols);
