@@ -448,9 +448,11 @@ bool SymbolTable::calc_linear_form(const ex& e, std::map<ex, ex, GiNaC::ex_is_le
 }
 
 // collect_linear, with the intermediates that hold solve-level symbols split by their
-// remembered linear forms
+// remembered linear forms. With `unsplit`, an intermediate met whose form is not remembered yet
+// is not split here: it is put in *unsplit and the walk stops (returns false)
 bool SymbolTable::collect_linear_through(const ex& e, const ex& factor,
-                                         std::map<ex, ex, GiNaC::ex_is_less>& coeffs, ex& rest) {
+                                         std::map<ex, ex, GiNaC::ex_is_less>& coeffs, ex& rest,
+                                         ex* unsplit) {
     auto holds_x = [&](const ex& f) {
         for (const ex& s : symbols_of(f))
             if (is_solve_level(s)) return true;
@@ -460,6 +462,10 @@ bool SymbolTable::collect_linear_through(const ex& e, const ex& factor,
         if (!is_solve_level(e)) {
             rest += factor * e;
         } else if (info_.at(e).kind == SymbolKind::intermediate) {
+            if (unsplit && !z_linear_.count(e)) {
+                *unsplit = e;
+                return false;
+            }
             const LinearForm* f = linear_form_of(e);
             if (!f) return false;
             for (const auto& [x, c] : f->coeffs) coeffs[x] += factor * c;
@@ -471,7 +477,7 @@ bool SymbolTable::collect_linear_through(const ex& e, const ex& factor,
     }
     if (GiNaC::is_a<GiNaC::add>(e)) {
         for (std::size_t i = 0; i < e.nops(); ++i)
-            if (!collect_linear_through(e.op(i), factor, coeffs, rest)) return false;
+            if (!collect_linear_through(e.op(i), factor, coeffs, rest, unsplit)) return false;
         return true;
     }
     if (GiNaC::is_a<GiNaC::mul>(e)) {
@@ -488,29 +494,45 @@ bool SymbolTable::collect_linear_through(const ex& e, const ex& factor,
         ex others = factor;
         for (std::size_t i = 0; i < e.nops(); ++i)
             if (i != holder) others *= e.op(i);
-        return collect_linear_through(e.op(holder), others, coeffs, rest);
+        return collect_linear_through(e.op(holder), others, coeffs, rest, unsplit);
     }
     if (holds_x(e)) return false;
     rest += factor * e;
     return true;
 }
 
-// z = sum_x c_x x + rest, split once; nothing if z is not visibly linear in the x
+// z = sum_x c_x x + rest, split once; nothing if z is not visibly linear in the x.
+// An intermediate whose definition holds others is split after them, in the order the walk of
+// its definition meets them (as a recursion would), but with a stack of its own: a chain of
+// intermediates grows with the model, and a call per link would overflow the thread's stack.
 const SymbolTable::LinearForm* SymbolTable::linear_form_of(const ex& z) {
     if (auto it = z_linear_.find(z); it != z_linear_.end()) return it->second ? &*it->second : nullptr;
     constexpr std::size_t kNameOps = 4;
-    std::map<ex, ex, GiNaC::ex_is_less> coeffs;
-    ex rest = 0;
-    std::optional<LinearForm> form;
-    if (collect_linear_through(info_.at(z).definition, 1, coeffs, rest)) {
-        form.emplace();
-        for (const auto& [x, c] : coeffs)
-            if (!c.is_zero()) form->coeffs.emplace(x, name_if_large(c, kNameOps));
-        form->rest = name_if_large(rest, kNameOps);
+    std::vector<ex> todo{z};
+    while (!todo.empty()) {
+        const ex y = todo.back();
+        if (z_linear_.count(y)) {  // met twice on the way down
+            todo.pop_back();
+            continue;
+        }
+        std::map<ex, ex, GiNaC::ex_is_less> coeffs;
+        ex rest = 0, first_unsplit;
+        const bool linear = collect_linear_through(info_.at(y).definition, 1, coeffs, rest, &first_unsplit);
+        if (!linear && !first_unsplit.is_zero()) {  // that one first, then y's walk again
+            todo.push_back(first_unsplit);
+            continue;
+        }
+        std::optional<LinearForm> form;
+        if (linear) {
+            form.emplace();
+            for (const auto& [x, c] : coeffs)
+                if (!c.is_zero()) form->coeffs.emplace(x, name_if_large(c, kNameOps));
+            form->rest = name_if_large(rest, kNameOps);
+        }
+        z_linear_[y] = std::move(form);
+        todo.pop_back();
     }
-    // (the recursion above may have added other entries: a map's entries stay where they are)
-    auto& kept = z_linear_[z];
-    kept = std::move(form);
+    const auto& kept = z_linear_.at(z);
     return kept ? &*kept : nullptr;
 }
 

@@ -305,3 +305,21 @@ TEST(SymbolTable, LinearFormOfALongChainOfIntermediatesIsSplitOncePerIntermediat
     EXPECT_NEAR(s.evaluate(coeffs.at(q.d(2))), 1 + 2000 * 0.4, 1e-9);
     EXPECT_NEAR(s.evaluate(rest), 2000 * 0.4, 1e-9);
 }
+
+TEST(SymbolTable, LinearFormOfAChainLongerThanTheStackHoldsCallsIsSplit) {
+    // 100,000 intermediates, each the previous one plus L q'' + L: split one after the other
+    // (a call per link would overflow the thread's stack); the coefficient of q'' is
+    // 1 + 100,000 L, the rest 100,000 L
+    constexpr int kLinks = 100000;
+    SymbolTable s;
+    const TimeVariable q = s.add_variable("q", 2);
+    const ex L = s.add_constant("L", 0.25);
+    ex z = q.d(2);
+    for (int k = 0; k < kLinks; ++k) z = s.add_intermediate(z + L * q.d(2) + L, "link" + std::to_string(k));
+    std::map<ex, ex, GiNaC::ex_is_less> coeffs;
+    ex rest = 0;
+    ASSERT_TRUE(s.calc_linear_form(z, coeffs, rest));
+    ASSERT_EQ(coeffs.size(), 1u);
+    EXPECT_NEAR(s.evaluate(coeffs.at(q.d(2))), 1 + kLinks * 0.25, 1e-6);
+    EXPECT_NEAR(s.evaluate(rest), kLinks * 0.25, 1e-6);
+}

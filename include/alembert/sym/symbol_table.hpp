@@ -233,7 +233,8 @@ private:
         ex rest;
     };
     bool collect_linear_through(const ex& e, const ex& factor,
-                                std::map<ex, ex, GiNaC::ex_is_less>& coeffs, ex& rest);
+                                std::map<ex, ex, GiNaC::ex_is_less>& coeffs, ex& rest,
+                                ex* unsplit = nullptr);
     const LinearForm* linear_form_of(const ex& z);
     const Info& info(const ex& s, const char* caller) const;
     const ex& expanded_definition(const ex& z) const;
