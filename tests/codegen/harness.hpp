@@ -304,6 +304,14 @@ inline int run(const std::string& command, std::string& output) {
     return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
+/// The command that runs this test program again for the one test case `test_case` (a
+/// DISABLED_ one too). GoogleTest's sharding variables are not passed on: under sharding
+/// (ALEMBERT_TEST_SHARDS) the child would run the case only if it fell in this process's share.
+inline std::string this_program_for(const std::string& test_case) {
+    return "env -u GTEST_TOTAL_SHARDS -u GTEST_SHARD_INDEX " + fs::read_symlink("/proc/self/exe").string() +
+           " --gtest_also_run_disabled_tests --gtest_filter=" + test_case;
+}
+
 /// The numbers of a text (whitespace or comma separated).
 inline std::vector<double> numbers(const std::string& text) {
     std::string t = text;

@@ -106,9 +106,7 @@ TEST(MassMatrixCodegen, GeneratedMassMatrixFileIsTheSameFromRunToRun) {
         const fs::path sub = dir.path() / std::to_string(k);
         fs::create_directories(sub);
         ASSERT_EQ(run("ALEMBERT_TEST_OUT=" + sub.string() + " " +
-                          fs::read_symlink("/proc/self/exe").string() +
-                          " --gtest_also_run_disabled_tests"
-                          " --gtest_filter=MassMatrixCodegen.DISABLED_GenerateArmIntoTestOut",
+                          this_program_for("MassMatrixCodegen.DISABLED_GenerateArmIntoTestOut"),
                       out),
                   0)
             << out;
