@@ -2,6 +2,7 @@
 // The report statement: the model, its road-map and what simulate and inverse computed, as HTML.
 #include <algorithm>
 #include <filesystem>
+#include <functional>
 #include <numbers>
 #include <set>
 #include <sstream>
@@ -106,6 +107,30 @@ void close_loops(const System& sys, const std::vector<TimeVariable>& q, const ex
     } catch (const Error&) {
         source += "; the loops do not close there (solve for the configuration first)";
     }
+}
+
+// Whether the points' positions make the coordinate `x` a length: it places some point from
+// the point that one is located from, and every measure of a position holding it is affine in
+// it, a length in the units the script declared when x is one (x Nx>, L + x; not L x, whose
+// x is a number, nor sin(x)). `declared` gives the other symbols' dimensions (open where the
+// script declared none, which leaves the measure unchecked and x without a unit).
+bool positions_imply_length(const System& sys, const ex& x, const std::function<Dimension(const ex&)>& declared) {
+    EquationUnitChecker checker(sys.symbols(),
+                                [&](const ex& s) { return s.is_equal(x) ? Dimension::length() : declared(s); });
+    bool placed = false;
+    for (const Point* P : sys.points()) {
+        if (!P->located_from()) continue;
+        const Vector r = P->pos_from(*P->located_from());
+        for (const auto& [F, c] : r.components())
+            for (int i = 0; i < 3; ++i) {
+                if (!c[i].has(x)) continue;
+                if (c[i].diff(GiNaC::ex_to<GiNaC::symbol>(x)).has(x) ||
+                    checker.check(c[i], Dimension::length()).verdict != ReportUnitCheck::Verdict::consistent)
+                    return false;
+                placed = true;
+            }
+    }
+    return placed;
 }
 
 }  // namespace
@@ -255,14 +280,21 @@ std::string Interpreter::Impl::write_report_to(const std::string& dir, const exm
                 c.units[name] = si_unit(u.dim);
         }
     // a coordinate declared without a unit that turns a frame is an angle: shown in degrees,
-    // as a reader measures a joint, not in radians
+    // as a reader measures a joint, not in radians; one that turns none is shown in m where
+    // the positions it enters make it a length
+    const auto declared = [&](const ex& s) { return symbol_dimension(st.owns(s) ? st.name(s) : to_string(s)); };
     try {
         const std::vector<std::string> kinds = coordinate_quantities(c.coordinates, where);
-        for (std::size_t k = 0; k < c.coordinates.size() && k < kinds.size(); ++k)
-            if (kinds[k] == "angle" && !c.units.count(c.coordinates[k].name())) {
-                c.units[c.coordinates[k].name()] = "deg";
-                c.unit_scales[c.coordinates[k].name()] = std::numbers::pi / 180;
+        for (std::size_t k = 0; k < c.coordinates.size() && k < kinds.size(); ++k) {
+            const std::string& name = c.coordinates[k].name();
+            if (c.units.count(name)) continue;
+            if (kinds[k] == "angle") {
+                c.units[name] = "deg";
+                c.unit_scales[name] = std::numbers::pi / 180;
+            } else if (kinds[k] == "length" && positions_imply_length(sys, c.coordinates[k].symbol(), declared)) {
+                c.units[name] = "m";
             }
+        }
     } catch (const ScriptError&) {
         // a coordinate whose kind cannot be told keeps SI
     }

@@ -156,6 +156,24 @@ TEST(ReportPage, ConstantsAndTheConfigurationAreShownInTheUnitsTheScriptDeclared
     EXPECT_NE(page.find("\"configuration_source\":\"the initial values\""), std::string::npos);
 }
 
+TEST(ReportPage, ACoordinateWithoutAUnitIsShownInMetresOnlyWherePositionsMakeItALength) {
+    // x places P along Nx> (x Nx>, L + x Ny> for P2): a length, in m; s enters only as L s,
+    // a number times the length L; q only inside sin and cos (a particle's swing, turning no
+    // frame): neither is given a unit
+    TempDir dir;
+    ScriptInDir r(dir.path);
+    r.run("newtonian N\nparticle P, P2, Q, R\nconstant m = 1 kg, L = 2 m, g = 9.81 m/s^2\nvariable x'', s'', q''\n"
+          "translate P from N_o by x*Nx>\ntranslate P2 from N_o by (L + x)*Ny>\n"
+          "translate Q from N_o by L*s*Ny>\ntranslate R from N_o by L*sin(q)*Nx> - L*cos(q)*Ny>\n"
+          "mass P = m; mass P2 = m; mass Q = m; mass R = m\ngravity -g*Ny>\n"
+          "initial x = 0.3, s = 0.5, q = 0.25, x' = 2\nreport to \"rep\"\n");
+    const std::string page = read_text(dir.path / "rep" / "index.html");
+    EXPECT_NE(page.find("{\"name\":\"x\",\"value\":0.3,\"shown\":0.3,\"unit\":\"m\"}"), std::string::npos);
+    EXPECT_NE(page.find("{\"name\":\"x'\",\"value\":2,\"shown\":2,\"unit\":\"m/s\"}"), std::string::npos);
+    EXPECT_NE(page.find("{\"name\":\"s\",\"value\":0.5,\"shown\":0.5,\"unit\":\"\"}"), std::string::npos);
+    EXPECT_NE(page.find("{\"name\":\"q\",\"value\":0.25,\"shown\":0.25,\"unit\":\"\"}"), std::string::npos);
+}
+
 TEST(ReportPage, TheLoadsAreDrawnWithTheValuesTheSolveTookAndNoneItDidNot) {
     // a block on a spring (k = 50 N/m, L0 = 0.4 m) and a damper, pushed by F: solve takes
     // x' = 0 and F = 10 N, and finds x = L0 + F/k = 0.6 m; there the spring pulls back with
