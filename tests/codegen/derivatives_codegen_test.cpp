@@ -8,6 +8,7 @@
 #include <cstdlib>
 
 #include "alembert/codegen/codegen.hpp"
+#include "alembert/error.hpp"
 #include "alembert/eom/tree_dynamics.hpp"
 #include "drivers.hpp"
 #include "harness.hpp"
