@@ -8,7 +8,7 @@ cd "$(dirname "$0")/.."
 
 bash scripts/install_deps.sh example
 cmake --preset release -DALEMBERT_BUILD_TESTS=OFF -DALEMBERT_BUILD_EXAMPLES=OFF
-cmake --build --preset release -j2 --target alembert_cli
+cmake --build --preset release --target alembert_cli
 
 exe=build/release/bin/alembert
 if [[ ! -x $exe ]]; then

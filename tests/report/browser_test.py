@@ -12,6 +12,7 @@ scripts), or examples by name (bicycle,kuka_iiwa); all of them when left out. CM
 the parts as ctest entries report.browser.<part> that ctest -j balances.
 
 usage: browser_test.py ALEMBERT_CLI SOURCE_DIR WORK_DIR [PART]     (exit 77: Chromium missing)"""
+import collections
 import html.parser
 import math
 import os
@@ -80,7 +81,8 @@ class Dom(html.parser.HTMLParser):
 
     def __init__(self):
         super().__init__()
-        self.stack = []          # open elements: (tag, classes)
+        self.stack = []          # open elements: (tag, classes, keys counted in self.open)
+        self.open = collections.Counter()  # open elements by tag, by class and by (tag, class)
         self.status = None
         self.errors = ""
         self.fbds = []           # per svg.fbd: [data-loads, arrow groups counted]
@@ -124,7 +126,15 @@ class Dom(html.parser.HTMLParser):
         return set((dict(attrs).get("class") or "").split())
 
     def inside(self, tag=None, cls=None):
-        return any((tag is None or t == tag) and (cls is None or cls in c) for t, c in self.stack)
+        # a count of the open elements per key, not a scan of the stack: the arm's page has
+        # hundreds of thousands of text nodes, each asking several times
+        if tag is not None and cls is not None:
+            return self.open[("tag-class", tag, cls)] > 0
+        if tag is not None:
+            return self.open[("tag", tag)] > 0
+        if cls is not None:
+            return self.open[("class", cls)] > 0
+        return bool(self.stack)
 
     def handle_starttag(self, tag, attrs):
         a, c = dict(attrs), self.classes(attrs)
@@ -195,11 +205,15 @@ class Dom(html.parser.HTMLParser):
         if a.get("id") == "time-slider":
             self.slider = True
         if tag not in ("input", "br", "img", "meta", "link", "line", "circle", "path", "polyline"):
-            self.stack.append((tag, c))
+            keys = [("tag", tag)] + [("class", k) for k in c] + [("tag-class", tag, k) for k in c]
+            self.open.update(keys)
+            self.stack.append((tag, c, keys))
 
     def handle_endtag(self, tag):
         for i in range(len(self.stack) - 1, -1, -1):
             if self.stack[i][0] == tag:
+                for _, _, keys in self.stack[i:]:
+                    self.open.subtract(keys)
                 del self.stack[i:]
                 break
         if tag == "pre":
