@@ -1,6 +1,10 @@
 // SPDX-License-Identifier: MIT
 // Autolev expressions to Alembert expressions: numbers, operators, functions, and the names of
 // scalars, frames, points and vectors.
+#include <cstdlib>
+#include <string>
+#include <vector>
+
 #include "autolev_translator.hpp"
 
 namespace alembert::lang::autolev {
@@ -149,6 +153,56 @@ Text Translator::combine(const Expr& e, Text a, Text b) {
     return {std::move(s), false, 4};
 }
 
+namespace {
+
+// Numbers joined by signs and + - * / ^ alone: no name, not even PI (a worklist, not recursion).
+bool only_numbers(const Expr& e) {
+    std::vector<const Expr*> work{&e};
+    while (!work.empty()) {
+        const Expr* x = work.back();
+        work.pop_back();
+        if (x->kind == Expr::Kind::number) continue;
+        if (x->kind != Expr::Kind::unary && x->kind != Expr::Kind::binary) return false;
+        if (x->kind == Expr::Kind::binary && x->text != "+" && x->text != "-" && x->text != "*" && x->text != "/" &&
+            x->text != "^")
+            return false;
+        for (const Expr& a : x->args) work.push_back(&a);
+    }
+    return true;
+}
+
+bool is_zero_number(const Expr& e) {
+    return e.kind == Expr::Kind::number && std::strtod(e.text.c_str(), nullptr) == 0.0;
+}
+
+}  // namespace
+
+// Autolev reads an angle given by numbers alone in degrees unless the file says DEGREES OFF
+// (SIMPROT(N, A, 3, 30) turns A by 30 degrees, SIN(30) is 1/2); an angle holding a name (Q1,
+// PI/6) is in radians. The script reads every angle without a unit as radians, so such an
+// angle is written times pi/180, and a note says so at its column.
+Text Translator::angle(const Expr& e, Text t, const std::string& where_used) {
+    if (!degrees_ || is_zero_number(e) || !only_numbers(e)) return t;
+    Text d{paren(t, 2) + "*pi/180", false, 2, true};
+    report(Severity::note, e.where,
+           "the angle " + t.s + " of " + where_used +
+               " is written with numbers alone, so Autolev reads it in degrees (DEGREES ON, its default): "
+               "translated as " + d.s,
+           "write DEGREES OFF before it if the file's numbers are radians");
+    return d;
+}
+
+// ASIN(0.5) is 30 under DEGREES ON: a number of degrees, which Autolev then reads in degrees
+// again where it stands as an angle, while a name holding it is in radians. The script's angles
+// are radians throughout, so this is refused rather than given a meaning Autolev does not have.
+void Translator::number_of_degrees_refused(const Expr& e, const std::string& f) {
+    if (!degrees_ || e.args.size() != 1 || !only_numbers(e.args[0])) return;
+    fail(e.where,
+         f + "() of a number is an angle in degrees under DEGREES ON (Autolev's default), which the script "
+             "has no counterpart for: its angles are radians",
+         "write DEGREES OFF at the top of the file (the angle is then radians), or write the angle itself");
+}
+
 Text Translator::call(const Expr& e) {
     bool numeric = true;  // every argument numeric (each translated once)
     Text t = call_text(e, numeric);
@@ -187,6 +241,11 @@ Text Translator::call_text(const Expr& e, bool& numeric) {
         {"LN", "log"}};
     if (auto it = elementary.find(f); it != elementary.end()) {
         args(1, 1);
+        if (f == "SIN" || f == "COS" || f == "TAN") {
+            Text a = angle(e.args[0], scalar_arg(0), e.text + "()");
+            return {it->second + "(" + a.s + ")", false, 5};
+        }
+        if (f == "ASIN" || f == "ACOS" || f == "ATAN") number_of_degrees_refused(e, f);
         return {it->second + "(" + scalar_arg(0).s + ")", false, 5};
     }
     if (f == "DOT") {
@@ -343,7 +402,21 @@ Text Translator::call_text(const Expr& e, bool& numeric) {
              "solve first, then use X1 and X2 in the expressions after it");
     static const std::map<std::string, std::string> missing{
         {"FACTOR", "FACTOR(e) is factor(e); Alembert takes no factor chosen by name (FACTOR(e, X))"},
-        {"NICHECK", "the translation has no nonholonomic checks"}};
+        {"NICHECK", "the translation has no nonholonomic checks"},
+        {"SQR", "whether it is read as the square or the square root differs between Autolev's dialects; "
+                "write X^2 or SQRT(X)"},
+        {"CEIL", "the script has floor() only: write -FLOOR(-X)"},
+        {"ROUND", "the script has floor() only: write FLOOR(X + 0.5)"},
+        {"INT", "the script has floor() only: the whole part of X >= 0 is FLOOR(X)"},
+        {"SIGN", "the script has no sign function: write X/ABS(X) where X is not 0"},
+        {"LOG10", "the script's log is the natural one: write LN(X)/LN(10)"},
+        {"FACTORIAL", "the script has no factorial: write the product of the numbers"},
+        {"PARTIALS", "the translation forms partial velocities inside Kane's equations only: write D(v>, U) "
+                     "measure by measure (D(DOT(v>, N1>), U))"},
+        {"SPLINE", "the script has no tables of numbers read from files"},
+        {"MOMENTUM", "write the sum of the bodies' and particles' momenta: M*V_P_N> (linear), "
+                     "DOT(I_B_BO>>, W_B_N>) + CROSS(P_O_BO>, MB*V_BO_N>) (angular about O)"},
+        {"KE", "write the sum of the kinetic energies: M*DOT(V_P_N>, V_P_N>)/2 + DOT(W_B_N>, DOT(I_B_BO>>, W_B_N>))/2"}};
     if (auto it = missing.find(f); it != missing.end())
         fail(e.where, "the Autolev function " + f + "() is not translated: " + it->second,
              "docs/autolev.md lists each Autolev function with its translation or the reason it has none");

@@ -257,6 +257,14 @@ std::vector<Case> cases() {
                  [](const Vec& q, const Vec& qd) {
                      return 0.25 * qd[0] * qd[0] + q[0] * q[0] + 2 * q[0] * q[0] * q[0] * q[0];
                  }});
+    // on a slope at 30 degrees (DEGREES ON by default): M X'' = -K X - M G sin 30 + F cos 60,
+    // M = 2, K = 20, G = 9.81, F = 3; the energy M X'^2/2 + K X^2/2 + M G X sin 30 - F X cos 60
+    c.push_back({"degrees_incline.al", {"X"},
+                 [](double, const Vec& q, const Vec&) { return Vec{(-20 * q[0] - 2 * kG * 0.5 + 3 * 0.5) / 2}; },
+                 {0.3}, {0},
+                 [](const Vec& q, const Vec& qd) {
+                     return qd[0] * qd[0] + 10 * q[0] * q[0] + 2 * kG * 0.5 * q[0] - 1.5 * q[0];
+                 }});
     return c;
 }
 
