@@ -40,6 +40,19 @@ Text Translator::expr(const Expr& e) {
             if (e.dyadic) return dyadic_name(e);
             if (const Entry* m = e.vector || e.primes ? nullptr : find(e.text); m && m->kind == Kind::matrix)
                 return m->indices ? whole_array(e, *m) : Text{m->name, false, 5, false, m->rows, m->cols};
+            if (!e.vector && !e.primes && !find(e.text)) {
+                // A_B, the direction cosine matrix of frames A and B, as a value: element (i, j)
+                // is Ai> . Bj> (its columns are B's unit vectors in A, as in A_B = [...])
+                auto fr = [this](std::string_view n) { return frame_of(n); };
+                if (auto s = split(std::string_view(e.text), fr, fr)) {
+                    std::string m = "[";
+                    for (int i = 0; i < 3; ++i)
+                        for (int j = 0; j < 3; ++j)
+                            m += "dot(" + s->first + "xyz"[i] + ">, " + s->second + "xyz"[j] + ">)" +
+                                 (j < 2 ? ", " : i < 2 ? "; " : "]");
+                    return {m, false, 5, false, 3, 3};
+                }
+            }
             resolved_numeric_ = false;
             Text t = e.vector ? Text{vector_name(e), true, 5} : Text{scalar_name(e), false, 5};
             t.numeric = resolved_numeric_;

@@ -187,6 +187,20 @@ TEST(AutolevImport, NumbersAsAnglesAreDegreesUnlessDegreesOff) {
     EXPECT_NEAR(v["=#2"], std::sin(30.0) + std::cos(-90.0) + std::tan(0.25), 1e-14) << off.script;
 }
 
+// A direction cosine matrix used as a value (R = N_A): element (i, j) is Ni> . Aj>, the matrix
+// that N_A = [...] would orient A by. Checked against the rotation about N3> by Q, by hand.
+TEST(AutolevImport, DirectionCosineMatrixAsAValue) {
+    AutolevTranslation t = translate_autolev("DEGREES OFF\nNEWTONIAN N\nFRAMES A, B\nVARIABLES Q\nSIMPROT(N, A, 3, Q)\n"
+                                             "SIMPROT(A, B, 1, 2*Q)\nR = N_A\nS = B_N*N_A\nX = R[1, 2] + 10*S[3, 2]\n",
+                                             "dcm_value.al");
+    ASSERT_TRUE(t.ok()) << messages(t);
+    for (double q : {0.3, -1.2}) {
+        auto v = run(t.script, "evaluate X at Q = " + std::to_string(q));
+        // N1> . A2> = -sin Q; (B_N N_A)[3, 2] = B3> . A2> = -sin 2Q (B turned from A about A1> by 2Q)
+        EXPECT_NEAR(v["="], -std::sin(q) - 10 * std::sin(2 * q), 1e-12) << t.script;
+    }
+}
+
 TEST(AutolevImport, ExpressionsKeepTheirMeaning) {
     AutolevTranslation t = translate_autolev(R"(NEWTONIAN N
 FRAMES A
