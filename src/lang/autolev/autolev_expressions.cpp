@@ -300,6 +300,19 @@ Text Translator::call_text(const Expr& e, bool& numeric) {
                      "a dyadic's rate depends on the frame it is taken in, as a vector's does");
             return {"dt(" + v.s + ", " + frame_name(e.args[1]) + ")", false, 5, false, 0, 0, true};
         }
+        if (v.matrix()) {
+            // the script's dt takes scalars: the matrix of its elements' rates
+            if (e.args.size() == 2) fail(e.args[1].where, "DT of a matrix takes no frame", "write DT(M)");
+            if (!v.size_known())
+                fail(e.args[0].where, "DT of a matrix whose size is known only when the script runs is not translated",
+                     "assign the matrix to a name with its elements written out first");
+            std::string m = "[";
+            for (int i = 1; i <= v.rows; ++i)
+                for (int j = 1; j <= v.cols; ++j)
+                    m += "dt(element(" + v.s + ", " + std::to_string(i) + ", " + std::to_string(j) + "))" +
+                         (j < v.cols ? ", " : i < v.rows ? "; " : "]");
+            return {m, false, 5, false, v.rows, v.cols};
+        }
         if (v.vector) {
             if (e.args.size() != 2) fail(e.where, "DT of a vector needs the frame: DT(v>, N)");
             return {"dt(" + v.s + ", " + frame_name(e.args[1]) + ")", true, 5};

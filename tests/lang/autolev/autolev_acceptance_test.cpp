@@ -408,7 +408,7 @@ TEST(AutolevAcceptanceFiles, EveryFileIsChecked) {
                                      "solve_zero_pendulum.al", "matrix_operations.al", "mass_functions.al",
                                      "terms_and_coefficients.al", "normal_modes.al", "chaplygin_sled.al",
                                      "arrays_by_element.al", "eig_values.al", "dyadic_products.al",
-                                     "one_point_acceleration.al"};
+                                     "one_point_acceleration.al", "matrix_rates.al"};
     for (const Case& c : cases()) checked.push_back(c.file);
     for (const char* f : {"dyadic_inertia.al", "dyadic_algebra.al"}) checked.push_back(f);
     int files = 0;
@@ -499,6 +499,24 @@ TEST(AutolevAcceptanceFiles, AlgebraFunctionsAgreeWithTheHandResults) {
         Vec v = evaluate(t, {"E1", "E2", "E3", "E4"}, at);
         double e1 = (a + b * q) * (a + b * q), e2 = e1 + (a + b) * q;
         Vec expected{e1, e2, 2 * b * (a + b * q) + 2 * a * u, e2 * std::sin(q)};
+        for (std::size_t i = 0; i < expected.size(); ++i)
+            EXPECT_NEAR(v[i], expected[i], 1e-12 * std::max(1.0, std::abs(expected[i]))) << i << " at " << at;
+    }
+}
+
+// A direction cosine matrix as a value and its rate: for A turned about N3> by Q, R = N_A is
+// [cos Q, -sin Q, 0; sin Q, cos Q, 0; 0, 0, 1] and R^T R' = Q' [0, -1, 0; 1, 0, 0; 0, 0, 0], so
+// EQN[1] = Q' and EQN[2] = -Q' + Q' = 0; FACTOR keeps the value W^2 (Q^2 - 1).
+TEST(AutolevAcceptanceFiles, MatrixRatesAgreeWithTheHandResults) {
+    AutolevTranslation t = import("matrix_rates.al");
+    ASSERT_TRUE(t.ok());
+    std::mt19937 rng(2031);
+    auto uniform = [&](double a, double b) { return std::uniform_real_distribution<double>(a, b)(rng); };
+    for (int trial = 0; trial < 3; ++trial) {
+        double w = uniform(-2, 2), q = uniform(-3, 3), qd = uniform(-3, 3);
+        std::string at = "W = " + num(w) + ", Q = " + num(q) + ", Q' = " + num(qd);
+        Vec v = evaluate(t, {"EQN_1", "EQN_2", "F", "R[2, 1]"}, at);
+        Vec expected{qd, 0, w * w * (q * q - 1), std::sin(q)};
         for (std::size_t i = 0; i < expected.size(); ++i)
             EXPECT_NEAR(v[i], expected[i], 1e-12 * std::max(1.0, std::abs(expected[i]))) << i << " at " << at;
     }
