@@ -62,9 +62,17 @@ Text Translator::expr(const Expr& e) {
         case Expr::Kind::index:
             if (const Entry* m = find(e.text); m && m->kind == Kind::matrix)
                 return m->indices ? array_element(e, *m) : matrix_element(e, *m);
-            if (upper(e.text) == "ZERO" && kane_at_)
-                fail(e.where, "an element of Kane's equations (ZERO = FR() + FRSTAR()) is not translated",
-                     "use them whole: SOLVE(ZERO, U1', ...); in the script, the kane statement's K[i] is an equation");
+            if (upper(e.text) == "ZERO" && kane_at_) {
+                // ZERO[i] of ZERO = FR() + FRSTAR(): Fr + Fr* of the i-th independent speed,
+                // which is K[i] of the kane statement (its equations 0 = Fr + Fr*, in the order
+                // of the speeds); the name is known when the script is assembled
+                if (e.args.size() != 1 || e.args[0].kind != Expr::Kind::number ||
+                    e.args[0].text.find_first_not_of("0123456789") != std::string::npos ||
+                    e.args[0].text.size() > 6 || std::stoi(e.args[0].text) < 1)
+                    fail(e.where, "an element of Kane's equations is ZERO[i], i a whole number from 1",
+                         "write ZERO[1] for the equation of the first independent speed");
+                return {"\x02[" + e.args[0].text + "]", false, 5};
+            }
             if (const Entry* other = find(e.text))
                 fail(e.where, "'" + e.text + "' is " + kind_word(other->kind) + ", not an array",
                      "an array is assigned by its elements first: NAME[1] = ...");

@@ -467,8 +467,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"array_of_another_kind", kHead + "X = Q[1]\n", 6, 5, "'Q' is a variable, not an array"},
         BadInput{"zero_element_after_kane", kHead + "ZERO = FR() + FRSTAR()\nZERO[1] = L\n", 7, 1,
                  "ZERO holds Kane's equations here"},
-        BadInput{"zero_element_of_kane", kHead + "ZERO = FR() + FRSTAR()\nX = ZERO[1]\n", 7, 5,
-                 "an element of Kane's equations (ZERO = FR() + FRSTAR()) is not translated"},
+        BadInput{"zero_element_of_kane", kHead + "ZERO = FR() + FRSTAR()\nX = ZERO[Q]\n", 7, 5,
+                 "an element of Kane's equations is ZERO[i], i a whole number from 1"},
         BadInput{"kane_after_zero_elements", kHead + "ZERO[1] = L*Q''\nKANE()\n", 7, 1,
                  "KANE() forms Kane's equations from the bodies and loads"},
         // inertia about another point than the mass centre
