@@ -267,6 +267,13 @@ std::vector<Case> cases() {
                  [](const Vec& q, const Vec& qd) {
                      return (qd[0] * qd[0] + 2 * qd[1] * qd[1]) / 2 + 15 * q[0] * q[0] + 10 * (q[1] - q[0]) * (q[1] - q[0]);
                  }});
+    // the pendulum whose equation SOLVE(ZERO, U') solves: Q'' = -G/L sin Q, L = 0.8, M = 1.5;
+    // the energy M L^2 Q'^2/2 - M G L cos Q
+    c.push_back({"solve_zero_pendulum.al", {"Q"},
+                 [](double, const Vec& q, const Vec&) { return Vec{-kG / 0.8 * std::sin(q[0])}; }, {0.6}, {0},
+                 [](const Vec& q, const Vec& qd) {
+                     return 1.5 * 0.64 * qd[0] * qd[0] / 2 - 1.5 * kG * 0.8 * std::cos(q[0]);
+                 }});
     // on a slope at 30 degrees (DEGREES ON by default): M X'' = -K X - M G sin 30 + F cos 60,
     // M = 2, K = 20, G = 9.81, F = 3; the energy M X'^2/2 + K X^2/2 + M G X sin 30 - F X cos 60
     c.push_back({"degrees_incline.al", {"X"},
