@@ -1,6 +1,10 @@
 // SPDX-License-Identifier: MIT
 // Autolev expressions to Alembert expressions: numbers, operators, functions, and the names of
 // scalars, frames, points and vectors.
+#include <cstdlib>
+#include <string>
+#include <vector>
+
 #include "autolev_translator.hpp"
 
 namespace alembert::lang::autolev {
@@ -36,6 +40,19 @@ Text Translator::expr(const Expr& e) {
             if (e.dyadic) return dyadic_name(e);
             if (const Entry* m = e.vector || e.primes ? nullptr : find(e.text); m && m->kind == Kind::matrix)
                 return m->indices ? whole_array(e, *m) : Text{m->name, false, 5, false, m->rows, m->cols};
+            if (!e.vector && !e.primes && !find(e.text)) {
+                // A_B, the direction cosine matrix of frames A and B, as a value: element (i, j)
+                // is Ai> . Bj> (its columns are B's unit vectors in A, as in A_B = [...])
+                auto fr = [this](std::string_view n) { return frame_of(n); };
+                if (auto s = split(std::string_view(e.text), fr, fr)) {
+                    std::string m = "[";
+                    for (int i = 0; i < 3; ++i)
+                        for (int j = 0; j < 3; ++j)
+                            m += "dot(" + s->first + "xyz"[i] + ">, " + s->second + "xyz"[j] + ">)" +
+                                 (j < 2 ? ", " : i < 2 ? "; " : "]");
+                    return {m, false, 5, false, 3, 3};
+                }
+            }
             resolved_numeric_ = false;
             Text t = e.vector ? Text{vector_name(e), true, 5} : Text{scalar_name(e), false, 5};
             t.numeric = resolved_numeric_;
@@ -45,9 +62,17 @@ Text Translator::expr(const Expr& e) {
         case Expr::Kind::index:
             if (const Entry* m = find(e.text); m && m->kind == Kind::matrix)
                 return m->indices ? array_element(e, *m) : matrix_element(e, *m);
-            if (upper(e.text) == "ZERO" && kane_at_)
-                fail(e.where, "an element of Kane's equations (ZERO = FR() + FRSTAR()) is not translated",
-                     "use them whole: SOLVE(ZERO, U1', ...); in the script, the kane statement's K[i] is an equation");
+            if (upper(e.text) == "ZERO" && kane_at_) {
+                // ZERO[i] of ZERO = FR() + FRSTAR(): Fr + Fr* of the i-th independent speed,
+                // which is K[i] of the kane statement (its equations 0 = Fr + Fr*, in the order
+                // of the speeds); the name is known when the script is assembled
+                if (e.args.size() != 1 || e.args[0].kind != Expr::Kind::number ||
+                    e.args[0].text.find_first_not_of("0123456789") != std::string::npos ||
+                    e.args[0].text.size() > 6 || std::stoi(e.args[0].text) < 1)
+                    fail(e.where, "an element of Kane's equations is ZERO[i], i a whole number from 1",
+                         "write ZERO[1] for the equation of the first independent speed");
+                return {"\x02[" + e.args[0].text + "]", false, 5};
+            }
             if (const Entry* other = find(e.text))
                 fail(e.where, "'" + e.text + "' is " + kind_word(other->kind) + ", not an array",
                      "an array is assigned by its elements first: NAME[1] = ...");
@@ -149,6 +174,56 @@ Text Translator::combine(const Expr& e, Text a, Text b) {
     return {std::move(s), false, 4};
 }
 
+namespace {
+
+// Numbers joined by signs and + - * / ^ alone: no name, not even PI (a worklist, not recursion).
+bool only_numbers(const Expr& e) {
+    std::vector<const Expr*> work{&e};
+    while (!work.empty()) {
+        const Expr* x = work.back();
+        work.pop_back();
+        if (x->kind == Expr::Kind::number) continue;
+        if (x->kind != Expr::Kind::unary && x->kind != Expr::Kind::binary) return false;
+        if (x->kind == Expr::Kind::binary && x->text != "+" && x->text != "-" && x->text != "*" && x->text != "/" &&
+            x->text != "^")
+            return false;
+        for (const Expr& a : x->args) work.push_back(&a);
+    }
+    return true;
+}
+
+bool is_zero_number(const Expr& e) {
+    return e.kind == Expr::Kind::number && std::strtod(e.text.c_str(), nullptr) == 0.0;
+}
+
+}  // namespace
+
+// Autolev reads an angle given by numbers alone in degrees unless the file says DEGREES OFF
+// (SIMPROT(N, A, 3, 30) turns A by 30 degrees, SIN(30) is 1/2); an angle holding a name (Q1,
+// PI/6) is in radians. The script reads every angle without a unit as radians, so such an
+// angle is written times pi/180, and a note says so at its column.
+Text Translator::angle(const Expr& e, Text t, const std::string& where_used) {
+    if (!degrees_ || is_zero_number(e) || !only_numbers(e)) return t;
+    Text d{paren(t, 2) + "*pi/180", false, 2, true};
+    report(Severity::note, e.where,
+           "the angle " + t.s + " of " + where_used +
+               " is written with numbers alone, so Autolev reads it in degrees (DEGREES ON, its default): "
+               "translated as " + d.s,
+           "write DEGREES OFF before it if the file's numbers are radians");
+    return d;
+}
+
+// ASIN(0.5) is 30 under DEGREES ON: a number of degrees, which Autolev then reads in degrees
+// again where it stands as an angle, while a name holding it is in radians. The script's angles
+// are radians throughout, so this is refused rather than given a meaning Autolev does not have.
+void Translator::number_of_degrees_refused(const Expr& e, const std::string& f) {
+    if (!degrees_ || e.args.size() != 1 || !only_numbers(e.args[0])) return;
+    fail(e.where,
+         f + "() of a number is an angle in degrees under DEGREES ON (Autolev's default), which the script "
+             "has no counterpart for: its angles are radians",
+         "write DEGREES OFF at the top of the file (the angle is then radians), or write the angle itself");
+}
+
 Text Translator::call(const Expr& e) {
     bool numeric = true;  // every argument numeric (each translated once)
     Text t = call_text(e, numeric);
@@ -187,6 +262,11 @@ Text Translator::call_text(const Expr& e, bool& numeric) {
         {"LN", "log"}};
     if (auto it = elementary.find(f); it != elementary.end()) {
         args(1, 1);
+        if (f == "SIN" || f == "COS" || f == "TAN") {
+            Text a = angle(e.args[0], scalar_arg(0), e.text + "()");
+            return {it->second + "(" + a.s + ")", false, 5};
+        }
+        if (f == "ASIN" || f == "ACOS" || f == "ATAN") number_of_degrees_refused(e, f);
         return {it->second + "(" + scalar_arg(0).s + ")", false, 5};
     }
     if (f == "DOT") {
@@ -227,6 +307,19 @@ Text Translator::call_text(const Expr& e, bool& numeric) {
                 fail(e.where, "DT of a dyadic needs the frame: DT(D>>, N)",
                      "a dyadic's rate depends on the frame it is taken in, as a vector's does");
             return {"dt(" + v.s + ", " + frame_name(e.args[1]) + ")", false, 5, false, 0, 0, true};
+        }
+        if (v.matrix()) {
+            // the script's dt takes scalars: the matrix of its elements' rates
+            if (e.args.size() == 2) fail(e.args[1].where, "DT of a matrix takes no frame", "write DT(M)");
+            if (!v.size_known())
+                fail(e.args[0].where, "DT of a matrix whose size is known only when the script runs is not translated",
+                     "assign the matrix to a name with its elements written out first");
+            std::string m = "[";
+            for (int i = 1; i <= v.rows; ++i)
+                for (int j = 1; j <= v.cols; ++j)
+                    m += "dt(element(" + v.s + ", " + std::to_string(i) + ", " + std::to_string(j) + "))" +
+                         (j < v.cols ? ", " : i < v.rows ? "; " : "]");
+            return {m, false, 5, false, v.rows, v.cols};
         }
         if (v.vector) {
             if (e.args.size() != 2) fail(e.where, "DT of a vector needs the frame: DT(v>, N)");
@@ -343,7 +436,21 @@ Text Translator::call_text(const Expr& e, bool& numeric) {
              "solve first, then use X1 and X2 in the expressions after it");
     static const std::map<std::string, std::string> missing{
         {"FACTOR", "FACTOR(e) is factor(e); Alembert takes no factor chosen by name (FACTOR(e, X))"},
-        {"NICHECK", "the translation has no nonholonomic checks"}};
+        {"NICHECK", "the translation has no nonholonomic checks"},
+        {"SQR", "whether it is read as the square or the square root differs between Autolev's dialects; "
+                "write X^2 or SQRT(X)"},
+        {"CEIL", "the script has floor() only: write -FLOOR(-X)"},
+        {"ROUND", "the script has floor() only: write FLOOR(X + 0.5)"},
+        {"INT", "the script has floor() only: the whole part of X >= 0 is FLOOR(X)"},
+        {"SIGN", "the script has no sign function: write X/ABS(X) where X is not 0"},
+        {"LOG10", "the script's log is the natural one: write LN(X)/LN(10)"},
+        {"FACTORIAL", "the script has no factorial: write the product of the numbers"},
+        {"PARTIALS", "the translation forms partial velocities inside Kane's equations only: write D(v>, U) "
+                     "measure by measure (D(DOT(v>, N1>), U))"},
+        {"SPLINE", "the script has no tables of numbers read from files"},
+        {"MOMENTUM", "write the sum of the bodies' and particles' momenta: M*V_P_N> (linear), "
+                     "DOT(I_B_BO>>, W_B_N>) + CROSS(P_O_BO>, MB*V_BO_N>) (angular about O)"},
+        {"KE", "write the sum of the kinetic energies: M*DOT(V_P_N>, V_P_N>)/2 + DOT(W_B_N>, DOT(I_B_BO>>, W_B_N>))/2"}};
     if (auto it = missing.find(f); it != missing.end())
         fail(e.where, "the Autolev function " + f + "() is not translated: " + it->second,
              "docs/autolev.md lists each Autolev function with its translation or the reason it has none");

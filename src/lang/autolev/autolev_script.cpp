@@ -117,7 +117,11 @@ void Translator::assemble() {
         model_[*kane_at_] = kane_statement();
         // SOLVE(ZERO, ...) solves Kane's equations, named now
         for (std::string& l : model_)
-            if (std::size_t at = l.find('\x02'); at != std::string::npos) l.replace(at, 1, kane_name_);
+            for (std::size_t at = l.find('\x02'); at != std::string::npos; at = l.find('\x02', at))
+                l.replace(at, 1, kane_name_);
+        for (std::string& l : tail_outputs_)
+            for (std::size_t at = l.find('\x02'); at != std::string::npos; at = l.find('\x02', at))
+                l.replace(at, 1, kane_name_);
     }
     std::string& s = out_.script;
     s = "# " + file_ + ", translated from Autolev by alembert import\n";

@@ -192,13 +192,20 @@ void Translator::command(const Statement& st) {
     }
     if (w == "DEGREES" || w == "DEGREE") {
         if (on == "OFF") {  // angles without a unit are radians: as the translation reads them
+            degrees_ = false;
             report(Severity::note, st.where,
                    "DEGREES OFF: angles without a unit are radians, as the script reads them; nothing to translate");
             return;
         }
-        fail(st.where, "DEGREES " + (on.empty() ? std::string("") : on + " ") +
-                           "is not translated: the script reads angles without a unit as radians",
-             "give each angle its unit (INPUT Q = 30 DEG) and remove DEGREES ON");
+        if (on == "ON") {
+            degrees_ = true;
+            report(Severity::note, st.where,
+                   "DEGREES ON (Autolev's default): an angle written with numbers alone (SIMPROT(N, A, 3, 30), "
+                   "SIN(30)) is in degrees and is translated times pi/180; angles holding names are radians");
+            return;
+        }
+        fail(st.where, on.empty() ? std::string("DEGREES without ON or OFF") : "DEGREES " + on + " is not an Autolev setting",
+             "write DEGREES ON or DEGREES OFF");
     }
     static const char* const ignored[] = {"PAUSE", "SAVE", "AUTOZ", "AUTORHS", "AUTOEPS", "AUTOLEV", "OVERWRITE",
                                           "UNITSYSTEM", "UNITS", "DISPLAY", "ANIMATE", "ENCODE", "EXPLICIT",
@@ -566,7 +573,7 @@ void Translator::expression_statement(const Statement& st) {
         std::string a = frame_name(e.args[0]), b = frame_name(e.args[1]);
         std::string axis = simprot_axis(e.args[2], a, b);
         parent_[b] = a;
-        return emit("rotate " + b + " from " + a + " about " + axis + " by " + scalar(e.args[3]).s);
+        return emit("rotate " + b + " from " + a + " about " + axis + " by " + angle(e.args[3], scalar(e.args[3]), "SIMPROT").s);
     }
     if (f == "V2PTS" || f == "V1PT" || f == "A2PTS") {
         nargs(4, (e.text + "(N, B, P, Q)").c_str());

@@ -3,6 +3,7 @@
 #pragma once
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include "alembert/lang/diagnostic.hpp"
@@ -20,6 +21,21 @@ struct Token {
     bool vector = false;  ///< also set for a dyadic
     bool dyadic = false;
     Location where{};
+};
+
+struct Expr;
+
+/// The operands of an expression: a vector of expressions whose copy and destructor walk a
+/// chain of any depth with a worklist of their own (a 200,000-factor product is a left-nested
+/// tree as deep as it is long, which the implicit recursive members would follow down the stack).
+struct ExprArgs : std::vector<Expr> {
+    using std::vector<Expr>::vector;
+    ExprArgs() = default;
+    ExprArgs(const ExprArgs& other);
+    ExprArgs(ExprArgs&&) noexcept = default;
+    ExprArgs& operator=(const ExprArgs& other);
+    ExprArgs& operator=(ExprArgs&&) noexcept = default;
+    ~ExprArgs();
 };
 
 /// An Autolev expression as written; names keep the user's spelling (resolved later, without
@@ -40,9 +56,51 @@ struct Expr {
     int primes = 0;
     bool vector = false;  ///< a name written with '>' (with '>>' too: `dyadic` tells)
     bool dyadic = false;
-    std::vector<Expr> args{};
-    Location where{};
+    ExprArgs args{};
+    Location where{};  // a member added to Expr is also copied in ExprArgs' copy constructor
 };
+
+// Level by level: each operand is copied without its operands, which are queued to be copied
+// into it (its place in `to` stays put: `to` was reserved and is not grown again).
+inline ExprArgs::ExprArgs(const ExprArgs& other) : std::vector<Expr>() {
+    std::vector<std::pair<const ExprArgs*, ExprArgs*>> work{{&other, this}};
+    while (!work.empty()) {
+        auto [from, to] = work.back();
+        work.pop_back();
+        to->reserve(from->size());
+        for (const Expr& e : *from) {
+            Expr& c = to->emplace_back();
+            c.kind = e.kind;
+            c.text = e.text;
+            c.primes = e.primes;
+            c.vector = e.vector;
+            c.dyadic = e.dyadic;
+            c.where = e.where;
+        }
+        for (std::size_t i = 0; i < from->size(); ++i)
+            if (!(*from)[i].args.empty()) work.emplace_back(&(*from)[i].args, &(*to)[i].args);
+    }
+}
+
+inline ExprArgs& ExprArgs::operator=(const ExprArgs& other) {
+    if (this != &other) *this = ExprArgs(other);
+    return *this;
+}
+
+// Each operand's own operands are moved onto the worklist before the operand is destroyed, so
+// every destructor that runs meets operands that have none: the stack stays two calls deep.
+inline ExprArgs::~ExprArgs() {
+    bool leaves = true;
+    for (const Expr& e : *this) leaves = leaves && e.args.empty();
+    if (leaves) return;
+    std::vector<Expr> work;
+    for (Expr& e : *this) work.push_back(std::move(e));
+    while (!work.empty()) {
+        Expr e = std::move(work.back());
+        work.pop_back();
+        for (Expr& c : e.args) work.push_back(std::move(c));
+    }
+}
 
 /// One name of a declaration: `Q{2:3}''` is name Q, indices 2..3, two primes.
 struct Declarator {

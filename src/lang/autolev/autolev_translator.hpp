@@ -260,6 +260,10 @@ private:
 
     void code(const Statement& st);
 
+    // DEGREES ON (Autolev's default): an angle written with numbers alone is in degrees.
+    Text angle(const Expr& e, Text t, const std::string& where_used);
+    void number_of_degrees_refused(const Expr& e, const std::string& f);
+
     Text scalar(const Expr& e) {
         Text t = expr(e);
         if (t.vector) fail(e.where, "a vector where a scalar is expected", "take a measure: DOT(v>, N1>)");
@@ -465,6 +469,7 @@ private:
     std::map<std::string, std::string> tail_settings_{};
     std::string abs_tol_{}, rel_tol_{};
     int outputs_ = 0;
+    bool degrees_ = true;  // Autolev's DEGREES, ON unless the file says OFF
 };
 
 }  // namespace alembert::lang::autolev

@@ -257,6 +257,31 @@ std::vector<Case> cases() {
                  [](const Vec& q, const Vec& qd) {
                      return 0.25 * qd[0] * qd[0] + q[0] * q[0] + 2 * q[0] * q[0] * q[0] * q[0];
                  }});
+    // two carts on springs: M1 X1'' = -K1 X1 + K2 (X2 - X1), M2 X2'' = -K2 (X2 - X1), M1 = 1,
+    // M2 = 2, K1 = 30, K2 = 20 (ZERO[i] by element: KaneRowsAreFrPlusFrStarOfEachSpeed)
+    c.push_back({"kane_rows.al", {"X1", "X2"},
+                 [](double, const Vec& q, const Vec&) {
+                     return Vec{-30 * q[0] + 20 * (q[1] - q[0]), -20 * (q[1] - q[0]) / 2};
+                 },
+                 {0.1, -0.05}, {0, 0},
+                 [](const Vec& q, const Vec& qd) {
+                     return (qd[0] * qd[0] + 2 * qd[1] * qd[1]) / 2 + 15 * q[0] * q[0] + 10 * (q[1] - q[0]) * (q[1] - q[0]);
+                 }});
+    // the pendulum whose equation SOLVE(ZERO, U') solves: Q'' = -G/L sin Q, L = 0.8, M = 1.5;
+    // the energy M L^2 Q'^2/2 - M G L cos Q
+    c.push_back({"solve_zero_pendulum.al", {"Q"},
+                 [](double, const Vec& q, const Vec&) { return Vec{-kG / 0.8 * std::sin(q[0])}; }, {0.6}, {0},
+                 [](const Vec& q, const Vec& qd) {
+                     return 1.5 * 0.64 * qd[0] * qd[0] / 2 - 1.5 * kG * 0.8 * std::cos(q[0]);
+                 }});
+    // on a slope at 30 degrees (DEGREES ON by default): M X'' = -K X - M G sin 30 + F cos 60,
+    // M = 2, K = 20, G = 9.81, F = 3; the energy M X'^2/2 + K X^2/2 + M G X sin 30 - F X cos 60
+    c.push_back({"degrees_incline.al", {"X"},
+                 [](double, const Vec& q, const Vec&) { return Vec{(-20 * q[0] - 2 * kG * 0.5 + 3 * 0.5) / 2}; },
+                 {0.3}, {0},
+                 [](const Vec& q, const Vec& qd) {
+                     return qd[0] * qd[0] + 10 * q[0] * q[0] + 2 * kG * 0.5 * q[0] - 1.5 * q[0];
+                 }});
     return c;
 }
 
@@ -400,7 +425,7 @@ TEST(AutolevAcceptanceFiles, EveryFileIsChecked) {
                                      "solve_zero_pendulum.al", "matrix_operations.al", "mass_functions.al",
                                      "terms_and_coefficients.al", "normal_modes.al", "chaplygin_sled.al",
                                      "arrays_by_element.al", "eig_values.al", "dyadic_products.al",
-                                     "one_point_acceleration.al"};
+                                     "one_point_acceleration.al", "matrix_rates.al"};
     for (const Case& c : cases()) checked.push_back(c.file);
     for (const char* f : {"dyadic_inertia.al", "dyadic_algebra.al"}) checked.push_back(f);
     int files = 0;
@@ -491,6 +516,42 @@ TEST(AutolevAcceptanceFiles, AlgebraFunctionsAgreeWithTheHandResults) {
         Vec v = evaluate(t, {"E1", "E2", "E3", "E4"}, at);
         double e1 = (a + b * q) * (a + b * q), e2 = e1 + (a + b) * q;
         Vec expected{e1, e2, 2 * b * (a + b * q) + 2 * a * u, e2 * std::sin(q)};
+        for (std::size_t i = 0; i < expected.size(); ++i)
+            EXPECT_NEAR(v[i], expected[i], 1e-12 * std::max(1.0, std::abs(expected[i]))) << i << " at " << at;
+    }
+}
+
+// A direction cosine matrix as a value and its rate: for A turned about N3> by Q, R = N_A is
+// [cos Q, -sin Q, 0; sin Q, cos Q, 0; 0, 0, 1] and R^T R' = Q' [0, -1, 0; 1, 0, 0; 0, 0, 0], so
+// EQN[1] = Q' and EQN[2] = -Q' + Q' = 0; FACTOR keeps the value W^2 (Q^2 - 1).
+TEST(AutolevAcceptanceFiles, MatrixRatesAgreeWithTheHandResults) {
+    AutolevTranslation t = import("matrix_rates.al");
+    ASSERT_TRUE(t.ok());
+    std::mt19937 rng(2031);
+    auto uniform = [&](double a, double b) { return std::uniform_real_distribution<double>(a, b)(rng); };
+    for (int trial = 0; trial < 3; ++trial) {
+        double w = uniform(-2, 2), q = uniform(-3, 3), qd = uniform(-3, 3);
+        std::string at = "W = " + num(w) + ", Q = " + num(q) + ", Q' = " + num(qd);
+        Vec v = evaluate(t, {"EQN_1", "EQN_2", "F", "R[2, 1]"}, at);
+        Vec expected{qd, 0, w * w * (q * q - 1), std::sin(q)};
+        for (std::size_t i = 0; i < expected.size(); ++i)
+            EXPECT_NEAR(v[i], expected[i], 1e-12 * std::max(1.0, std::abs(expected[i]))) << i << " at " << at;
+    }
+}
+
+// ZERO[i] after ZERO = FR() + FRSTAR() is Fr + Fr* of the i-th speed, by hand:
+// ZERO[1] = -K1 X1 + K2 (X2 - X1) - M1 X1'', ZERO[2] = -K2 (X2 - X1) - M2 X2''.
+TEST(AutolevAcceptanceFiles, KaneRowsAreFrPlusFrStarOfEachSpeed) {
+    AutolevTranslation t = import("kane_rows.al");
+    ASSERT_TRUE(t.ok());
+    std::mt19937 rng(2033);
+    auto uniform = [&](double a, double b) { return std::uniform_real_distribution<double>(a, b)(rng); };
+    for (int trial = 0; trial < 3; ++trial) {
+        double x1 = uniform(-1, 1), x2 = uniform(-1, 1), a1 = uniform(-5, 5), a2 = uniform(-5, 5);
+        std::string at = "X1 = " + num(x1) + ", X2 = " + num(x2) + ", X1'' = " + num(a1) + ", X2'' = " + num(a2);
+        Vec v = evaluate(t, {"E1", "E2", "S"}, at);
+        double e1 = -30 * x1 + 20 * (x2 - x1) - a1, e2 = -20 * (x2 - x1) - 2 * a2;
+        Vec expected{e1, e2, e1 + 2 * e2};
         for (std::size_t i = 0; i < expected.size(); ++i)
             EXPECT_NEAR(v[i], expected[i], 1e-12 * std::max(1.0, std::abs(expected[i]))) << i << " at " << at;
     }

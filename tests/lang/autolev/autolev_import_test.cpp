@@ -25,6 +25,13 @@ using alembert::lang::translate_autolev;
 
 bool contains(const std::string& s, const std::string& part) { return s.find(part) != std::string::npos; }
 
+std::string messages(const AutolevTranslation& t) {
+    std::string all;
+    for (const auto& d : t.diagnostics)
+        all += std::to_string(d.location.line) + ":" + std::to_string(d.location.column) + ": " + d.message + "\n";
+    return all;
+}
+
 // the translated script runs; returns the numbers it printed as `name = value`
 std::map<std::string, double> run(const std::string& script, const std::string& extra = "") {
     std::ostringstream out, err;
@@ -151,6 +158,46 @@ TEST(AutolevImport, DirectionCosineMatrixEqualsSimpleRotation) {
         std::string at = "solve K for Q'' at Q = " + std::to_string(q) + ", Q' = 0.4";
         EXPECT_NEAR(run(a.script, at)["Q''"], run(b.script, at)["Q''"], 1e-12);
         EXPECT_NEAR(run(a.script, at)["Q''"], -3 * 9.81 * std::sin(q) / (2 * 0.8), 1e-12);
+    }
+}
+
+// Autolev reads an angle written with numbers alone in degrees unless the file says DEGREES
+// OFF (DEGREES ON is its default); an angle holding a name is radians. Checked by the rotation
+// and the sines the script computes, against the angles in radians.
+TEST(AutolevImport, NumbersAsAnglesAreDegreesUnlessDegreesOff) {
+    const std::string body = "NEWTONIAN N\nFRAMES A, B\nCONSTANTS L\nSIMPROT(N, A, 3, 30)\nSIMPROT(N, B, 3, PI/5)\n"
+                             "X = SIN(30) + COS(-2*45) + TAN(L)\nINPUT L = 0.25\n";
+    for (const std::string& head : {std::string(""), std::string("DEGREES ON\n")}) {
+        AutolevTranslation t = translate_autolev(head + body, "degrees.al");
+        ASSERT_TRUE(t.ok()) << messages(t);
+        int notes = 0;
+        for (const auto& d : t.diagnostics)
+            if (d.severity == Severity::note && contains(d.message, "in degrees (DEGREES ON, its default)")) ++notes;
+        EXPECT_EQ(notes, 3) << messages(t);  // 30 in SIMPROT, 30 and -2*45 in SIN and COS
+        auto v = run(t.script, "evaluate dot(Ax>, Ny>)\nevaluate dot(Bx>, Ny>)\nevaluate X");
+        const double pi = std::acos(-1.0);
+        EXPECT_NEAR(v["="], 0.5, 1e-15) << t.script;
+        EXPECT_NEAR(v["=#2"], std::sin(pi / 5), 1e-15) << t.script;
+        EXPECT_NEAR(v["=#3"], 0.5 + std::cos(-pi / 2) + std::tan(0.25), 1e-15) << t.script;
+    }
+    AutolevTranslation off = translate_autolev("DEGREES OFF\n" + body, "radians.al");
+    ASSERT_TRUE(off.ok()) << messages(off);
+    auto v = run(off.script, "evaluate dot(Ax>, Ny>)\nevaluate X");
+    EXPECT_NEAR(v["="], std::sin(30.0), 1e-14) << off.script;
+    EXPECT_NEAR(v["=#2"], std::sin(30.0) + std::cos(-90.0) + std::tan(0.25), 1e-14) << off.script;
+}
+
+// A direction cosine matrix used as a value (R = N_A): element (i, j) is Ni> . Aj>, the matrix
+// that N_A = [...] would orient A by. Checked against the rotation about N3> by Q, by hand.
+TEST(AutolevImport, DirectionCosineMatrixAsAValue) {
+    AutolevTranslation t = translate_autolev("DEGREES OFF\nNEWTONIAN N\nFRAMES A, B\nVARIABLES Q\nSIMPROT(N, A, 3, Q)\n"
+                                             "SIMPROT(A, B, 1, 2*Q)\nR = N_A\nS = B_N*N_A\nX = R[1, 2] + 10*S[3, 2]\n",
+                                             "dcm_value.al");
+    ASSERT_TRUE(t.ok()) << messages(t);
+    for (double q : {0.3, -1.2}) {
+        auto v = run(t.script, "evaluate X at Q = " + std::to_string(q));
+        // N1> . A2> = -sin Q; (B_N N_A)[3, 2] = B3> . A2> = -sin 2Q (B turned from A about A1> by 2Q)
+        EXPECT_NEAR(v["="], -std::sin(q) - 10 * std::sin(2 * q), 1e-12) << t.script;
     }
 }
 
@@ -348,7 +395,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"three_dimensional_index", "NEWTONIAN N\nCONSTANTS I{3,3,3}\n", 2, 16, "more than two dimensions"},
         BadInput{"too_many_indexed", "NEWTONIAN N\nCONSTANTS I{99999}\n", 2, 13, "more than 1000"},
         BadInput{"too_many_indexed_2d", "NEWTONIAN N\nCONSTANTS I{40,40}\n", 2, 13, "more than 1000"},
-        // algebra functions: what they take, those without a counterpart, and DEGREES ON
+        // algebra functions: what they take, those without a counterpart, and DEGREES
         BadInput{"coef_of_vector", kHead + "X = COEF(L*N1>, Q)\n", 6, 11, "COEF() takes a scalar here"},
         BadInput{"taylor_no_point", kHead + "X = TAYLOR(SIN(Q), 0:3)\n", 6, 5, "TAYLOR() takes the expression, the orders"},
         BadInput{"taylor_orders", kHead + "X = TAYLOR(SIN(Q), 3:1, Q = 0)\n", 6, 21, "run from the lower to the higher"},
@@ -368,7 +415,13 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"d_of_vector", kHead + "X = D(L*N1>, Q)\n", 6, 8, "D() of a vector is not translated"},
         BadInput{"d_by_number", kHead + "X = D(L*Q, 2)\n", 6, 12, "D() differentiates by a constant"},
         BadInput{"rhs_of_variable", kHead + "X = RHS(Q)\n", 6, 9, "RHS() is translated for a name the file assigns"},
-        BadInput{"degrees_on", "DEGREES ON\n" + kHead, 1, 1, "DEGREES ON is not translated"},
+        BadInput{"sqr", kHead + "X = SQR(L)\n", 6, 5, "SQR() is not translated: whether it is read as the square"},
+        BadInput{"kinetic_energy", kHead + "X = KE()\n", 6, 5, "KE() is not translated: write the sum"},
+        BadInput{"dt_of_matrix_in_frame", kHead + "M = [Q, L]\nX = DT(M, N)\n", 7, 11, "DT of a matrix takes no frame"},
+        BadInput{"degrees_unknown", "DEGREES HALF\n" + kHead, 1, 1, "DEGREES HALF is not an Autolev setting"},
+        BadInput{"asin_of_number_in_degrees", kHead + "X = ASIN(1/2)\n", 6, 5, "ASIN() of a number is an angle in degrees"},
+        BadInput{"atan_of_number_by_default", "DEGREES OFF\nDEGREES ON\n" + kHead + "X = L*ATAN(1)\n", 8, 7,
+                 "ATAN() of a number is an angle in degrees"},
         BadInput{"complex_on", kHead + "COMPLEX ON\n", 6, 1, "COMPLEX ON is not translated: Alembert has no complex"},
         // matrices: their sizes, and what the matrix functions take
         BadInput{"matrix_ragged", kHead + "M = [1, 2; 3]\n", 6, 12, "the rows of matrix 'M' have different lengths"},
@@ -414,8 +467,8 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"array_of_another_kind", kHead + "X = Q[1]\n", 6, 5, "'Q' is a variable, not an array"},
         BadInput{"zero_element_after_kane", kHead + "ZERO = FR() + FRSTAR()\nZERO[1] = L\n", 7, 1,
                  "ZERO holds Kane's equations here"},
-        BadInput{"zero_element_of_kane", kHead + "ZERO = FR() + FRSTAR()\nX = ZERO[1]\n", 7, 5,
-                 "an element of Kane's equations (ZERO = FR() + FRSTAR()) is not translated"},
+        BadInput{"zero_element_of_kane", kHead + "ZERO = FR() + FRSTAR()\nX = ZERO[Q]\n", 7, 5,
+                 "an element of Kane's equations is ZERO[i], i a whole number from 1"},
         BadInput{"kane_after_zero_elements", kHead + "ZERO[1] = L*Q''\nKANE()\n", 7, 1,
                  "KANE() forms Kane's equations from the bodies and loads"},
         // inertia about another point than the mass centre

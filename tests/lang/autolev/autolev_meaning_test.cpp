@@ -691,6 +691,22 @@ TEST(AutolevMeaning, LongOperatorChainsTranslate) {
     EXPECT_TRUE(contains(t.script, "R> = Nx> + Ny> + Ny>")) << t.script.substr(0, 200);
 }
 
+// A 200,000-factor product: its expression tree, as deep as the chain is long, is read,
+// translated and taken apart without a deep stack (Expr's operands are copied and destroyed
+// with worklists; the recursive destructor overflowed at 20,000 factors in an unoptimized
+// sanitizer build, at 200,000 in any).
+TEST(AutolevMeaning, ProductOf200000FactorsTranslates) {
+    std::string product = "M";
+    for (int i = 0; i < 200000; ++i) product += "*M";
+    AutolevTranslation t = translate_autolev("NEWTONIAN N\nCONSTANTS M\nX = " + product + "\nY = X + " + product + "\n",
+                                             "deep.al");
+    ASSERT_TRUE(t.ok()) << messages(t);
+    std::size_t at = t.script.find("X = M*M*M");
+    ASSERT_NE(at, std::string::npos) << t.script.substr(0, 200);
+    std::size_t end = t.script.find('\n', at);
+    EXPECT_EQ(end - at, std::string("X = M").size() + 2 * 200000u) << "every factor is kept";
+}
+
 // Arguments of 10,000 terms to COEF, REPLACE, EVALUATE, TAYLOR and SOLVE translate without a
 // deep stack (the script's run of such arguments: tests/lang/algebra_functions_test.cpp).
 TEST(AutolevMeaning, LongArgumentsOfAlgebraFunctionsTranslate) {

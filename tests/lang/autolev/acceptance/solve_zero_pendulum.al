@@ -15,3 +15,5 @@ ZERO = FR() + FRSTAR()
 SOLVE(ZERO, U')
 ACC = U'
 PERIOD = 2*PI*SQRT(-1/COEF(TAYLOR(U', 0:1, Q = 0), Q))
+INPUT L = 0.8, M = 1.5, G = 9.81, Q = 0.6, U = 0
+INPUT TFINAL = 2
