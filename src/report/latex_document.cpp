@@ -506,9 +506,12 @@ std::string tikz_diagram(const System& sys, const Evaluation& ev,
     return t;
 }
 
-// characters of an equation's TeX kept in one box with its row's diagram (about a third of a
-// page): a longer equation's further lines follow the box
-constexpr std::size_t kKeptChars = 2500;
+// an equation's first lines kept in one box with its row's diagram: at most kKeptLines lines
+// and kKeptChars characters of TeX (a diagram and about a fifth of a page), so the box never
+// passes the page's foot; the further lines follow the box, free to break across pages, and an
+// equation whose first line alone is longer follows the box with that line's start held to it
+constexpr std::size_t kKeptChars = 1500;
+constexpr std::size_t kKeptLines = 8;
 
 // the road-map table in the seed's columns; the direction, the set and the unknowns wrap in
 // their columns
@@ -621,9 +624,10 @@ std::string report_detail::render_latex(const ReportContent& c,
         const std::vector<std::string> lines = tex_lines(equations.at(i));
         const std::string name = "E_{" + to_latex(r.variable) + "}\\colon\\ ";
         // the diagram, its caption and the equation's first lines in one unbreakable box (no
-        // float to drift from them); lines past kKeptChars follow it, free to break across pages
+        // float to drift from them); lines past kKeptLines or kKeptChars follow it, free to
+        // break across pages
         std::size_t kept = 0, chars = 0;
-        while (kept < lines.size() && (kept == 0 || chars + lines[kept].size() <= kKeptChars))
+        while (kept < lines.size() && kept < kKeptLines && chars + lines[kept].size() <= kKeptChars)
             chars += lines[kept++].size();
         t += "\\par\\bigskip\\noindent\\begin{minipage}{\\linewidth}\n";
         if (r.motion == Motion::constraint) {
@@ -640,13 +644,19 @@ std::string report_detail::render_latex(const ReportContent& c,
                  std::to_string(++figure) + ": free-body diagram of $S = " + set_words(r.system) +
                  "$ for $" + to_latex(r.variable) + "$." + legend + "\n\\end{center}\n";
         }
-        t += "\\begin{eqlines}\n";
-        for (std::size_t k = 0; k < kept; ++k)
-            t += "\\eqline{" + (k ? std::string() : name) + lines[k] + "}\n";
-        t += "\\end{eqlines}\n\\end{minipage}\n";
-        if (kept < lines.size()) {
+        if (kept > 0) {
             t += "\\begin{eqlines}\n";
-            for (std::size_t k = kept; k < lines.size(); ++k) t += "\\eqline{" + lines[k] + "}\n";
+            for (std::size_t k = 0; k < kept; ++k)
+                t += "\\eqline{" + (k ? std::string() : name) + lines[k] + "}\n";
+            t += "\\end{eqlines}\n";
+        }
+        t += "\\end{minipage}\n";
+        if (kept < lines.size()) {
+            // with nothing of it in the box: no page break between the box and the equation's
+            // start, nor after each line's first printed line
+            t += kept > 0 ? "\\begin{eqlines}\n" : "\\par\\nobreak\n\\begin{eqlines}\\clubpenalty=10000\n";
+            for (std::size_t k = kept; k < lines.size(); ++k)
+                t += "\\eqline{" + (k ? std::string() : name) + lines[k] + "}\n";
             t += "\\end{eqlines}\n";
         }
         if (i < c.unit_checks.size()) {

@@ -7,7 +7,8 @@ draws) kept in one box with its caption and its row's equation, every row's equa
 matrix and the document's end; a model without rows gets a document that says so. Where
 pdflatex is installed (Debian's texlive-latex-base and texlive-pictures; scripts/install_deps.sh
 installs them) each document is compiled and must give a PDF with no line more than 10 pt
-wider than the text (no "Overfull \\hbox" over 10 pt in the log).
+wider than the text (no "Overfull \\hbox" over 10 pt in the log) and no page's content over
+10 pt taller than the page (no "Overfull \\vbox" over 10 pt: what passes the foot is lost).
 `alembert report MODEL --latex` writes that roadmap.tex alone, byte for byte (checked on the
 sit-to-stand: each report runs its whole script, which for the larger examples is most of the time).
 
@@ -95,9 +96,14 @@ def main():
         check([p.count("% load: ") for p in pictures] == loads,
               "%s: a TikZ diagram per row with an arrow per load on S %s" % (name, loads))
         # each row's box (a minipage, which never floats or breaks) holds its diagram, the
-        # diagram's caption and the start of the row's equation
-        boxes = [tex[a:tex.find("\\end{minipage}", a)] for a in
-                 [m.start() for m in re.finditer(r"\\begin\{minipage\}", tex)]]
+        # diagram's caption and the start of the row's equation; or, where the equation's first
+        # line is too long for a box that must fit a page, is held to that line's start (no
+        # page break between them nor after the line's first printed line)
+        held = "\\end{minipage}\n\\par\\nobreak\n\\begin{eqlines}\\clubpenalty=10000\n\\eqline{"
+        boxes = []
+        for m in re.finditer(r"\\begin\{minipage\}", tex):
+            end = tex.find("\\end{minipage}", m.start())
+            boxes.append(tex[m.start():end + len(held) + 100] if tex.startswith(held, end) else tex[m.start():end])
         together = len(boxes) == len(rows) and all(
             ("\\eqline{E_{%s}\\colon" % r["variable_tex"]) in b and
             (not r["diagram"] or ("\\begin{tikzpicture}" in b and ": free-body diagram of" in b))
@@ -129,10 +135,17 @@ def main():
             check(r.returncode == 0 and os.path.isfile(os.path.join(out, "roadmap.pdf")),
                   "%s: pdflatex compiles it (%s)" % (name, errors[:3]))
             with open(os.path.join(out, "roadmap.log"), encoding="latin-1") as f:
-                over = [float(x) for x in re.findall(r"Overfull \\hbox \(([0-9.]+)pt too wide\)", f.read())]
+                log = f.read()
+            over = [float(x) for x in re.findall(r"Overfull \\hbox \(([0-9.]+)pt too wide\)", log)]
             check(not over or max(over) <= 10,
                   "%s: no line over 10 pt wider than the text (%d overfull boxes, the widest %.1f pt)"
                   % (name, len(over), max(over) if over else 0))
+            # a box taller than the page (a diagram kept with too much of its equation) runs
+            # off its foot: what is past the foot is lost
+            tall = [float(x) for x in re.findall(r"Overfull \\vbox \(([0-9.]+)pt too high\)", log)]
+            check(not tall or max(tall) <= 10,
+                  "%s: no page over 10 pt taller than the text (%d overfull pages, the tallest by %.1f pt)"
+                  % (name, len(tall), max(tall) if tall else 0))
     print("time: %.1f s" % (time.monotonic() - began))
     return 1 if failures else 0
 
