@@ -14,6 +14,7 @@ sit-to-stand: each report runs its whole script, which for the larger examples i
 
 usage: latex_test.py ALEMBERT_CLI SOURCE_DIR WORK_DIR"""
 import json
+import math
 import os
 import re
 import shutil
@@ -25,6 +26,15 @@ import time
 from report_examples import example_models
 
 failures = []
+
+
+def segment_meets_box(a, b, box):
+    """Whether the segment a-b passes through the box [x, y, w, h] (sampled finely)."""
+    for k in range(201):
+        x, y = a[0] + (b[0] - a[0]) * k / 200, a[1] + (b[1] - a[1]) * k / 200
+        if box[0] < x < box[0] + box[2] and box[1] < y < box[1] + box[3]:
+            return True
+    return False
 
 
 def check(ok, what):
@@ -95,6 +105,35 @@ def main():
         loads = [len([l for l in r["diagram"]["loads"] if l.get("placed", True)]) for r in rows if r["diagram"]]
         check([p.count("% load: ") for p in pictures] == loads,
               "%s: a TikZ diagram per row with an arrow per load on S %s" % (name, loads))
+        # no label on a load arrow: each label's box (its size as the placer estimates it for
+        # \scriptsize: 0.13 cm a character and 0.1 cm, 0.32 cm high, about its node's place)
+        # met by no load's shaft or arc
+        on_arrow = []
+        for p in pictures:
+            segments = []
+            for block in p.split("% load: ")[1:]:
+                load_name = block.split("\n")[0]
+                for m in re.finditer(r"\\draw\[->[^\n]*?\] \(([-\d.]+),([-\d.]+)\) -- (\+\+)?\(([-\d.]+),([-\d.]+)\);", block):
+                    a = (float(m.group(1)), float(m.group(2)))
+                    d = (float(m.group(4)), float(m.group(5)))
+                    segments.append((load_name, a, (a[0] + d[0], a[1] + d[1]) if m.group(3) else d))
+                for m in re.finditer(r"\\draw\[->[^\n]*?\] \(([-\d.]+),([-\d.]+)\) arc\[start angle=([-\d.]+), "
+                                     r"end angle=([-\d.]+), radius=([\d.]+)\];", block):
+                    x, y, a0, a1, r = (float(g) for g in m.groups())
+                    a0, a1 = math.radians(a0), math.radians(a1)
+                    c = (x - r * math.cos(a0), y - r * math.sin(a0))
+                    arc = [(c[0] + r * math.cos(a0 + (a1 - a0) * k / 40), c[1] + r * math.sin(a0 + (a1 - a0) * k / 40))
+                           for k in range(41)]
+                    segments += [(load_name, arc[k - 1], arc[k]) for k in range(1, 41)]
+            for m in re.finditer(r"% label: (.*)\n\\node\[[^\n]*?\] at \(([-\d.]+),([-\d.]+)\)", p):
+                text = re.sub(r"\\(.)", r"\1", m.group(1))
+                x, y, w, h = float(m.group(2)), float(m.group(3)), 0.13 * len(text) + 0.1, 0.32
+                box = (x - w / 2 + 0.01, y - h / 2 + 0.01, w - 0.02, h - 0.02)
+                hit = sorted(set(n for n, a, b in segments if segment_meets_box(a, b, box)))
+                if hit:
+                    on_arrow.append("%r on %s" % (text, hit))
+        check(pictures and "% label: " in tex and not on_arrow or not pictures,
+              "%s: no diagram label on a load arrow (%d: %s)" % (name, len(on_arrow), on_arrow[:3]))
         # each row's box (a minipage, which never floats or breaks) holds its diagram, the
         # diagram's caption and the start of the row's equation; or, where the equation's first
         # line is too long for a box that must fit a page, is held to that line's start (no
