@@ -166,10 +166,12 @@ private:
     std::array<double, 3> u_{}, h_{}, w_{};
 };
 
-// labels placed so that none covers another: each is tried at offsets around its anchor,
-// nearest first, in the eight directions starting with the one it prefers; the first place
-// that meets no label placed before (nor, where one is free of them, a point or an arrowhead)
-// is kept. Sizes are estimated for \scriptsize (cm).
+// labels placed so that none covers another nor lies on a load arrow, as the page places
+// them: each is tried at offsets around its anchor, nearest first, in the eight directions
+// starting with the one it prefers; kept is the first place that meets no label placed
+// before, no point, arrowhead or load arrow and, near the anchor, no line of S or angle's
+// arc; else the first clear of labels, points, heads and load arrows; else of labels, points
+// and heads; else of labels. Sizes are estimated for \scriptsize (cm).
 class LabelPlacer {
 public:
     struct Box {
@@ -183,6 +185,18 @@ public:
         obstacles_.push_back({x - half, y - half, 2 * half, 2 * half});
     }
     void fix(const Box& b) { placed_.push_back(b); }
+    // a segment drawn: a load arrow's (arrow) or a line of S or an angle's arc
+    void segment(std::array<double, 2> a, std::array<double, 2> b, bool arrow) {
+        (arrow ? arrows_ : lines_).push_back({a, b});
+    }
+    // an arc about c of radius r from angle a0 to a1 (radians), as segments
+    void arc(std::array<double, 2> c, double r, double a0, double a1, bool arrow) {
+        for (int k = 1; k <= 20; ++k) {
+            const double s0 = a0 + (a1 - a0) * (k - 1) / 20, s1 = a0 + (a1 - a0) * k / 20;
+            segment({c[0] + r * std::cos(s0), c[1] + r * std::sin(s0)},
+                    {c[0] + r * std::cos(s1), c[1] + r * std::sin(s1)}, arrow);
+        }
+    }
     // the centre of the label's box
     std::array<double, 2> place(const std::string& text, std::array<double, 2> anchor,
                                 std::array<double, 2> prefer) {
@@ -205,20 +219,30 @@ public:
         const auto meets = [](const Box& a, const Box& b) {
             return a.x < b.x + b.w && b.x < a.x + a.w && a.y < b.y + b.h && b.y < a.y + a.h;
         };
-        const auto free = [&](const Box& b, bool strict) {
+        const auto crosses = [](const Box& b, const std::vector<Seg>& segments) {
+            for (const Seg& s : segments)
+                if (segment_meets_box(s[0], s[1], b)) return true;
+            return false;
+        };
+        // level 3: clear of everything; 2: of labels, points, heads and load arrows; 1: of
+        // labels, points and heads; 0: of labels
+        const auto free = [&](const Box& b, int level) {
             const Box grown{b.x - 0.03, b.y - 0.03, b.w + 0.06, b.h + 0.06};
             for (const Box& o : placed_)
                 if (meets(grown, o)) return false;
-            if (strict)
+            if (level >= 1)
                 for (const Box& o : obstacles_)
                     if (meets(b, o)) return false;
+            if (level >= 2 && crosses(b, arrows_)) return false;
+            if (level >= 3 && crosses(b, lines_)) return false;
             return true;
         };
-        for (bool strict : {true, false})
-            for (int r = 0; r < 40; ++r)
+        // clear of everything only near the anchor: farther, a label is better on a line of S
+        for (int level = 3; level >= 0; --level)
+            for (int r = 0; r < (level == 3 ? 8 : 40); ++r)
                 for (int k = 0; k < 8; ++k) {
                     const Box b = at(0.06 + 0.15 * r, k);
-                    if (free(b, strict)) {
+                    if (free(b, level)) {
                         placed_.push_back(b);
                         return {b.x + w / 2, b.y + h / 2};
                     }
@@ -229,7 +253,31 @@ public:
     }
 
 private:
+    using Seg = std::array<std::array<double, 2>, 2>;
+    // whether the segment a-b passes through the box (Liang-Barsky clipping)
+    static bool segment_meets_box(std::array<double, 2> a, std::array<double, 2> b, const Box& r) {
+        double t0 = 0, t1 = 1;
+        const double dx = b[0] - a[0], dy = b[1] - a[1];
+        const double p[4] = {-dx, dx, -dy, dy};
+        const double q[4] = {a[0] - r.x, r.x + r.w - a[0], a[1] - r.y, r.y + r.h - a[1]};
+        for (int i = 0; i < 4; ++i) {
+            if (std::abs(p[i]) < 1e-12) {
+                if (q[i] < 0) return false;
+                continue;
+            }
+            const double t = q[i] / p[i];
+            if (p[i] < 0) {
+                if (t > t1) return false;
+                t0 = std::max(t0, t);
+            } else {
+                if (t < t0) return false;
+                t1 = std::min(t1, t);
+            }
+        }
+        return true;
+    }
     std::vector<Box> placed_, obstacles_;
+    std::vector<Seg> arrows_, lines_;
 };
 
 // the row's variable without its primes: the coordinate whose acceleration it is
@@ -312,6 +360,7 @@ std::string tikz_diagram(const System& sys, const Evaluation& ev,
                                      [&](const Body* x) { return x->name() == seg.body; });
         t += "\\draw[" + std::string(ink ? "line width=1.6pt" : "line width=1.2pt, black!25") +
              ", line cap=round] " + xy(at[a]) + " -- " + xy(at[b]) + ";\n";
+        if (ink) labels.segment(cmxy(at[a]), cmxy(at[b]), false);
     }
     for (const Point* p : order) {
         t += "\\fill " + xy(at[p]) + " circle (0.8pt);\n";
@@ -344,6 +393,7 @@ std::string tikz_diagram(const System& sys, const Evaluation& ev,
             t += "\\draw[" + std::string(own ? "red!75!black, line width=1.2pt" : "black!70") +
                  "] " + pt({c[0] + 0.45 * fx, c[1] + 0.45 * fy}) + " arc[start angle=" +
                  degrees(a0) + ", end angle=" + degrees(a0 + sweep) + ", radius=0.45];\n";
+            labels.arc(c, 0.45, a0 * M_PI / 180, (a0 + sweep) * M_PI / 180, false);
             const double mid = (a0 + sweep / 2) * M_PI / 180;
             pending.push_back({"$" + to_latex(GiNaC::symbol(a.name)) + "$", a.name,
                                {c[0] + 0.45 * std::cos(mid), c[1] + 0.45 * std::sin(mid)},
@@ -400,6 +450,7 @@ std::string tikz_diagram(const System& sys, const Evaluation& ev,
                     t += "\\draw[->, " + style + "] " + pt(p) + " -- ++(" +
                          cm(0.7 * arrow * ux) + "," + cm(0.7 * arrow * uy) + ");\n";
                     tip(p[0] + 0.7 * arrow * ux, p[1] + 0.7 * arrow * uy);
+                    labels.segment(p, {p[0] + 0.7 * arrow * ux, p[1] + 0.7 * arrow * uy}, true);
                 }
             anchor = {p[0] + 0.35 * arrow, p[1] - 0.05};
             prefer = {1, -1};
@@ -412,6 +463,7 @@ std::string tikz_diagram(const System& sys, const Evaluation& ev,
                  " arc[start angle=" + (ccw ? "-57" : "149") +
                  ", end angle=" + (ccw ? "149" : "-57") + ", radius=0.45];\n";
             tip(p[0] + 0.45 * std::cos(a1), p[1] + 0.45 * std::sin(a1));
+            labels.arc(p, 0.45, a0, a1, true);
             anchor = {p[0] + 0.32, p[1] + 0.32};
         } else if (unit(v, &ux, &uy)) {
             const std::array<double, 2> end{p[0] + arrow * ux, p[1] + arrow * uy};
@@ -419,17 +471,20 @@ std::string tikz_diagram(const System& sys, const Evaluation& ev,
                 t += "\\draw[->, " + style + "] " + pt(p) + " -- ++(" + cm(arrow * ux) + "," +
                      cm(arrow * uy) + ");\n";
                 tip(end[0], end[1]);
+                labels.segment(p, end, true);
                 anchor = {p[0] + 0.6 * arrow * ux, p[1] + 0.6 * arrow * uy};
                 prefer = {1, 0};
             } else if (l.kind == "torque") {  // in space: a double-headed arrow along the torque
                 t += "\\draw[->>, " + style + "] " + pt(p) + " -- " + pt(end) + ";\n";
                 tip(end[0], end[1]);
+                labels.segment(p, end, true);
                 anchor = end;
                 prefer = {ux, uy};
             } else {
                 const std::array<double, 2> tail{p[0] - arrow * ux, p[1] - arrow * uy};
                 t += "\\draw[->, " + style + "] " + pt(tail) + " -- " + pt(p) + ";\n";
                 tip(p[0], p[1]);
+                labels.segment(tail, p, true);
                 grow(tail);
                 anchor = tail;
                 prefer = {-ux, -uy};
@@ -482,6 +537,7 @@ std::string tikz_diagram(const System& sys, const Evaluation& ev,
                      [](const Pending& a, const Pending& b) { return a.rank < b.rank; });
     for (const Pending& p : pending) {
         const std::array<double, 2> c = labels.place(p.text, p.anchor, p.prefer);
+        t += "% label: " + tex_text(p.text) + "\n";
         t += "\\node[" + p.style + ", fill=white, fill opacity=0.7, text opacity=1, " +
              "inner sep=0.5pt] at " + pt(c) + " {" + p.tex + "};\n";
     }
@@ -506,9 +562,12 @@ std::string tikz_diagram(const System& sys, const Evaluation& ev,
     return t;
 }
 
-// characters of an equation's TeX kept in one box with its row's diagram (about a third of a
-// page): a longer equation's further lines follow the box
-constexpr std::size_t kKeptChars = 2500;
+// an equation's first lines kept in one box with its row's diagram: at most kKeptLines lines
+// and kKeptChars characters of TeX (a diagram and about a fifth of a page), so the box never
+// passes the page's foot; the further lines follow the box, free to break across pages, and an
+// equation whose first line alone is longer follows the box with that line's start held to it
+constexpr std::size_t kKeptChars = 1500;
+constexpr std::size_t kKeptLines = 8;
 
 // the road-map table in the seed's columns; the direction, the set and the unknowns wrap in
 // their columns
@@ -621,9 +680,10 @@ std::string report_detail::render_latex(const ReportContent& c,
         const std::vector<std::string> lines = tex_lines(equations.at(i));
         const std::string name = "E_{" + to_latex(r.variable) + "}\\colon\\ ";
         // the diagram, its caption and the equation's first lines in one unbreakable box (no
-        // float to drift from them); lines past kKeptChars follow it, free to break across pages
+        // float to drift from them); lines past kKeptLines or kKeptChars follow it, free to
+        // break across pages
         std::size_t kept = 0, chars = 0;
-        while (kept < lines.size() && (kept == 0 || chars + lines[kept].size() <= kKeptChars))
+        while (kept < lines.size() && kept < kKeptLines && chars + lines[kept].size() <= kKeptChars)
             chars += lines[kept++].size();
         t += "\\par\\bigskip\\noindent\\begin{minipage}{\\linewidth}\n";
         if (r.motion == Motion::constraint) {
@@ -640,13 +700,19 @@ std::string report_detail::render_latex(const ReportContent& c,
                  std::to_string(++figure) + ": free-body diagram of $S = " + set_words(r.system) +
                  "$ for $" + to_latex(r.variable) + "$." + legend + "\n\\end{center}\n";
         }
-        t += "\\begin{eqlines}\n";
-        for (std::size_t k = 0; k < kept; ++k)
-            t += "\\eqline{" + (k ? std::string() : name) + lines[k] + "}\n";
-        t += "\\end{eqlines}\n\\end{minipage}\n";
-        if (kept < lines.size()) {
+        if (kept > 0) {
             t += "\\begin{eqlines}\n";
-            for (std::size_t k = kept; k < lines.size(); ++k) t += "\\eqline{" + lines[k] + "}\n";
+            for (std::size_t k = 0; k < kept; ++k)
+                t += "\\eqline{" + (k ? std::string() : name) + lines[k] + "}\n";
+            t += "\\end{eqlines}\n";
+        }
+        t += "\\end{minipage}\n";
+        if (kept < lines.size()) {
+            // with nothing of it in the box: no page break between the box and the equation's
+            // start, nor after each line's first printed line
+            t += kept > 0 ? "\\begin{eqlines}\n" : "\\par\\nobreak\n\\begin{eqlines}\\clubpenalty=10000\n";
+            for (std::size_t k = kept; k < lines.size(); ++k)
+                t += "\\eqline{" + (k ? std::string() : name) + lines[k] + "}\n";
             t += "\\end{eqlines}\n";
         }
         if (i < c.unit_checks.size()) {

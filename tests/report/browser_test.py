@@ -619,7 +619,8 @@ def data_symbols(vector, data):
 def diagram_checks(browser, index, who):
     """Each free-body diagram as drawn, against the page's data: every load arrow acts on a body
     of S (its data attributes, checked against the model's tables) and starts or ends at its
-    point's drawn place (a torque's arc is centred there); no two labels overlap; the u arrow
+    point's drawn place (a torque's arc is centred there); no two labels overlap, nor does a
+    label lie on a load arrow's shaft, arc or head; the u arrow
     lies inside the picture and its label clear of its shaft; the points of S and a planar
     model's angles of S are named; a weight is labelled with its mass times g; the row's own
     unknown is drawn apart (thicker, highlighted); a load whose part in the row's equation (u . F,
@@ -646,7 +647,7 @@ def diagram_checks(browser, index, who):
     load_vector = {l["label"]: l["vector"] for l in data["model"]["loads"]}
     bodies = {b["name"]: b for b in data["model"]["bodies"]}
     unknowns = set(u["name"] for u in data["model"]["unknowns"])
-    bad = {"on": [], "at": [], "overlap": [], "direction": [], "named": [], "weight": [], "own": [], "drops": [],
+    bad = {"on": [], "at": [], "overlap": [], "on_arrow": [], "direction": [], "named": [], "weight": [], "own": [], "drops": [],
            "zero": [], "given": []}
     # what the configuration gives: its coordinates, and the rates and data it lists
     given = set(c["name"] for c in data["configuration"] + data.get("configuration_data", []))
@@ -699,6 +700,16 @@ def diagram_checks(browser, index, who):
                 e = 1e-3 * L
                 if a[0] + e < b[0] + b[2] and b[0] + e < a[0] + a[2] and a[1] + e < b[1] + b[3] and b[1] + e < a[1] + a[3]:
                     bad["overlap"].append("%s: %r over %r" % (var, boxes[i][0], boxes[j][0]))
+        # no label on a load arrow: its shaft, its arc or its head
+        for text, b in boxes:
+            e = 1e-3 * L
+            inner = [b[0] + e, b[1] + e, b[2] - 2 * e, b[3] - 2 * e]
+            for load in d["loads"]:
+                segments = [((l[0], l[1]), (l[2], l[3])) for l in load["lines"]] + \
+                    [(a[k - 1], a[k]) for a in load["arcs"] for k in range(1, len(a))]
+                if any(segment_meets_box(p, q, inner) for p, q in segments) or \
+                        any(inner[0] < t[0] < inner[0] + inner[2] and inner[1] < t[1] < inner[1] + inner[3] for t in load["tips"]):
+                    bad["on_arrow"].append("%s: %r on %s's arrow" % (var, text, load["label"]))
         # the u arrow inside the picture, its label clear of its shaft
         u = d["direction"]
         xs = [c for l in u["lines"] for c in (l[0], l[2])] + [t[0] for t in u["tips"]] + [c[0] for c in u["circles"]] + \
@@ -800,6 +811,7 @@ def diagram_checks(browser, index, who):
     for what, text in (("on", "every load arrow on a body of S, the one the model says it acts on"),
                        ("at", "every load arrow at its point's drawn place"),
                        ("overlap", "no two labels overlap"),
+                       ("on_arrow", "no label on a load arrow's shaft, arc or head"),
                        ("direction", "the u arrow inside the picture, its label clear of its shaft"),
                        ("named", "S's points, O and S's angles named"),
                        ("weight", "each weight labelled with its mass times g"),

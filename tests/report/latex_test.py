@@ -7,12 +7,14 @@ draws) kept in one box with its caption and its row's equation, every row's equa
 matrix and the document's end; a model without rows gets a document that says so. Where
 pdflatex is installed (Debian's texlive-latex-base and texlive-pictures; scripts/install_deps.sh
 installs them) each document is compiled and must give a PDF with no line more than 10 pt
-wider than the text (no "Overfull \\hbox" over 10 pt in the log).
+wider than the text (no "Overfull \\hbox" over 10 pt in the log) and no page's content over
+10 pt taller than the page (no "Overfull \\vbox" over 10 pt: what passes the foot is lost).
 `alembert report MODEL --latex` writes that roadmap.tex alone, byte for byte (checked on the
 sit-to-stand: each report runs its whole script, which for the larger examples is most of the time).
 
 usage: latex_test.py ALEMBERT_CLI SOURCE_DIR WORK_DIR"""
 import json
+import math
 import os
 import re
 import shutil
@@ -24,6 +26,15 @@ import time
 from report_examples import example_models
 
 failures = []
+
+
+def segment_meets_box(a, b, box):
+    """Whether the segment a-b passes through the box [x, y, w, h] (sampled finely)."""
+    for k in range(201):
+        x, y = a[0] + (b[0] - a[0]) * k / 200, a[1] + (b[1] - a[1]) * k / 200
+        if box[0] < x < box[0] + box[2] and box[1] < y < box[1] + box[3]:
+            return True
+    return False
 
 
 def check(ok, what):
@@ -94,10 +105,44 @@ def main():
         loads = [len([l for l in r["diagram"]["loads"] if l.get("placed", True)]) for r in rows if r["diagram"]]
         check([p.count("% load: ") for p in pictures] == loads,
               "%s: a TikZ diagram per row with an arrow per load on S %s" % (name, loads))
+        # no label on a load arrow: each label's box (its size as the placer estimates it for
+        # \scriptsize: 0.13 cm a character and 0.1 cm, 0.32 cm high, about its node's place)
+        # met by no load's shaft or arc
+        on_arrow = []
+        for p in pictures:
+            segments = []
+            for block in p.split("% load: ")[1:]:
+                load_name = block.split("\n")[0]
+                for m in re.finditer(r"\\draw\[->[^\n]*?\] \(([-\d.]+),([-\d.]+)\) -- (\+\+)?\(([-\d.]+),([-\d.]+)\);", block):
+                    a = (float(m.group(1)), float(m.group(2)))
+                    d = (float(m.group(4)), float(m.group(5)))
+                    segments.append((load_name, a, (a[0] + d[0], a[1] + d[1]) if m.group(3) else d))
+                for m in re.finditer(r"\\draw\[->[^\n]*?\] \(([-\d.]+),([-\d.]+)\) arc\[start angle=([-\d.]+), "
+                                     r"end angle=([-\d.]+), radius=([\d.]+)\];", block):
+                    x, y, a0, a1, r = (float(g) for g in m.groups())
+                    a0, a1 = math.radians(a0), math.radians(a1)
+                    c = (x - r * math.cos(a0), y - r * math.sin(a0))
+                    arc = [(c[0] + r * math.cos(a0 + (a1 - a0) * k / 40), c[1] + r * math.sin(a0 + (a1 - a0) * k / 40))
+                           for k in range(41)]
+                    segments += [(load_name, arc[k - 1], arc[k]) for k in range(1, 41)]
+            for m in re.finditer(r"% label: (.*)\n\\node\[[^\n]*?\] at \(([-\d.]+),([-\d.]+)\)", p):
+                text = re.sub(r"\\(.)", r"\1", m.group(1))
+                x, y, w, h = float(m.group(2)), float(m.group(3)), 0.13 * len(text) + 0.1, 0.32
+                box = (x - w / 2 + 0.01, y - h / 2 + 0.01, w - 0.02, h - 0.02)
+                hit = sorted(set(n for n, a, b in segments if segment_meets_box(a, b, box)))
+                if hit:
+                    on_arrow.append("%r on %s" % (text, hit))
+        check(pictures and "% label: " in tex and not on_arrow or not pictures,
+              "%s: no diagram label on a load arrow (%d: %s)" % (name, len(on_arrow), on_arrow[:3]))
         # each row's box (a minipage, which never floats or breaks) holds its diagram, the
-        # diagram's caption and the start of the row's equation
-        boxes = [tex[a:tex.find("\\end{minipage}", a)] for a in
-                 [m.start() for m in re.finditer(r"\\begin\{minipage\}", tex)]]
+        # diagram's caption and the start of the row's equation; or, where the equation's first
+        # line is too long for a box that must fit a page, is held to that line's start (no
+        # page break between them nor after the line's first printed line)
+        held = "\\end{minipage}\n\\par\\nobreak\n\\begin{eqlines}\\clubpenalty=10000\n\\eqline{"
+        boxes = []
+        for m in re.finditer(r"\\begin\{minipage\}", tex):
+            end = tex.find("\\end{minipage}", m.start())
+            boxes.append(tex[m.start():end + len(held) + 100] if tex.startswith(held, end) else tex[m.start():end])
         together = len(boxes) == len(rows) and all(
             ("\\eqline{E_{%s}\\colon" % r["variable_tex"]) in b and
             (not r["diagram"] or ("\\begin{tikzpicture}" in b and ": free-body diagram of" in b))
@@ -129,10 +174,17 @@ def main():
             check(r.returncode == 0 and os.path.isfile(os.path.join(out, "roadmap.pdf")),
                   "%s: pdflatex compiles it (%s)" % (name, errors[:3]))
             with open(os.path.join(out, "roadmap.log"), encoding="latin-1") as f:
-                over = [float(x) for x in re.findall(r"Overfull \\hbox \(([0-9.]+)pt too wide\)", f.read())]
+                log = f.read()
+            over = [float(x) for x in re.findall(r"Overfull \\hbox \(([0-9.]+)pt too wide\)", log)]
             check(not over or max(over) <= 10,
                   "%s: no line over 10 pt wider than the text (%d overfull boxes, the widest %.1f pt)"
                   % (name, len(over), max(over) if over else 0))
+            # a box taller than the page (a diagram kept with too much of its equation) runs
+            # off its foot: what is past the foot is lost
+            tall = [float(x) for x in re.findall(r"Overfull \\vbox \(([0-9.]+)pt too high\)", log)]
+            check(not tall or max(tall) <= 10,
+                  "%s: no page over 10 pt taller than the text (%d overfull pages, the tallest by %.1f pt)"
+                  % (name, len(tall), max(tall) if tall else 0))
     print("time: %.1f s" % (time.monotonic() - began))
     return 1 if failures else 0
 

@@ -164,17 +164,32 @@
                  " L" + (b[0] + u[1] * w) + "," + (b[1] - u[0] * w) + " Z", "class": "head " + (cls || "")}, g);
   }
 
-  // ---- labels placed so that none covers another -----------------------------------------
+  // ---- labels placed so that none covers another, nor an arrow -----------------------------
   // Each label is tried at offsets around its anchor, nearest first, in the eight directions
-  // starting with the one it prefers; the first place that meets no label placed before (nor,
-  // where one is free of them, the diagram's points, arrowheads and the u arrow) is kept.
-  // Deterministic: the same diagram places its labels alike every time.
+  // starting with the one it prefers. The first place kept is, of the ones that meet no label
+  // placed before: one that also meets no point, arrowhead, load arrow's shaft or arc and no
+  // line of S, near its anchor; else one clear of the points, heads and load arrows; else one
+  // clear of the points and heads. Deterministic: the same diagram places its labels alike
+  // every time.
   var DIRECTIONS = [[1, 0], [1, -1], [0, -1], [-1, -1], [-1, 0], [-1, 1], [0, 1], [1, 1]];
   function overlaps(a, b) {
     return a.x < b.x + b.w && b.x < a.x + a.w && a.y < b.y + b.h && b.y < a.y + a.h;
   }
+  // whether the segment a-b passes through the box {x, y, w, h} (Liang-Barsky clipping)
+  function segmentMeetsBox(a, b, r) {
+    var t0 = 0, t1 = 1, dx = b[0] - a[0], dy = b[1] - a[1];
+    var p = [-dx, dx, -dy, dy], q = [a[0] - r.x, r.x + r.w - a[0], a[1] - r.y, r.y + r.h - a[1]];
+    for (var i = 0; i < 4; ++i) {
+      if (Math.abs(p[i]) < 1e-12) { if (q[i] < 0) return false; continue; }
+      var t = q[i] / p[i];
+      if (p[i] < 0) { if (t > t1) return false; if (t > t0) t0 = t; }
+      else { if (t < t0) return false; if (t < t1) t1 = t; }
+    }
+    return true;
+  }
   function labelPlacer(L, fontSize) {
-    var placed = [], obstacles = [];
+    // obstacles: boxes (points, heads); arrows: load shafts and arcs; lines: S's sticks, angles' arcs
+    var placed = [], obstacles = [], arrows = [], lines = [];
     function size(t) {
       var bb = null;
       try { bb = t.getBBox(); } catch (e) { bb = null; }
@@ -187,6 +202,8 @@
     }
     return {
       obstacle: function (x, y, w, h) { obstacles.push({x: x, y: y, w: w, h: h}); },
+      // a segment a-b drawn: a load arrow's (kind "arrow") or another line's
+      segment: function (a, b, kind) { (kind === "arrow" ? arrows : lines).push([a, b]); },
       boxes: placed,
       // a text at a fixed place (the u label)
       fix: function (t) {
@@ -209,19 +226,28 @@
           var cx = anchor[0] + d[0] * (gap + w / 2), cy = anchor[1] + d[1] * (gap + h / 2);
           return {x: cx - w / 2, y: cy - h / 2, w: w, h: h};
         }
-        function free(b, strict) {
+        function crosses(b, segments) {
+          for (var i = 0; i < segments.length; ++i) if (segmentMeetsBox(segments[i][0], segments[i][1], b)) return true;
+          return false;
+        }
+        // level 3: clear of everything; 2: of labels, points, heads and load arrows; 1: of
+        // labels, points and heads; 0: of labels
+        function free(b, level) {
           var grown = {x: b.x - pad, y: b.y - pad, w: b.w + 2 * pad, h: b.h + 2 * pad};
           for (var i = 0; i < placed.length; ++i) if (overlaps(grown, placed[i])) return false;
-          if (strict) for (var j = 0; j < obstacles.length; ++j) if (overlaps(b, obstacles[j])) return false;
+          if (level >= 1) for (var j = 0; j < obstacles.length; ++j) if (overlaps(b, obstacles[j])) return false;
+          if (level >= 2 && crosses(b, arrows)) return false;
+          if (level >= 3 && crosses(b, lines)) return false;
           return true;
         }
         var chosen = null;
-        [true, false].forEach(function (strict) {
-          for (var r = 0; !chosen && r < 40; ++r) {
+        [3, 2, 1, 0].forEach(function (level) {
+          // clear of everything only near the anchor: farther, a label is better on a line of S
+          for (var r = 0; !chosen && r < (level === 3 ? 8 : 40); ++r) {
             var ring = L * (0.012 + 0.03 * r);
             for (var k = 0; k < 8 && !chosen; ++k) {
               var b = at(ring, k);
-              if (free(b, strict)) chosen = b;
+              if (free(b, level)) chosen = b;
             }
           }
         });
@@ -413,6 +439,23 @@
       return /role-own/.test(cls) ? 0 : /load-label/.test(cls) ? 1 : /about-name/.test(cls) ? 2 :
              /angle-name/.test(cls) ? 3 : 4;
     }
+    // what the labels keep off: the load arrows' shafts and arcs, S's sticks and the angles' arcs
+    function polyline(n) {
+      return n.getAttribute("points").split(" ").map(function (q) { return q.split(",").map(Number); });
+    }
+    function segmentsOf(selector, kind) {
+      g.querySelectorAll(selector).forEach(function (n) {
+        if (n.tagName === "line") {
+          labels.segment([Number(n.getAttribute("x1")), Number(n.getAttribute("y1"))],
+                         [Number(n.getAttribute("x2")), Number(n.getAttribute("y2"))], kind);
+        } else {
+          var pts = polyline(n);
+          for (var k = 1; k < pts.length; ++k) labels.segment(pts[k - 1], pts[k], kind);
+        }
+      });
+    }
+    segmentsOf("g.load line.shaft, g.load polyline.shaft", "arrow");
+    segmentsOf("line.stick.in-system, g.angle polyline.arc", "line");
     pending.forEach(function (p, i) { p.push(rank(p[0]), i); });
     pending.sort(function (a, b) { return a[3] - b[3] || a[4] - b[4]; });
     pending.forEach(function (p) { labels.place(p[0], p[1], p[2]); });
