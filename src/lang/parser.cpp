@@ -21,7 +21,7 @@ const std::set<std::string, std::less<>>& function_words() {
         "resultant", "moment", "pi", "minimum_jerk", "massmatrix", "jacobian", "diff", "coef",
         "replace", "taylor", "floor", "factor", "transpose", "inv", "det", "diagmat", "element",
         "rows", "cols", "eig", "eigvec", "polynomial", "roots", "cm", "exclude", "include", "outer",
-        "unitdyadic", "matrix", "vector"};
+        "unitdyadic", "inertia", "matrix", "vector"};
     return w;
 }
 

@@ -38,6 +38,7 @@ TEST(Parser, AStatementWordBeforeParenthesesIsACall) {
     EXPECT_EQ(parse("mass A = m\n").keyword, "mass");
     EXPECT_EQ(parse("mass(S)\n").keyword, "");
     EXPECT_EQ(parse("simplify(x)\n").keyword, "");
+    EXPECT_EQ(parse("inertia(C)\n").keyword, "");  // the central inertia dyadic
 }
 
 TEST(Parser, AStatementWordThatNamesNoFunctionStartsItsStatementBeforeParentheses) {
