@@ -12,6 +12,8 @@
 #include <random>
 #include <fstream>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include "alembert/eom/cross_check.hpp"
 #include "alembert/eom/planner.hpp"
