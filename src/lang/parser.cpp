@@ -21,7 +21,7 @@ const std::set<std::string, std::less<>>& function_words() {
         "resultant", "moment", "pi", "minimum_jerk", "massmatrix", "jacobian", "diff", "coef",
         "replace", "taylor", "floor", "factor", "transpose", "inv", "det", "diagmat", "element",
         "rows", "cols", "eig", "eigvec", "polynomial", "roots", "cm", "exclude", "include", "outer",
-        "unitdyadic", "matrix", "vector"};
+        "unitdyadic", "inertia", "matrix", "vector"};
     return w;
 }
 
@@ -470,9 +470,12 @@ Statement StatementParser::parse() {
         s.source = first.text;
         return s;
     }
-    // a statement word starts its statement, unless a call or an assignment uses the word
+    // a statement word starts its statement, unless an assignment uses the word or the word is
+    // also a function's name and '(' follows (`mass(A)` is a call, `evaluate (a + q) at q = 1`
+    // a statement)
     const StatementSpec* spec = first.kind == TokenKind::name ? find_statement(first.text) : nullptr;
-    if (spec && !peek(1).is("(") && !peek(1).is("=")) {
+    const bool call = peek(1).is("(") && function_words().count(first.text) != 0;
+    if (spec && !call && !peek(1).is("=")) {
         s.keyword = first.text;
         keyword_ = s.keyword;
         next();

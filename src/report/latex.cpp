@@ -75,13 +75,32 @@ std::vector<ex> sorted_operands(const ex& e, TextPrinter& text) {
     return out;
 }
 
+// the factors of a product, each in the sign the text printer gives it (a sum s or -s as
+// GiNaC's term order happened to leave it), sorted by their text; the signs taken out in `coeff`
+std::vector<ex> canonical_factors(const ex& e, TextPrinter& text, GiNaC::numeric& coeff) {
+    bool flip = false;
+    std::vector<std::pair<std::string, ex>> keyed;
+    for (std::size_t i = 0; i < e.nops(); ++i) {
+        if (is_a<GiNaC::numeric>(e.op(i))) {
+            coeff *= GiNaC::ex_to<GiNaC::numeric>(e.op(i));
+            continue;
+        }
+        const ex f = text.canonical_factor(e.op(i), flip);
+        keyed.emplace_back(text(f), f);
+    }
+    if (flip) coeff = -coeff;
+    std::stable_sort(keyed.begin(), keyed.end(),
+                     [](const auto& a, const auto& b) { return a.first < b.first; });
+    std::vector<ex> out;
+    for (auto& k : keyed) out.push_back(k.second);
+    return out;
+}
+
 std::string latex_mul(const ex& e, TextPrinter& text) {
     GiNaC::numeric coeff = 1;
     std::vector<std::string> num, den;
-    for (const ex& f : sorted_operands(e, text)) {
-        if (is_a<GiNaC::numeric>(f)) {
-            coeff *= GiNaC::ex_to<GiNaC::numeric>(f);
-        } else if (is_a<GiNaC::power>(f) && is_a<GiNaC::numeric>(f.op(1)) &&
+    for (const ex& f : canonical_factors(e, text, coeff)) {
+        if (is_a<GiNaC::power>(f) && is_a<GiNaC::numeric>(f.op(1)) &&
                    GiNaC::ex_to<GiNaC::numeric>(f.op(1)).is_negative()) {
             ex inv = GiNaC::pow(f.op(0), -f.op(1));
             den.push_back(latex_factor(inv, text));
@@ -129,6 +148,12 @@ std::string latex(const ex& e, TextPrinter& text) {
     if (is_a<GiNaC::symbol>(e)) return latex_name(GiNaC::ex_to<GiNaC::symbol>(e).get_name());
     if (is_a<GiNaC::add>(e)) return latex_add(e, text);
     if (is_a<GiNaC::mul>(e)) return latex_mul(e, text);
+    if (is_a<GiNaC::power>(e) || is_a<GiNaC::function>(e)) {
+        // (-s)^3 and sin(-s) as the text printer writes them: -s^3, -sin(s)
+        bool flip = false;
+        const ex c = text.canonical_factor(e, flip);
+        if (!c.is_equal(e)) return (flip ? "-" : "") + latex(c, text);
+    }
     if (is_a<GiNaC::power>(e)) {
         const ex& b = e.op(0);
         const ex& p = e.op(1);

@@ -108,6 +108,17 @@ public:
         return printed_.emplace(e, std::move(out)).first->second;
     }
 
+    // `f` as a factor of a product prints it (TextPrinter::canonical_factor)
+    ex factor_as_printed(const ex& f, bool& flip) {
+        const bool before = flip;
+        ex g = canonical_factor(f, flip);
+        if (is_a<mul>(g)) {  // as print_mul: factors of a product are never products
+            flip = before;
+            return f;
+        }
+        return g;
+    }
+
 private:
     PrintMemo<Printed> printed_;
     PrintMemo<bool> flips_;
@@ -340,6 +351,8 @@ TextPrinter& TextPrinter::operator=(TextPrinter&&) noexcept = default;
 
 const std::string& TextPrinter::operator()(const ex& e) { return memo_->printer.p(e).text; }
 
+ex TextPrinter::canonical_factor(const ex& f, bool& flip) { return memo_->printer.factor_as_printed(f, flip); }
+
 std::vector<std::string> to_strings(const std::vector<ex>& exprs) {
     Printer printer;
     std::vector<std::string> out;
@@ -367,6 +380,9 @@ public:
         if (e.nops() == 0) return e;
         auto it = done_.find(e);
         if (it != done_.end()) return it->second;
+        // the operands in the order of their text, so that the names given below them follow
+        // the expression, not GiNaC's (creation-order dependent) order of operands
+        for (const ex& o : in_text_order(e)) (void)(*this)(o);
         ex out = shortened(e.map(*this));
         auto u = uses_.find(e);
         if (u != uses_.end() && u->second > 1 && out.nops() > 0 && count_ops(out) >= 2)
@@ -390,6 +406,17 @@ private:
 
     std::size_t length(const ex& x) { return printer_.p(x).text.size(); }
 
+    // the operands of x sorted by their text (each printed once, by the memo)
+    std::vector<ex> in_text_order(const ex& x) {
+        std::vector<std::pair<const std::string*, ex>> keyed;
+        for (std::size_t i = 0; i < x.nops(); ++i) keyed.emplace_back(&printer_.p(x.op(i)).text, x.op(i));
+        std::stable_sort(keyed.begin(), keyed.end(), [](const auto& a, const auto& b) { return *a.first < *b.first; });
+        std::vector<ex> out;
+        out.reserve(keyed.size());
+        for (auto& k : keyed) out.push_back(k.second);
+        return out;
+    }
+
     ex name(const ex& x) {
         const ex z = symbol(stem_ + std::to_string(next_++));
         definitions.emplace_back(z, x);
@@ -401,15 +428,18 @@ private:
     ex shortened(ex x) {
         if (length(x) <= width_ || x.nops() == 0) return x;
         if (is_a<add>(x) || is_a<mul>(x) || is_a<power>(x) || is_a<function>(x)) {
-            std::vector<std::pair<std::size_t, std::size_t>> longest;  // (length, index)
-            for (std::size_t i = 0; i < x.nops(); ++i)
-                if (x.op(i).nops() > 0) longest.push_back({length(x.op(i)), i});
-            std::sort(longest.rbegin(), longest.rend());
+            // the longest first; of equal lengths, the first in text order
+            const std::vector<ex> ops = in_text_order(x);
+            std::vector<std::pair<std::size_t, std::size_t>> longest;  // (length, place in ops)
+            for (std::size_t i = 0; i < ops.size(); ++i)
+                if (ops[i].nops() > 0) longest.push_back({length(ops[i]), i});
+            std::stable_sort(longest.begin(), longest.end(),
+                             [](const auto& a, const auto& b) { return a.first > b.first; });
             exmap named;
             std::size_t total = length(x);
             for (const auto& [len, i] : longest) {
                 if (total <= width_ || len <= stem_.size() + 4) break;
-                named[x.op(i)] = name(x.op(i));
+                named[ops[i]] = name(ops[i]);
                 total -= len;
             }
             if (!named.empty()) x = x.subs(named, subs_options::no_pattern);
@@ -419,15 +449,15 @@ private:
             const bool sum = is_a<add>(x);
             ex whole = sum ? ex(0) : ex(1), run = sum ? ex(0) : ex(1);
             std::size_t run_length = 0;
-            for (std::size_t i = 0; i < x.nops(); ++i) {
-                const std::size_t len = length(x.op(i)) + 3;
+            for (const ex& o : in_text_order(x)) {
+                const std::size_t len = length(o) + 3;
                 if (run_length + len > width_ && run_length > 0) {
                     const ex r = run.nops() > 0 ? name(run) : run;
                     whole = sum ? whole + r : whole * r;
                     run = sum ? ex(0) : ex(1);
                     run_length = 0;
                 }
-                run = sum ? run + x.op(i) : run * x.op(i);
+                run = sum ? run + o : run * o;
                 run_length += len;
             }
             whole = sum ? whole + run : whole * run;

@@ -221,6 +221,19 @@ TEST(Flexibility, AngularVelocityMayBeGivenInAnyFrame) {
     EXPECT_TRUE(has(e, "'C' is oriented relative to 'B'")) << e;
 }
 
+TEST(Flexibility, AStatementWordBeforeParenthesesStartsItsStatement) {
+    ScriptSession r;
+    r.ok("newtonian N\nconstant a = 2\nvariable q\n");
+    EXPECT_NEAR(number_after(r.ok("evaluate (a + q) at q = 1"), "= "), 3.0, 1e-12);
+    EXPECT_NEAR(number_after(r.ok("evaluate (a + q)*(a - q) at q = 1"), "= "), 3.0, 1e-12);
+    EXPECT_NEAR(number_after(r.ok("evaluate (a)"), "= "), 2.0, 1e-12);
+    // digits (n) sets the digits as digits n does: 1/3 printed with 4 significant digits
+    r.ok("digits (3 + 1)");
+    EXPECT_EQ(r.ok("evaluate 1/3"), "= 0.3333\n");
+    // a word that is both a statement and a function stays a call before '('
+    EXPECT_EQ(r.ok("simplify(sin(q)^2 + cos(q)^2)"), "= 1\n");
+}
+
 TEST(Flexibility, ASessionMayGiveAConstantANewValue) {
     std::ostringstream out, err;
     Interpreter interp(out, err, false);

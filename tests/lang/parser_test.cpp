@@ -37,6 +37,23 @@ TEST(Parser, SumsAndProductsAreFlat) {
 TEST(Parser, AStatementWordBeforeParenthesesIsACall) {
     EXPECT_EQ(parse("mass A = m\n").keyword, "mass");
     EXPECT_EQ(parse("mass(S)\n").keyword, "");
+    EXPECT_EQ(parse("simplify(x)\n").keyword, "");
+    EXPECT_EQ(parse("inertia(C)\n").keyword, "");  // the central inertia dyadic
+}
+
+TEST(Parser, AStatementWordThatNamesNoFunctionStartsItsStatementBeforeParentheses) {
+    Statement e = parse("evaluate (a + q) at q = 1\n");
+    ASSERT_EQ(e.keyword, "evaluate");
+    EXPECT_EQ(e.expr("value")->kind, Expr::Kind::sum);
+    EXPECT_EQ(e.bindings.at("at").size(), 1u);
+    // the parenthesis opens the statement's expression, not an argument list
+    Statement p = parse("evaluate (a + q)*(a - q)\n");
+    ASSERT_EQ(p.keyword, "evaluate");
+    EXPECT_EQ(p.expr("value")->kind, Expr::Kind::product);
+    Statement g = parse("gravity (-g*Ny>)\n");  // the parenthesised value, not a call
+    ASSERT_EQ(g.keyword, "gravity");
+    EXPECT_NE(g.expr("value")->kind, Expr::Kind::call);
+    EXPECT_EQ(parse("digits (3 + 1)\n").keyword, "digits");
 }
 
 TEST(Parser, DeclarationsTakePrimesValuesAndUnits) {

@@ -2,7 +2,10 @@
 // to_latex: expressions as TeX for KaTeX, in a deterministic order.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "alembert/report/report.hpp"
+#include "alembert/sym/print.hpp"
 
 namespace alembert {
 namespace {
@@ -31,6 +34,28 @@ TEST(Latex, SameExpressionBuiltInAnyOrderPrintsTheSame) {
     SymbolTable st;
     ex a = st.add_constant("a"), b = st.add_constant("b"), c = st.add_constant("c");
     EXPECT_EQ(to_latex(a * b + c - a), to_latex(c - a + b * a));
+}
+
+// GiNaC holds -c*(a - b) or c*(b - a) as its term order leaves it: both forms of a product,
+// of a power of a sum and of sin or cos of a sum print as the text printer writes them
+TEST(Latex, ASumInAProductPrintsInOneSign) {
+    SymbolTable st;
+    ex a = st.add_constant("a"), b = st.add_constant("b"), c = st.add_constant("c");
+    const ex s = a - b, n = b - a;  // n is -s, held as a sum of its own
+    const ex flipped[][2] = {{-c * s, c * n},
+                             {c * GiNaC::pow(s, 3), -c * GiNaC::pow(n, 3)},
+                             {GiNaC::pow(s, 3), -GiNaC::pow(n, 3)},
+                             {c * GiNaC::pow(s, -1), -c * GiNaC::pow(n, -1)},
+                             {c * GiNaC::sin(s), -c * GiNaC::sin(n)},
+                             {GiNaC::sin(s), -GiNaC::sin(n)},
+                             {c * GiNaC::cos(s) + a, c * GiNaC::cos(n) + a}};
+    for (const auto& pair : flipped) {
+        const GiNaC::exmap at{{a, 0.3}, {b, 1.1}, {c, 0.7}};  // equal in meaning
+        const ex d = GiNaC::evalf((pair[0] - pair[1]).subs(at));
+        ASSERT_TRUE(GiNaC::is_a<GiNaC::numeric>(d) && std::abs(GiNaC::ex_to<GiNaC::numeric>(d).to_double()) < 1e-12);
+        EXPECT_EQ(to_latex(pair[0]), to_latex(pair[1])) << to_string(pair[0]);
+        EXPECT_EQ(to_string(pair[0]), to_string(pair[1]));
+    }
 }
 
 }  // namespace

@@ -37,6 +37,12 @@ public:
     /// to_string(e); the reference stays valid while this printer lives
     const std::string& operator()(const ex& e);
 
+    /// The factor `f` of a product in the sign to_string writes it: GiNaC holds -L*s or
+    /// L*(-s) depending on its term order, so a sum (a sum to an integer power, sin or cos of
+    /// a sum) is turned to one canonical sign chosen from its text, and `flip` toggles for each
+    /// sign taken out. For printers of other notations (TeX) to agree with the text.
+    ex canonical_factor(const ex& f, bool& flip);
+
 private:
     struct Memo;
     std::unique_ptr<Memo> memo_;
