@@ -156,9 +156,10 @@ void Interpreter::Impl::run_codegen(const CodegenRequest& r, Location where) {
         throw ScriptError(where, "'" + opts.name + "' cannot name generated code (letters, digits and _ only)",
                           "choose a name: codegen c name pendulum");
     opts.source = script_file;
+    // generated code computes in SI units: its labels say those, not the units the script
+    // declared (L_A = 41.82 cm is 0.4182 there, in m)
     for (const auto& [name, u] : units)
-        if (u.display) opts.units[name] = u.display->text;
-        else if (u.dim.known && !u.dim.is_none()) opts.units[name] = si_unit(u.dim);
+        if (u.dim.known && !u.dim.is_none()) opts.units[name] = si_unit(u.dim);
     for (std::size_t i = 0; i < numbers.outputs.size(); ++i) {
         // coordinates and rates are columns of the generated simulation already
         bool state = false;
