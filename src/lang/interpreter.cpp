@@ -5,6 +5,7 @@
 #include <cctype>
 #include <cmath>
 #include <filesystem>
+#include <optional>
 
 #include "alembert/lang/lexer.hpp"
 #include "alembert/lang/parser.hpp"
@@ -447,12 +448,16 @@ void Interpreter::Impl::execute(const Statement& s) {
         return;
     }
     transcript.keep_results();
+    running_sweep.reset();
     try {
         spec->run(*this, s);
     } catch (...) {
         (void)transcript.take_kept();
+        running_sweep.reset();
         throw;
     }
+    std::optional<ReportSweep> sweep = std::move(running_sweep);
+    running_sweep.reset();
     std::string text = transcript.take_kept();
     if (text.empty()) return;
     // the statement on one line: continuation lines ("\" at a line's end) joined
@@ -468,7 +473,7 @@ void Interpreter::Impl::execute(const Statement& s) {
         }
         statement += s.source[i];
     }
-    results.push_back({s.location.line, statement, std::move(text)});
+    results.push_back({s.location.line, statement, std::move(text), std::move(sweep)});
 }
 
 }  // namespace alembert::lang

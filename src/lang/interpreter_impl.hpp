@@ -188,6 +188,8 @@ struct Interpreter::Impl {
     std::vector<ReportEquationSet> formed_sets{};
     /// What solve, evaluate and linearize printed, in run order, for the report.
     std::vector<ReportResult> results{};
+    /// What the sweep of the statement running computed (record_sweep), for its result.
+    std::optional<ReportSweep> running_sweep{};
     /// The coordinates the last solve found or was given (its `at` values and the
     /// coordinates solved for) with the rates and specified quantities its `at` gives, where it
     /// was, and how many histories were recorded before it: the report draws its diagrams
@@ -289,6 +291,13 @@ struct Interpreter::Impl {
     void record_history(const std::string& statement, int line, const std::string& file,
                         const Table& table, const MotionSamples* motion,
                         const exmap& first_row_data = {});
+    /// Keeps what a sweep computed (`table`: the swept value, then the series, one axis name
+    /// each in `axes`) for the result of the statement running (`statement` at `line`) and the
+    /// file written (empty: none), to be plotted under its text on the report's page.
+    void record_sweep(const std::string& statement, int line, const std::string& file, const Table& table,
+                      std::vector<std::string> axes);
+    /// The file as the report names it: relative to the output directory when inside it.
+    std::string report_file_name(const std::string& file) const;
     /// Keeps the coordinates a solve was given (`at`) or found (`xs`, `values`) for the
     /// report's diagrams, with the rates and specified quantities its `at` gives (symbols of
     /// `st`).

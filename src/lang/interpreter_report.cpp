@@ -14,15 +14,29 @@
 
 namespace alembert::lang {
 
-void Interpreter::Impl::record_history(const std::string& statement, int line,
-                                       const std::string& file, const Table& table,
-                                       const MotionSamples* motion, const exmap& first_row_data) {
-    ReportHistory h;
+std::string Interpreter::Impl::report_file_name(const std::string& file) const {
     // the file as the script named it: relative to the output directory when inside it
     namespace fs = std::filesystem;
     const fs::path relative = fs::path(file).lexically_relative(output_dir);
     const bool inside = !relative.empty() && *relative.begin() != "..";
-    h.file = (inside ? relative : fs::path(file).lexically_normal()).generic_string();
+    return (inside ? relative : fs::path(file).lexically_normal()).generic_string();
+}
+
+void Interpreter::Impl::record_sweep(const std::string& statement, int line, const std::string& file,
+                                     const Table& table, std::vector<std::string> axes) {
+    ReportSweep w;
+    w.file = file.empty() ? "" : report_file_name(file);
+    w.title = report_history_title(statement, line, w.file);
+    w.table = table;
+    w.axes = std::move(axes);
+    running_sweep = std::move(w);
+}
+
+void Interpreter::Impl::record_history(const std::string& statement, int line,
+                                       const std::string& file, const Table& table,
+                                       const MotionSamples* motion, const exmap& first_row_data) {
+    ReportHistory h;
+    h.file = report_file_name(file);
     h.line = line;
     h.title = report_history_title(statement, line, h.file);
     h.table = table;

@@ -395,13 +395,18 @@ void run_linearize(Interpreter::Impl& m, const Statement& s) {
     }, no_value_hint);
     out << "swept " << pw.text << " = " << m.transcript.number(from / scale) << " to " << m.transcript.number(to / scale)
         << unit << " in steps of " << m.transcript.number(step / scale) << unit << " (" << samples.size() << " values)";
+    std::string written;  // the table's file, for the report's plot of the sweep
     if (!m.model_only) {
         const std::string dir = m.output_path(s);
         PlotResult plot = m.guard(s.location, [&] { return write_table_and_plot(t, dir, "eigenvalues", plot_options); });
+        written = (std::filesystem::path(dir) / "eigenvalues.csv").string();
         out << "\nwrote eigenvalues.csv";
         for (const std::string& file : plot.files) out << ", " << std::filesystem::path(file).filename().string();
         if (!plot.drawn) out << " (no plot: " << plot.message << ")";
     }
+    std::vector<std::string> axes(N, "real part");
+    axes.insert(axes.end(), N, "imaginary part");
+    m.record_sweep("linearize", s.location.line, written, t, std::move(axes));
     std::vector<StabilityChange> changes = m.guard(pw.location, [&] { return find_stability_changes(A_of, samples); });
     if (changes.empty())
         out << "\n" << (unstable_at.front() ? "unstable" : "not unstable") << " throughout: no real part crosses zero";

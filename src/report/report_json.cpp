@@ -650,6 +650,30 @@ std::string history_json(const ReportContent& c, const ReportHistory& h) {
     return o.done();
 }
 
+// a result's sweep: the swept values and each series with its axis ("real part"), thinned as
+// the histories are; "null" when there is nothing to plot
+std::string sweep_json(const ReportSweep& w) {
+    const Table& t = w.table;
+    if (t.columns.size() < 2 || t.row_count() == 0 || w.axes.size() != t.columns.size() - 1) return "null";
+    const Table shown = calc_table_rows(t, calc_plot_rows(t, kMaxPlotRows));
+    std::vector<std::string> series;
+    for (std::size_t k = 1; k < shown.columns.size(); ++k)
+        series.push_back(Obj()
+                             .add("name", str(shown.names[k]))
+                             .add("axis", str(w.axes[k - 1]))
+                             .add("unit", str(shown.units[k]))
+                             .add("values", num_arr(shown.columns[k]))
+                             .done());
+    Obj o;
+    o.add("title", str(w.title)).add("file", str(w.file));
+    o.add("rows", num(static_cast<double>(t.row_count())));
+    o.add("plotted_rows", num(static_cast<double>(shown.row_count())));
+    o.add("parameter", str(shown.names[0])).add("unit", str(shown.units[0]));
+    o.add("values", num_arr(shown.columns[0]));
+    o.add("series", arr(series));
+    return o.done();
+}
+
 // the body drawn in 3D as the ellipsoid of uniform density with its mass and central inertia:
 // semi-axes a_i^2 = 5 (I_j + I_k - I_i) / (2 m) along the principal axes (a thin disk of radius
 // r: a flat ellipse of radius 1.12 r; a slender rod of length L: a needle 0.65 L either side);
@@ -907,12 +931,14 @@ std::string report_detail::render_json(const ReportContent& c,
                                   .add("residual", num(ev.at(k.residual)))
                                   .done());
     std::vector<std::string> results;
-    for (const ReportResult& r : c.results)
-        results.push_back(Obj()
-                              .add("line", std::to_string(r.line))
-                              .add("statement", str(r.statement))
-                              .add("text", str(r.text))
-                              .done());
+    for (const ReportResult& r : c.results) {
+        Obj o;
+        o.add("line", std::to_string(r.line)).add("statement", str(r.statement)).add("text", str(r.text));
+        // a sweep's values, plotted under the text (none with the plots turned off)
+        const std::string sweep = r.sweep && c.plot_histories ? sweep_json(*r.sweep) : "null";
+        if (sweep != "null") o.add("sweep", sweep);
+        results.push_back(o.done());
+    }
     // the equations kane and lagrange formed, typeset after the rows'
     std::vector<std::string> sets;
     std::size_t next = c.rows.size();

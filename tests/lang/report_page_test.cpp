@@ -4,9 +4,12 @@
 // the units the script declared.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <regex>
 #include <string>
+#include <vector>
 
 #include "support/script_dir.hpp"
 
@@ -300,6 +303,98 @@ TEST(ReportPage, AParticleOnAStringOfFixedLengthIsDrawnWithItsString) {
     const std::string page = read_text(dir.path / "rep" / "index.html");
     EXPECT_NE(page.find("\"segments\":[{\"body\":\"P\",\"from\":\"N_o\",\"to\":\"P\"}]"), std::string::npos)
         << page.substr(page.find("\"segments\""), 200);
+}
+
+// The numbers of the JSON array that follows `key` at or after `from` in `page` (null: NAN)
+std::vector<double> numbers_after(const std::string& page, const std::string& key, std::size_t from) {
+    std::vector<double> out;
+    const std::size_t at = page.find(key, from);
+    if (at == std::string::npos) {
+        ADD_FAILURE() << "no " << key << " in the page after " << from;
+        return out;
+    }
+    std::size_t i = page.find('[', at) + 1;
+    const std::size_t end = page.find(']', i);
+    while (i < end) {
+        std::size_t next = std::min(page.find(',', i), end);
+        const std::string item = page.substr(i, next - i);
+        out.push_back(item == "null" ? NAN : std::stod(item));
+        i = next + 1;
+    }
+    return out;
+}
+
+TEST(ReportPage, ASweepsEigenvaluesArePlottedUnderItsResultAndCrossZeroAtTheDisksCriticalSpin) {
+    // examples/rolling_disk: a thin disk (radius r, A = m r^2/4 about a diameter, C = m r^2/2
+    // about its axle) rolling upright at spin Omega. By hand, linearized (Routh): lean th and
+    // heading psi obey (A + m r^2) th'' + (C + m r^2) Omega psi' - m g r th = 0 and
+    // A psi'' = C Omega th', so (A + m r^2) th'' = (m g r - (C + m r^2) C Omega^2 / A) th:
+    // lambda^2 = 4 (g - 3 r Omega^2) / (5 r), and every other eigenvalue is 0. The real parts
+    // cross zero at Omega^2 = g/(3 r).
+    TempDir dir;
+    ScriptInDir r(dir.path);
+    const std::string script =
+        read_text(std::filesystem::path(ALEMBERT_SOURCE_DIR) / "examples" / "rolling_disk" / "model.alb");
+    r.run(script + "report to \"rep\"\nreport plot none to \"bare\"\n");
+    const double g = 9.81, radius = 0.3;
+    const std::string page = read_text(dir.path / "rep" / "index.html");
+    // the result of the linearize at line 29, its sweep under it, named by statement and file
+    const std::size_t result = page.find("{\"line\":29,\"statement\":\"linearize K at q2 = 0");
+    ASSERT_NE(result, std::string::npos);
+    const std::size_t sweep =
+        page.find("\"sweep\":{\"title\":\"linearize at line 29 (spin_sweep/eigenvalues.csv)\"", result);
+    ASSERT_NE(sweep, std::string::npos) << page.substr(result, 600);
+    EXPECT_EQ(page.find("\"sweep\":", result), sweep);
+    EXPECT_NE(page.find("\"parameter\":\"Omega\",\"unit\":\"rad/s\"", sweep), std::string::npos);
+    const std::vector<double> omega = numbers_after(page, "\"values\":", sweep);
+    ASSERT_EQ(omega.size(), 21u);  // 0 to 10 rad/s in steps of 0.5
+    for (std::size_t i = 0; i < omega.size(); ++i) EXPECT_DOUBLE_EQ(omega[i], 0.5 * static_cast<double>(i));
+    // the 8 states' real parts, then their imaginary parts, each on its axis in 1/s
+    std::vector<std::vector<double>> re, im;
+    for (int k = 1; k <= 8; ++k) {
+        const std::string n = std::to_string(k);
+        const std::size_t a = page.find("{\"name\":\"re_" + n + "\",\"axis\":\"real part\",\"unit\":\"1/s\"", sweep);
+        const std::size_t b = page.find("{\"name\":\"im_" + n + "\",\"axis\":\"imaginary part\",\"unit\":\"1/s\"", sweep);
+        ASSERT_NE(a, std::string::npos) << "re_" << n;
+        ASSERT_NE(b, std::string::npos) << "im_" << n;
+        re.push_back(numbers_after(page, "\"values\":", a));
+        im.push_back(numbers_after(page, "\"values\":", b));
+        ASSERT_EQ(re.back().size(), omega.size());
+        ASSERT_EQ(im.back().size(), omega.size());
+    }
+    EXPECT_EQ(page.find("{\"name\":\"re_9\"", sweep), std::string::npos);
+    // at each spin: the largest real part and the largest imaginary part are the lean's
+    // sqrt(|lambda^2|) by hand (the page prints 6 significant digits), the rest of the real
+    // parts are not above it
+    double last_unstable = -1, first_stable = -1;
+    for (std::size_t i = 0; i < omega.size(); ++i) {
+        const double l2 = 4 * (g - 3 * radius * omega[i] * omega[i]) / (5 * radius);
+        double top_re = -INFINITY, top_im = -INFINITY;
+        for (std::size_t k = 0; k < re.size(); ++k) {
+            top_re = std::max(top_re, re[k][i]);
+            top_im = std::max(top_im, im[k][i]);
+        }
+        SCOPED_TRACE("Omega = " + std::to_string(omega[i]));
+        EXPECT_NEAR(top_re, std::sqrt(std::max(0.0, l2)), 1e-5 * std::max(1.0, std::sqrt(std::abs(l2))));
+        EXPECT_NEAR(top_im, std::sqrt(std::max(0.0, -l2)), 1e-5 * std::max(1.0, std::sqrt(std::abs(l2))));
+        if (top_re > 1e-3) last_unstable = omega[i];
+        if (top_re <= 1e-3 && first_stable < 0) first_stable = omega[i];
+    }
+    // the real parts cross zero between the samples either side of Omega = sqrt(g/(3 r))
+    const double critical = std::sqrt(g / (3 * radius));  // 3.30151 rad/s
+    EXPECT_DOUBLE_EQ(last_unstable, 3.0);
+    EXPECT_DOUBLE_EQ(first_stable, 3.5);
+    EXPECT_LT(last_unstable, critical);
+    EXPECT_GT(first_stable, critical);
+    // and the crossing the statement printed beside it, found by bisection, is the hand value
+    const std::size_t crosses = page.find("a real part crosses zero at Omega = ", result);
+    ASSERT_LT(crosses, sweep);
+    EXPECT_NEAR(std::stod(page.substr(crosses + std::string("a real part crosses zero at Omega = ").size())), critical,
+                1e-4);
+    // with the plots turned off the result stays and its sweep goes
+    const std::string bare = read_text(dir.path / "bare" / "index.html");
+    EXPECT_NE(bare.find("{\"line\":29,\"statement\":\"linearize K at q2 = 0"), std::string::npos);
+    EXPECT_EQ(bare.find("\"sweep\":"), std::string::npos);
 }
 
 }  // namespace report_page

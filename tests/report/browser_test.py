@@ -42,6 +42,8 @@ EXERCISE_TEACHING = ["derivations are closed until opened", "each derivation ope
                      "each row shows its unit check"]
 # what it does with the plots and the animation on every example's page
 EXERCISE_PLOTS = ["the cursor reads values", "dragging zooms into a time range", "show all zooms out again"]
+# what it does with a result's sweep on the pages that have one
+EXERCISE_SWEEP = ["a sweep's cursor reads its values on its own plots"]
 EXERCISE_MOTION = ["the time slider moves the model", "play starts the animation", "the speed control offers",
                    "play at 1\u00d7", "play at 0.5\u00d7", "play at 2\u00d7", "play at 0.25\u00d7"]
 
@@ -121,6 +123,10 @@ class Dom(html.parser.HTMLParser):
         self.title = ""          # the page's <title>
         self.h1 = ""
         self.figures = []        # per figure.plot: its unit, title, y axis label and series (unit, colour)
+        # per figure.sweep-plot (a result's sweep): the line of the result it is under, its
+        # unit, axis, title, axis labels and series (unit, colour, points drawn)
+        self.sweeps = []
+        self.result_line = None  # data-line of the div.result last opened
 
     def classes(self, attrs):
         return set((dict(attrs).get("class") or "").split())
@@ -160,6 +166,13 @@ class Dom(html.parser.HTMLParser):
             self.equation_sets += 1
         if tag == "div" and "result" in c:
             self.results.append(["", ""])
+            self.result_line = a.get("data-line")
+        if tag == "figure" and "sweep-plot" in c:
+            self.sweeps.append({"line": self.result_line if self.inside("div", "result") else None,
+                                "unit": a.get("data-unit"), "axis": a.get("data-axis"), "title": a.get("data-title"),
+                                "label": "", "x_label": "", "series": []})
+        if tag == "polyline" and "sweep-series" in c and self.inside("figure", "sweep-plot"):
+            self.sweeps[-1]["series"].append((a.get("data-unit"), a.get("stroke"), len(a.get("points", "").split())))
         if tag == "pre" and self.inside("div", "result"):
             c.add("statement" in c and "#statement" or "#output")
         if tag == "p" and a.get("id") == "configuration":
@@ -240,6 +253,10 @@ class Dom(html.parser.HTMLParser):
             self.h1 += data
         if self.inside("text", "y-label") and self.inside("figure", "plot"):
             self.figures[-1]["label"] += data
+        if self.inside("text", "y-label") and self.inside("figure", "sweep-plot"):
+            self.sweeps[-1]["label"] += data
+        if self.inside("text", "x-label") and self.inside("figure", "sweep-plot"):
+            self.sweeps[-1]["x_label"] += data
 
         hidden = self.inside("annotation") or self.inside("script") or self.inside("style")
         if not hidden and "\\" in data:
@@ -329,6 +346,37 @@ def check_plots(dom, data, who, model):
     check(len(set(titles)) == len(titles), "%s: no two plots titled alike (%s)" % (who, titles))
     check(all(re.match(r"(simulate|inverse) at line \d+ \(.+\.csv\): ", t) for t in titles),
           "%s: each plot titled with its statement, line and table (%s)" % (who, titles[:2]))
+
+
+def check_sweeps(dom, data, who):
+    """Each result's sweep (a linearize ... for c = a to b step h) plotted under the result
+    against the swept value: the real parts on one plot and the imaginary parts on another
+    (ten series at most each), each titled with its statement, line and table and its axis,
+    its unit on the y axis and the swept value's name and unit on the x axis, every series
+    drawn through every sample, no two series of a plot in one colour."""
+    expected = []
+    for r in data["results"]:
+        w = r.get("sweep")
+        if not w:
+            continue
+        for axis in ("real part", "imaginary part"):
+            n = sum(1 for ser in w["series"] if ser["axis"] == axis)
+            expected += [(str(r["line"]), axis, "1/s", w["title"], w["parameter"], w["unit"], len(w["values"]))] \
+                * math.ceil(n / 10)
+    check([(f["line"], f["axis"], f["unit"]) for f in dom.sweeps] == [e[:3] for e in expected],
+          "%s: each sweep's real and imaginary parts plotted under its result (%s, expected %s)"
+          % (who, [(f["line"], f["axis"]) for f in dom.sweeps], [e[:2] for e in expected]))
+    for f, (line, axis, unit, title, parameter, parameter_unit, samples) in zip(dom.sweeps, expected):
+        colours = [c for _, c, _ in f["series"]]
+        x_label = parameter + (" [%s]" % unit_text(parameter_unit) if parameter_unit else "")
+        check(f["title"].startswith(title + ": " + axis + "s, ") and re.match(r"linearize at line \d+", title)
+              and f["label"] == unit_text(unit) and f["x_label"] == x_label,
+              "%s: %s: titled with its statement and axis, %r on its y axis and %r on its x axis (%r, %r)"
+              % (who, f["title"], unit_text(unit), x_label, f["label"], f["x_label"]))
+        check(f["series"] and all(u == unit and n == samples for u, _, n in f["series"])
+              and len(set(colours)) == len(colours) and all(colours),
+              "%s: %s: its %d series each drawn through the %d samples in colours of their own (%s)"
+              % (who, f["title"], len(f["series"]), samples, [n for _, _, n in f["series"]]))
 
 
 def console_lines(stderr):
@@ -972,9 +1020,13 @@ def examples(cli, source, work, browser, names):
             chair_by_hand(source, data)
             chair_unplaced(cli, source, work, browser)
         check_plots(dom, data, name, name)
+        check_sweeps(dom, data, name)
+        if name in ("rolling_disk", "bicycle"):
+            check(len(dom.sweeps) >= 2, "%s: the eigenvalues of its sweep are drawn (%d plots)" % (name, len(dom.sweeps)))
         # the controls worked: the plots' cursor and zoom, the animation's slider, play and speed
         want = (EXERCISE_PLOTS if data["histories"] else []) + (EXERCISE_MOTION if data["animation"] else [])
         want += EXERCISE_TEACHING if data["roadmap"] else []
+        want += EXERCISE_SWEEP if any(r.get("sweep") for r in data["results"]) else []
         if data["histories"] and data["animation"]:
             want.append("the cursor moves the animation")
         check_exercise(dom.exercise.strip().splitlines(), want, name)

@@ -38,12 +38,29 @@ struct ReportHistory {
 /// (fall/simulation.csv)", "inverse (torques.csv)".
 std::string report_history_title(const std::string& statement, int line, const std::string& file);
 
+/// What a sweep computed over a swept value (a `linearize ... for c = a to b step h`: the
+/// eigenvalues at each value of c), plotted on the page under the statement's result against
+/// the swept value, one plot per axis named in `axes`.
+struct ReportSweep {
+    /// What computed it: "linearize at line 31 (spin_sweep/eigenvalues.csv)"
+    /// (report_history_title)
+    std::string title{};
+    std::string file{};  ///< the table as written ("spin_sweep/eigenvalues.csv"); empty: none
+    /// The swept value (its name and unit), then the series in their units: for linearize
+    /// re_1..re_n, then im_1..im_n (1/s)
+    Table table{};
+    /// What each series after the first column is, one per series ("real part",
+    /// "imaginary part"): the series of one axis share one plot
+    std::vector<std::string> axes{};
+};
+
 /// A result the script printed (a `solve`, `evaluate` or `linearize`), shown on the page where
 /// the script computed it.
 struct ReportResult {
     int line = 0;              ///< the statement's line in the script
     std::string statement{};   ///< the statement as written
     std::string text{};        ///< what it printed
+    std::optional<ReportSweep> sweep{};  ///< what a sweep computed, plotted under the text
 };
 
 /// Equations of motion the script formed besides the road-map (`kane`, `lagrange`), shown
@@ -99,7 +116,8 @@ struct ReportContent {
     std::vector<ReportResult> results{};
     /// Remarks shown at the top of the page (why there is no road-map, ...).
     std::vector<std::string> notes{};
-    /// Plot the histories at all; and which of their columns (by name; empty: every one).
+    /// Plot the histories (and the results' sweeps) at all; and which of the histories'
+    /// columns (by name; empty: every one).
     bool plot_histories = true;
     std::vector<std::string> plotted{};
     /// The cross-checks between methods, when they were run (alembert::compare_methods,

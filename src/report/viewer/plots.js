@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: MIT
-// Alembert's report viewer: the plots of the time histories. One unit per plot (its y axis
-// labelled with it), at most ten series per plot in ten well-separated colours, the plots of
-// one history stacked on a shared time axis, and one time cursor for the whole page.
+// Alembert's report viewer: the plots of the time histories and of the results' sweeps. One
+// unit per plot (its y axis labelled with it), at most ten series per plot in ten
+// well-separated colours, the plots of one history stacked on a shared time axis, and one time
+// cursor for the whole page; a sweep's plots (against the swept value) share a cursor of their
+// own.
 // Inlined before viewer.js, which calls alembertPlots(helpers).
 var alembertPlots = function (helpers) {
   "use strict";
@@ -15,19 +17,22 @@ var alembertPlots = function (helpers) {
   // a unit as the axis shows it: N*m as N·m; a series without one is said to have none
   function unitText(unit) { return unit ? unit.replace(/\*/g, "\u00b7") : "no unit"; }
 
-  // a history's series as plots: one per unit, in the order the units first appear; a unit
-  // with more series than colours over as few plots as hold them, the series shared evenly
+  // a history's series as plots: one per unit (and per axis where the series name one: a
+  // sweep's real and imaginary parts), in the order they first appear; a unit with more series
+  // than colours over as few plots as hold them, the series shared evenly
   function plotGroups(series) {
-    var units = [], byUnit = Object.create(null);
+    var keys = [], byKey = Object.create(null);
     series.forEach(function (ser, k) {
-      if (!byUnit[ser.unit]) { byUnit[ser.unit] = []; units.push(ser.unit); }
-      byUnit[ser.unit].push(k);
+      var key = (ser.axis || "") + "\u0000" + ser.unit;
+      if (!byKey[key]) { byKey[key] = []; keys.push(key); }
+      byKey[key].push(k);
     });
     var groups = [];
-    units.forEach(function (unit) {
-      var ks = byUnit[unit], parts = Math.ceil(ks.length / palette.length), size = Math.ceil(ks.length / parts);
+    keys.forEach(function (key) {
+      var ks = byKey[key], parts = Math.ceil(ks.length / palette.length), size = Math.ceil(ks.length / parts);
       for (var i = 0; i < parts; ++i)
-        groups.push({unit: unit, series: ks.slice(i * size, (i + 1) * size), part: i + 1, parts: parts});
+        groups.push({unit: series[ks[0]].unit, axis: series[ks[0]].axis || "", series: ks.slice(i * size, (i + 1) * size),
+                     part: i + 1, parts: parts});
     });
     return groups;
   }
@@ -60,18 +65,24 @@ var alembertPlots = function (helpers) {
 
   var plotCount = 0;
   // one plot of history `h`: its `group` of series (one unit) on the time axis `axis`, which
-  // the history's plots share (zooming one zooms them all)
+  // the history's plots share (zooming one zooms them all). A sweep's (h.sweep) is drawn
+  // against the swept value h.x_name, its cursor axis.cursorAt, and its classes are its own
+  // (figure.sweep-plot, svg.sweep-svg, polyline.sweep-series), apart from the time plots'.
   function plot(parent, h, group, axis) {
     ++plotCount;
     var W = 720, H = 240, ml = 76, mr = 20, mt = 12, mb = 36;
-    var title = h.title + ": " + unitText(group.unit) + (group.parts > 1 ? ", " + group.part + " of " + group.parts : "");
-    var fig = el("figure", {"class": "plot", "data-unit": group.unit, "data-title": title}, parent);
+    var kind = h.sweep ? "sweep-" : "", xName = h.x_name || "t";
+    var title = h.title + ": " + (group.axis ? group.axis + "s, " : "") + unitText(group.unit) +
+                (group.parts > 1 ? ", " + group.part + " of " + group.parts : "");
+    var fig = el("figure", {"class": h.sweep ? "sweep-plot" : "plot", "data-unit": group.unit, "data-title": title,
+                            "data-axis": group.axis}, parent);
     el("figcaption", {}, fig, title + (h.plotted_rows < h.rows ? " (" + h.rows + " rows, " + h.plotted_rows +
        " plotted: each stretch of the run keeps its least and greatest values)" : ""));
-    var s = svg("svg", {"class": "plot-svg", viewBox: "0 0 " + W + " " + H, width: W, height: H}, fig);
+    var s = svg("svg", {"class": kind + "plot-svg", viewBox: "0 0 " + W + " " + H, width: W, height: H}, fig);
     var series = group.series.map(function (k) { return h.series[k]; });
     var shown = series.map(function () { return true; });
-    var readout = el("div", {"class": "readout"}, fig, "move over the plot to read values (the animation follows)");
+    var readout = el("div", {"class": "readout"}, fig, "move over the plot to read values" +
+                     (h.sweep ? "" : " (the animation follows)"));
     var legend = el("div", {"class": "legend"}, fig);
     series.forEach(function (ser, i) {
       var lab = el("label", {style: "color:" + palette[i]}, legend);
@@ -82,7 +93,8 @@ var alembertPlots = function (helpers) {
     var t = h.time, cursor = null, band = null, row = -1;
     var zoomBar = el("div", {"class": "zoom"}, fig);
     var reset = el("button", {type: "button", "class": "zoom-reset", disabled: "disabled"}, zoomBar, "show all");
-    el("span", {"class": "note"}, zoomBar, " drag across the plot to zoom into a time range; double-click or \u201cshow all\u201d to zoom out");
+    el("span", {"class": "note"}, zoomBar, " drag across the plot to zoom into a " + (h.sweep ? "range of " + xName : "time range") +
+       "; double-click or \u201cshow all\u201d to zoom out");
     reset.addEventListener("click", function () { axis.zoomTo(axis.full0, axis.full1); });
     function timeAt(e) {
       var r = s.getBoundingClientRect(), x = (e.clientX - r.left) * W / r.width;
@@ -114,12 +126,15 @@ var alembertPlots = function (helpers) {
         svg("line", {x1: X(v), x2: X(v), y1: mt, y2: H - mb, "class": "grid"}, axes);
         svg("text", {x: X(v), y: H - mb + 16, "text-anchor": "middle"}, axes, fmt(v));
       });
-      svg("text", {x: (W + ml) / 2, y: H - 4, "text-anchor": "middle"}, axes, "t" + (h.time_unit ? " [" + h.time_unit + "]" : ""));
+      svg("text", {x: (W + ml) / 2, y: H - 4, "text-anchor": "middle", "class": "x-label"}, axes,
+          xName + (h.time_unit ? " [" + unitText(h.time_unit) + "]" : ""));
       var ym = (mt + H - mb) / 2;
       svg("text", {x: 14, y: ym, "text-anchor": "middle", transform: "rotate(-90 14 " + ym + ")", "class": "y-label"},
           axes, unitText(group.unit));
       var clip = "clip-" + plotCount;
       svg("rect", {x: ml, y: mt, width: W - ml - mr, height: H - mt - mb}, svg("clipPath", {id: clip}, s));
+      // a sweep's samples marked where they are few enough to be told apart
+      var marks = h.sweep && t.length <= 200;
       series.forEach(function (ser, i) {
         if (!shown[i]) return;
         var pts = [];
@@ -128,8 +143,13 @@ var alembertPlots = function (helpers) {
           if (v !== null && (j + 1 < t.length ? t[j + 1] >= x0 : true) && (j > 0 ? t[j - 1] <= x1 : true))
             pts.push(X(t[j]).toFixed(2) + "," + Y(v).toFixed(2));
         });
-        svg("polyline", {points: pts.join(" "), fill: "none", stroke: palette[i], "stroke-width": 1.8, "class": "series",
+        svg("polyline", {points: pts.join(" "), fill: "none", stroke: palette[i], "stroke-width": 1.8, "class": kind + "series",
                          "data-series": ser.name, "data-unit": ser.unit, "clip-path": "url(#" + clip + ")"}, s);
+        if (marks)
+          pts.forEach(function (p) {
+            var xy = p.split(",");
+            svg("circle", {cx: xy[0], cy: xy[1], r: 2.2, fill: palette[i], "class": "sample", "clip-path": "url(#" + clip + ")"}, s);
+          });
       });
       cursor = svg("line", {x1: -10, x2: -10, y1: mt, y2: H - mb, "class": "cursor"}, s);
       band = svg("rect", {x: 0, y: mt, width: 0, height: H - mt - mb, "class": "zoom-band"}, s);
@@ -140,7 +160,7 @@ var alembertPlots = function (helpers) {
     function place() {
       cursor.setAttribute("x1", s.X(t[row])); cursor.setAttribute("x2", s.X(t[row]));
       fig.setAttribute("data-cursor", t[row]);
-      readout.textContent = "t = " + fmt(t[row]) + series.filter(function (ser, i) { return shown[i]; }).map(function (ser) {
+      readout.textContent = xName + " = " + fmt(t[row]) + (h.sweep && h.time_unit ? " " + h.time_unit : "") + series.filter(function (ser, i) { return shown[i]; }).map(function (ser) {
         return ", " + ser.name + " = " + fmt(ser.values[row]) + (ser.unit ? " " + ser.unit : ""); }).join("");
     }
     var dragFrom = null;
@@ -159,7 +179,7 @@ var alembertPlots = function (helpers) {
         var xa = s.X(Math.max(axis.x0, Math.min(axis.x1, dragFrom))), xb = s.X(Math.max(axis.x0, Math.min(axis.x1, tv)));
         band.setAttribute("x", Math.min(xa, xb)); band.setAttribute("width", Math.abs(xb - xa));
       }
-      cursorAt(t[nearest(t, tv)]);
+      (axis.cursorAt || cursorAt)(t[nearest(t, tv)]);
     });
     draw();
     return {draw: draw, setCursor: function (v) { row = nearest(t, v); place(); }};
@@ -191,6 +211,26 @@ var alembertPlots = function (helpers) {
     });
   }
 
-  return {palette: palette, unitText: unitText, plotGroups: plotGroups, histories: histories, cursorAt: cursorAt,
+  // the plots of result `r`'s sweep under its text in `box`: against the swept value, one
+  // plot per axis and unit (the real parts, the imaginary parts), with a cursor of their own
+  function sweep(box, r) {
+    var w = r.sweep;
+    if (!w || !w.values.length) return;
+    var h = {sweep: true, title: w.title, rows: w.rows, plotted_rows: w.plotted_rows, time: w.values, time_unit: w.unit,
+             x_name: w.parameter, series: w.series};
+    var div = el("div", {"class": "sweep", "data-parameter": w.parameter}, box);
+    var x = w.values, full0 = x[0], full1 = x[x.length - 1] === full0 ? full0 + 1 : x[x.length - 1];
+    var own = [];
+    var axis = {full0: full0, full1: full1, x0: full0, x1: full1, zoomed: false,
+                zoomTo: function (a, b) {
+                  if (!(b > a)) return;
+                  axis.x0 = Math.max(full0, a); axis.x1 = Math.min(full1, b); axis.zoomed = true;
+                  own.forEach(function (p) { p.draw(); });
+                },
+                cursorAt: function (v) { own.forEach(function (p) { p.setCursor(v); }); }};
+    plotGroups(w.series).forEach(function (g) { own.push(plot(div, h, g, axis)); });
+  }
+
+  return {palette: palette, sweep: sweep, unitText: unitText, plotGroups: plotGroups, histories: histories, cursorAt: cursorAt,
           follow: function (f) { onCursor = f; }};
 };

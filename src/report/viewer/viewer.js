@@ -1048,7 +1048,7 @@
     });
   }
 
-  // ---- what the script printed: solve, evaluate, linearize --------------------------------
+  // ---- what the script printed: solve, evaluate, linearize (a sweep's plots under it) -----
   function results(main, data) {
     if (!data.results || !data.results.length) return;
     var sec = el("section", {id: "results"}, main);
@@ -1057,6 +1057,7 @@
       var box = el("div", {"class": "result", "data-line": r.line}, sec);
       el("pre", {"class": "statement"}, box, "line " + r.line + ": " + r.statement);
       el("pre", {"class": "output"}, box, r.text.replace(/\n+$/, ""));
+      plots.sweep(box, r);
     });
   }
 
@@ -1126,6 +1127,23 @@
              fig.getAttribute("data-range") + ")");
       fig.querySelector("button.zoom-reset").click();
       expect(ticks() === before, "show all zooms out again");
+    }
+    // a sweep's cursor: its values read against the swept value on its own plots, the time
+    // plots and the animation left where they are
+    var sweepFig = document.querySelector("figure.sweep-plot");
+    if (sweepFig) {
+      var sweepBox = sweepFig.parentNode, name = sweepBox.getAttribute("data-parameter");
+      var timeFig = document.querySelector("figure.plot"), timeSlider = document.getElementById("time-slider");
+      var timeBefore = timeFig ? timeFig.getAttribute("data-cursor") : null, frameBefore = timeSlider ? timeSlider.value : null;
+      var ss = sweepFig.querySelector("svg"), sr = ss.getBoundingClientRect();
+      ss.dispatchEvent(new MouseEvent("mousemove", {clientX: sr.left + 0.7 * sr.width, clientY: sr.top + sr.height / 2}));
+      var at = sweepFig.getAttribute("data-cursor"), others = sweepBox.querySelectorAll("figure.sweep-plot"), same = true;
+      Array.prototype.forEach.call(others, function (f) { same = same && f.getAttribute("data-cursor") === at; });
+      expect(at !== null && same && sweepFig.querySelector(".readout").textContent.indexOf(name + " = ") === 0 &&
+             (!timeFig || timeFig.getAttribute("data-cursor") === timeBefore) &&
+             (!timeSlider || timeSlider.value === frameBefore),
+             "a sweep's cursor reads its values on its own plots (" + name + " = " + at + " on " + others.length +
+             " plots; time cursor " + (timeFig ? timeFig.getAttribute("data-cursor") : "none") + ", was " + timeBefore + ")");
     }
     var canvas = document.querySelector("canvas.view3d");
     if (canvas) {
