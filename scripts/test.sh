@@ -82,7 +82,9 @@ if [[ ${ALEMBERT_CI_SANITIZE:-1} == 1 ]]; then
       echo "test.sh: clang with libFuzzer not found (Debian: clang libclang-rt-14-dev); the bounded fuzz run is skipped"
     fi
   fi
-  pass "sanitizer pass ($preset)" "$preset" -LE 'external|large'
+  # the asan presets run each test program as a few processes (ALEMBERT_TEST_SHARDS), not one
+  # per test case: its tests below are those processes
+  pass "sanitizer pass ($preset, test programs in shards)" "$preset" -LE 'external|large'
 fi
 
 echo
