@@ -473,18 +473,6 @@ void Interpreter::Impl::simulate(const Statement& s) {
     r.model = script_name;
     if (speeds) {
         for (const ex& x : speeds->coordinates) r.coordinates.push_back(table.variable(table.name(x)));
-        int line = 0;
-        for (const ReportEquationSet& e : formed_sets)
-            if (e.name == kane_name) line = e.line;
-        const std::string kane_at = kane_name + " (line " + std::to_string(line) + ")";
-        if (!speeds->auxiliary_speeds.empty())
-            throw ScriptError(s.location, "simulate takes Kane's equations " + kane_at +
-                                              " in generalized speeds, and they have auxiliary speeds (" +
-                                              to_string(speeds->auxiliary_speeds.front()) +
-                                              (speeds->auxiliary_speeds.size() > 1 ? ", ..." : "") +
-                                              "), whose equations give constraint forces that a simulation "
-                                              "in speeds does not solve for",
-                              "form the equations to simulate without 'auxiliary', in a script of their own");
     } else {
         r.coordinates = default_coordinates();
     }
@@ -519,6 +507,8 @@ void Interpreter::Impl::simulate(const Statement& s) {
         // the coordinates and every speed
         for (const TimeVariable& v : r.coordinates) add_default_output(v.name(), v.symbol());
         for (const ex& u : speeds->speeds) add_default_output(table.name(u), u);
+        // and the constraint forces its auxiliary speeds bring out
+        for (const ex& f : auxiliary_measures(table, *speeds, numbers.inputs)) add_default_output(table.name(f), f);
     } else if (r.outputs.empty()) {
         for (const TimeVariable& v : r.coordinates)
             for (int k = 0; k < 2; ++k) add_default_output(k ? v.name() + "'" : v.name(), v.d(k));

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <sstream>
 
+#include "alembert/eom/equations.hpp"
 #include "alembert/eom/zero_test.hpp"
 #include "alembert/error.hpp"
 #include "alembert/sym/print.hpp"
@@ -137,13 +138,15 @@ SimulationResult run_speed_simulation(System& sys, const KaneEquations& kane,
     ALEMBERT_CHECK_ARG(!kane.kinematic_equations.empty(),
                        who + "the Kane's equations have no chosen speeds (u_r = q_r'); simulate "
                              "them with run_simulation");
-    if (!kane.auxiliary_speeds.empty())
-        throw ArgumentError(who + "the Kane's equations have auxiliary speeds " +
-                            to_string(kane.auxiliary_speeds.front()) +
-                            (kane.auxiliary_speeds.size() > 1 ? ", ..." : "") +
-                            ", whose equations give constraint forces, which a simulation in "
-                            "generalized speeds does not solve for; form the equations without "
-                            "auxiliary speeds to simulate them");
+    ALEMBERT_CHECK_ARG(kane.auxiliary_equations.size() == kane.auxiliary_speeds.size() &&
+                           std::none_of(kane.auxiliary_speeds.begin(), kane.auxiliary_speeds.end(),
+                                        [&](const ex& ua) {
+                                            return std::any_of(kane.speeds.begin(), kane.speeds.end(),
+                                                               [&](const ex& u) { return u.is_equal(ua); });
+                                        }),
+                       who + "the Kane's equations' auxiliary speeds must each have their auxiliary "
+                             "equation and be none of the speeds (form them with "
+                             "KaneOptions::auxiliary_speeds)");
     ALEMBERT_CHECK_ARG(request.constraint_forces.empty(),
                        who + "constraint forces are solved by run_simulation's road-map, not by "
                              "Kane's equations in generalized speeds: give the constraints to "
@@ -160,12 +163,17 @@ SimulationResult run_speed_simulation(System& sys, const KaneEquations& kane,
         ALEMBERT_CHECK_ARG(table.owns(measure) && table.kind(measure) == SymbolKind::unknown,
                            who + "an input is given for '" + to_string(measure) +
                                "', which is not a load measure of the model");
+    const std::vector<ex> aux_measures = auxiliary_measures(table, kane, request.inputs);
+    const auto is_aux_measure = [&](const ex& x) {
+        return std::any_of(aux_measures.begin(), aux_measures.end(), [&](const ex& y) { return y.is_equal(x); });
+    };
     for (const ex& measure : table.symbols(SymbolKind::unknown)) {
         auto it = request.inputs.find(measure);
         if (it != request.inputs.end()) {
             loads[measure] = it->second;
             continue;
         }
+        if (is_aux_measure(measure)) continue;  // solved from the auxiliary equations below
         // a constraint force or reaction an output reads: these equations do not hold it
         const auto reads = [&](const ex& e) { return table.depends_on(e, measure); };
         if (std::any_of(request.outputs.begin(), request.outputs.end(),
@@ -185,6 +193,12 @@ SimulationResult run_speed_simulation(System& sys, const KaneEquations& kane,
                                "', which is not a specified quantity of the model");
         loads[symbol] = formula;
     }
+    // the auxiliary speeds and their rates are zero in the motion
+    exmap aux_zero;
+    for (const ex& ua : kane.auxiliary_speeds) {
+        aux_zero[ua] = 0;
+        aux_zero[table.dt(ua)] = 0;
+    }
     const auto expanded = [&](const ex& e) {
         return request.specified.empty() ? e : table.expand_intermediates(e);
     };
@@ -192,7 +206,46 @@ SimulationResult run_speed_simulation(System& sys, const KaneEquations& kane,
     exmap to_state;
     for (std::size_t i = 0; i < n; ++i) to_state[kane.coordinate_rate_symbols[i]] = kane.coordinate_rates[i];
     for (std::size_t s = 0; s < m; ++s) to_state[us[s]] = kane.dependent_speed_values[s];
+    for (const auto& [ua, zero] : aux_zero) to_state[ua] = zero;
     const auto in_state = [&](const ex& e) { return expanded(e).subs(loads).subs(to_state); };
+
+    // ---- the constraint forces the auxiliary equations determine, for outputs and events
+    exmap aux_solution;
+    if (!aux_measures.empty()) {
+        const std::size_t a = kane.auxiliary_equations.size();
+        std::string listed;
+        for (const ex& x : aux_measures) listed += (listed.empty() ? "" : ", ") + to_string(x);
+        if (aux_measures.size() != a)
+            throw ArgumentError(who + "the " + std::to_string(a) + " auxiliary equation" + (a == 1 ? "" : "s") +
+                                " of Kane's equations " + (a == 1 ? "holds " : "hold ") +
+                                std::to_string(aux_measures.size()) +
+                                " load measure" + (aux_measures.size() == 1 ? "" : "s") + " without an input (" +
+                                listed + "); they determine the constraint forces when there is one "
+                                "measure per auxiliary speed: give the others inputs, or one auxiliary "
+                                "speed per constraint force");
+        // a constraint force does no work in the motion: it must not act in the dynamics
+        for (unsigned r = 0; r < k; ++r) {
+            const std::vector<bool> acts = calc_changes_with_at_random_states(
+                table, expanded(kane.dynamics.b(r, 0)).subs(to_state), aux_measures);
+            for (std::size_t j = 0; j < acts.size(); ++j)
+                if (acts[j])
+                    throw ArgumentError(who + "the load measure '" + to_string(aux_measures[j]) +
+                                        "', which the auxiliary equations determine, also acts in the "
+                                        "dynamical equation of " + to_string(ur[r]) +
+                                        ": it does work in the motion, so it is not a constraint force "
+                                        "the auxiliary speeds bring out; give it an input, or open the "
+                                        "constraint it enforces with its own auxiliary speed");
+        }
+        std::vector<ex> residuals;
+        for (const ex& e : kane.auxiliary_equations)
+            residuals.push_back(table.expand_intermediates(expanded(e).subs(loads)).subs(aux_zero));
+        try {
+            const std::vector<ex> solved = solve_symbolic(form_linear_system(residuals, aux_measures));
+            for (std::size_t j = 0; j < aux_measures.size(); ++j) aux_solution[aux_measures[j]] = solved[j];
+        } catch (const SolveError& e) {
+            throw SolveError(who + "the auxiliary equations cannot be solved for " + listed + ": " + e.what());
+        }
+    }
 
     // ---- the numbers at a state: [t, q, u_r] -> [q', u_s, M, f]
     std::vector<ex> in{table.time()};
@@ -240,7 +293,8 @@ SimulationResult run_speed_simulation(System& sys, const KaneEquations& kane,
     }
     for (const ex& u : us) replaced.push_back(table.dt(u));
     const auto for_outputs = [&](const ex& e) {
-        ex x = expanded(e).subs(loads);
+        ex x = expanded(e).subs(aux_solution).subs(loads);
+        if (!aux_zero.empty()) x = table.expand_intermediates(x).subs(aux_zero);
         if (!holds_any(table, x, replaced)) return x;
         if (second_order.empty()) {
             for (std::size_t i = 0; i < n; ++i) {
@@ -423,6 +477,17 @@ SimulationResult run_speed_simulation(System& sys, const KaneEquations& kane,
     result.qd_end.resize(n);
     numbers.calc(result.t_end, x_end.data(), x_end.data() + n, result.qd_end.data(), nullptr, nullptr);
     return result;
+}
+
+std::vector<ex> auxiliary_measures(const SymbolTable& table, const KaneEquations& kane, const exmap& inputs) {
+    std::vector<ex> measures;
+    if (kane.auxiliary_equations.empty()) return measures;
+    for (const ex& measure : table.symbols(SymbolKind::unknown))
+        if (!inputs.count(measure) &&
+            std::any_of(kane.auxiliary_equations.begin(), kane.auxiliary_equations.end(),
+                        [&](const ex& e) { return table.depends_on(e, measure); }))
+            measures.push_back(measure);
+    return measures;
 }
 
 }  // namespace alembert

@@ -120,6 +120,93 @@ TEST(SimulateSpeedsScript, RollingDiskInSpeedsMovesAsInCoordinatesWithItsContact
     EXPECT_TRUE(has(said, "energy: ")) << said;
 }
 
+TEST(SimulateSpeedsScript, AuxiliarySpeedsBringOutTheContactForcesTheRoadMapSolvesFor) {
+    // The disk in speeds again, with the no-slip constraints opened by auxiliary speeds ua1,
+    // ua2 written into them as their violation (Kane & Levinson 1985, sec. 5.7) and the
+    // grip's measures F_x, F_y unknown: the motion is the same, and the auxiliary equations'
+    // forces at every row are those the disk simulated in coordinates solves with its
+    // accelerations (its road-map's constrained dynamics), another method.
+    const double q2 = 0.1, u1 = 0.3, u2 = 8, u3 = -0.5, r = 0.3;
+    const double q1d = u3 / std::cos(q2), q3d = u2 - q1d * std::sin(q2);
+    const std::string aux = R"(variable ua1' m/s, ua2' m/s
+unknown F_x N, F_y N
+force grip on D_P = F_x*Nx> + F_y*Ny>
+w> = angvel(D, N)
+kane K for q1, q2, q3, x, y speeds u1, u2, u3, u4, u5 \
+  kinematics [u1 - dot(w>, Lx>), u2 - dot(w>, Ly>), u3 - dot(w>, Lz>), u4 - x', u5 - y'] \
+  constraints [dot(vel(D_P, N), Nx>) - ua1, dot(vel(D_P, N), Ny>) - ua2] dependent u4, u5 auxiliary ua1, ua2
+initial q2 = 0.1 rad, u1 = 0.3 rad/s, u2 = 8 rad/s, u3 = -0.5 rad/s
+)";
+    TempDir dir("alembert-speeds");
+    ScriptInDir a(dir.path / "a"), b(dir.path / "b");
+    a.run(std::string(kDiskHead) + kSpeedVariables + kDisk + aux + "simulate\n");
+    b.run(std::string(kDiskHead) + kCoordinateVariables + kDisk + kInCoordinates + "initial q2 = " + num(q2) +
+          " rad, q1' = " + num(q1d) + " rad/s, q2' = " + num(u1) + " rad/s, q3' = " + num(q3d) +
+          " rad/s, x' = " + num(r * q3d) + " m/s\n" + "output q1, x, y, F_x, F_y\nsimulate\n");
+    const Table ta = alembert::read_csv((dir.path / "a" / "simulation.csv").string());
+    const Table tb = alembert::read_csv((dir.path / "b" / "simulation.csv").string());
+    // the default columns hold the forces after the speeds
+    EXPECT_EQ(ta.names, (std::vector<std::string>{"t", "q1", "q2", "q3", "x", "y", "u1", "u2", "u3", "u4", "u5",
+                                                  "F_x", "F_y", "energy", "drift_motion_1", "drift_motion_2"}));
+    ASSERT_EQ(ta.row_count(), 21u);
+    ASSERT_EQ(tb.row_count(), 21u);
+    double largest = 0;
+    for (std::size_t k = 0; k < ta.row_count(); ++k) {
+        for (const char* q : {"q1", "x", "y"}) EXPECT_NEAR(col(ta, q)[k], col(tb, q)[k], 1e-7) << q << " at row " << k;
+        for (const char* f : {"F_x", "F_y"}) {
+            EXPECT_NEAR(col(ta, f)[k], col(tb, f)[k], 1e-6) << f << " at row " << k;
+            largest = std::max(largest, std::abs(col(tb, f)[k]));
+        }
+    }
+    // the grip turns the disk: the forces are not zero (m v^2 / radius of its turn)
+    EXPECT_GT(largest, 0.1);
+    // energy is kept: the auxiliary speeds are zero in the motion
+    const std::string said = a.out.str();
+    EXPECT_TRUE(has(said, "energy: ")) << said;
+}
+
+TEST(SimulateSpeedsScript, AnAuxiliarySpeedAlongARodGivesItsTensionAsDerivedByHand) {
+    // A particle P of mass m on a massless rod of length L turned by q about Nz from Nx, speed
+    // u = q', gravity -g Ny; the auxiliary speed ua opens the rod along Ax, where its tension
+    // T pulls P towards the pin. Along Ax: -T - m g sin(q) = m a.Ax = -m L u^2, so
+    // T = m L u^2 - m g sin(q) at every row.
+    TempDir dir("alembert-speeds");
+    ScriptInDir a(dir.path);
+    a.run(R"(newtonian N
+frame A
+particle P
+constant m = 2 kg, L = 1.5 m, g = 9.81 m/s^2
+variable q' rad, u' rad/s, ua' m/s
+unknown T N
+rotate A from N about z by q
+translate P from N_o by L*Ax>
+velocity P in N = L*u*Ay> + ua*Ax>
+mass P = m
+gravity -g*Ny>
+force rod on P = -T*Ax>
+kane K for q speeds u kinematics [u - q'] auxiliary ua
+initial q = -0.5 rad, u = 1 rad/s
+final time 3 s
+output step 0.1 s
+tolerance abs 1e-11 rel 1e-11
+simulate
+)");
+    const Table t = alembert::read_csv((dir.path / "simulation.csv").string());
+    EXPECT_EQ(t.names, (std::vector<std::string>{"t", "q", "u", "T", "energy"}));
+    ASSERT_EQ(t.row_count(), 31u);
+    const double m = 2, L = 1.5, g = 9.81;
+    double lowest = 1e9, highest = -1e9;
+    for (std::size_t k = 0; k < t.row_count(); ++k) {
+        const double q = col(t, "q")[k], u = col(t, "u")[k];
+        const double T = m * L * u * u - m * g * std::sin(q);
+        EXPECT_NEAR(col(t, "T")[k], T, 1e-10 * std::max(1.0, std::abs(T))) << "at row " << k;
+        lowest = std::min(lowest, col(t, "T")[k]);
+        highest = std::max(highest, col(t, "T")[k]);
+    }
+    // it swung: the tension changed by more than half its weight
+    EXPECT_GT(highest - lowest, m * g / 2);
+}
+
 TEST(SimulateSpeedsScript, TheImportedAutolevRollingDiskSimulatesAsTheScript) {
     // tests/lang/autolev/models/rolling_disk.al: the same disk, speeds U1..U3 D's angular
     // velocity in the lean frame B, U4 = X', U5 = Y' dependent

@@ -362,7 +362,7 @@ TEST(SpeedSimulation, RefusesWhatItCannotTakeByName) {
     KaneEquations aux = disk.kane;
     aux.auxiliary_speeds = {u[0].symbol()};
     EXPECT_THROW_MSG(run_speed_simulation(disk.model.system, aux, r), ArgumentError,
-                     "auxiliary speeds u1");
+                     "auxiliary speeds must each have their auxiliary equation and be none of the speeds");
 }
 
 TEST(SpeedSimulation, DeclaredConfigurationConstraintIsReportedCheckedAtTheStartAndWatched) {

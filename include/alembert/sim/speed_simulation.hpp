@@ -41,13 +41,24 @@ namespace alembert {
 /// `sys`'s table gains the time derivatives of the kinematic equations an output of q''
 /// needs. request.coordinates and request.constraint_forces are not used (must be empty or
 /// `kane`'s coordinates).
-/// @throws alembert::ArgumentError if `kane` has no chosen speeds or has auxiliary speeds
-///         (their equations give constraint forces, which this does not solve), an output or
-///         event reads a load measure without an input, an initial value names no coordinate
-///         or speed or disagrees with the constraints, or as compile_outputs;
+/// With auxiliary speeds (KaneOptions::auxiliary_speeds) the motion is that of the dynamical
+/// equations (the auxiliary speeds and their rates are zero in it), and the load measures
+/// without an input that the auxiliary equations hold (auxiliary_measures) are solved from
+/// them at each output row: outputs and events may read them, as constraint forces of the
+/// motion (Kane & Levinson 1985, sec. 5.7).
+/// @throws alembert::ArgumentError if `kane` has no chosen speeds, if its auxiliary equations
+///         do not determine their load measures (not as many measures as equations, or a
+///         measure that also acts in the dynamical equations: it does work in the motion), an
+///         output or event reads another load measure without an input, an initial value names
+///         no coordinate or speed or disagrees with the constraints, or as compile_outputs;
 ///         alembert::SolveError naming the state where q', u_s, M or f are not finite or M is
 ///         singular, where a drift column passes the tolerance, or as simulate.
 SimulationResult run_speed_simulation(System& sys, const KaneEquations& kane,
                                       const SimulationRequest& request);
+
+/// The load measures Kane's auxiliary equations determine in a simulation: the measures with
+/// no entry in `inputs` that the auxiliary equations hold (through intermediates), in the
+/// symbol table's order. Empty without auxiliary speeds.
+std::vector<ex> auxiliary_measures(const SymbolTable& table, const KaneEquations& kane, const exmap& inputs);
 
 }  // namespace alembert
