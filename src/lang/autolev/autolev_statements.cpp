@@ -289,6 +289,11 @@ void Translator::assignment(const Statement& st) {
         kinematics_.push_back({en->name, en->name + "' - " + (r.prec <= 1 ? "(" + r.s + ")" : r.s), st.where});
         return;
     }
+    if (key == "ZEE_NOT" && !en)
+        return not_translated(st.where, "ZEE_NOT",
+                              "it tells Autolev which names to keep out of its intermediates Z1, Z2, ... so that "
+                              "KANE(...) can solve for them; the script solves for load measures through its "
+                              "intermediates, so the list changes nothing");
     if (key == "ZERO" && en && en->indices && is_fr_plus_frstar(st.rhs)) {
         // Kane's equations replace the file's own array ZERO[i] from here on
         names_.erase(en->key);

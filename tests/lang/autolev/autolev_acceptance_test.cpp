@@ -1049,6 +1049,24 @@ TEST(AutolevAcceptanceFiles, AuxiliarySpeedsGiveTheRodsTensionAsDerivedByHand) {
         }
         EXPECT_GT(highest - lowest, 0.1 * f.m * kG) << "it swung";
     }
+    // files that bring out forces often name them in ZEE_NOT (keep them out of Autolev's Z
+    // intermediates): left out with a warning at its line, the script otherwise the same
+    std::string source = read_file(kDir + "auxiliary_rod_tension.al");
+    const std::size_t zero = source.find("ZERO = FR()");
+    ASSERT_NE(zero, std::string::npos);
+    source.insert(zero, "ZEE_NOT = [T]\n");
+    AutolevTranslation with = translate_autolev(source, "zee.al");
+    AutolevTranslation without = translate_autolev(read_file(kDir + "auxiliary_rod_tension.al"), "zee.al");
+    ASSERT_TRUE(with.ok());
+    int warnings = 0;
+    for (const auto& d : with.diagnostics)
+        if (d.severity == Severity::warning) {
+            ++warnings;
+            EXPECT_EQ(d.location.line, 18);
+            EXPECT_NE(d.message.find("ZEE_NOT is not translated"), std::string::npos) << d.message;
+        }
+    EXPECT_EQ(warnings, 1);
+    EXPECT_EQ(with.script, without.script);
 }
 
 // ---- the classic models of tests/lang/autolev/models/, simulated ------------------------
