@@ -36,9 +36,12 @@ void Translator::array_assignment(const Statement& st) {
         if (!constraints_where_) constraints_where_ = st.where;
         return;
     }
-    if (key == "AUXILIARY")
-        fail(lhs.where, "auxiliary speeds (AUXILIARY[...]) are not translated",
-             "Alembert's kane statement takes them as 'auxiliary u...'; add them by hand");
+    if (key == "AUXILIARY") {
+        if (lhs.args.size() != 1 || lhs.args[0].kind != Expr::Kind::number)
+            fail(lhs.where, "AUXILIARY takes one index: AUXILIARY[1] = ...");
+        aux_constraints_.push_back({scalar(st.rhs).s, st.where});
+        return;
+    }
     const Entry* en = find(lhs.text);
     if (key == "ZERO" && !en && kane_at_)
         fail(lhs.where, "ZERO holds Kane's equations here (ZERO = FR() + FRSTAR() or KANE() before), and an element of "

@@ -21,12 +21,17 @@ std::string Translator::kane_statement() {
         for (const std::string& v : variables_)
             if (!rate_of_.count(v) && !given_.count(v)) coordinates.push_back(v);
     } else {
-        // the speeds are the variables the kinematical (or constraint) equations name
+        // the speeds are the variables the kinematical (or constraint) equations name; an
+        // auxiliary speed that is its own constraint (AUXILIARY[1] = U4) is not among them
         for (const std::string& v : variables_) {
             if (std::find(coordinates.begin(), coordinates.end(), v) != coordinates.end() || given_.count(v)) continue;
-            bool named = false;
+            bool named = false, auxiliary = false;
+            for (std::size_t i = 0; i < aux_speeds_.size(); ++i)
+                auxiliary = auxiliary || (aux_speeds_[i] == v && aux_constraints_[i].first == v);
+            if (auxiliary) continue;
             for (const std::string& r : residuals) named = named || mentions(r, v);
             for (const std::string& c : constraints_) named = named || mentions(c, v);
+            for (const auto& [c, where] : aux_constraints_) named = named || mentions(c, v);
             if (named) {
                 speeds.push_back(v);
                 continue;
@@ -44,13 +49,39 @@ std::string Translator::kane_statement() {
     std::string name = "K";
     for (int k = 2; find(name) || labels_.count(name); ++k) name = "K" + std::to_string(k);
     kane_name_ = name;
+    // auxiliary speeds: AUXILIARY[i] = U4 with U4 listed makes U4 an auxiliary speed; another
+    // constraint E with U2 listed is opened by a new speed UA written into it as its violation
+    // (E - UA = 0), U2 dependent: the same motion (UA = 0) and, for UA, U2's partial velocities
+    // times d U2 / d UA, which is not zero: the same auxiliary equation times that factor
+    std::vector<std::string> constraints = constraints_, dependent = dependent_, auxiliary;
+    aux_opened_.clear();
+    for (std::size_t i = 0; i < aux_speeds_.size(); ++i) {
+        const std::string& u = aux_speeds_[i];
+        const std::string& c = aux_constraints_[i].first;
+        if (c == u) {
+            auxiliary.push_back(u);
+            continue;
+        }
+        std::string ua = "UA_" + u;
+        for (int k = 2; find(ua) || extra_names_.count(ua); ++k) ua = "UA_" + u + "_" + std::to_string(k);
+        extra_names_.insert({ua, 0});
+        aux_opened_.push_back(ua);
+        auxiliary.push_back(ua);
+        constraints.push_back("(" + c + ") - " + ua);
+        dependent.push_back(u);
+    }
     std::string s = "kane " + name + " for " + join(coordinates);
     if (!speeds.empty()) {
         s += " speeds " + join(speeds) + " \\\n  kinematics [" + join(residuals) + "]";
-        if (!constraints_.empty())
-            s += " \\\n  constraints [" + join(constraints_) + "] dependent " + join(dependent_);
+        if (!constraints.empty())
+            s += " \\\n  constraints [" + join(constraints) + "] dependent " + join(dependent);
+        if (!auxiliary.empty()) s += " \\\n  auxiliary " + join(auxiliary);
     } else if (!constraints_.empty()) {
         report(Severity::error, kane_where_, "constraints (DEPENDENT[...]) without speeds are not translated",
+               "declare speeds U with MOTIONVARIABLES and kinematical equations Q1' = U1");
+    } else if (!aux_speeds_.empty()) {
+        report(Severity::error, aux_constraints_.front().second,
+               "auxiliary speeds (AUXILIARY[...]) in a model without speeds are not translated",
                "declare speeds U with MOTIONVARIABLES and kinematical equations Q1' = U1");
     }
     return s;
@@ -76,6 +107,7 @@ void Translator::find_given_variables() {
             named = named || mentions(k.residual, v);
         }
         for (const std::string& c : constraints_) named = named || mentions(c, v);
+        for (const auto& [c, where] : aux_constraints_) named = named || mentions(c, v);
         // a variable declared and used with derivatives (X'' in V_P_N> = X'*N1>) is a coordinate
         if (coordinate || named || primes_[v] > 0 || used_primes_[v] > 0) continue;
         given_.insert(v);
@@ -89,6 +121,21 @@ void Translator::find_given_variables() {
 
 void Translator::assemble() {
     check_differential_model();
+    // KANE(F1, ...): the load measures the auxiliary equations determine are the script's
+    // unknowns, whatever the file declared them as
+    std::vector<std::string> unknowns;
+    for (const auto& [f, where] : kane_forces_) {
+        if (std::find(unknowns.begin(), unknowns.end(), f) != unknowns.end()) continue;
+        unknowns.push_back(f);
+        variables_.erase(std::remove(variables_.begin(), variables_.end(), f), variables_.end());
+        specified_.erase(std::remove_if(specified_.begin(), specified_.end(),
+                                        [&](const std::string& x) { return x.substr(0, x.find('\'')) == f; }),
+                         specified_.end());
+        report(Severity::note, where,
+               "'" + f + "' is declared as an unknown load measure: simulate solves the auxiliary equations for "
+               "it at every row (a column of its own), and solving Kane's equations for it gives it",
+               "");
+    }
     if (!odes_.empty() && !kane_at_) kane_at_ = model_.size(), emit("");
     find_given_variables();
     for (const auto& [p, where] : forced_points_) {
@@ -182,11 +229,13 @@ void Translator::assemble() {
             int p = std::max({primes_[v], used_primes_[v], 2});
             parts.push_back(v + std::string(static_cast<std::size_t>(p), '\''));
         }
+        for (const std::string& ua : aux_opened_) parts.push_back(ua + "''");
         if (!parts.empty()) s += "variable " + join(parts) + "\n";
     }
     for (const std::string& v : variables_)
         if (given_.count(v)) specified_.push_back(v + std::string(static_cast<std::size_t>(std::max(primes_[v], used_primes_[v])), '\''));
     if (!specified_.empty()) s += "specified " + join(specified_) + "\n";
+    if (!unknowns.empty()) s += "unknown " + join(unknowns) + "\n";
     for (const std::string& l : model_)
         if (!l.empty()) s += l + "\n";
     for (const std::string& n : initial_order_)

@@ -289,6 +289,11 @@ void Translator::assignment(const Statement& st) {
         kinematics_.push_back({en->name, en->name + "' - " + (r.prec <= 1 ? "(" + r.s + ")" : r.s), st.where});
         return;
     }
+    if (key == "ZEE_NOT" && !en)
+        return not_translated(st.where, "ZEE_NOT",
+                              "it tells Autolev which names to keep out of its intermediates Z1, Z2, ... so that "
+                              "KANE(...) can solve for them; the script solves for load measures through its "
+                              "intermediates, so the list changes nothing");
     if (key == "ZERO" && en && en->indices && is_fr_plus_frstar(st.rhs)) {
         // Kane's equations replace the file's own array ZERO[i] from here on
         names_.erase(en->key);
@@ -621,9 +626,19 @@ void Translator::expression_statement(const Statement& st) {
         return f == "FORCE" ? force(on, from, v) : torque(on, from, v);
     }
     if (f == "KANE") {
-        if (!e.args.empty())
-            fail(e.args[0].where, "KANE() with arguments is not translated",
-                 "declare the dependent speeds with CONSTRAIN(DEPENDENT[...]) and write KANE()");
+        // KANE(F1, ...): the auxiliary equations are solved for these load measures
+        for (const Expr& a : e.args) {
+            const Entry* en = a.kind == Expr::Kind::name && !a.vector && a.primes == 0 ? find(a.text) : nullptr;
+            if (!en || (en->kind != Kind::specified && en->kind != Kind::variable))
+                fail(a.where, "KANE(...) names the load measures the auxiliary equations determine, declared "
+                              "with SPECIFIED or VARIABLES",
+                     "declare '" + a.text + "' with SPECIFIED and use it in a FORCE or TORQUE");
+            kane_forces_.push_back({en->name, a.where});
+        }
+        if (!e.args.empty() && aux_speeds_.empty())
+            fail(e.args[0].where, "KANE(" + e.args[0].text + ", ...) solves for load measures, and the file has no "
+                                  "auxiliary speeds to bring them out",
+                 "open the constraint each force enforces: AUXILIARY[1] = U4, CONSTRAIN(AUXILIARY[U4]) before KANE()");
         if (const Entry* z = find("ZERO"); z && z->indices)
             fail(e.where, "KANE() forms Kane's equations from the bodies and loads, and ZERO holds the file's own "
                           "equations (assigned by element at line " + std::to_string(z->where.line) + ")",
@@ -634,17 +649,28 @@ void Translator::expression_statement(const Statement& st) {
         return;
     }
     if (f == "CONSTRAIN") {
+        bool dependent = false;
         for (const Expr& a : e.args) {
-            if (a.kind != Expr::Kind::index || upper(a.text) != "DEPENDENT")
-                fail(a.where, "CONSTRAIN() is translated only as CONSTRAIN(DEPENDENT[U3, ...])",
-                     "auxiliary speeds are not translated");
+            const std::string which = a.kind == Expr::Kind::index ? upper(a.text) : "";
+            if (which != "DEPENDENT" && which != "AUXILIARY")
+                fail(a.where, "CONSTRAIN() takes DEPENDENT[U3, ...] or AUXILIARY[U4, ...]",
+                     "name the dependent speeds with CONSTRAIN(DEPENDENT[U3]), the auxiliary ones with "
+                     "CONSTRAIN(AUXILIARY[U4])");
             for (const Expr& u : a.args) {
                 const Entry* en = u.kind == Expr::Kind::name && !u.vector && u.primes == 0 ? find(u.text) : nullptr;
                 if (!en || en->kind != Kind::variable)
-                    fail(u.where, "DEPENDENT[...] lists speeds, declared with VARIABLES or MOTIONVARIABLES");
-                dependent_.push_back(en->name);
+                    fail(u.where, which + "[...] lists speeds, declared with VARIABLES or MOTIONVARIABLES",
+                         "name a speed here, or declare '" + u.text + "' with MOTIONVARIABLES");
+                (which == "DEPENDENT" ? dependent_ : aux_speeds_).push_back(en->name);
             }
+            dependent = dependent || which == "DEPENDENT";
         }
+        if (aux_constraints_.size() != aux_speeds_.size())
+            fail(e.where,
+                 std::to_string(aux_speeds_.size()) + " auxiliary speeds for " + std::to_string(aux_constraints_.size()) +
+                     " auxiliary constraints (AUXILIARY[...] = ...)",
+                 "give one AUXILIARY[i] = ... for each auxiliary speed, before CONSTRAIN");
+        if (!dependent) return;
         if (constraints_.size() != dependent_.size())
             fail(e.where,
                  std::to_string(dependent_.size()) + " dependent speeds for " + std::to_string(constraints_.size()) +

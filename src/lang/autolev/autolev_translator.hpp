@@ -462,6 +462,13 @@ private:
     bool has_gravity_ = false;
     std::vector<std::string> constraints_{}, dependent_{};
     std::optional<Location> constraints_where_{};  // the first DEPENDENT[i] = ...
+    // AUXILIARY[i] = E, CONSTRAIN(AUXILIARY[U, ...]) and KANE(F1, ...): constraints that hold in
+    // the motion but not in the partial velocities of the speeds listed, and the load measures
+    // their equations determine (Kane & Levinson 1985, sec. 5.7)
+    std::vector<std::pair<std::string, Location>> aux_constraints_{};
+    std::vector<std::string> aux_speeds_{};
+    std::vector<std::pair<std::string, Location>> kane_forces_{};
+    std::vector<std::string> aux_opened_{};  // the speeds that open a constraint E (not a speed itself)
     std::map<std::string, std::string> initial_{};
     std::vector<std::string> initial_order_{};
     std::vector<std::string> tail_inputs_{}, tail_outputs_{};
