@@ -289,7 +289,8 @@ std::string table_tex(const ReportSweep& w, const SweepValues& s) {
     // the caption: which samples, in which unit, what is left out
     std::string caption = "Table: " + tex_text(w.title) + ": ";
     if (rows.size() == t.row_count()) {
-        caption += "the values at each of the " + std::to_string(rows.size()) + " samples";
+        caption += rows.size() == 1 ? std::string("the values at its one sample")
+                                    : "the values at each of the " + std::to_string(rows.size()) + " samples";
     } else {
         caption += "the values at " + std::to_string(rows.size()) + " of the " + std::to_string(t.row_count()) +
                    " samples, every " + ordinal(rows[1] - rows[0]) + " from the first" +
