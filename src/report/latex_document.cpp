@@ -644,9 +644,10 @@ std::string report_detail::render_latex(const ReportContent& c,
     t += "\\documentclass[a4paper]{article}\n\\usepackage{amsmath}\n\\usepackage[margin=2cm]{"
          "geometry}\n\\usepackage{tikz}\n";
     // pgfplots only where a result's sweep is plotted
-    const bool sweep_plots = c.plot_histories && std::any_of(c.results.begin(), c.results.end(), [](const ReportResult& r) {
-        return r.sweep && sweep_shown(*r.sweep);
-    });
+    const bool sweep_plots =
+        c.plot_histories &&
+        std::any_of(c.results.begin(), c.results.end(),
+                    [](const ReportResult& r) { return r.sweep && sweep_shown(*r.sweep); });
     if (sweep_plots) t += sweep_preamble();
     // an equation's lines: paragraphs of text-style math, ragged right, continued indented, so
     // that TeX breaks a long one after a + or - where the line is full

@@ -3,6 +3,7 @@
 // plot per axis (pgfplots) and a table of the samples, under the statement's printed result.
 #include <algorithm>
 #include <cctype>
+#include <cstddef>
 #include <cmath>
 #include <cstdio>
 #include <string>
@@ -28,8 +29,8 @@ constexpr double kTableCm = 16.0;
 constexpr double kCharCm = 0.15;
 constexpr double kColumnSepCm = 0.28;
 
-const char* const kMarks[kSeriesPerPlot] = {"*",         "square*", "triangle*", "diamond*", "pentagon*",
-                                            "o",         "square",  "triangle",  "diamond",  "pentagon"};
+const char* const kMarks[kSeriesPerPlot] = {"*", "square*", "triangle*", "diamond*", "pentagon*",
+                                            "o", "square",  "triangle",  "diamond",  "pentagon"};
 // the page's ten colours (plots.js's palette)
 const char* const kColours[kSeriesPerPlot] = {"1F77B4", "FF7F0E", "2CA02C", "D62728", "9467BD",
                                               "8C564B", "E377C2", "7F7F7F", "BCBD22", "17BECF"};
@@ -94,8 +95,8 @@ std::string name_list(const std::vector<std::string>& names) {
         std::string stem, next_stem;
         const long n = split(names[i], &stem);
         std::size_t j = i + 1;
-        while (n >= 0 && j < names.size() && split(names[j], &next_stem) == n + static_cast<long>(j - i) &&
-               next_stem == stem)
+        while (n >= 0 && j < names.size() &&
+               split(names[j], &next_stem) == n + static_cast<long>(j - i) && next_stem == stem)
             ++j;
         out += out.empty() ? "" : ", ";
         if (j - i >= 3) {
@@ -111,7 +112,11 @@ std::string name_list(const std::vector<std::string>& names) {
 // "1st", "2nd", "5th"
 std::string ordinal(std::size_t k) {
     const std::size_t tens = k % 100, ones = k % 10;
-    const char* suffix = tens >= 11 && tens <= 13 ? "th" : ones == 1 ? "st" : ones == 2 ? "nd" : ones == 3 ? "rd" : "th";
+    const char* suffix = tens >= 11 && tens <= 13 ? "th"
+                         : ones == 1              ? "st"
+                         : ones == 2              ? "nd"
+                         : ones == 3              ? "rd"
+                                                  : "th";
     return std::to_string(k) + suffix;
 }
 
@@ -129,8 +134,10 @@ public:
         zero_.assign(t_.columns.size(), true);
         for (std::size_t k = 1; k < t_.columns.size(); ++k)
             for (double v : t_.columns[k]) {
-                if (!std::isfinite(v) || std::abs(v) > cutoff_) zero_[k] = false;
-                else if (v != 0) rounded_ = true;
+                if (!std::isfinite(v) || std::abs(v) > cutoff_)
+                    zero_[k] = false;
+                else if (v != 0)
+                    rounded_ = true;
             }
         // the plots: one per axis and unit (the page's plotGroups), in the order they first appear
         for (std::size_t k = 1; k < t_.columns.size(); ++k) {
@@ -138,7 +145,8 @@ public:
             auto it = std::find_if(groups_.begin(), groups_.end(), [&](const Group& g) {
                 return g.axis == axis && g.unit == t_.units[k];
             });
-            if (it == groups_.end()) it = groups_.insert(groups_.end(), Group{axis, t_.units[k], {}, {}});
+            if (it == groups_.end())
+                it = groups_.insert(groups_.end(), Group{axis, t_.units[k], {}, {}});
             (zero_[k] ? it->zeros : it->series).push_back(k);
         }
     }
@@ -156,7 +164,8 @@ public:
     bool rounded() const { return rounded_; }
     double largest() const { return largest_; }
     std::string parameter_tex() const {
-        return tex_text(t_.names[0]) + (t_.units[0].empty() ? "" : " [" + unit_tex(t_.units[0]) + "]");
+        return tex_text(t_.names[0]) +
+               (t_.units[0].empty() ? "" : " [" + unit_tex(t_.units[0]) + "]");
     }
 
 private:
@@ -170,8 +179,8 @@ private:
 
 // the words saying which values are round-off written 0
 std::string round_off_words(const SweepValues& s) {
-    return s.rounded() ? " Values smaller than $10^{-12}$ times the largest magnitude (" + cell(s.largest()) +
-                             ") are round-off, written 0."
+    return s.rounded() ? " Values smaller than $10^{-12}$ times the largest magnitude (" +
+                             cell(s.largest()) + ") are round-off, written 0."
                        : "";
 }
 
@@ -186,27 +195,31 @@ std::string plot_tex(const ReportSweep& w, const SweepValues& s, const SweepValu
     double lo = zeros ? 0.0 : INFINITY, hi = zeros ? 0.0 : -INFINITY;
     for (std::size_t k : series)
         for (std::size_t r : rows)
-            if (std::isfinite(s.at(k, r))) lo = std::min(lo, s.at(k, r)), hi = std::max(hi, s.at(k, r));
+            if (std::isfinite(s.at(k, r)))
+                lo = std::min(lo, s.at(k, r)), hi = std::max(hi, s.at(k, r));
     if (!(lo <= hi)) lo = hi = 0;  // no finite value
     const double pad = hi > lo ? 0.06 * (hi - lo) : std::max(0.1 * std::abs(hi), 1.0);
     // marks on about 25 samples of each line
     const std::size_t repeat = rows.size() <= 40 ? 1 : (rows.size() + 24) / 25;
     const std::string y_unit = g.unit.empty() ? "" : " [" + unit_tex(g.unit) + "]";
     std::string o = "\\par\\medskip\\noindent\\begin{minipage}{\\linewidth}\\centering\n";
-    o += "\\begin{tikzpicture}\n\\begin{axis}[width=0.66\\linewidth, height=5.4cm, xmin=" + coordinate(x0) +
-         ", xmax=" + coordinate(x1) + ", ymin=" + coordinate(lo - pad) + ", ymax=" + coordinate(hi + pad) +
-         ",\n  xlabel={" + s.parameter_tex() + "}, ylabel={" + tex_text(g.axis) + y_unit +
+    o += "\\begin{tikzpicture}\n\\begin{axis}[width=0.66\\linewidth, height=5.4cm, xmin=" +
+         coordinate(x0) + ", xmax=" + coordinate(x1) + ", ymin=" + coordinate(lo - pad) +
+         ", ymax=" + coordinate(hi + pad) + ",\n  xlabel={" + s.parameter_tex() + "}, ylabel={" +
+         tex_text(g.axis) + y_unit +
          "}, grid=major, grid style={black!12}, unbounded coords=jump,\n"
-         "  legend pos=outer north east, legend cell align=left, legend style={font=\\footnotesize},\n"
+         "  legend pos=outer north east, legend cell align=left, legend "
+         "style={font=\\footnotesize},\n"
          "  tick label style={font=\\footnotesize}, label style={font=\\small}]\n";
     for (std::size_t i = 0; i < series.size(); ++i) {
         const std::size_t k = series[i];
-        o += "% series: " + tex_text(t.names[k]) + "\n\\addplot[color=alembertC" + std::to_string(i) +
-             ", line width=0.9pt, mark=" + kMarks[i] + ", mark size=1.4pt, mark repeat=" + std::to_string(repeat) +
+        o += "% series: " + tex_text(t.names[k]) + "\n\\addplot[color=alembertC" +
+             std::to_string(i) + ", line width=0.9pt, mark=" + kMarks[i] +
+             ", mark size=1.4pt, mark repeat=" + std::to_string(repeat) +
              ", mark options={solid}] coordinates {";
         for (std::size_t j = 0; j < rows.size(); ++j)
-            o += std::string(j % 6 == 0 ? "\n" : " ") + "(" + coordinate(t.columns[0][rows[j]]) + "," +
-                 coordinate(s.at(k, rows[j])) + ")";
+            o += std::string(j % 6 == 0 ? "\n" : " ") + "(" + coordinate(t.columns[0][rows[j]]) +
+                 "," + coordinate(s.at(k, rows[j])) + ")";
         o += "\n};\n\\addlegendentry{" + tex_text(t.names[k]) + "}\n";
     }
     std::vector<std::string> zero_names;
@@ -214,22 +227,27 @@ std::string plot_tex(const ReportSweep& w, const SweepValues& s, const SweepValu
     if (zeros) {
         // the series 0 at every sample: one line along the axis
         const std::string listed = name_list(zero_names);
-        o += "% series at 0: " + listed + "\n\\addplot[black!55, line width=0.9pt, densely dashed] coordinates {(" +
+        o += "% series at 0: " + listed +
+             "\n\\addplot[black!55, line width=0.9pt, densely dashed] coordinates {(" +
              coordinate(x0) + ",0) (" + coordinate(x1) + ",0)};\n\\addlegendentry{" +
-             (std::count(listed.begin(), listed.end(), ',') < 2 ? listed : std::to_string(g.zeros.size()) + " series") +
+             (std::count(listed.begin(), listed.end(), ',') < 2
+                  ? listed
+                  : std::to_string(g.zeros.size()) + " series") +
              ": 0}\n";
     }
     o += "\\end{axis}\n\\end{tikzpicture}\n";
     // the caption: the page's title of the plot, what is thinned, what is 0
     std::string axis_words = g.axis + "s" + (g.unit.empty() ? "" : ", " + g.unit);
-    o += "\\par\\smallskip{\\small Figure " + std::to_string(++*figure) + ": " + tex_text(w.title) + ": " +
-         unit_tex(axis_words) +
-         (parts > 1 ? ", " + std::to_string(part) + " of " + std::to_string(parts) : "") + ", against " +
-         tex_text(t.names[0]) + ".";
+    o += "\\par\\smallskip{\\small Figure " + std::to_string(++*figure) + ": " + tex_text(w.title) +
+         ": " + unit_tex(axis_words) +
+         (parts > 1 ? ", " + std::to_string(part) + " of " + std::to_string(parts) : "") +
+         ", against " + tex_text(t.names[0]) + ".";
     if (rows.size() < t.row_count())
-        o += " Drawn through " + std::to_string(rows.size()) + " of the " + std::to_string(t.row_count()) +
-             " samples, each series' least and greatest kept.";
-    if (zeros) o += " " + name_list(zero_names) + (g.zeros.size() > 1 ? " are" : " is") + " 0 at every sample.";
+        o += " Drawn through " + std::to_string(rows.size()) + " of the " +
+             std::to_string(t.row_count()) + " samples, each series' least and greatest kept.";
+    if (zeros)
+        o += " " + name_list(zero_names) + (g.zeros.size() > 1 ? " are" : " is") +
+             " 0 at every sample.";
     o += "}\n\\end{minipage}\n";
     return o;
 }
@@ -261,12 +279,14 @@ std::string table_tex(const ReportSweep& w, const SweepValues& s) {
     bool one_unit = true;
     for (std::size_t k : listed) one_unit = one_unit && t.units[k] == t.units[listed.front()];
     const auto header = [&](std::size_t k) {
-        return tex_text(t.names[k]) + (one_unit || t.units[k].empty() ? "" : " [" + unit_tex(t.units[k]) + "]");
+        return tex_text(t.names[k]) +
+               (one_unit || t.units[k].empty() ? "" : " [" + unit_tex(t.units[k]) + "]");
     };
     // each column's width: its widest cell or its header
     const auto width = [&](std::size_t k, const std::string& head) {
         double cm = kCharCm * static_cast<double>(head.size());
-        for (std::size_t r : rows) cm = std::max(cm, cell_cm(k == 0 ? t.columns[0][r] : s.at(k, r)));
+        for (std::size_t r : rows)
+            cm = std::max(cm, cell_cm(k == 0 ? t.columns[0][r] : s.at(k, r)));
         return cm + kColumnSepCm;
     };
     const double first = width(0, t.names[0] + " [" + t.units[0] + "]");
@@ -289,14 +309,16 @@ std::string table_tex(const ReportSweep& w, const SweepValues& s) {
     // the caption: which samples, in which unit, what is left out
     std::string caption = "Table: " + tex_text(w.title) + ": ";
     if (rows.size() == t.row_count()) {
-        caption += rows.size() == 1 ? std::string("the values at its one sample")
-                                    : "the values at each of the " + std::to_string(rows.size()) + " samples";
+        caption += rows.size() == 1
+                       ? std::string("the values at its one sample")
+                       : "the values at each of the " + std::to_string(rows.size()) + " samples";
     } else {
-        caption += "the values at " + std::to_string(rows.size()) + " of the " + std::to_string(t.row_count()) +
-                   " samples, every " + ordinal(rows[1] - rows[0]) + " from the first" +
-                   ((t.row_count() - 1) % (rows[1] - rows[0]) ? " and the last" : "") + " (" + tex_text(t.names[0]) +
-                   " = " + cell(t.columns[0][rows[0]]) + ", " + cell(t.columns[0][rows[1]]) + ", \\ldots, " +
-                   cell(t.columns[0][rows.back()]) + ")";
+        caption +=
+            "the values at " + std::to_string(rows.size()) + " of the " +
+            std::to_string(t.row_count()) + " samples, every " + ordinal(rows[1] - rows[0]) +
+            " from the first" + ((t.row_count() - 1) % (rows[1] - rows[0]) ? " and the last" : "") +
+            " (" + tex_text(t.names[0]) + " = " + cell(t.columns[0][rows[0]]) + ", " +
+            cell(t.columns[0][rows[1]]) + ", \\ldots, " + cell(t.columns[0][rows.back()]) + ")";
     }
     if (!listed.empty() && one_unit && !t.units[listed.front()].empty())
         caption += ", in " + unit_tex(t.units[listed.front()]);
@@ -347,7 +369,8 @@ std::string report_detail::sweep_latex(const ReportSweep& w, bool plots, int* fi
     const SweepValues s(w);
     std::string o;
     // the plots, where there is a line to draw: two samples at least, a series not 0 throughout
-    if (plots && w.table.row_count() >= 2 && w.table.columns[0].back() > w.table.columns[0].front()) {
+    if (plots && w.table.row_count() >= 2 &&
+        w.table.columns[0].back() > w.table.columns[0].front()) {
         const std::vector<std::size_t> rows = calc_plot_rows(w.table, kPlotRows);
         for (const SweepValues::Group& g : s.groups()) {
             if (g.series.empty()) continue;  // 0 throughout: the table says so
@@ -355,9 +378,10 @@ std::string report_detail::sweep_latex(const ReportSweep& w, bool plots, int* fi
             const std::size_t parts = (g.series.size() + kSeriesPerPlot - 1) / kSeriesPerPlot;
             const std::size_t size = (g.series.size() + parts - 1) / parts;
             for (std::size_t p = 0; p < parts; ++p) {
-                const std::vector<std::size_t> part(g.series.begin() + static_cast<std::ptrdiff_t>(p * size),
-                                                    g.series.begin() + static_cast<std::ptrdiff_t>(
-                                                                           std::min(g.series.size(), (p + 1) * size)));
+                const std::vector<std::size_t> part(
+                    g.series.begin() + static_cast<std::ptrdiff_t>(p * size),
+                    g.series.begin() +
+                        static_cast<std::ptrdiff_t>(std::min(g.series.size(), (p + 1) * size)));
                 o += plot_tex(w, s, g, part, p + 1, parts, rows, figure);
             }
         }

@@ -405,7 +405,8 @@ namespace {
 // $-5.11468$, $1.5\cdot 10^{-5}$, 1.5e-5
 double tex_number(const std::string& text) {
     std::smatch m;
-    static const std::regex re("\\s*\\$?(-?[0-9.]+(?:e-?[0-9]+)?)(?:\\\\cdot 10\\^\\{(-?[0-9]+)\\})?\\$?\\s*");
+    static const std::regex re(
+        "\\s*\\$?(-?[0-9.]+(?:e-?[0-9]+)?)(?:\\\\cdot 10\\^\\{(-?[0-9]+)\\})?\\$?\\s*");
     if (!std::regex_match(text, m, re)) {
         ADD_FAILURE() << "not a number: '" << text << "'";
         return NAN;
@@ -417,7 +418,8 @@ double tex_number(const std::string& text) {
 // read as re_1), each a map from the swept value (a row's first number) to the row's number
 std::map<std::string, std::map<double, double>> tex_table_columns(const std::string& tex) {
     std::map<std::string, std::map<double, double>> out;
-    for (std::size_t at = tex.find("\\begin{tabular}"); at != std::string::npos; at = tex.find("\\begin{tabular}", at + 1)) {
+    for (std::size_t at = tex.find("\\begin{tabular}"); at != std::string::npos;
+         at = tex.find("\\begin{tabular}", at + 1)) {
         const std::size_t begin = tex.find('\n', at) + 1, end = tex.find("\\end{tabular}", at);
         std::vector<std::vector<std::string>> rows;
         for (std::size_t i = begin; i < end;) {
@@ -446,16 +448,19 @@ std::map<std::string, std::map<double, double>> tex_table_columns(const std::str
 }
 
 // The series of the plots in `tex`, by their legend entries: each (x, y) of its coordinates
-std::map<std::string, std::vector<std::pair<double, double>>> tex_plot_series(const std::string& tex) {
+std::map<std::string, std::vector<std::pair<double, double>>> tex_plot_series(
+    const std::string& tex) {
     std::map<std::string, std::vector<std::pair<double, double>>> out;
-    for (std::size_t at = tex.find("\\addplot["); at != std::string::npos; at = tex.find("\\addplot[", at + 1)) {
+    for (std::size_t at = tex.find("\\addplot["); at != std::string::npos;
+         at = tex.find("\\addplot[", at + 1)) {
         const std::size_t begin = tex.find("coordinates {", at) + 13, end = tex.find("};", begin);
         const std::size_t legend = tex.find("\\addlegendentry{", end) + 16;
-        const std::string name =
-            std::regex_replace(tex.substr(legend, tex.find("}\n", legend) - legend), std::regex("\\\\_"), "_");
+        const std::string name = std::regex_replace(
+            tex.substr(legend, tex.find("}\n", legend) - legend), std::regex("\\\\_"), "_");
         const std::string coordinates = tex.substr(begin, end - begin);
         static const std::regex pair("\\(([^,()]+),([^,()]+)\\)");
-        for (auto it = std::sregex_iterator(coordinates.begin(), coordinates.end(), pair); it != std::sregex_iterator(); ++it)
+        for (auto it = std::sregex_iterator(coordinates.begin(), coordinates.end(), pair);
+             it != std::sregex_iterator(); ++it)
             out[name].emplace_back(tex_number((*it)[1]), tex_number((*it)[2]));
     }
     return out;
@@ -470,11 +475,13 @@ TEST(ReportPage, ASweepsEigenvaluesInRoadmapTexAreTheHandResultAndCrossZeroAtThe
     // eigenvalue 0; the real parts cross zero at Omega^2 = g/(3 r)
     TempDir dir;
     ScriptInDir r(dir.path);
-    const std::string script =
-        read_text(std::filesystem::path(ALEMBERT_SOURCE_DIR) / "examples" / "rolling_disk" / "model.alb");
+    const std::string script = read_text(std::filesystem::path(ALEMBERT_SOURCE_DIR) / "examples" /
+                                         "rolling_disk" / "model.alb");
     r.run(script + "report to \"rep\"\nreport plot none to \"bare\"\n");
     const double g = 9.81, radius = 0.3;
-    const auto lambda2 = [&](double omega) { return 4 * (g - 3 * radius * omega * omega) / (5 * radius); };
+    const auto lambda2 = [&](double omega) {
+        return 4 * (g - 3 * radius * omega * omega) / (5 * radius);
+    };
     const std::string tex = read_text(dir.path / "rep" / "roadmap.tex");
     // the linearize's result at line 29, its sweep under its text
     const std::size_t result = tex.find("Line 29:\n\\begin{verbatim}\n> linearize K at q2 = 0");
@@ -488,7 +495,8 @@ TEST(ReportPage, ASweepsEigenvaluesInRoadmapTexAreTheHandResultAndCrossZeroAtThe
     std::vector<double> omega;
     for (const auto& [x, v] : columns.at("Omega")) omega.push_back(v);
     ASSERT_EQ(omega.size(), 21u);  // 0 to 10 rad/s in steps of 0.5: all 21, no more than 25
-    for (std::size_t i = 0; i < omega.size(); ++i) EXPECT_DOUBLE_EQ(omega[i], 0.5 * static_cast<double>(i));
+    for (std::size_t i = 0; i < omega.size(); ++i)
+        EXPECT_DOUBLE_EQ(omega[i], 0.5 * static_cast<double>(i));
     std::size_t re_columns = 0, im_columns = 0;
     double last_unstable = -1, first_stable = -1;
     for (double w : omega) {
@@ -505,7 +513,8 @@ TEST(ReportPage, ASweepsEigenvaluesInRoadmapTexAreTheHandResultAndCrossZeroAtThe
             ASSERT_TRUE(real || name.rfind("im_", 0) == 0) << name;
             (real ? re_columns : im_columns) += 1;
             // each listed value is the lean's pair or 0
-            EXPECT_TRUE(std::abs(v) < tol || std::abs(std::abs(v) - (real ? re : im)) < tol) << name << " = " << v;
+            EXPECT_TRUE(std::abs(v) < tol || std::abs(std::abs(v) - (real ? re : im)) < tol)
+                << name << " = " << v;
             (real ? top_re : top_im) = std::max(real ? top_re : top_im, v);
             (real ? low_re : low_im) = std::min(real ? low_re : low_im, v);
         }
@@ -541,15 +550,18 @@ TEST(ReportPage, ASweepsEigenvaluesInRoadmapTexAreTheHandResultAndCrossZeroAtThe
         for (const auto& [x, y] : points) {
             const double l2 = lambda2(x), tol = 1e-5 * std::max(1.0, std::sqrt(std::abs(l2)));
             const double pair = std::sqrt(std::max(0.0, real ? l2 : -l2));
-            EXPECT_TRUE(std::abs(y) < tol || std::abs(std::abs(y) - pair) < tol) << name << " at " << x << ": " << y;
+            EXPECT_TRUE(std::abs(y) < tol || std::abs(std::abs(y) - pair) < tol)
+                << name << " at " << x << ": " << y;
             auto& top = real ? top_re : top_im;
             top[x] = top.count(x) ? std::max(top[x], y) : y;
         }
     }
     ASSERT_EQ(top_re.size(), 21u);
     for (const auto& [x, y] : top_re) {
-        EXPECT_NEAR(y, std::sqrt(std::max(0.0, lambda2(x))), 1e-5 * std::max(1.0, std::sqrt(std::abs(lambda2(x)))));
-        EXPECT_NEAR(top_im.at(x), std::sqrt(std::max(0.0, -lambda2(x))), 1e-5 * std::max(1.0, std::sqrt(std::abs(lambda2(x)))));
+        EXPECT_NEAR(y, std::sqrt(std::max(0.0, lambda2(x))),
+                    1e-5 * std::max(1.0, std::sqrt(std::abs(lambda2(x)))));
+        EXPECT_NEAR(top_im.at(x), std::sqrt(std::max(0.0, -lambda2(x))),
+                    1e-5 * std::max(1.0, std::sqrt(std::abs(lambda2(x)))));
     }
     EXPECT_GT(top_re.at(3.0), 1e-3);
     EXPECT_LT(top_re.at(3.5), 1e-3);

@@ -902,7 +902,8 @@ std::vector<std::vector<double>> table_numbers(const std::string& tex) {
 
 TEST(ReportLatex, ALongSweepIsTabulatedAtAtMost25SamplesSayingWhichAndPlottedPerAxis) {
     SitToStand s;
-    s.content.results.push_back({7, "linearize K at x = 0 for k = 0 to 102 step 1", "swept k", sample_sweep(103)});
+    s.content.results.push_back(
+        {7, "linearize K at x = 0 for k = 0 to 102 step 1", "swept k", sample_sweep(103)});
     const std::string tex = render_report_latex(s.content);
     EXPECT_EQ(tex, render_report_latex(s.content));  // same content, same bytes
     EXPECT_NE(tex.find("\\usepackage{pgfplots}"), std::string::npos);
@@ -914,8 +915,9 @@ TEST(ReportLatex, ALongSweepIsTabulatedAtAtMost25SamplesSayingWhichAndPlottedPer
     EXPECT_NE(part.find("\\addlegendentry{im\\_3: 0}"), std::string::npos);
     // the table: every 5th of the 103 samples and the last (22 rows), the series 0 throughout
     // left out and named, and the round-off said
-    EXPECT_NE(part.find("the values at 22 of the 103 samples, every 5th from the first and the last"),
-              std::string::npos)
+    EXPECT_NE(
+        part.find("the values at 22 of the 103 samples, every 5th from the first and the last"),
+        std::string::npos)
         << part.substr(part.find("Table:"), 400);
     EXPECT_NE(part.find("k [N/m] & re\\_1 & im\\_1 & im\\_2 \\\\"), std::string::npos);
     EXPECT_NE(part.find("re\\_2, im\\_3 are 0 at every sample, not listed."), std::string::npos);
