@@ -18,6 +18,7 @@
 
 namespace alembert {
 struct ReportContent;
+struct ReportSweep;
 }
 
 namespace alembert::report_detail {
@@ -41,6 +42,25 @@ std::size_t longest_unbreakable(const std::string& tex);
 
 /// The lines of a typeset equation (split at kTexLineBreak).
 std::vector<std::string> tex_lines(const std::string& tex);
+
+/// `s` for LaTeX's text mode: _ & % # $ { } < > ^ ~ and the backslash written as commands.
+std::string tex_text(const std::string& s);
+
+/// Whether roadmap.tex has a sweep of `w` to show (as the page: a swept column, at least one
+/// series, one axis name per series, at least one sample).
+bool sweep_shown(const ReportSweep& w);
+
+/// The preamble's lines a document with sweep plots needs: pgfplots and the page's ten colours.
+std::string sweep_preamble();
+
+/// A result's sweep in roadmap.tex, under the text the statement printed: with `plots`, the
+/// series of each axis (the real parts, the imaginary parts) against the swept value, one plot
+/// per axis (pgfplots), each series a line of its own colour and marks with a legend entry,
+/// the series 0 at every sample one line; then a table of the samples (at most 25 rows: every
+/// k-th sample and the last where there are more), the series 0 at every sample left out and
+/// named. Numbers to 6 significant digits, as the page's data; values within 1e-12 of the
+/// sweep's largest magnitude written 0, and the caption says so. `figure` numbers the plots.
+std::string sweep_latex(const ReportSweep& w, bool plots, int* figure);
 
 /// Each row's equation typeset (LaTeX, readable form: calc_solved_equation, "T_A = ..." when
 /// solved, "0 = ..." otherwise; rows over 1,500 operations abbreviated with named parts w1 = ...

@@ -7,7 +7,9 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <map>
 #include <regex>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -395,6 +397,179 @@ TEST(ReportPage, ASweepsEigenvaluesArePlottedUnderItsResultAndCrossZeroAtTheDisk
     const std::string bare = read_text(dir.path / "bare" / "index.html");
     EXPECT_NE(bare.find("{\"line\":29,\"statement\":\"linearize K at q2 = 0"), std::string::npos);
     EXPECT_EQ(bare.find("\"sweep\":"), std::string::npos);
+}
+
+namespace {
+
+// A number as roadmap.tex writes it in a table's cell or a plot's coordinate: 5.11468,
+// $-5.11468$, $1.5\cdot 10^{-5}$, 1.5e-5
+double tex_number(const std::string& text) {
+    std::smatch m;
+    static const std::regex re(
+        "\\s*\\$?(-?[0-9.]+(?:e-?[0-9]+)?)(?:\\\\cdot 10\\^\\{(-?[0-9]+)\\})?\\$?\\s*");
+    if (!std::regex_match(text, m, re)) {
+        ADD_FAILURE() << "not a number: '" << text << "'";
+        return NAN;
+    }
+    return std::stod(m[1]) * (m[2].matched ? std::pow(10.0, std::stoi(m[2])) : 1.0);
+}
+
+// The columns of the tables in `tex`, by their names (the first row of each; "re\_1 [1/s]"
+// read as re_1), each a map from the swept value (a row's first number) to the row's number
+std::map<std::string, std::map<double, double>> tex_table_columns(const std::string& tex) {
+    std::map<std::string, std::map<double, double>> out;
+    for (std::size_t at = tex.find("\\begin{tabular}"); at != std::string::npos;
+         at = tex.find("\\begin{tabular}", at + 1)) {
+        const std::size_t begin = tex.find('\n', at) + 1, end = tex.find("\\end{tabular}", at);
+        std::vector<std::vector<std::string>> rows;
+        for (std::size_t i = begin; i < end;) {
+            std::size_t stop = std::min(tex.find("\\\\\n", i), end);
+            std::string line = tex.substr(i, stop - i);
+            for (std::size_t h; (h = line.find("\\hline")) != std::string::npos;) line.erase(h, 6);
+            std::vector<std::string> cells;
+            std::stringstream ss(line);
+            for (std::string c; std::getline(ss, c, '&');) cells.push_back(c);
+            if (line.find_first_not_of(" \n") != std::string::npos) rows.push_back(cells);
+            i = stop + 3;
+        }
+        if (rows.empty()) continue;
+        std::vector<std::string> names;
+        for (std::string n : rows[0]) {
+            n = std::regex_replace(n, std::regex("\\s*\\[.*\\]\\s*$|^\\s+|\\s+$"), "");
+            names.push_back(std::regex_replace(n, std::regex("\\\\_"), "_"));
+        }
+        for (std::size_t r = 1; r < rows.size(); ++r) {
+            const double x = tex_number(rows[r][0]);
+            for (std::size_t k = 0; k < rows[r].size() && k < names.size(); ++k)
+                out[names[k]][x] = tex_number(rows[r][k]);
+        }
+    }
+    return out;
+}
+
+// The series of the plots in `tex`, by their legend entries: each (x, y) of its coordinates
+std::map<std::string, std::vector<std::pair<double, double>>> tex_plot_series(
+    const std::string& tex) {
+    std::map<std::string, std::vector<std::pair<double, double>>> out;
+    for (std::size_t at = tex.find("\\addplot["); at != std::string::npos;
+         at = tex.find("\\addplot[", at + 1)) {
+        const std::size_t begin = tex.find("coordinates {", at) + 13, end = tex.find("};", begin);
+        const std::size_t legend = tex.find("\\addlegendentry{", end) + 16;
+        const std::string name = std::regex_replace(
+            tex.substr(legend, tex.find("}\n", legend) - legend), std::regex("\\\\_"), "_");
+        const std::string coordinates = tex.substr(begin, end - begin);
+        static const std::regex pair("\\(([^,()]+),([^,()]+)\\)");
+        for (auto it = std::sregex_iterator(coordinates.begin(), coordinates.end(), pair);
+             it != std::sregex_iterator(); ++it)
+            out[name].emplace_back(tex_number((*it)[1]), tex_number((*it)[2]));
+    }
+    return out;
+}
+
+}  // namespace
+
+// roadmap.tex holds the sweep too, under the linearize's printed text: the numbers of its
+// table and of its plots are the disk's hand result at every sample they show
+TEST(ReportPage, ASweepsEigenvaluesInRoadmapTexAreTheHandResultAndCrossZeroAtTheDisksCriticalSpin) {
+    // by hand (see the test above): lambda^2 = 4 (g - 3 r Omega^2) / (5 r), every other
+    // eigenvalue 0; the real parts cross zero at Omega^2 = g/(3 r)
+    TempDir dir;
+    ScriptInDir r(dir.path);
+    const std::string script = read_text(std::filesystem::path(ALEMBERT_SOURCE_DIR) / "examples" /
+                                         "rolling_disk" / "model.alb");
+    r.run(script + "report to \"rep\"\nreport plot none to \"bare\"\n");
+    const double g = 9.81, radius = 0.3;
+    const auto lambda2 = [&](double omega) {
+        return 4 * (g - 3 * radius * omega * omega) / (5 * radius);
+    };
+    const std::string tex = read_text(dir.path / "rep" / "roadmap.tex");
+    // the linearize's result at line 29, its sweep under its text
+    const std::size_t result = tex.find("Line 29:\n\\begin{verbatim}\n> linearize K at q2 = 0");
+    ASSERT_NE(result, std::string::npos);
+    const std::size_t after = tex.find("\\end{verbatim}", result);
+    ASSERT_NE(after, std::string::npos);
+    const std::string sweep = tex.substr(after, tex.find("\\end{document}", after) - after);
+    // the table: the spins and each eigenvalue it lists (the rest are 0 at every spin)
+    const auto columns = tex_table_columns(sweep);
+    ASSERT_TRUE(columns.count("Omega")) << sweep.substr(0, 3000);
+    std::vector<double> omega;
+    for (const auto& [x, v] : columns.at("Omega")) omega.push_back(v);
+    ASSERT_EQ(omega.size(), 21u);  // 0 to 10 rad/s in steps of 0.5: all 21, no more than 25
+    for (std::size_t i = 0; i < omega.size(); ++i)
+        EXPECT_DOUBLE_EQ(omega[i], 0.5 * static_cast<double>(i));
+    std::size_t re_columns = 0, im_columns = 0;
+    double last_unstable = -1, first_stable = -1;
+    for (double w : omega) {
+        SCOPED_TRACE("Omega = " + std::to_string(w));
+        const double l2 = lambda2(w), tol = 1e-5 * std::max(1.0, std::sqrt(std::abs(l2)));
+        const double re = std::sqrt(std::max(0.0, l2)), im = std::sqrt(std::max(0.0, -l2));
+        double top_re = 0, low_re = 0, top_im = 0, low_im = 0;  // the series left out are 0
+        re_columns = im_columns = 0;
+        for (const auto& [name, values] : columns) {
+            if (name == "Omega") continue;
+            ASSERT_TRUE(values.count(w)) << name;
+            const double v = values.at(w);
+            const bool real = name.rfind("re_", 0) == 0;
+            ASSERT_TRUE(real || name.rfind("im_", 0) == 0) << name;
+            (real ? re_columns : im_columns) += 1;
+            // each listed value is the lean's pair or 0
+            EXPECT_TRUE(std::abs(v) < tol || std::abs(std::abs(v) - (real ? re : im)) < tol)
+                << name << " = " << v;
+            (real ? top_re : top_im) = std::max(real ? top_re : top_im, v);
+            (real ? low_re : low_im) = std::min(real ? low_re : low_im, v);
+        }
+        EXPECT_NEAR(top_re, re, tol);
+        EXPECT_NEAR(low_re, -re, tol);
+        EXPECT_NEAR(top_im, im, tol);
+        EXPECT_NEAR(low_im, -im, tol);
+        if (top_re > 1e-3) last_unstable = w;
+        if (top_re <= 1e-3 && first_stable < 0) first_stable = w;
+    }
+    EXPECT_GE(re_columns, 2u);
+    EXPECT_GE(im_columns, 2u);
+    // the zero crossing the table shows is where the hand result puts it, and so is the one
+    // the statement printed above it
+    const double critical = std::sqrt(g / (3 * radius));  // 3.30151 rad/s
+    EXPECT_DOUBLE_EQ(last_unstable, 3.0);
+    EXPECT_DOUBLE_EQ(first_stable, 3.5);
+    EXPECT_LT(last_unstable, critical);
+    EXPECT_GT(first_stable, critical);
+    const std::string crosses = "a real part crosses zero at Omega = ";
+    const std::size_t said = tex.find(crosses, result);
+    ASSERT_LT(said, after);
+    EXPECT_NEAR(std::stod(tex.substr(said + crosses.size())), critical, 1e-4);
+    // the plots: each series' points are the hand result at its spins (a series 0 at every
+    // spin drawn as one line at 0), the lean's pair leaving the real axis between 3 and 3.5
+    const auto series = tex_plot_series(sweep);
+    EXPECT_GE(series.size(), 4u);
+    std::map<double, double> top_re, top_im;
+    for (const auto& [name, points] : series) {
+        const bool real = name.rfind("re_", 0) == 0;
+        ASSERT_TRUE(real || name.rfind("im_", 0) == 0) << name;
+        ASSERT_GE(points.size(), 2u) << name;
+        for (const auto& [x, y] : points) {
+            const double l2 = lambda2(x), tol = 1e-5 * std::max(1.0, std::sqrt(std::abs(l2)));
+            const double pair = std::sqrt(std::max(0.0, real ? l2 : -l2));
+            EXPECT_TRUE(std::abs(y) < tol || std::abs(std::abs(y) - pair) < tol)
+                << name << " at " << x << ": " << y;
+            auto& top = real ? top_re : top_im;
+            top[x] = top.count(x) ? std::max(top[x], y) : y;
+        }
+    }
+    ASSERT_EQ(top_re.size(), 21u);
+    for (const auto& [x, y] : top_re) {
+        EXPECT_NEAR(y, std::sqrt(std::max(0.0, lambda2(x))),
+                    1e-5 * std::max(1.0, std::sqrt(std::abs(lambda2(x)))));
+        EXPECT_NEAR(top_im.at(x), std::sqrt(std::max(0.0, -lambda2(x))),
+                    1e-5 * std::max(1.0, std::sqrt(std::abs(lambda2(x)))));
+    }
+    EXPECT_GT(top_re.at(3.0), 1e-3);
+    EXPECT_LT(top_re.at(3.5), 1e-3);
+    // with the plots turned off: the table stays, the plots go
+    const std::string bare = read_text(dir.path / "bare" / "roadmap.tex");
+    EXPECT_EQ(bare.find("\\begin{axis}"), std::string::npos);
+    EXPECT_EQ(bare.find("pgfplots"), std::string::npos);
+    EXPECT_EQ(tex_table_columns(bare.substr(bare.find("Line 29:"))).at("Omega").size(), 21u);
 }
 
 }  // namespace report_page

@@ -4,7 +4,8 @@
 --matrices` writes roadmap.tex beside the page, with the road-map table (a line per row), a TikZ
 free-body diagram per row that has one (an arrow per load on S, as many as the HTML report
 draws) kept in one box with its caption and its row's equation, every row's equation, the mass
-matrix and the document's end; a model without rows gets a document that says so. Where
+matrix, each result's sweep (a plot per axis, its table's numbers the page's) and the
+document's end; a model without rows gets a document that says so. Where
 pdflatex is installed (Debian's texlive-latex-base and texlive-pictures; scripts/install_deps.sh
 installs them) each document is compiled and must give a PDF with no line more than 10 pt
 wider than the text (no "Overfull \\hbox" over 10 pt in the log) and no page's content over
@@ -41,6 +42,67 @@ def check(ok, what):
     print(("ok   " if ok else "FAIL ") + what)
     if not ok:
         failures.append(what)
+
+
+def tex_number(cell):
+    """A table cell's number: $-5.11468$, $1.5\\cdot 10^{-5}$ (None: not a number)."""
+    m = re.fullmatch(r"\$(-?[0-9.]+)(?:\\cdot 10\^\{(-?[0-9]+)\})?\$", cell.strip())
+    if not m:
+        return None
+    return float(m.group(1)) * (10.0 ** int(m.group(2)) if m.group(2) else 1.0)
+
+
+def tex_tables(part):
+    """The numbers of each tabular in `part`: a list of (header names, rows of numbers)."""
+    out = []
+    for m in re.finditer(r"\\begin\{tabular\}\{[^\n]*\}\n(.*?)\\end\{tabular\}", part, re.S):
+        lines = [l for l in m.group(1).split("\\\\\n") if l.strip()]
+        lines = [l.replace("\\hline\n", "").replace("\\hline", "").strip() for l in lines]
+        lines = [l for l in lines if l]
+        head = [re.sub(r"\s*\[.*\]$", "", c.strip()).replace("\\_", "_") for c in lines[0].split("&")]
+        out.append((head, [[tex_number(c) for c in l.split("&")] for l in lines[1:]]))
+    return out
+
+
+def check_sweeps(name, tex, data):
+    """Each result's sweep in the document under its text, as the page's data holds it: its
+    table's numbers those of the page (6 digits) at each sample listed (all, or at most 25), the
+    series left out 0 at every sample, a plot for each axis with a series not 0 throughout."""
+    for result in data.get("results", []):
+        w = result.get("sweep")
+        if not w:
+            continue
+        start = tex.find("Line %d:\n\\begin{verbatim}" % result["line"])
+        end = tex.find("\nLine ", start + 1)
+        part = tex[start:end if end >= 0 else len(tex)]
+        what = "%s: the sweep at line %d" % (name, result["line"])
+        values = w["values"]
+        series = {s["name"]: s["values"] for s in w["series"]}
+        largest = max([abs(v) for s in w["series"] for v in s["values"] if v is not None] + [0])
+        tables = tex_tables(part)
+        check(tables and all(h[0] == w["parameter"] for h, _ in tables),
+              "%s: tabulated against %s (%s)" % (what, w["parameter"], [h for h, _ in tables]))
+        if not tables:
+            continue
+        shown = [r[0] for r in tables[0][1]]
+        check(set(shown) <= set(values) and (shown == values if len(values) <= 25 else len(shown) <= 25)
+              and shown[:1] == values[:1] and shown[-1:] == values[-1:],
+              "%s: the samples listed, all or at most 25 with the first and the last (%d of %d)"
+              % (what, len(shown), len(values)))
+        listed, wrong = set(), []
+        for head, rows in tables:
+            for k, column in enumerate(head[1:], 1):
+                listed.add(column)
+                for row in rows:
+                    page = series[column][values.index(row[0])]
+                    if not (row[k] == page or row[k] == 0 and abs(page) <= 1e-12 * largest):
+                        wrong.append("%s at %s: %s, the page %s" % (column, row[0], row[k], page))
+        check(not wrong, "%s: the table's numbers are the page's (%s)" % (what, wrong[:3]))
+        silent = [n for n in series if n not in listed and any(abs(v) > 1e-12 * largest for v in series[n])]
+        check(not silent, "%s: each series left out of the table is 0 at every sample (%s)" % (what, silent))
+        axes = set(s["axis"] for s in w["series"] if s["name"] in listed)
+        check(part.count("\\begin{axis}") == len(axes) and part.count("\\addlegendentry{") >= len(listed),
+              "%s: a plot per axis (%s), a legend entry per series" % (what, sorted(axes)))
 
 
 def main():
@@ -82,6 +144,9 @@ def main():
             if os.path.isfile(alone_tex):
                 with open(alone_tex, encoding="utf-8") as f:
                     check(f.read() == tex, "%s: --latex writes the report's roadmap.tex byte for byte" % name)
+        # the road-map's part, checked below: the results (with their sweeps' plots and tables)
+        # come last
+        whole, tex = tex, tex.split("\\subsection*{Results}")[0]
         # the same model's data, as the HTML report holds it, says what the document must hold
         with open(os.path.join(out, "index.html"), encoding="utf-8") as f:
             page = f.read()
@@ -166,7 +231,8 @@ def main():
             check("\\subsection*{Mass matrix and forcing}" in tex and "\\eqline{" in
                   tex[tex.find("\\subsection*{Mass matrix and forcing}"):],
                   "%s: the mass matrix and forcing typeset" % name)
-        check(tex.rstrip().endswith("\\end{document}"), "%s: the document ends" % name)
+        check_sweeps(name, whole, data)
+        check(whole.rstrip().endswith("\\end{document}"), "%s: the document ends" % name)
         if pdflatex:
             r = subprocess.run([pdflatex, "-interaction=nonstopmode", "-halt-on-error", "roadmap.tex"], cwd=out,
                                capture_output=True, text=True, timeout=300)

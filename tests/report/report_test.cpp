@@ -853,3 +853,114 @@ TEST(ReportLatex, ARootOfALongSumIsNamedOnItsOwnLineAndTheRestLeftWhole) {
 
 }  // namespace
 }  // namespace alembert
+
+namespace alembert {
+namespace {
+
+// A linearize-like sweep of k = 0, 1, ..., count - 1 N/m: re_1 = -k/10, re_2 = 0, im_1 =
+// sqrt(k), im_2 = -sqrt(k), im_3 = 1e-20 (round-off of 0); `extra` more real parts k + i
+ReportSweep sample_sweep(std::size_t count, std::size_t extra = 0) {
+    ReportSweep w;
+    w.title = "linearize at line 7 (sweep/eigenvalues.csv)";
+    w.file = "sweep/eigenvalues.csv";
+    Table& t = w.table;
+    t.add_column("k", "N/m");
+    for (const char* n : {"re_1", "re_2"}) t.add_column(n, "1/s");
+    for (std::size_t i = 0; i < extra; ++i) t.add_column("re_" + std::to_string(3 + i), "1/s");
+    for (const char* n : {"im_1", "im_2", "im_3"}) t.add_column(n, "1/s");
+    for (std::size_t r = 0; r < count; ++r) {
+        const double k = static_cast<double>(r);
+        std::vector<double> row{k, -k / 10, 0};
+        for (std::size_t i = 0; i < extra; ++i) row.push_back(k + static_cast<double>(i));
+        row.insert(row.end(), {std::sqrt(k), -std::sqrt(k), 1e-20});
+        for (std::size_t c = 0; c < row.size(); ++c) t.columns[c].push_back(row[c]);
+    }
+    w.axes.assign(2 + extra, "real part");
+    w.axes.insert(w.axes.end(), 3, "imaginary part");
+    return w;
+}
+
+// the rows of the tables in `tex` (a cell $x$ or $m\cdot 10^{e}$ each) as numbers
+std::vector<std::vector<double>> table_numbers(const std::string& tex) {
+    std::vector<std::vector<double>> rows;
+    std::istringstream in(tex);
+    for (std::string line; std::getline(in, line);) {
+        if (line.rfind("$", 0) != 0 || line.find(" \\\\") == std::string::npos) continue;
+        std::vector<double> row;
+        std::istringstream cells(line.substr(0, line.find(" \\\\")));
+        for (std::string c; std::getline(cells, c, '&');) {
+            double m = 0;
+            int e = 0;
+            const std::size_t dollar = c.find('$');
+            const int got = std::sscanf(c.c_str() + dollar, "$%lf\\cdot 10^{%d}$", &m, &e);
+            row.push_back(got >= 1 ? m * std::pow(10.0, got == 2 ? e : 0) : NAN);
+        }
+        rows.push_back(row);
+    }
+    return rows;
+}
+
+TEST(ReportLatex, ALongSweepIsTabulatedAtAtMost25SamplesSayingWhichAndPlottedPerAxis) {
+    SitToStand s;
+    s.content.results.push_back(
+        {7, "linearize K at x = 0 for k = 0 to 102 step 1", "swept k", sample_sweep(103)});
+    const std::string tex = render_report_latex(s.content);
+    EXPECT_EQ(tex, render_report_latex(s.content));  // same content, same bytes
+    EXPECT_NE(tex.find("\\usepackage{pgfplots}"), std::string::npos);
+    const std::string part = tex.substr(tex.find("Line 7:\n"));
+    // a plot per axis against k, re_2 and im_3 (0 at every sample) one line at 0 each
+    EXPECT_EQ(count(part, "\\begin{axis}"), 2u);
+    EXPECT_EQ(count(part, "xlabel={k [N/m]}"), 2u);
+    EXPECT_NE(part.find("\\addlegendentry{re\\_2: 0}"), std::string::npos);
+    EXPECT_NE(part.find("\\addlegendentry{im\\_3: 0}"), std::string::npos);
+    // the table: every 5th of the 103 samples and the last (22 rows), the series 0 throughout
+    // left out and named, and the round-off said
+    EXPECT_NE(
+        part.find("the values at 22 of the 103 samples, every 5th from the first and the last"),
+        std::string::npos)
+        << part.substr(part.find("Table:"), 400);
+    EXPECT_NE(part.find("k [N/m] & re\\_1 & im\\_1 & im\\_2 \\\\"), std::string::npos);
+    EXPECT_NE(part.find("re\\_2, im\\_3 are 0 at every sample, not listed."), std::string::npos);
+    EXPECT_NE(part.find("are round-off, written 0."), std::string::npos);
+    const std::vector<std::vector<double>> rows = table_numbers(part);
+    ASSERT_EQ(rows.size(), 22u);
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+        const double k = i + 1 < rows.size() ? 5.0 * static_cast<double>(i) : 102.0;
+        ASSERT_EQ(rows[i].size(), 4u);
+        EXPECT_EQ(rows[i][0], k);
+        EXPECT_NEAR(rows[i][1], -k / 10, 1e-6 * std::max(1.0, k / 10));
+        EXPECT_NEAR(rows[i][2], std::sqrt(k), 1e-6 * std::max(1.0, std::sqrt(k)));
+        EXPECT_NEAR(rows[i][3], -std::sqrt(k), 1e-6 * std::max(1.0, std::sqrt(k)));
+    }
+    // without plots: the table alone, and no pgfplots
+    s.content.plot_histories = false;
+    const std::string bare = render_report_latex(s.content);
+    EXPECT_EQ(bare.find("pgfplots"), std::string::npos);
+    EXPECT_EQ(bare.find("\\begin{axis}"), std::string::npos);
+    EXPECT_EQ(table_numbers(bare.substr(bare.find("Line 7:\n"))).size(), 22u);
+}
+
+TEST(ReportLatex, ASweepsPlotsHoldTenSeriesEachAndASingleSampleIsTabulatedOnly) {
+    SitToStand s;
+    // 1 + 12 real parts not 0 throughout: two plots of 7 and 6 (as the page shares them)
+    s.content.results.push_back({7, "linearize", "", sample_sweep(4, 12)});
+    std::string tex = render_report_latex(s.content);
+    std::string part = tex.substr(tex.find("Line 7:\n"));
+    EXPECT_EQ(count(part, "\\begin{axis}"), 3u);
+    EXPECT_EQ(count(part, "real parts, 1/s, 1 of 2, against k"), 1u);
+    EXPECT_EQ(count(part, "real parts, 1/s, 2 of 2, against k"), 1u);
+    const std::size_t second = part.find("\\begin{axis}", part.find("\\begin{axis}") + 1);
+    EXPECT_EQ(count(part.substr(0, second), "% series: "), 7u);
+    // one sample: nothing to draw a line through, its values tabulated
+    s.content.results.back().sweep = sample_sweep(1);
+    tex = render_report_latex(s.content);
+    part = tex.substr(tex.find("Line 7:\n"));
+    EXPECT_EQ(count(part, "\\begin{axis}"), 0u);
+    EXPECT_NE(part.find("the values at its one sample"), std::string::npos);
+    // a model without sweeps needs no pgfplots
+    SitToStand plain;
+    EXPECT_EQ(render_report_latex(plain.content).find("pgfplots"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace alembert

@@ -40,7 +40,8 @@ std::string report_history_title(const std::string& statement, int line, const s
 
 /// What a sweep computed over a swept value (a `linearize ... for c = a to b step h`: the
 /// eigenvalues at each value of c), plotted on the page under the statement's result against
-/// the swept value, one plot per axis named in `axes`.
+/// the swept value, one plot per axis named in `axes`; in roadmap.tex plotted alike and
+/// tabulated at up to 25 of its samples.
 struct ReportSweep {
     /// What computed it: "linearize at line 31 (spin_sweep/eigenvalues.csv)"
     /// (report_history_title)
