@@ -322,8 +322,11 @@ Value Interpreter::Impl::eval(const Expr& e) {
         case Expr::Kind::power: {
             Value base = eval(*e.args[0]);
             Value p = eval(*e.args[1]);
+            if (base.kind == Kind::matrix && p.kind == Kind::scalar)
+                return matrix_power(base, p, *e.args[0], *e.args[1]);
             if (base.kind != Kind::scalar || p.kind != Kind::scalar)
-                throw ScriptError(e.location, "powers take scalars", "for vectors use dot(v>, v>)");
+                throw ScriptError(e.location, "powers take scalars and square matrices",
+                                  "for vectors use dot(v>, v>)");
             check_dimension(p.dim, Dimension::none(), "an exponent", e.args[1]->location);
             Dimension d = base.dim;
             if (GiNaC::is_a<GiNaC::numeric>(p.s)) {

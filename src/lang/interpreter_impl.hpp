@@ -364,6 +364,9 @@ struct Interpreter::Impl {
     /// acc * v (acc / v when `divide`), one of them a matrix: a scalar times a matrix, a
     /// matrix divided by a scalar, or the product of matrices whose sizes fit.
     Value matrix_product(Value acc, const Value& v, bool divide, Location where);
+    /// m^p, m a square matrix and p a whole number: m times itself p times (by squaring), the
+    /// identity for 0, the inverse's power for p < 0 (m must not be singular).
+    Value matrix_power(const Value& m, const Value& p, const Expr& base, const Expr& exponent);
     Value eval_name(const Expr& e);
     Value number_with_unit(const Expr& e, const ex& n);  ///< `0.1575 m`: n in SI, with its dimension
     Value eval_vector_name(const Expr& e);

@@ -152,6 +152,50 @@ Value Interpreter::Impl::matrix_product(Value acc, const Value& given, bool divi
     return from_ginac(ginac_matrix(acc).mul(ginac_matrix(v)), d);
 }
 
+Value Interpreter::Impl::matrix_power(const Value& m, const Value& p, const Expr& base, const Expr& exponent) {
+    check_dimension(p.dim, Dimension::none(), "an exponent", exponent.location);
+    const ex k_ex = p.s;
+    if (!GiNaC::is_a<GiNaC::numeric>(k_ex) || !GiNaC::ex_to<GiNaC::numeric>(k_ex).is_integer())
+        throw ScriptError(exponent.location, "a power of a matrix takes a whole number, not " + to_string(k_ex),
+                          "write M^2, M^0 or M^-1");
+    const GiNaC::numeric& n = GiNaC::ex_to<GiNaC::numeric>(k_ex);
+    if (GiNaC::abs(n) > Limits::max_power)
+        throw ScriptError(exponent.location, "the power " + to_string(k_ex) + " is too large (the limit is 64)", "");
+    if (m.rows != m.cols)
+        throw ScriptError(base.location, "a power of a matrix takes a square matrix, and " + matrix_called(base) +
+                                             " is " + size_text(m),
+                          "multiply matrices whose sizes fit with '*'");
+    const int k = n.to_int();
+    const auto size = static_cast<unsigned>(m.rows);
+    GiNaC::matrix g = ginac_matrix(m);
+    Dimension d = m.dim;
+    if (k < 0) {
+        SymbolTable& table = model(base.location).symbols();
+        std::vector<ex> entries = m.a;
+        for (ex& x : entries) x = guard(base.location, [&] { return table.expand_intermediates(x); });
+        g = ginac_matrix(matrix_value(m.rows, m.cols, entries, m.dim));
+        if (guard(base.location, [&] { return GiNaC::normal(g.determinant()); }).is_zero())
+            throw ScriptError(base.location, "a negative power of " + matrix_called(base) +
+                                                 " needs its inverse, and it is singular (its determinant is 0)",
+                              "check its rows for a dependence");
+        g = guard(base.location, [&] {
+            GiNaC::matrix inv = g.inverse();
+            for (unsigned i = 0; i < inv.rows(); ++i)
+                for (unsigned j = 0; j < inv.cols(); ++j) inv(i, j) = GiNaC::normal(inv(i, j));
+            return inv;
+        });
+        d = Dimension::none() / m.dim;
+    }
+    // by squaring: |k| <= 64 takes at most 12 products
+    GiNaC::matrix result = GiNaC::ex_to<GiNaC::matrix>(GiNaC::unit_matrix(size));
+    GiNaC::matrix square = g;
+    for (unsigned left = static_cast<unsigned>(k < 0 ? -k : k); left > 0; left >>= 1) {
+        if (left & 1u) result = result.mul(square);
+        if (left > 1) square = square.mul(square);
+    }
+    return from_ginac(result, k == 0 ? Dimension::none() : pow(d, k < 0 ? -k : k));
+}
+
 Value Interpreter::Impl::eval_matrix(const Expr& e) {
     const std::string& f = e.text;
     const auto& a = e.args;

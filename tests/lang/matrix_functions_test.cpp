@@ -102,6 +102,56 @@ TEST(MatrixFunctions, TransposeInverseDeterminantAndArithmeticAgreeWithTheHandRe
     EXPECT_EQ(r.ok("diagmat(2, 3, L)\ndiagmat([a, b])\n"), "= [L, 0, 0; 0, L, 0]\n= [a, 0; 0, b]\n");
 }
 
+// M^k of a square matrix: products by hand at random points for k = 2, 3 and 5, the identity for
+// 0, the inverse's powers for -1 and -2 (inv(M)^2 by hand cofactors, times M^2 the identity); a
+// rotation about z cubed is the rotation by three times the angle; the errors at their column.
+TEST(MatrixFunctions, PowersOfASquareMatrixAreItsProductsAndItsInversesProducts) {
+    MatrixRun r;
+    r.ok("newtonian N\nconstant a, b, c, d, f, g, h, k, L, th\ndigits 17\nM = [a, b, c; d, f, g; h, k, L]\n"
+         "M2 = M^2\nM3 = M^3\nM5 = M^5\nM0 = M^0\nMm1 = M^-1\nMm2 = M^(-2)\n"
+         "Rz = [cos(th), -sin(th), 0; sin(th), cos(th), 0; 0, 0, 1]\nR3 = Rz^3\n");
+    std::mt19937 rng(43);
+    std::uniform_real_distribution<double> u(-2, 2);
+    const auto product = [](const Mat& x, const Mat& y) {
+        Mat z{};
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j)
+                for (int s = 0; s < 3; ++s) z[i][j] += x[i][s] * y[s][j];
+        return z;
+    };
+    for (int trial = 0; trial < 3; ++trial) {
+        Mat m{};
+        for (auto& row : m)
+            for (double& x : row) x = u(rng);
+        const char* names[9] = {"a", "b", "c", "d", "f", "g", "h", "k", "L"};
+        std::string at;
+        for (int i = 0; i < 9; ++i) at += (i ? ", " : "") + std::string(names[i]) + " = " + digits17(m[i / 3][i % 3]);
+        const double th = u(rng);
+        at += ", th = " + digits17(th);
+        double det = 0;
+        const Mat inv = hand_inverse(m, det);
+        const Mat m2 = product(m, m), m3 = product(m2, m), m5 = product(m3, m2), inv2 = product(inv, inv);
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j) {
+                const std::string ij = "[" + std::to_string(i + 1) + ", " + std::to_string(j + 1) + "]";
+                expect_close(r.at("M2" + ij, at), m2[i][j], "M^2 " + ij);
+                expect_close(r.at("M3" + ij, at), m3[i][j], "M^3 " + ij);
+                EXPECT_NEAR(r.at("M5" + ij, at), m5[i][j], 1e-10 * std::max(1.0, std::abs(m5[i][j]))) << "M^5 " << ij;
+                expect_close(r.at("M0" + ij, at), i == j ? 1 : 0, "M^0 " + ij);
+                expect_close(r.at("Mm1" + ij, at), inv[i][j], "M^-1 " + ij);
+                EXPECT_NEAR(r.at("Mm2" + ij, at), inv2[i][j], 1e-10 * std::max(1.0, std::abs(inv2[i][j]))) << "M^-2 " << ij;
+                const double r3[3][3] = {{std::cos(3 * th), -std::sin(3 * th), 0}, {std::sin(3 * th), std::cos(3 * th), 0}, {0, 0, 1}};
+                expect_close(r.at("R3" + ij, at), r3[i][j], "Rz^3 " + ij);
+            }
+    }
+    std::string e = r.fails("X = [a, b; c, d; f, g]^2\n");
+    EXPECT_TRUE(has(e, "test.alb:1:5: error: a power of a matrix takes a square matrix, and the matrix is 3 by 2")) << e;
+    e = r.fails("X = M^th\n");
+    EXPECT_TRUE(has(e, "test.alb:1:7: error: a power of a matrix takes a whole number, not th")) << e;
+    e = r.fails("X = [1, 2; 2, 4]^-1\n");
+    EXPECT_TRUE(has(e, "needs its inverse, and it is singular")) << e;
+}
+
 // eig of [2, 1, 0; 1, 2, 1; 0, 1, 2]: 2 - sqrt 2, 2, 2 + sqrt 2; of [p, r; r, s] with values:
 // (p + s)/2 -+ sqrt(((p - s)/2)^2 + r^2)
 TEST(MatrixFunctions, EigIsTheEigenvaluesOfAMatrixOfNumbers) {

@@ -144,7 +144,14 @@ Text Translator::combine(const Expr& e, Text a, Text b) {
             if (b.matrix()) fail(e.where, "division by a matrix", "multiply by its inverse: A*INV(B)");
             rows = a.rows, cols = a.cols;
         } else {
-            fail(e.where, "a power of a matrix", "multiply it by itself: M*M");
+            // M^k: the script's power of a square matrix (k a whole number, checked when it runs)
+            if (b.matrix()) fail(e.where, "a power with a matrix as exponent", "raise a square matrix to a whole number: M^2");
+            if (known(a) && a.rows != a.cols)
+                fail(e.where, "a power of a " + size(a) + " matrix", "only a square matrix has powers: M^2 is M*M");
+            std::string s = wrapped(a, a.prec <= 4);
+            s += "^";
+            s += wrapped(b, b.prec < 5);
+            return {std::move(s), false, 4, false, a.rows, a.cols};
         }
     }
     if (op == "+" || op == "-") {

@@ -668,7 +668,7 @@ TEST(AutolevAcceptanceFiles, MatrixOperationsAgreeWithTheHandResults) {
     for (int trial = 0; trial < 3; ++trial) {
         const double a = uniform(0.5, 3), b = uniform(-2, 2), c = uniform(0.5, 3), q = uniform(-3, 3);
         std::string at = "A = " + num(a) + ", B = " + num(b) + ", C = " + num(c) + ", Q = " + num(q);
-        Vec v = evaluate(t, {"JXX", "JXY", "TR", "DJ", "X1", "X2", "NR", "T12", "S22", "E1", "E2", "P", "RSUM", "R1", "RB"}, at);
+        Vec v = evaluate(t, {"JXX", "JXY", "TR", "DJ", "X1", "X2", "NR", "T12", "S22", "E1", "E2", "P", "RSUM", "R1", "RB", "R3C", "KM12"}, at);
         const double s = std::sin(q), co = std::cos(q), d = a * c - b * b;
         Vec expected{a + b * s * s,
                      -b * s * co,
@@ -684,7 +684,9 @@ TEST(AutolevAcceptanceFiles, MatrixOperationsAgreeWithTheHandResults) {
                      (q - 1) * (q - 2) * (q - 3),
                      6,
                      1.5,
-                     b};
+                     b,
+                     std::cos(3 * q),
+                     -b / d};
         for (std::size_t i = 0; i < expected.size(); ++i)
             EXPECT_NEAR(v[i], expected[i], 1e-12 * std::max(1.0, std::abs(expected[i]))) << i << " at " << at;
     }

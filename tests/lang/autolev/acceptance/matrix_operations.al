@@ -1,5 +1,6 @@
 % Matrix operations: a plate's planar inertia turned by Q, a 2 by 2 linear system solved
-% with INV, the rows and columns of matrices, and the eigenvalues and roots of numbers.
+% with INV, the rows and columns of matrices, the eigenvalues and roots of numbers, and powers
+% of a matrix (a rotation cubed, an inverse as the power -1).
 NEWTONIAN N
 CONSTANTS A, B, C, Q
 R = [COS(Q), -SIN(Q); SIN(Q), COS(Q)]
@@ -29,3 +30,7 @@ RL = ROOTS([2, -3])
 R1 = RL[1]
 ROW = [DET(K), ELEMENT(K, 1, 2)]
 RB = ROW[2]
+R3 = R^3
+R3C = R3[1,1]
+KM = K^-1
+KM12 = KM[1,2]
