@@ -124,7 +124,9 @@ void Translator::assemble() {
     // KANE(F1, ...): the load measures the auxiliary equations determine are the script's
     // unknowns, whatever the file declared them as
     std::vector<std::string> unknowns;
-    for (const auto& [f, where] : kane_forces_) {
+    for (const auto& force : kane_forces_) {
+        const std::string& f = force.first;
+        const Location where = force.second;
         if (std::find(unknowns.begin(), unknowns.end(), f) != unknowns.end()) continue;
         unknowns.push_back(f);
         variables_.erase(std::remove(variables_.begin(), variables_.end(), f), variables_.end());
