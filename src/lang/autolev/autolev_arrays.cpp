@@ -9,7 +9,11 @@
 namespace alembert::lang::autolev {
 
 std::pair<int, int> Translator::array_index(const Expr& e, const Entry& m) {
-    if (e.args.empty() || e.args.size() > 2)
+    if (e.args.size() > 2)
+        leave_out(e.where, "an array of " + std::to_string(e.args.size()) + " indices ('" + e.text +
+                               "[...]') has no counterpart: the script's matrices have two",
+                  "write its elements as names of their own (" + e.text + "_1_1_1 = ...)");
+    if (e.args.empty())
         fail(e.where, "an array takes one index (" + e.text + "[i]) or two (" + e.text + "[i, j])",
              "write " + e.text + "[1] or " + e.text + "[1, 2]");
     if (m.indices != 0 && static_cast<int>(e.args.size()) != m.indices)
@@ -37,8 +41,8 @@ void Translator::array_assignment(const Statement& st) {
         return;
     }
     if (key == "AUXILIARY")
-        fail(lhs.where, "auxiliary speeds (AUXILIARY[...]) are not translated",
-             "Alembert's kane statement takes them as 'auxiliary u...'; add them by hand");
+        leave_out(lhs.where, "auxiliary speeds (AUXILIARY[...]) have no counterpart in the translation",
+                  "write the kane statement with 'auxiliary' speeds by hand (docs/kane.md, \"Auxiliary speeds\")");
     const Entry* en = find(lhs.text);
     if (key == "ZERO" && !en && kane_at_)
         fail(lhs.where, "ZERO holds Kane's equations here (ZERO = FR() + FRSTAR() or KANE() before), and an element of "
@@ -113,6 +117,7 @@ Text Translator::whole_array(const Expr& e, const Entry& m) {
         }
         emit(stored.name + " = " + value);
         stored.whole_written = true;
+        wholes_written_.push_back(stored.key);
     }
     return {stored.name, false, 5, false, stored.rows, stored.cols};
 }

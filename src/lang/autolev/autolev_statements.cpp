@@ -30,14 +30,19 @@ void Translator::list(const Statement& st) {
     const std::string& w = st.keyword;
     if (w == "MASS") {
         if (st.items.empty()) fail(st.where, "MASS names no body or particle", "write MASS A = MA, P = MP");
+        // every mass first: a statement left out gives none of them
+        std::vector<std::pair<std::string, std::string>> masses;
         for (const Item& it : st.items) {
             const Entry* en = it.lhs.kind == Expr::Kind::name && !it.lhs.vector ? find_object(it.lhs.text) : nullptr;
             if (!en || (en->kind != Kind::body && en->kind != Kind::particle))
                 fail(it.where, "MASS takes a body or a particle before '='", "write MASS A = MA");
             if (!it.has_value) fail(it.where, "the mass of '" + it.lhs.text + "' is missing", "write MASS " + it.lhs.text + " = M");
             if (!it.unit.empty()) fail(it.where, "a unit in MASS", "give units in INPUT");
-            emit("mass " + en->name + " = " + dimensioned(scalar(it.value), "m_" + en->name));
-            massive_.insert(en->name);
+            masses.emplace_back(en->name, dimensioned(scalar(it.value), "m_" + en->name));
+        }
+        for (const auto& [body, m] : masses) {
+            emit("mass " + body + " = " + m);
+            massive_.insert(body);
             release_inertias();  // INERTIA B(P) before MASS B
         }
         return;
@@ -186,9 +191,10 @@ void Translator::command(const Statement& st) {
             report(Severity::note, st.where, "COMPLEX OFF: the script's numbers are real; nothing to translate");
             return;
         }
-        fail(st.where, "COMPLEX " + (on.empty() ? std::string("") : on + " ") +
-                           "is not translated: Alembert has no complex numbers",
-             "remove it; the script's constants and variables are real");
+        leave_out(st.where, "COMPLEX " + (on.empty() ? std::string("") : on + " ") +
+                                "has no counterpart: the script's numbers are real, and the statements after it are "
+                                "read with real numbers",
+                  "remove it; the script's constants and variables are real");
     }
     if (w == "DEGREES" || w == "DEGREE") {
         if (on == "OFF") {  // angles without a unit are radians: as the translation reads them
@@ -522,16 +528,18 @@ void Translator::vector_assignment(const Statement& st) {
 
 Text Translator::load_value(const Statement& st, const std::string& key) {
     if (st.compound == 0) {
-        if (!assigned_loads_.insert(key).second)
+        if (assigned_loads_.count(key))
             fail(st.lhs.where, "'" + st.lhs.text + ">' is assigned a second time, which replaces its first value",
                  "add to it with " + st.lhs.text + "> += v> (or FORCE(...), TORQUE(...)), or remove the first");
-        return vec(st.rhs);
+        Text v = vec(st.rhs);  // first: a value left out leaves the load unassigned
+        assigned_loads_.insert(key);
+        return v;
     }
     if (st.compound != '+' && st.compound != '-')
         fail(st.lhs.where, std::string("'") + st.compound + "=' on a force or torque is not translated",
              "write the whole load: " + st.lhs.text + "> = ...");
-    assigned_loads_.insert(key);
     Text v = vec(st.rhs.args[1]);
+    assigned_loads_.insert(key);
     if (st.compound == '-') v = {"-" + paren(v, 4), true, 3, v.numeric};
     return v;
 }
@@ -572,8 +580,9 @@ void Translator::expression_statement(const Statement& st) {
         nargs(4, "SIMPROT(A, B, 3, Q1)");
         std::string a = frame_name(e.args[0]), b = frame_name(e.args[1]);
         std::string axis = simprot_axis(e.args[2], a, b);
+        const std::string by = angle(e.args[3], scalar(e.args[3]), "SIMPROT").s;
         parent_[b] = a;
-        return emit("rotate " + b + " from " + a + " about " + axis + " by " + angle(e.args[3], scalar(e.args[3]), "SIMPROT").s);
+        return emit("rotate " + b + " from " + a + " about " + axis + " by " + by);
     }
     if (f == "V2PTS" || f == "V1PT" || f == "A2PTS") {
         nargs(4, (e.text + "(N, B, P, Q)").c_str());
@@ -600,8 +609,9 @@ void Translator::expression_statement(const Statement& st) {
     if (f == "GRAVITY") {
         if (e.args.empty()) fail(e.where, "GRAVITY() needs the vector", "write GRAVITY(-G*N2>)");
         if (e.args.size() > 1)
-            fail(e.args[1].where, "GRAVITY on some bodies only is not translated",
-                 "Alembert's gravity acts on every body and particle; apply FORCE() to these instead");
+            leave_out(e.args[1].where, "GRAVITY on some bodies only has no counterpart: the script's gravity acts on "
+                                       "every body and particle",
+                      "apply a force m*g> at each of these bodies' mass centres instead (FORCE_BO> = MB*g>)");
         has_gravity_ = true;
         return emit("gravity " + dimensioned(vec(e.args[0]), "g_" + newtonian_));
     }
@@ -621,9 +631,22 @@ void Translator::expression_statement(const Statement& st) {
         return f == "FORCE" ? force(on, from, v) : torque(on, from, v);
     }
     if (f == "KANE") {
-        if (!e.args.empty())
-            fail(e.args[0].where, "KANE() with arguments is not translated",
-                 "declare the dependent speeds with CONSTRAIN(DEPENDENT[...]) and write KANE()");
+        if (!e.args.empty()) {
+            // KANE(F1, F2): Kane's equations are formed as by KANE(); the equations of the
+            // auxiliary speeds, which Autolev solves for the constraint forces F1, F2, are not
+            std::vector<std::string> forces, keys;
+            for (const Expr& a : e.args) {
+                forces.push_back(a.text);
+                keys.push_back(upper(a.text));
+            }
+            record_left_out(st, e.args[0].where,
+                            "the constraint forces " + join(forces) + " of KANE(" + join(forces) +
+                                ") are not solved for: Kane's equations are formed as by KANE(), without the "
+                                "equations of auxiliary speeds",
+                            "write the kane statement with 'auxiliary' speeds by hand and solve its last rows for " +
+                                join(forces) + " (docs/kane.md, \"Auxiliary speeds\")",
+                            keys, true);
+        }
         if (const Entry* z = find("ZERO"); z && z->indices)
             fail(e.where, "KANE() forms Kane's equations from the bodies and loads, and ZERO holds the file's own "
                           "equations (assigned by element at line " + std::to_string(z->where.line) + ")",
@@ -634,15 +657,23 @@ void Translator::expression_statement(const Statement& st) {
         return;
     }
     if (f == "CONSTRAIN") {
+        for (const Expr& a : e.args)
+            if (a.kind == Expr::Kind::index && upper(a.text) == "AUXILIARY")
+                leave_out(a.where, "auxiliary speeds (CONSTRAIN(AUXILIARY[...])) have no counterpart in the translation",
+                          "write the kane statement with 'auxiliary' speeds by hand (docs/kane.md, \"Auxiliary "
+                          "speeds\")");
         for (const Expr& a : e.args) {
             if (a.kind != Expr::Kind::index || upper(a.text) != "DEPENDENT")
                 fail(a.where, "CONSTRAIN() is translated only as CONSTRAIN(DEPENDENT[U3, ...])",
                      "auxiliary speeds are not translated");
             for (const Expr& u : a.args) {
-                const Entry* en = u.kind == Expr::Kind::name && !u.vector && u.primes == 0 ? find(u.text) : nullptr;
+                // a speed (U3), or a coordinate's rate (Q1') in a model without speeds
+                const Entry* en = u.kind == Expr::Kind::name && !u.vector && u.primes <= 1 ? find(u.text) : nullptr;
                 if (!en || en->kind != Kind::variable)
-                    fail(u.where, "DEPENDENT[...] lists speeds, declared with VARIABLES or MOTIONVARIABLES");
-                dependent_.push_back(en->name);
+                    fail(u.where, "DEPENDENT[...] lists speeds, declared with VARIABLES or MOTIONVARIABLES",
+                         "write CONSTRAIN(DEPENDENT[U3]), or CONSTRAIN(DEPENDENT[Q1']) in a model without speeds");
+                dependent_.push_back(en->name + (u.primes ? "'" : ""));
+                dependent_where_.push_back(u.where);
             }
         }
         if (constraints_.size() != dependent_.size())
