@@ -218,7 +218,10 @@ void Translator::record_left_out(const Statement& st, Location where, const std:
              const Entry* en = find(st.lhs.text);
              return en && rate_of_.count(en->name) > 0;
          }()));
-    if (dynamics && !part) dynamics_left_out_.push_back(st.where.line);
+    if (dynamics && !part) {
+        dynamics_left_out_.push_back(st.where.line);
+        if (const Entry* en = find(st.lhs.text); en && st.lhs.primes > 0) odes_left_out_.insert(en->name);
+    }
 }
 
 void Translator::say_model_changes() {
@@ -230,12 +233,12 @@ void Translator::say_model_changes() {
     };
     if (kane_at_ && !model_changes_.empty()) {
         const std::string which = (model_changes_.size() == 1 ? "line " : "lines ") + lines(model_changes_);
-        Location where = kane_where_;
-        if (where.line == 0 && !odes_.empty()) where = odes_.front().second;
-        report(Severity::warning, where,
-               "the equations of motion are formed without what " + which +
-                   " left out, so they are not the Autolev file's equations",
+        const Location where = odes_.empty() ? kane_where_ : odes_.front().second;
+        const std::string says = "the equations of motion are formed without what " + which +
+                                 " left out, so they are not the Autolev file's equations";
+        report(Severity::warning, where, says,
                "write the counterparts of those lines by hand in the script, before its kane statement");
+        model_warnings_.insert(says);
         model_[*kane_at_] = "# the equations below lack what " + which + " left out: they are not the Autolev "
                             "file's equations\n" + model_[*kane_at_];
     }
@@ -243,10 +246,12 @@ void Translator::say_model_changes() {
         std::string which;
         for (std::size_t i = 0; i < dynamics_left_out_.size(); ++i)
             which += (i ? ", " : "") + std::to_string(dynamics_left_out_[i]);
-        report(Severity::warning, {dynamics_left_out_.front(), 1},
-               "the file's equations of motion (line" + std::string(dynamics_left_out_.size() == 1 ? " " : "s ") + which +
-                   ") are left out, so the script forms no model: it holds the rest of the file only",
+        const std::string says = "the file's equations of motion (line" +
+                                 std::string(dynamics_left_out_.size() == 1 ? " " : "s ") + which +
+                                 ") are left out, so the script forms no model: it holds the rest of the file only";
+        report(Severity::warning, {dynamics_left_out_.front(), 1}, says,
                "write the equations of motion by hand in the script (docs/autolev.md)");
+        model_warnings_.insert(says);
     }
 }
 

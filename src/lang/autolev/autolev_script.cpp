@@ -259,6 +259,8 @@ void Translator::assemble() {
                    "left out: CODE DYNAMICS() needs the equations of motion, which line " +
                        std::to_string(dynamics_left_out_.front()) + " left out",
                    "write the equations of motion by hand in the script, then codegen");
+            s += "# left out (" + file_ + ":" + std::to_string(where.line) + "): CODE DYNAMICS() needs the equations "
+                 "of motion, which line " + std::to_string(dynamics_left_out_.front()) + " left out\n";
         } else if (!kane_at_) {
             report(Severity::error, where, "CODE DYNAMICS() without KANE()",
                    "form Kane's equations (ZERO = FR() + FRSTAR(), KANE()) before generating code");

@@ -419,7 +419,7 @@ void Translator::check_differential_model() {
         bool has = false;
         for (const auto& [x, where] : odes_) has = has || x == v;
         const Entry* en = find(v);
-        if (!has)
+        if (!has && !odes_left_out_.count(v))  // a left-out equation is said where it was left out
             report(Severity::error, en ? en->where : at,
                    "the variable '" + v + "' has no equation (" + v + "'' = ...) among the model's differential equations",
                    "give it one, or declare it SPECIFIED and give its value with INPUT");

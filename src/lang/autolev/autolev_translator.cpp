@@ -87,7 +87,7 @@ AutolevTranslation Translator::run(std::string_view source) {
     });
     // the lines of the file left out, in whole or in part (each warning leaves something out)
     for (const Diagnostic& d : out_.diagnostics)
-        if (d.severity == Severity::warning &&
+        if (d.severity == Severity::warning && !model_warnings_.count(d.message) &&
             (out_.left_out_lines.empty() || out_.left_out_lines.back() != d.location.line))
             out_.left_out_lines.push_back(d.location.line);
     return std::move(out_);

@@ -465,6 +465,8 @@ private:
     std::vector<std::string> wholes_written_{};          // arrays written whole in this statement
     std::vector<std::pair<int, std::string>> model_changes_{};  // left-out lines that change the equations
     std::vector<int> dynamics_left_out_{};  // left-out lines that gave equations of motion
+    std::set<std::string> odes_left_out_{};  // variables whose X'' = f was left out
+    std::set<std::string> model_warnings_{};  // the warnings on the model as a whole (no line left out)
     std::map<std::pair<int, int>, std::vector<std::string>> part_comments_{};  // declarations left out in part
     // CONSTRAIN(DEPENDENT[Q1']) in a model without speeds: each coordinate's speed (q -> u = q')
     std::vector<std::pair<std::string, std::string>> rate_speeds_{};
