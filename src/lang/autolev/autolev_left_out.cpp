@@ -34,7 +34,8 @@ std::string describe(const Statement& st) {
         case Statement::Kind::declaration:
         case Statement::Kind::list:
         case Statement::Kind::command: return st.keyword;
-        case Statement::Kind::assignment: return said(st.lhs) + " = ...";
+        case Statement::Kind::assignment:
+            return said(st.lhs) + " " + (st.compound ? std::string(1, st.compound) : "") + "= ...";
         case Statement::Kind::expression:
             return st.expr.kind == Expr::Kind::call ? upper(st.expr.text) + "(...)" : "an expression";
     }
