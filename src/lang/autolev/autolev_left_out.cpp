@@ -177,18 +177,60 @@ void Translator::roll_back(const Journal& j) {
     wholes_written_.clear();
 }
 
+std::optional<NameUse> Translator::left_out_use(const Expr& root) const {
+    std::vector<const Expr*> todo{&root};
+    while (!todo.empty()) {
+        const Expr* e = todo.back();
+        todo.pop_back();
+        if (e->kind == Expr::Kind::name || e->kind == Expr::Kind::index)
+            if (left_out_names_.count(upper(e->text))) return NameUse{upper(e->text), said(*e), e->where};
+        for (const Expr& a : e->args) todo.push_back(&a);
+    }
+    return std::nullopt;
+}
+
 void Translator::translate_or_leave_out(const Statement& st, const StatementNames& names) {
     // the comments of declarations left out in part stand where the declaration stands
     if (auto c = part_comments_.find({st.where.line, st.where.column}); c != part_comments_.end())
         for (const std::string& l : c->second) emit(l);
+    auto uses_why = [this](const NameUse& u) {
+        const int line = left_out_names_.at(u.key);
+        return std::make_pair("uses " + u.said + ", which line " + std::to_string(line) + " left out",
+                              "write the counterpart of line " + std::to_string(line) +
+                                  " by hand in the script, then this statement");
+    };
     const Journal j = open_journal();
     try {
+        const NameUse* tainted = nullptr;
         if (!left_out_names_.empty())
             for (const NameUse& u : names.uses)
-                if (auto t = left_out_names_.find(u.key); t != left_out_names_.end())
-                    leave_out(u.where, "uses " + u.said + ", which line " + std::to_string(t->second) + " left out",
-                              "write the counterpart of line " + std::to_string(t->second) +
-                                  " by hand in the script, then this statement");
+                if (left_out_names_.count(u.key)) {
+                    tainted = &u;
+                    break;
+                }
+        const bool values_list = st.kind == Statement::Kind::list && (st.keyword.rfind("INPUT", 0) == 0 ||
+                                                                      st.keyword.rfind("OUTPUT", 0) == 0);
+        if (tainted && values_list) {
+            // INPUT and OUTPUT lose only the items that use a left-out name
+            Statement kept = st;
+            kept.items.clear();
+            for (const Item& it : st.items) {
+                std::optional<NameUse> u = left_out_use(it.lhs);
+                if (!u && it.has_value) u = left_out_use(it.value);
+                if (!u) {
+                    kept.items.push_back(it);
+                    continue;
+                }
+                const auto [why, hint] = uses_why(*u);
+                record_left_out(st, u->where, why, hint, {}, true);
+            }
+            translate(kept);
+            return;
+        }
+        if (tainted) {
+            const auto [why, hint] = uses_why(*tainted);
+            leave_out(tainted->where, why, hint);
+        }
         translate(st);
         // a name assigned again means what this statement says from here on
         // (but not those this statement left out in part: KANE(F1, F2)'s forces)

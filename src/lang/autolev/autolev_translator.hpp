@@ -428,6 +428,8 @@ private:
         std::string time_unit{};
     };
     Journal open_journal();
+    // the first name in `e` that a left-out statement defined, if any
+    std::optional<NameUse> left_out_use(const Expr& e) const;
     void roll_back(const Journal& j);
     // translates `st`, or leaves it out (with what it defines) if it uses a name a statement
     // before it left out, or if it has no counterpart
