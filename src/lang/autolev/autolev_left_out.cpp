@@ -250,7 +250,8 @@ void Translator::record_left_out(const Statement& st, Location where, const std:
                         : hint);
     const std::string comment =
         "# left out (" + file_ + ":" + std::to_string(where.line) + "): " + one_line(reason);
-    if (st.kind == Statement::Kind::declaration) part_comments_[{st.where.line, st.where.column}].push_back(comment);
+    // a declaration's part is left out while the declarations are read, before the statements
+    if (st.kind == Statement::Kind::declaration && part) part_comments_[{st.where.line, st.where.column}].push_back(comment);
     else emit(comment);
     for (const std::string& k : defines) left_out_names_[k] = st.where.line;
     if (shapes_model(st)) model_changes_.emplace_back(st.where.line, describe(st));

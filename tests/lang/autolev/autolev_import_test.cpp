@@ -521,6 +521,7 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"kinetic_energy", kHead + "X = KE()\n", 6, 5, "KE() has no translation: write the sum"},
         BadInput{"complex_on", kHead + "COMPLEX ON\n", 6, 1, "COMPLEX ON has no counterpart: the script's numbers are real"},
         BadInput{"imaginary", kHead + "IMAGINARY J\n", 6, 11, "IMAGINARY J has no counterpart"},
+        BadInput{"definition", kHead + "SPECIFIED F = SQR(L)\nX = F\n", 6, 15, "SQR() has no translation"},
         BadInput{"array_three_indices", kHead + "Z[1, 1, 1] = 1\n", 6, 1, "an array of 3 indices ('Z[...]') has no counterpart"},
         BadInput{"auxiliary_speed", kHead + "AUXILIARY[1] = U\n", 6, 1, "auxiliary speeds (AUXILIARY[...])"},
         BadInput{"constrain_auxiliary", kHead + "CONSTRAIN(AUXILIARY[U])\n", 6, 11, "auxiliary speeds (CONSTRAIN(AUXILIARY"},
