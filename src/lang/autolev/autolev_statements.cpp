@@ -217,7 +217,11 @@ void Translator::command(const Statement& st) {
                                           "UNITSYSTEM", "UNITS", "DISPLAY", "ANIMATE", "ENCODE", "EXPLICIT",
                                           "PRINT", "RUN", "SHOW", "CLEAR", "DIGITS", "WRITE"};
     for (const char* x : ignored)
-        if (w == x) return not_translated(st.where, w, "it changes how Autolev works or prints, not the model");
+        if (w == x) {
+            not_translated(st.where, w, "it changes how Autolev works or prints, not the model");
+            return emit("# left out (" + file_ + ":" + std::to_string(st.where.line) + "): " + w +
+                        " changes how Autolev works or prints, not the model");
+        }
     if (const Entry* en = find(w); en && st.text.empty()) {  // a name alone: print it
         Expr e;
         e.kind = Expr::Kind::name;
@@ -234,8 +238,11 @@ void Translator::code(const Statement& st) {
     // CODE DYNAMICS() file.c
     std::string text = st.text;
     std::string kind = upper(text.substr(0, text.find_first_of("( \t")));
-    if (kind != "DYNAMICS")
-        return not_translated(st.where, "CODE " + kind, "only CODE DYNAMICS() has a counterpart (codegen)");
+    if (kind != "DYNAMICS") {
+        not_translated(st.where, "CODE " + kind, "only CODE DYNAMICS() has a counterpart (codegen)");
+        return emit("# left out (" + file_ + ":" + std::to_string(st.where.line) + "): CODE " + kind +
+                    " has no counterpart: only CODE DYNAMICS() has one (codegen)");
+    }
     std::size_t open = text.find('('), close = text.find(')');
     if (open != std::string::npos && close != std::string::npos && close > open &&
         text.find_first_not_of(" \t", open + 1) != close)
