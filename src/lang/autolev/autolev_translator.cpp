@@ -231,7 +231,8 @@ void Translator::declare(const Statement& st) {
         }
         return;
     }
-    if (std::any_of(st.declarators.begin(), st.declarators.end(), [](const Declarator& d) { return !d.more.empty(); })) {
+    if (w != "NEWTONIAN" &&
+        std::any_of(st.declarators.begin(), st.declarators.end(), [](const Declarator& d) { return !d.more.empty(); })) {
         // C{2,2,2}: the script's names have at most two indices; the others are declared
         Statement kept = st;
         kept.declarators.clear();
