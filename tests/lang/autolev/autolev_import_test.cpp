@@ -547,6 +547,26 @@ TEST(AutolevImport, StatementsUsingALeftOutNameAreLeftOut) {
     EXPECT_DOUBLE_EQ(v["="], 8.0);  // X = 3 L and W = L at L = 2
 }
 
+// A model given by its differential equations whose every equation is left out forms no model,
+// and says so; CODE DYNAMICS() is left out with it; what is left runs.
+TEST(AutolevImport, EquationsOfMotionLeftOutLeaveNoModelAndSaySo) {
+    AutolevTranslation t = translate_autolev(
+        "NEWTONIAN N\nCONSTANTS K\nVARIABLES X''\nX'' = -K*SQR(X)\nCODE DYNAMICS() osc.c\nINPUT K = 2, X = 1\n",
+        "none.al");
+    EXPECT_TRUE(t.ok()) << messages(t);
+    const std::string all = messages(t);
+    EXPECT_TRUE(contains(all, "4:1: the file's equations of motion (line 4) are left out, so the script forms no model"))
+        << all;
+    EXPECT_TRUE(contains(all, "4:10: left out: the Autolev function SQR() has no translation")) << all;
+    EXPECT_TRUE(contains(all, "5:1: left out: CODE DYNAMICS() needs the equations of motion, which line 4 left out"))
+        << all;
+    EXPECT_EQ(t.left_out_lines, (std::vector<int>{4, 5}));
+    EXPECT_FALSE(contains(t.script, "kane ")) << t.script;
+    EXPECT_FALSE(contains(t.script, "codegen")) << t.script;
+    EXPECT_TRUE(contains(t.script, "# left out (none.al:5): CODE DYNAMICS() needs the equations")) << t.script;
+    run(t.script);
+}
+
 // One message per bad statement, and the good statements around them still translated.
 TEST(AutolevImport, EveryBadStatementIsReportedInFileOrder) {
     AutolevTranslation t = translate_autolev(kHead + "X = BESSEL(Q)\nR> = L*N1>\nY = L +\nZ = UNDECLARED\n", "three.al");
