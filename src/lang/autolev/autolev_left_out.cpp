@@ -23,8 +23,10 @@ std::string said(const Expr& e) {
     std::string s = e.text;
     if (e.kind == Expr::Kind::index) s += "[...]";
     s += std::string(static_cast<std::size_t>(e.primes), '\'');
-    if (e.dyadic) s += ">>";
-    else if (e.vector) s += ">";
+    if (e.dyadic)
+        s += ">>";
+    else if (e.vector)
+        s += ">";
     return s;
 }
 
@@ -33,11 +35,13 @@ std::string describe(const Statement& st) {
     switch (st.kind) {
         case Statement::Kind::declaration:
         case Statement::Kind::list:
-        case Statement::Kind::command: return st.keyword;
+        case Statement::Kind::command:
+            return st.keyword;
         case Statement::Kind::assignment:
             return said(st.lhs) + " " + (st.compound ? std::string(1, st.compound) : "") + "= ...";
         case Statement::Kind::expression:
-            return st.expr.kind == Expr::Kind::call ? upper(st.expr.text) + "(...)" : "an expression";
+            return st.expr.kind == Expr::Kind::call ? upper(st.expr.text) + "(...)"
+                                                    : "an expression";
     }
     return "a statement";
 }
@@ -75,7 +79,8 @@ std::vector<StatementNames> Translator::index_names(const ParsedFile& parsed) {
         switch (st.kind) {
             case Statement::Kind::declaration: {
                 const std::string& w = st.keyword;
-                const bool definitions = w.rfind("VARIABLE", 0) == 0 || w.rfind("MOTIONVARIABLE", 0) == 0 ||
+                const bool definitions = w.rfind("VARIABLE", 0) == 0 ||
+                                         w.rfind("MOTIONVARIABLE", 0) == 0 ||
                                          w.rfind("SPECIFIED", 0) == 0;
                 for (const Declarator& d : st.declarators) {
                     if (!d.has_value) continue;
@@ -91,7 +96,8 @@ std::vector<StatementNames> Translator::index_names(const ParsedFile& parsed) {
                     if (it.has_value) uses(it.value);
                 }
                 break;
-            case Statement::Kind::command: break;
+            case Statement::Kind::command:
+                break;
             case Statement::Kind::assignment: {
                 uses(st.rhs);
                 const std::string key = upper(st.lhs.text);
@@ -133,13 +139,15 @@ std::vector<StatementNames> Translator::index_names(const ParsedFile& parsed) {
 bool Translator::shapes_model(const Statement& st) const {
     switch (st.kind) {
         case Statement::Kind::declaration:
-        case Statement::Kind::command: return false;
-        case Statement::Kind::list: return st.keyword == "MASS" || st.keyword == "INERTIA";
+        case Statement::Kind::command:
+            return false;
+        case Statement::Kind::list:
+            return st.keyword == "MASS" || st.keyword == "INERTIA";
         case Statement::Kind::expression: {
             if (st.expr.kind != Expr::Kind::call) return false;
             const std::string f = upper(st.expr.text);
-            for (const char* g : {"GRAVITY", "FORCE", "TORQUE", "SIMPROT", "V2PTS", "V1PT", "A2PTS", "A1PT", "CONSTRAIN",
-                                  "KANE"})
+            for (const char* g : {"GRAVITY", "FORCE", "TORQUE", "SIMPROT", "V2PTS", "V1PT", "A2PTS",
+                                  "A1PT", "CONSTRAIN", "KANE"})
                 if (f == g) return true;
             return false;
         }
@@ -147,12 +155,14 @@ bool Translator::shapes_model(const Statement& st) const {
             const Expr& lhs = st.lhs;
             const std::string key = upper(lhs.text);
             if (lhs.kind == Expr::Kind::index) return key == "DEPENDENT" || key == "AUXILIARY";
-            if (lhs.primes > 0 || key == "ZERO") return true;  // kinematical or differential equations
-            if (lhs.dyadic) return key.rfind("I_", 0) == 0;    // an inertia dyadic
+            if (lhs.primes > 0 || key == "ZERO")
+                return true;  // kinematical or differential equations
+            if (lhs.dyadic) return key.rfind("I_", 0) == 0;  // an inertia dyadic
             if (lhs.vector) return model_vector(key);
             // a direction cosine matrix A_B = [...]
             auto fr = [this](std::string_view x) { return frame_of(x); };
-            return st.rhs.kind == Expr::Kind::matrix && split(std::string_view(lhs.text), fr, fr).has_value();
+            return st.rhs.kind == Expr::Kind::matrix &&
+                   split(std::string_view(lhs.text), fr, fr).has_value();
         }
     }
     return false;
@@ -161,7 +171,8 @@ bool Translator::shapes_model(const Statement& st) const {
 Translator::Journal Translator::open_journal() {
     added_.clear();
     wholes_written_.clear();
-    return {model_.size(), out_.diagnostics.size(), extra_constants_.size(), renames_.size(), time_unit_};
+    return {model_.size(), out_.diagnostics.size(), extra_constants_.size(), renames_.size(),
+            time_unit_};
 }
 
 void Translator::roll_back(const Journal& j) {
@@ -183,7 +194,8 @@ std::optional<NameUse> Translator::left_out_use(const Expr& root) const {
         const Expr* e = todo.back();
         todo.pop_back();
         if (e->kind == Expr::Kind::name || e->kind == Expr::Kind::index)
-            if (left_out_names_.count(upper(e->text))) return NameUse{upper(e->text), said(*e), e->where};
+            if (left_out_names_.count(upper(e->text)))
+                return NameUse{upper(e->text), said(*e), e->where};
         for (const Expr& a : e->args) todo.push_back(&a);
     }
     return std::nullopt;
@@ -195,9 +207,10 @@ void Translator::translate_or_leave_out(const Statement& st, const StatementName
         for (const std::string& l : c->second) emit(l);
     auto uses_why = [this](const NameUse& u) {
         const int line = left_out_names_.at(u.key);
-        return std::make_pair("uses " + u.said + ", which line " + std::to_string(line) + " left out",
-                              "write the counterpart of line " + std::to_string(line) +
-                                  " by hand in the script, then this statement");
+        return std::make_pair(
+            "uses " + u.said + ", which line " + std::to_string(line) + " left out",
+            "write the counterpart of line " + std::to_string(line) +
+                " by hand in the script, then this statement");
     };
     const Journal j = open_journal();
     try {
@@ -208,8 +221,9 @@ void Translator::translate_or_leave_out(const Statement& st, const StatementName
                     tainted = &u;
                     break;
                 }
-        const bool values_list = st.kind == Statement::Kind::list && (st.keyword.rfind("INPUT", 0) == 0 ||
-                                                                      st.keyword.rfind("OUTPUT", 0) == 0);
+        const bool values_list =
+            st.kind == Statement::Kind::list &&
+            (st.keyword.rfind("INPUT", 0) == 0 || st.keyword.rfind("OUTPUT", 0) == 0);
         if (tainted && values_list) {
             // INPUT and OUTPUT lose only the items that use a left-out name
             Statement kept = st;
@@ -235,7 +249,8 @@ void Translator::translate_or_leave_out(const Statement& st, const StatementName
         // a name assigned again means what this statement says from here on
         // (but not those this statement left out in part: KANE(F1, F2)'s forces)
         for (const std::string& k : names.defines)
-            if (auto t = left_out_names_.find(k); t != left_out_names_.end() && t->second != st.where.line)
+            if (auto t = left_out_names_.find(k);
+                t != left_out_names_.end() && t->second != st.where.line)
                 left_out_names_.erase(t);
     } catch (const LeftOut& e) {
         roll_back(j);
@@ -244,19 +259,24 @@ void Translator::translate_or_leave_out(const Statement& st, const StatementName
 }
 
 void Translator::record_left_out(const Statement& st, Location where, const std::string& reason,
-                                 const std::string& hint, const std::vector<std::string>& defines, bool part) {
+                                 const std::string& hint, const std::vector<std::string>& defines,
+                                 bool part) {
     report(Severity::warning, where, (part ? "left out in part: " : "left out: ") + reason,
-           hint.empty() ? "the statement is left out of the Alembert script; write its counterpart by hand if needed"
+           hint.empty() ? "the statement is left out of the Alembert script; write its counterpart "
+                          "by hand if needed"
                         : hint);
     const std::string comment =
         "# left out (" + file_ + ":" + std::to_string(where.line) + "): " + one_line(reason);
     // a declaration's part is left out while the declarations are read, before the statements
-    if (st.kind == Statement::Kind::declaration && part) part_comments_[{st.where.line, st.where.column}].push_back(comment);
-    else emit(comment);
+    if (st.kind == Statement::Kind::declaration && part)
+        part_comments_[{st.where.line, st.where.column}].push_back(comment);
+    else
+        emit(comment);
     for (const std::string& k : defines) left_out_names_[k] = st.where.line;
     if (shapes_model(st)) model_changes_.emplace_back(st.where.line, describe(st));
     const bool dynamics =
-        st.kind == Statement::Kind::assignment && st.lhs.kind == Expr::Kind::name && !st.lhs.vector &&
+        st.kind == Statement::Kind::assignment && st.lhs.kind == Expr::Kind::name &&
+        !st.lhs.vector &&
         (st.lhs.primes == 2 || (upper(st.lhs.text) == "ZERO" && st.lhs.primes == 0) ||
          (st.lhs.primes == 1 && [&] {
              const Entry* en = find(st.lhs.text);
@@ -264,7 +284,8 @@ void Translator::record_left_out(const Statement& st, Location where, const std:
          }()));
     if (dynamics && !part) {
         dynamics_left_out_.push_back(st.where.line);
-        if (const Entry* en = find(st.lhs.text); en && st.lhs.primes > 0) odes_left_out_.insert(en->name);
+        if (const Entry* en = find(st.lhs.text); en && st.lhs.primes > 0)
+            odes_left_out_.insert(en->name);
     }
 }
 
@@ -276,23 +297,28 @@ void Translator::say_model_changes() {
         return s;
     };
     if (kane_at_ && !model_changes_.empty()) {
-        const std::string which = (model_changes_.size() == 1 ? "line " : "lines ") + lines(model_changes_);
+        const std::string which =
+            (model_changes_.size() == 1 ? "line " : "lines ") + lines(model_changes_);
         const Location where = odes_.empty() ? kane_where_ : odes_.front().second;
         const std::string says = "the equations of motion are formed without what " + which +
                                  " left out, so they are not the Autolev file's equations";
         report(Severity::warning, where, says,
-               "write the counterparts of those lines by hand in the script, before its kane statement");
+               "write the counterparts of those lines by hand in the script, before its kane "
+               "statement");
         model_warnings_.insert(says);
-        model_[*kane_at_] = "# the equations below lack what " + which + " left out: they are not the Autolev "
-                            "file's equations\n" + model_[*kane_at_];
+        model_[*kane_at_] = "# the equations below lack what " + which +
+                            " left out: they are not the Autolev "
+                            "file's equations\n" +
+                            model_[*kane_at_];
     }
     if (!kane_at_ && !dynamics_left_out_.empty()) {
         std::string which;
         for (std::size_t i = 0; i < dynamics_left_out_.size(); ++i)
             which += (i ? ", " : "") + std::to_string(dynamics_left_out_[i]);
-        const std::string says = "the file's equations of motion (line" +
-                                 std::string(dynamics_left_out_.size() == 1 ? " " : "s ") + which +
-                                 ") are left out, so the script forms no model: it holds the rest of the file only";
+        const std::string says =
+            "the file's equations of motion (line" +
+            std::string(dynamics_left_out_.size() == 1 ? " " : "s ") + which +
+            ") are left out, so the script forms no model: it holds the rest of the file only";
         report(Severity::warning, {dynamics_left_out_.front(), 1}, says,
                "write the equations of motion by hand in the script (docs/autolev.md)");
         model_warnings_.insert(says);
