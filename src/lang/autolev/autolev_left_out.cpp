@@ -124,6 +124,11 @@ std::vector<StatementNames> Translator::index_names(const ParsedFile& parsed) {
                     for (std::size_t i = 1; i < e.args.size(); ++i) defines_names(e.args[i]);
                 if (f == "KANE")
                     for (const Expr& a : e.args) defines_names(a);
+                // SIMPROT(A, B, ...) orients B: B and its unit vectors B1>, B2>, B3>
+                if (f == "SIMPROT" && e.args.size() == 4 && e.args[1].kind == Expr::Kind::name) {
+                    const std::string b = upper(e.args[1].text);
+                    for (const char* k : {"", "1", "2", "3"}) n.defines.push_back(b + k);
+                }
                 if (f == "CONSTRAIN")
                     for (const Expr& a : e.args)
                         if (a.kind == Expr::Kind::index && upper(a.text) == "AUXILIARY")

@@ -547,6 +547,21 @@ TEST(AutolevImport, StatementsUsingALeftOutNameAreLeftOut) {
     EXPECT_DOUBLE_EQ(v["="], 8.0);  // X = 3 L and W = L at L = 2
 }
 
+// A rotation left out leaves its frame unoriented: what uses the frame or its unit vectors is
+// left out with it.
+TEST(AutolevImport, AFrameLeftUnorientedTakesItsUsesWithIt) {
+    AutolevTranslation t = translate_autolev(
+        kHead + "SIMPROT(N, A, 3, SQR(Q))\nR> = L*A1>\nX = DOT(R>, N1>)\nY = L*Q\n", "frame.al");
+    EXPECT_TRUE(t.ok()) << messages(t);
+    const std::string all = messages(t);
+    EXPECT_TRUE(contains(all, "6:18: left out: the Autolev function SQR() has no translation")) << all;
+    EXPECT_TRUE(contains(all, "7:8: left out: uses A1>, which line 6 left out")) << all;
+    EXPECT_TRUE(contains(all, "8:9: left out: uses R>, which line 7 left out")) << all;
+    EXPECT_EQ(t.left_out_lines, (std::vector<int>{6, 7, 8}));
+    EXPECT_TRUE(contains(t.script, "Y = L*Q\n")) << t.script;
+    run(t.script);
+}
+
 // A model given by its differential equations whose every equation is left out forms no model,
 // and says so; CODE DYNAMICS() is left out with it; what is left runs.
 TEST(AutolevImport, EquationsOfMotionLeftOutLeaveNoModelAndSaySo) {
