@@ -321,6 +321,15 @@ int import_autolev(const ImportOptions& o) {
                   << " is left as it was)\n";
         return kScriptError;
     }
+    // statements without a counterpart were left out, each with a warning above: the script is
+    // written, the exit status is 0, and the lines are summed up
+    if (!t.left_out_lines.empty()) {
+        std::cerr << "alembert: '" << name << "' imported with " << t.left_out_lines.size() << " statement"
+                  << (t.left_out_lines.size() == 1 ? "" : "s") << " left out (line"
+                  << (t.left_out_lines.size() == 1 ? " " : "s ");
+        for (std::size_t i = 0; i < t.left_out_lines.size(); ++i) std::cerr << (i ? ", " : "") << t.left_out_lines[i];
+        std::cerr << ")\n";
+    }
     if (o.out == "-") {
         std::cout << t.script;
         return kOk;

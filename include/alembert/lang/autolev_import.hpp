@@ -12,14 +12,21 @@ namespace alembert::lang {
 /// The result of translating an Autolev file: the Alembert script, and what could not be
 /// translated, statement by statement.
 ///
-/// Errors are input the translator cannot read (a malformed statement, an undeclared name,
-/// a wrong number of arguments); warnings are Autolev statements it read but that have no
-/// counterpart in Alembert (`PAUSE`, `UNITSYSTEM`, ...) and were left out. Each names the
+/// Errors are input the translator cannot read or that cannot mean anything (a malformed
+/// statement, an undeclared name, a wrong number of arguments, a vector plus a scalar);
+/// warnings are Autolev statements it read but that have no counterpart in Alembert (`PAUSE`,
+/// `SQR(X)`, `COMPLEX ON`, `GRAVITY` on some bodies, ...) and were left out, with a comment at
+/// their place in the script, together with every later statement that uses what they defined. Each names the
 /// file, line and column of the Autolev statement, says what is wrong and how to go on.
 struct AutolevTranslation {
     std::string script{};                   ///< the Alembert script (complete only if ok())
     std::vector<Diagnostic> diagnostics{};  ///< in the order of the Autolev file
-    /// True if no diagnostic is an error: the script holds every statement that was read.
+    /// The lines of the Autolev file left out of the script in whole or in part (one warning
+    /// each at least), ascending: statements with no counterpart, and the statements after
+    /// them that use what they defined.
+    std::vector<int> left_out_lines{};
+    /// True if no diagnostic is an error: the script holds every statement that was read, but
+    /// those the warnings (and left_out_lines) name.
     bool ok() const;
 };
 

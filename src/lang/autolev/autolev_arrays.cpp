@@ -9,7 +9,11 @@
 namespace alembert::lang::autolev {
 
 std::pair<int, int> Translator::array_index(const Expr& e, const Entry& m) {
-    if (e.args.empty() || e.args.size() > 2)
+    if (e.args.size() > 2)
+        leave_out(e.where, "an array of " + std::to_string(e.args.size()) + " indices ('" + e.text +
+                               "[...]') has no counterpart: the script's matrices have two",
+                  "write its elements as names of their own (" + e.text + "_1_1_1 = ...)");
+    if (e.args.empty())
         fail(e.where, "an array takes one index (" + e.text + "[i]) or two (" + e.text + "[i, j])",
              "write " + e.text + "[1] or " + e.text + "[1, 2]");
     if (m.indices != 0 && static_cast<int>(e.args.size()) != m.indices)
@@ -116,6 +120,7 @@ Text Translator::whole_array(const Expr& e, const Entry& m) {
         }
         emit(stored.name + " = " + value);
         stored.whole_written = true;
+        wholes_written_.push_back(stored.key);
     }
     return {stored.name, false, 5, false, stored.rows, stored.cols};
 }

@@ -80,8 +80,9 @@ void Translator::dyadic_assignment(const Statement& st) {
         };
         auto pt = [this](std::string_view n) { return point_of(n); };
         if (split(std::string_view(lhs.text).substr(2), massive, pt))
-            fail(lhs.where, "'" + lhs.text + ">>' is an inertia dyadic, which the model's masses and inertias give",
-                 "give the body's inertia with INERTIA B, I11, I22, I33, or name the dyadic otherwise");
+            leave_out(lhs.where, "'" + lhs.text + ">>' is an inertia dyadic, which the model's masses and inertias "
+                                 "give; an inertia assigned as a dyadic has no counterpart",
+                      "give the body's inertia with INERTIA B, I11, I22, I33, or name the dyadic otherwise");
     }
     Text r = expr(st.rhs);
     if (!r.dyadic)
@@ -108,7 +109,7 @@ Text Translator::dyadic_combine(const Expr& e, Text a, Text b) {
     if (op == "*" && a.vector && b.vector) return dyadic_text("outer(" + a.s + ", " + b.s + ")", 5);
     if (op == "*" || op == "/") {
         if (a.dyadic && b.dyadic)
-            fail(e.where, std::string("'") + op + "' between two dyadics is not translated",
+            leave_out(e.where, std::string("'") + op + "' between two dyadics has no counterpart",
                  "DOT(D>>, E>>) is their dot product, a dyadic; '*' between two vectors makes their dyad, and "
                  "between two dyadics a product the script has no counterpart of");
         const Text& other = a.dyadic ? b : a;

@@ -1,5 +1,6 @@
 // SPDX-License-Identifier: MIT
 // The reader of Autolev files: lines to tokens, tokens to statements and expressions.
+#include <algorithm>
 #include <cctype>
 #include <string>
 #include <string_view>
@@ -443,9 +444,15 @@ void parse_declarators(Parser& p, Statement& st) {
                 p.take();
                 range(d.first2, d.last2);
                 count *= d.last2 < d.first2 ? 0 : static_cast<std::size_t>(d.last2 - d.first2 + 1);
-                if (p.is_symbol(","))
-                    p.fail(p.peek(), "indexed names of more than two dimensions ('" + d.name + "{...,...,...}') are not "
-                                     "translated", "declare them as names of two indices or one by one");
+                // C{2,2,2}: read (the translator leaves it out, naming the names it would declare)
+                while (p.is_symbol(",")) {
+                    p.take();
+                    int f = 1, l = 0;
+                    range(f, l);
+                    d.more.emplace_back(f, l);
+                    count *= l < f ? 0 : static_cast<std::size_t>(l - f + 1);
+                    count = std::min(count, kMaxIndexed + 1);  // no overflow: more than 1000 is refused below
+                }
             }
             p.expect("}");
             if (count == 0 || count > kMaxIndexed)

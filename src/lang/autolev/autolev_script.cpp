@@ -49,6 +49,41 @@ std::string Translator::kane_statement() {
     std::string name = "K";
     for (int k = 2; find(name) || labels_.count(name); ++k) name = "K" + std::to_string(k);
     kane_name_ = name;
+    std::string s = "kane " + name + " for " + join(coordinates);
+    if (speeds.empty() && !constraints_.empty() && odes_.empty()) {
+        // CONSTRAIN(DEPENDENT[Q1']) in a model without speeds: the kane statement's constraints
+        // need speeds, so each coordinate gets one equal to its rate, u = q', and the rates the
+        // file names dependent are those speeds
+        std::vector<std::string> said;
+        for (const std::string& q : coordinates) {
+            const std::string u = fresh_name(q + "_u");
+            rate_speeds_.emplace_back(q, u);
+            speeds.push_back(u);
+            residuals.push_back(q + "' - " + u);
+            said.push_back(u + " = " + q + "'");
+        }
+        std::vector<std::string> rates;
+        for (std::string& d : dependent_) {
+            if (d.empty() || d.back() != '\'') {
+                report(Severity::error, dependent_where_.empty() ? kane_where_ : dependent_where_.front(),
+                       "DEPENDENT[" + d + "] names a variable that is no speed: the model has no kinematical "
+                       "equations (Q1' = U1), so its speeds are the coordinates' rates",
+                       "name the dependent rates, CONSTRAIN(DEPENDENT[Q1']), or declare speeds and their kinematical "
+                       "equations");
+                continue;
+            }
+            const std::string q = d.substr(0, d.size() - 1);
+            for (const auto& [c, u] : rate_speeds_)
+                if (c == q) {
+                    rates.push_back(u + " (of " + d + ")");
+                    d = u;
+                }
+        }
+        report(Severity::note, constraints_where_ ? *constraints_where_ : kane_where_,
+               "the model has no speeds: each coordinate is given one equal to its rate (" + join(said) +
+                   "), as the kane statement's constraints need; " + join(rates) + " " +
+                   (rates.size() == 1 ? "is" : "are") + " dependent");
+    }
     // auxiliary speeds: AUXILIARY[i] = U4 with U4 listed makes U4 an auxiliary speed; another
     // constraint E with U2 listed is opened by a new speed UA written into it as its violation
     // (E - UA = 0), U2 dependent: the same motion (UA = 0) and, for UA, U2's partial velocities
@@ -70,15 +105,20 @@ std::string Translator::kane_statement() {
         constraints.push_back("(" + c + ") - " + ua);
         dependent.push_back(u);
     }
-    std::string s = "kane " + name + " for " + join(coordinates);
     if (!speeds.empty()) {
+        for (std::size_t i = 0; i < dependent_.size(); ++i)
+            if (!dependent_[i].empty() && dependent_[i].back() == '\'')
+                report(Severity::error, i < dependent_where_.size() ? dependent_where_[i] : kane_where_,
+                       "DEPENDENT[" + dependent_[i] + "] names a rate in a model with speeds",
+                       "name the dependent speed: CONSTRAIN(DEPENDENT[U3])");
         s += " speeds " + join(speeds) + " \\\n  kinematics [" + join(residuals) + "]";
         if (!constraints.empty())
             s += " \\\n  constraints [" + join(constraints) + "] dependent " + join(dependent);
         if (!auxiliary.empty()) s += " \\\n  auxiliary " + join(auxiliary);
     } else if (!constraints_.empty()) {
-        report(Severity::error, kane_where_, "constraints (DEPENDENT[...]) without speeds are not translated",
-               "declare speeds U with MOTIONVARIABLES and kinematical equations Q1' = U1");
+        report(Severity::error, kane_where_, "constraints (DEPENDENT[...]) in a model given by its differential "
+                                             "equations are not translated",
+               "write the constraint into the equations, or give the model by its bodies and KANE()");
     } else if (!aux_speeds_.empty()) {
         report(Severity::error, aux_constraints_.front().second,
                "auxiliary speeds (AUXILIARY[...]) in a model without speeds are not translated",
@@ -164,6 +204,7 @@ void Translator::assemble() {
                        std::to_string(dependent_.size()) + " dependent speeds",
                    "name the dependent speeds with CONSTRAIN(DEPENDENT[U3, ...]) before KANE()");
         model_[*kane_at_] = kane_statement();
+        say_model_changes();
         // SOLVE(ZERO, ...) solves Kane's equations, named now
         for (std::string& l : model_)
             for (std::size_t at = l.find('\x02'); at != std::string::npos; at = l.find('\x02', at))
@@ -172,6 +213,7 @@ void Translator::assemble() {
             for (std::size_t at = l.find('\x02'); at != std::string::npos; at = l.find('\x02', at))
                 l.replace(at, 1, kane_name_);
     }
+    if (!kane_at_) say_model_changes();
     std::string& s = out_.script;
     s = "# " + file_ + ", translated from Autolev by alembert import\n";
     for (const std::string& r : renames_) s += "# renamed: " + r + "\n";
@@ -232,6 +274,7 @@ void Translator::assemble() {
             parts.push_back(v + std::string(static_cast<std::size_t>(p), '\''));
         }
         for (const std::string& ua : aux_opened_) parts.push_back(ua + "''");
+        for (const auto& [q, u] : rate_speeds_) parts.push_back(u + "''");  // the speeds u = q'
         if (!parts.empty()) s += "variable " + join(parts) + "\n";
     }
     for (const std::string& v : variables_)
@@ -250,7 +293,10 @@ void Translator::assemble() {
             if (std::find(seen.begin(), seen.end(), n) != seen.end()) continue;
             seen.push_back(n);
             if (given_.count(n)) continue;  // given above with `input`
-            parts.push_back(n + " = " + initial_[n]);
+            std::string state = n;
+            for (const auto& [q, u] : rate_speeds_)
+                if (n == q + "'") state = u;  // INPUT Q' = 1: the speed u = q' starts at 1
+            parts.push_back(state + " = " + initial_[n]);
         }
         if (!parts.empty()) s += "initial " + join(parts) + "\n";
     }
@@ -259,14 +305,22 @@ void Translator::assemble() {
         s += "tolerance" + (abs_tol_.empty() ? "" : " abs " + abs_tol_) + (rel_tol_.empty() ? "" : " rel " + rel_tol_) + "\n";
     for (const std::string& l : tail_outputs_) s += l + "\n";
     for (const auto& [where, l] : tail_codegen_) {
-        if (!kane_at_) {
+        if (!kane_at_ && !dynamics_left_out_.empty()) {
+            report(Severity::warning, where,
+                   "left out: CODE DYNAMICS() needs the equations of motion, which line " +
+                       std::to_string(dynamics_left_out_.front()) + " left out",
+                   "write the equations of motion by hand in the script, then codegen");
+            s += "# left out (" + file_ + ":" + std::to_string(where.line) + "): CODE DYNAMICS() needs the equations "
+                 "of motion, which line " + std::to_string(dynamics_left_out_.front()) + " left out\n";
+        } else if (!kane_at_) {
             report(Severity::error, where, "CODE DYNAMICS() without KANE()",
                    "form Kane's equations (ZERO = FR() + FRSTAR(), KANE()) before generating code");
-        } else if (!kinematics_.empty() && l.rfind("codegen matlab", 0) == 0) {
+        } else if ((!kinematics_.empty() || !rate_speeds_.empty()) && l.rfind("codegen matlab", 0) == 0) {
             // code in generalized speeds is generated in C, C++ and Python
             not_translated(where, "CODE DYNAMICS() to a MATLAB file",
                            "Alembert generates code for Kane's equations in generalized speeds (this model's "
-                           "kinematical equations such as " + kinematics_.front().coordinate +
+                           "kinematical equations such as " +
+                               (kinematics_.empty() ? rate_speeds_.front().first : kinematics_.front().coordinate) +
                                "' = ...) in C, C++ and Python");
         } else {
             s += l + "\n";

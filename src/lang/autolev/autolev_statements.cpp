@@ -30,14 +30,19 @@ void Translator::list(const Statement& st) {
     const std::string& w = st.keyword;
     if (w == "MASS") {
         if (st.items.empty()) fail(st.where, "MASS names no body or particle", "write MASS A = MA, P = MP");
+        // every mass first: a statement left out gives none of them
+        std::vector<std::pair<std::string, std::string>> masses;
         for (const Item& it : st.items) {
             const Entry* en = it.lhs.kind == Expr::Kind::name && !it.lhs.vector ? find_object(it.lhs.text) : nullptr;
             if (!en || (en->kind != Kind::body && en->kind != Kind::particle))
                 fail(it.where, "MASS takes a body or a particle before '='", "write MASS A = MA");
             if (!it.has_value) fail(it.where, "the mass of '" + it.lhs.text + "' is missing", "write MASS " + it.lhs.text + " = M");
             if (!it.unit.empty()) fail(it.where, "a unit in MASS", "give units in INPUT");
-            emit("mass " + en->name + " = " + dimensioned(scalar(it.value), "m_" + en->name));
-            massive_.insert(en->name);
+            masses.emplace_back(en->name, dimensioned(scalar(it.value), "m_" + en->name));
+        }
+        for (const auto& [body, m] : masses) {
+            emit("mass " + body + " = " + m);
+            massive_.insert(body);
             release_inertias();  // INERTIA B(P) before MASS B
         }
         return;
@@ -186,9 +191,10 @@ void Translator::command(const Statement& st) {
             report(Severity::note, st.where, "COMPLEX OFF: the script's numbers are real; nothing to translate");
             return;
         }
-        fail(st.where, "COMPLEX " + (on.empty() ? std::string("") : on + " ") +
-                           "is not translated: Alembert has no complex numbers",
-             "remove it; the script's constants and variables are real");
+        leave_out(st.where, "COMPLEX " + (on.empty() ? std::string("") : on + " ") +
+                                "has no counterpart: the script's numbers are real, and the statements after it are "
+                                "read with real numbers",
+                  "remove it; the script's constants and variables are real");
     }
     if (w == "DEGREES" || w == "DEGREE") {
         if (on == "OFF") {  // angles without a unit are radians: as the translation reads them
@@ -211,7 +217,11 @@ void Translator::command(const Statement& st) {
                                           "UNITSYSTEM", "UNITS", "DISPLAY", "ANIMATE", "ENCODE", "EXPLICIT",
                                           "PRINT", "RUN", "SHOW", "CLEAR", "DIGITS", "WRITE"};
     for (const char* x : ignored)
-        if (w == x) return not_translated(st.where, w, "it changes how Autolev works or prints, not the model");
+        if (w == x) {
+            not_translated(st.where, w, "it changes how Autolev works or prints, not the model");
+            return emit("# left out (" + file_ + ":" + std::to_string(st.where.line) + "): " + w +
+                        " changes how Autolev works or prints, not the model");
+        }
     if (const Entry* en = find(w); en && st.text.empty()) {  // a name alone: print it
         Expr e;
         e.kind = Expr::Kind::name;
@@ -228,8 +238,11 @@ void Translator::code(const Statement& st) {
     // CODE DYNAMICS() file.c
     std::string text = st.text;
     std::string kind = upper(text.substr(0, text.find_first_of("( \t")));
-    if (kind != "DYNAMICS")
-        return not_translated(st.where, "CODE " + kind, "only CODE DYNAMICS() has a counterpart (codegen)");
+    if (kind != "DYNAMICS") {
+        not_translated(st.where, "CODE " + kind, "only CODE DYNAMICS() has a counterpart (codegen)");
+        return emit("# left out (" + file_ + ":" + std::to_string(st.where.line) + "): CODE " + kind +
+                    " has no counterpart: only CODE DYNAMICS() has one (codegen)");
+    }
     std::size_t open = text.find('('), close = text.find(')');
     if (open != std::string::npos && close != std::string::npos && close > open &&
         text.find_first_not_of(" \t", open + 1) != close)
@@ -418,7 +431,7 @@ void Translator::check_differential_model() {
         bool has = false;
         for (const auto& [x, where] : odes_) has = has || x == v;
         const Entry* en = find(v);
-        if (!has)
+        if (!has && !odes_left_out_.count(v))  // a left-out equation is said where it was left out
             report(Severity::error, en ? en->where : at,
                    "the variable '" + v + "' has no equation (" + v + "'' = ...) among the model's differential equations",
                    "give it one, or declare it SPECIFIED and give its value with INPUT");
@@ -527,16 +540,18 @@ void Translator::vector_assignment(const Statement& st) {
 
 Text Translator::load_value(const Statement& st, const std::string& key) {
     if (st.compound == 0) {
-        if (!assigned_loads_.insert(key).second)
+        if (assigned_loads_.count(key))
             fail(st.lhs.where, "'" + st.lhs.text + ">' is assigned a second time, which replaces its first value",
                  "add to it with " + st.lhs.text + "> += v> (or FORCE(...), TORQUE(...)), or remove the first");
-        return vec(st.rhs);
+        Text v = vec(st.rhs);  // first: a value left out leaves the load unassigned
+        assigned_loads_.insert(key);
+        return v;
     }
     if (st.compound != '+' && st.compound != '-')
         fail(st.lhs.where, std::string("'") + st.compound + "=' on a force or torque is not translated",
              "write the whole load: " + st.lhs.text + "> = ...");
-    assigned_loads_.insert(key);
     Text v = vec(st.rhs.args[1]);
+    assigned_loads_.insert(key);
     if (st.compound == '-') v = {"-" + paren(v, 4), true, 3, v.numeric};
     return v;
 }
@@ -577,8 +592,9 @@ void Translator::expression_statement(const Statement& st) {
         nargs(4, "SIMPROT(A, B, 3, Q1)");
         std::string a = frame_name(e.args[0]), b = frame_name(e.args[1]);
         std::string axis = simprot_axis(e.args[2], a, b);
+        const std::string by = angle(e.args[3], scalar(e.args[3]), "SIMPROT").s;
         parent_[b] = a;
-        return emit("rotate " + b + " from " + a + " about " + axis + " by " + angle(e.args[3], scalar(e.args[3]), "SIMPROT").s);
+        return emit("rotate " + b + " from " + a + " about " + axis + " by " + by);
     }
     if (f == "V2PTS" || f == "V1PT" || f == "A2PTS") {
         nargs(4, (e.text + "(N, B, P, Q)").c_str());
@@ -605,8 +621,9 @@ void Translator::expression_statement(const Statement& st) {
     if (f == "GRAVITY") {
         if (e.args.empty()) fail(e.where, "GRAVITY() needs the vector", "write GRAVITY(-G*N2>)");
         if (e.args.size() > 1)
-            fail(e.args[1].where, "GRAVITY on some bodies only is not translated",
-                 "Alembert's gravity acts on every body and particle; apply FORCE() to these instead");
+            leave_out(e.args[1].where, "GRAVITY on some bodies only has no counterpart: the script's gravity acts on "
+                                       "every body and particle",
+                      "apply a force m*g> at each of these bodies' mass centres instead (FORCE_BO> = MB*g>)");
         has_gravity_ = true;
         return emit("gravity " + dimensioned(vec(e.args[0]), "g_" + newtonian_));
     }
@@ -657,11 +674,22 @@ void Translator::expression_statement(const Statement& st) {
                      "name the dependent speeds with CONSTRAIN(DEPENDENT[U3]), the auxiliary ones with "
                      "CONSTRAIN(AUXILIARY[U4])");
             for (const Expr& u : a.args) {
-                const Entry* en = u.kind == Expr::Kind::name && !u.vector && u.primes == 0 ? find(u.text) : nullptr;
+                // a speed (U3), or a coordinate's rate (Q1') in a model without speeds
+                const Entry* en = u.kind == Expr::Kind::name && !u.vector && u.primes <= 1 ? find(u.text) : nullptr;
                 if (!en || en->kind != Kind::variable)
                     fail(u.where, which + "[...] lists speeds, declared with VARIABLES or MOTIONVARIABLES",
-                         "name a speed here, or declare '" + u.text + "' with MOTIONVARIABLES");
-                (which == "DEPENDENT" ? dependent_ : aux_speeds_).push_back(en->name);
+                         which == "DEPENDENT"
+                             ? "write CONSTRAIN(DEPENDENT[U3]), or CONSTRAIN(DEPENDENT[Q1']) in a model without speeds"
+                             : "name a speed here, or declare '" + u.text + "' with MOTIONVARIABLES");
+                if (which == "DEPENDENT") {
+                    dependent_.push_back(en->name + (u.primes ? "'" : ""));
+                    dependent_where_.push_back(u.where);
+                } else {
+                    if (u.primes)
+                        fail(u.where, "AUXILIARY[...] lists speeds, not rates",
+                             "name the speed the auxiliary constraint is solved for: CONSTRAIN(AUXILIARY[U4])");
+                    aux_speeds_.push_back(en->name);
+                }
             }
             dependent = dependent || which == "DEPENDENT";
         }

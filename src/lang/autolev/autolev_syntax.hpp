@@ -107,6 +107,9 @@ struct Declarator {
     std::string name{};
     int first = 0, last = -1;  ///< an index range when last >= first (`Q{3}`: 1..3)
     int first2 = 0, last2 = -1;  ///< a second index range (`C{2,3}`: C11, ..., C23)
+    /// third and further index ranges (`C{2,2,2}`): read, and left out by the translator, as
+    /// the script's names have at most two indices
+    std::vector<std::pair<int, int>> more{};
     int primes = 0;
     char sign = 0;             ///< a qualifier after the name: '+', '-' or '~' (`CONSTANTS L+`)
     Location sign_where{};

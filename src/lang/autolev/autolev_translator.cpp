@@ -50,13 +50,15 @@ AutolevTranslation Translator::run(std::string_view source) {
     std::vector<Diagnostic> declaration_problems = std::move(pending_);
     pending_.clear();
     std::size_t next_declaration_problem = 0;
-    for (const Statement& st : parsed.statements) {
+    const std::vector<StatementNames> index = index_names(parsed);
+    for (std::size_t i = 0; i < parsed.statements.size(); ++i) {
+        const Statement& st = parsed.statements[i];
         flush_problems(st.where, false);
         while (next_declaration_problem < declaration_problems.size() &&
                declaration_problems[next_declaration_problem].location.line <= st.where.line)
             out_.diagnostics.push_back(declaration_problems[next_declaration_problem++]);
         try {
-            translate(st);
+            translate_or_leave_out(st, index[i]);
         } catch (const ScriptError& e) {
             report(Severity::error, e.where(), e.what(), e.hint());
         }
@@ -83,6 +85,11 @@ AutolevTranslation Translator::run(std::string_view source) {
         return a.location.line != b.location.line ? a.location.line < b.location.line
                                                   : a.location.column < b.location.column;
     });
+    // the lines of the file left out, in whole or in part (each warning leaves something out)
+    for (const Diagnostic& d : out_.diagnostics)
+        if (d.severity == Severity::warning && !model_warnings_.count(d.message) &&
+            (out_.left_out_lines.empty() || out_.left_out_lines.back() != d.location.line))
+            out_.left_out_lines.push_back(d.location.line);
     return std::move(out_);
 }
 
@@ -157,6 +164,7 @@ const Entry& Translator::add(const std::string& name, Kind kind, Location where)
              "in the Autolev file");
     }
     Entry e{kind, alembert_spelling(name, where), where, false, key};
+    added_.emplace_back(key, is_object(kind));
     if (auto o = other.find(key); o != other.end()) {
         // a frame A beside a variable A: the later one is renamed (A_var), as the script has
         // one name for one thing
@@ -213,6 +221,43 @@ void Translator::declare(const Statement& st) {
                "'" + d.name + "' is declared without it; expressions that rely on its sign (sqrt(" + d.name +
                    "^2), abs(" + d.name + ")) keep both signs");
     };
+    if (w == "IMAGINARY") {
+        // the script's numbers are real: the names are left out, and so is what uses them
+        for (const Declarator& d : st.declarators) {
+            std::vector<std::string> keys;
+            for (const std::string& n : expand(d)) keys.push_back(upper(n));
+            record_left_out(st, d.where, "IMAGINARY " + d.name + " has no counterpart: the script's numbers are real",
+                            "write complex quantities as their real and imaginary parts, two real names", keys, true);
+        }
+        return;
+    }
+    if (w != "NEWTONIAN" &&
+        std::any_of(st.declarators.begin(), st.declarators.end(), [](const Declarator& d) { return !d.more.empty(); })) {
+        // C{2,2,2}: the script's names have at most two indices; the others are declared
+        Statement kept = st;
+        kept.declarators.clear();
+        for (const Declarator& d : st.declarators) {
+            if (d.more.empty()) {
+                kept.declarators.push_back(d);
+                continue;
+            }
+            std::vector<std::string> names = expand(d), keys;
+            for (const auto& [first, last] : d.more) {
+                std::vector<std::string> longer;
+                for (const std::string& n : names)
+                    for (int k = first; k <= last; ++k) longer.push_back(n + std::to_string(k));
+                names = std::move(longer);
+            }
+            for (const std::string& n : names) keys.push_back(upper(n));
+            record_left_out(st, d.where,
+                            "'" + d.name + "{...}' has " + std::to_string(2 + d.more.size()) +
+                                " indices, and the script's indexed names have at most two (" + names.front() +
+                                ", ..., " + names.back() + " are not declared)",
+                            "declare them as names of two indices or one by one", keys, true);
+        }
+        if (kept.declarators.empty()) return;
+        return declare(kept);
+    }
     bool takes_primes = w == "VARIABLES" || w == "VARIABLE" || w == "MOTIONVARIABLES" || w == "MOTIONVARIABLE" ||
                         w == "SPECIFIED" || w == "SPECIFIEDS";
     if (st.keyword_primes > 0 && !takes_primes)
@@ -301,7 +346,7 @@ void Translator::declare(const Statement& st) {
         }
         return;
     }
-    not_translated(st.where, w, "Alembert has no imaginary numbers");
+    fail(st.where, "'" + w + "' is not a declaration the translator knows", "docs/autolev.md lists the declarations");
 }
 
 void Translator::implicit_constants(const Statement& st) {

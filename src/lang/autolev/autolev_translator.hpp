@@ -90,6 +90,27 @@ struct Definition {
     Expr value{};
 };
 
+// A statement that has no counterpart in the script (as opposed to input that cannot be read or
+// cannot mean anything): it is left out with a warning and a comment in the script, and the
+// statements after it that use what it defined are left out too (autolev_left_out.cpp).
+class LeftOut : public ScriptError {
+public:
+    using ScriptError::ScriptError;
+};
+
+// The names one statement uses (as written, where) and those it defines or changes (upper
+// case): found once per statement, before translating, so that a statement using a name a
+// left-out statement defined is found by lookups, not rescans.
+struct NameUse {
+    std::string key{};
+    std::string said{};
+    Location where{};
+};
+struct StatementNames {
+    std::vector<NameUse> uses{};
+    std::vector<std::string> defines{};
+};
+
 struct KinematicEquation {
     std::string coordinate{};
     std::string residual{};
@@ -112,6 +133,9 @@ private:
     }
     [[noreturn]] static void fail(Location where, const std::string& message, const std::string& hint = "") {
         throw ScriptError(where, message, hint);
+    }
+    [[noreturn]] static void leave_out(Location where, const std::string& reason, const std::string& hint = "") {
+        throw LeftOut(where, reason, hint);
     }
     void not_translated(Location where, const std::string& what, const std::string& why) {
         report(Severity::warning, where, what + " is not translated: " + why,
@@ -394,6 +418,32 @@ private:
              wanted == "a scalar" ? "take a measure: DOT(N1>, DOT(D>>, N1>))" : "dot it with a vector: DOT(D>>, v>)");
     }
 
+    // ---- statements left out (autolev_left_out.cpp) ---------------------------------------
+
+    // the names each statement uses and defines, in the file's order
+    static std::vector<StatementNames> index_names(const ParsedFile& parsed);
+    // the state a left-out statement is rolled back to
+    struct Journal {
+        std::size_t model = 0, diagnostics = 0, extra_constants = 0, renames = 0;
+        std::string time_unit{};
+    };
+    Journal open_journal();
+    // the first name in `e` that a left-out statement defined, if any
+    std::optional<NameUse> left_out_use(const Expr& e) const;
+    void roll_back(const Journal& j);
+    // translates `st`, or leaves it out (with what it defines) if it uses a name a statement
+    // before it left out, or if it has no counterpart
+    void translate_or_leave_out(const Statement& st, const StatementNames& names);
+    // the warning, the script's comment and the names made unknown of a statement left out
+    // whole (`part` false) or in part
+    void record_left_out(const Statement& st, Location where, const std::string& reason, const std::string& hint,
+                         const std::vector<std::string>& defines, bool part);
+    // true if leaving `st` out changes the model's equations of motion (a mass, a load, a
+    // rotation, a velocity, a constraint)
+    bool shapes_model(const Statement& st) const;
+    // the model's equations, said plainly if what was left out changes them or leaves no model
+    void say_model_changes();
+
     // ---- the script -----------------------------------------------------------------------
 
     std::string kane_statement();
@@ -411,6 +461,17 @@ private:
 
     std::string file_;
     AutolevTranslation out_{};
+    // statements left out: the names they defined (upper case) -> the line that left them out
+    std::map<std::string, int> left_out_names_{};
+    std::vector<std::pair<std::string, bool>> added_{};  // names add() declared in this statement (key, object)
+    std::vector<std::string> wholes_written_{};          // arrays written whole in this statement
+    std::vector<std::pair<int, std::string>> model_changes_{};  // left-out lines that change the equations
+    std::vector<int> dynamics_left_out_{};  // left-out lines that gave equations of motion
+    std::set<std::string> odes_left_out_{};  // variables whose X'' = f was left out
+    std::set<std::string> model_warnings_{};  // the warnings on the model as a whole (no line left out)
+    std::map<std::pair<int, int>, std::vector<std::string>> part_comments_{};  // declarations left out in part
+    // CONSTRAIN(DEPENDENT[Q1']) in a model without speeds: each coordinate's speed (q -> u = q')
+    std::vector<std::pair<std::string, std::string>> rate_speeds_{};
     std::vector<Diagnostic> pending_{};
     std::map<std::string, Entry> names_{};                  // key: upper case
     std::map<std::string, Entry> objects_{};               // frames, bodies, particles, points
@@ -460,7 +521,8 @@ private:
     std::set<std::string> ode_particles_{};
     std::string ode_mass_{};
     bool has_gravity_ = false;
-    std::vector<std::string> constraints_{}, dependent_{};
+    std::vector<std::string> constraints_{}, dependent_{};  // dependent_: U3, or Q1' (a rate)
+    std::vector<Location> dependent_where_{};
     std::optional<Location> constraints_where_{};  // the first DEPENDENT[i] = ...
     // AUXILIARY[i] = E, CONSTRAIN(AUXILIARY[U, ...]) and KANE(F1, ...): constraints that hold in
     // the motion but not in the partial velocities of the speeds listed, and the load measures

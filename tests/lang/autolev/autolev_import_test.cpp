@@ -3,6 +3,7 @@
 // reordering, expressions, and the messages for what cannot be translated.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <map>
@@ -363,12 +364,10 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"dot_dyadic_scalar", kHead + "D>> = 1>>\nR> = DOT(D>>, L)\n", 7, 15, "takes a vector beside a dyadic"},
         BadInput{"dyadic_in_sin", kHead + "D>> = 1>>\nX = SIN(D>>)\n", 7, 9, "a dyadic where a scalar is expected"},
         BadInput{"dyadic_times_vector", kHead + "D>> = 1>>\nR> = D>>*N1>\n", 7, 9, "'*' between a dyadic and a vector"},
-        BadInput{"dyadic_times_dyadic", kHead + "D>> = 1>>\nE>> = D>>*D>>\n", 7, 10, "between two dyadics is not translated"},
         BadInput{"dyadic_plus_scalar", kHead + "D>> = 1>>\nX = D>> + L\n", 7, 9, "'+' between a dyadic and a scalar"},
         BadInput{"dyadic_to_scalar_name", kHead + "D>> = 1>>\nX = D>>\n", 7, 5, "without '>>'"},
         BadInput{"dt_of_dyadic_no_frame", kHead + "D>> = 1>>\nX>> = DT(D>>)\n", 7, 7, "DT of a dyadic needs the frame"},
         BadInput{"dt_of_dyadic_as_scalar", kHead + "D>> = 1>>\nX = DT(D>>, N)\n", 7, 5, "without '>>'"},
-        BadInput{"inertia_assigned", kHead + "I_A_AO>> = 1>>\n", 6, 1, "is an inertia dyadic"},
         BadInput{"matrix_of_scalar", kHead + "M = MATRIX(N, L)\n", 6, 15, "MATRIX() takes a vector or a dyadic"},
         BadInput{"inertia_of_a_frame", kHead + "D>> = INERTIA(P, N)\n", 6, 18, "INERTIA() takes bodies and particles"},
         BadInput{"vector_of_two", kHead + "R> = VECTOR(N, [L, L])\n", 6, 16, "not a 1 by 2 matrix"},
@@ -386,7 +385,6 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"undefined_vector", kHead + "R> = S1>\n", 6, 6, "the vector 'S1>' is not defined"},
         BadInput{"mass_of_a_point", kHead + "MASS P = 2\n", 6, 6, "MASS takes a body or a particle"},
         BadInput{"inertia_count", kHead + "INERTIA A, 1, 2\n", 6, 1, "3 or 6 measures, not 2"},
-        BadInput{"gravity_on_some", kHead + "GRAVITY(-L*N2>, A)\n", 6, 17, "GRAVITY on some bodies only"},
         BadInput{"dependent_count", kHead + "DEPENDENT[1] = U\nCONSTRAIN(DEPENDENT[U, Q])\n", 7, 1,
                  "2 dependent speeds for 1 constraints"},
         BadInput{"kinematics_of_constant", kHead + "L' = U\n", 6, 1, "'L' is not a variable"},
@@ -401,7 +399,6 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"constrain_other", kHead + "CONSTRAIN(U)\n", 6, 11, "CONSTRAIN() takes DEPENDENT[U3, ...] or AUXILIARY"},
         BadInput{"point_not_body", kHead + "V2PTS(N, A, P, A)\n", 6, 16, "expected a point"},
         BadInput{"simprot_axis", kHead + "SIMPROT(N, A, 4, Q)\n", 6, 15, "SIMPROT about this axis"},
-        BadInput{"three_dimensional_index", "NEWTONIAN N\nCONSTANTS I{3,3,3}\n", 2, 16, "more than two dimensions"},
         BadInput{"too_many_indexed", "NEWTONIAN N\nCONSTANTS I{99999}\n", 2, 13, "more than 1000"},
         BadInput{"too_many_indexed_2d", "NEWTONIAN N\nCONSTANTS I{40,40}\n", 2, 13, "more than 1000"},
         // algebra functions: what they take, those without a counterpart, and DEGREES
@@ -419,19 +416,15 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"replace_no_equals", kHead + "X = REPLACE(L*Q, Q)\n", 6, 18, "REPLACE() takes substitutions X = v"},
         BadInput{"substitution_elsewhere", kHead + "X = SIN(Q = 1)\n", 6, 11, "a substitution 'x = v' stands only"},
         BadInput{"expand_range", kHead + "X = EXPAND(L*Q, 2)\n", 6, 5, "EXPAND() with a range of terms"},
-        BadInput{"factor", kHead + "X = FACTOR(L*Q + L, L)\n", 6, 5, "FACTOR() is not translated: FACTOR(e) is factor(e)"},
         BadInput{"d_by_time", kHead + "X = D(L*Q, T)\n", 6, 12, "D() by time is not translated"},
         BadInput{"d_of_vector", kHead + "X = D(L*N1>, Q)\n", 6, 8, "D() of a vector is not translated"},
         BadInput{"d_by_number", kHead + "X = D(L*Q, 2)\n", 6, 12, "D() differentiates by a constant"},
         BadInput{"rhs_of_variable", kHead + "X = RHS(Q)\n", 6, 9, "RHS() is translated for a name the file assigns"},
-        BadInput{"sqr", kHead + "X = SQR(L)\n", 6, 5, "SQR() is not translated: whether it is read as the square"},
-        BadInput{"kinetic_energy", kHead + "X = KE()\n", 6, 5, "KE() is not translated: write the sum"},
         BadInput{"dt_of_matrix_in_frame", kHead + "M = [Q, L]\nX = DT(M, N)\n", 7, 11, "DT of a matrix takes no frame"},
         BadInput{"degrees_unknown", "DEGREES HALF\n" + kHead, 1, 1, "DEGREES HALF is not an Autolev setting"},
         BadInput{"asin_of_number_in_degrees", kHead + "X = ASIN(1/2)\n", 6, 5, "ASIN() of a number is an angle in degrees"},
         BadInput{"atan_of_number_by_default", "DEGREES OFF\nDEGREES ON\n" + kHead + "X = L*ATAN(1)\n", 8, 7,
                  "ATAN() of a number is an angle in degrees"},
-        BadInput{"complex_on", kHead + "COMPLEX ON\n", 6, 1, "COMPLEX ON is not translated: Alembert has no complex"},
         // matrices: their sizes, and what the matrix functions take
         BadInput{"matrix_ragged", kHead + "M = [1, 2; 3]\n", 6, 12, "the rows of matrix 'M' have different lengths"},
         BadInput{"matrix_arithmetic", kHead + "M = [1, 2]\nX = M + 1\n", 7, 7, "'+' between a matrix and a scalar"},
@@ -468,7 +461,6 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"array_element_unassigned", kHead + "Z[1] = L\nX = Z[2]\n", 7, 5, "'Z[2]' is not assigned"},
         BadInput{"array_index_count", kHead + "Z[1] = L\nX = Z[1, 1]\n", 7, 5, "array 'Z' is assigned with one index"},
         BadInput{"array_index_symbol", kHead + "Z[L] = 1\n", 6, 3, "the index of array 'Z' must be a whole number"},
-        BadInput{"array_three_indices", kHead + "Z[1, 1, 1] = 1\n", 6, 1, "an array takes one index"},
         BadInput{"array_of_constant", kHead + "L[1] = 2\n", 6, 1, "'L' is a constant and cannot be assigned as an array"},
         BadInput{"array_element_matrix", kHead + "Z[1] = [1, 2]\n", 6, 8, "an element of array 'Z' is a scalar, not a matrix"},
         BadInput{"array_element_vector", kHead + "Z[1] = N1>\n", 6, 8, "a vector where a scalar is expected"},
@@ -500,6 +492,100 @@ INSTANTIATE_TEST_SUITE_P(
         BadInput{"code_fortran", kHead + "CODE DYNAMICS() x.for\n", 6, 1, "'.for' file is not translated"},
         BadInput{"trailing_tokens", kHead + "KANE() KANE()\n", 6, 8, "after the statement"}),
     [](const ::testing::TestParamInfo<BadInput>& p) { return p.param.name; });
+
+// Statements with no counterpart in the script (as opposed to input that cannot be read or
+// cannot mean anything): each is left out with a warning at its line and column, a comment
+// at its place in the script and its line in left_out_lines; the translation is ok and the
+// script runs.
+class AutolevLeftOut : public ::testing::TestWithParam<BadInput> {};
+
+TEST_P(AutolevLeftOut, WarnsAtTheLineColumnAndTheScriptRuns) {
+    const BadInput& b = GetParam();
+    AutolevTranslation t = translate_autolev(b.source, "out.al");
+    EXPECT_TRUE(t.ok()) << messages(t);
+    bool found = false;
+    for (const auto& d : t.diagnostics)
+        if (d.severity == Severity::warning && d.location.line == b.line && d.location.column == b.column &&
+            contains(d.message, b.fragment)) {
+            found = true;
+            EXPECT_EQ(d.message.rfind("left out", 0), 0u) << d.message;
+            EXPECT_FALSE(d.hint.empty()) << d.message;
+        }
+    EXPECT_TRUE(found) << "expected " << b.line << ":" << b.column << " '" << b.fragment << "', got\n" << messages(t);
+    EXPECT_TRUE(contains(t.script, "# left out (out.al:" + std::to_string(b.line) + "): ")) << t.script;
+    EXPECT_NE(std::find(t.left_out_lines.begin(), t.left_out_lines.end(), b.line), t.left_out_lines.end());
+    run(t.script);
+}
+
+INSTANTIATE_TEST_SUITE_P(
+    NoCounterpart, AutolevLeftOut,
+    ::testing::Values(
+        BadInput{"dyadic_times_dyadic", kHead + "D>> = 1>>\nE>> = D>>*D>>\n", 7, 10, "'*' between two dyadics has no counterpart"},
+        BadInput{"inertia_assigned", kHead + "I_A_AO>> = 1>>\n", 6, 1, "is an inertia dyadic"},
+        BadInput{"gravity_on_some", kHead + "GRAVITY(-L*N2>, A)\n", 6, 17, "GRAVITY on some bodies only has no counterpart"},
+        BadInput{"three_dimensional_index", "NEWTONIAN N\nCONSTANTS K, I{3,3,3}, J\n", 2, 14,
+                 "'I{...}' has 3 indices, and the script's indexed names have at most two (I111, ..., I333"},
+        BadInput{"factor", kHead + "X = FACTOR(L*Q + L, L)\n", 6, 5, "FACTOR() has no translation: FACTOR(e) is factor(e)"},
+        BadInput{"sqr", kHead + "X = SQR(L)\n", 6, 5, "SQR() has no translation: whether it is read as the square"},
+        BadInput{"kinetic_energy", kHead + "X = KE()\n", 6, 5, "KE() has no translation: write the sum"},
+        BadInput{"complex_on", kHead + "COMPLEX ON\n", 6, 1, "COMPLEX ON has no counterpart: the script's numbers are real"},
+        BadInput{"imaginary", kHead + "IMAGINARY J\n", 6, 11, "IMAGINARY J has no counterpart"},
+        BadInput{"definition", kHead + "SPECIFIED F = SQR(L)\nX = F\n", 6, 15, "SQR() has no translation"},
+        BadInput{"array_three_indices", kHead + "Z[1, 1, 1] = 1\n", 6, 1, "an array of 3 indices ('Z[...]') has no counterpart"}),
+    [](const ::testing::TestParamInfo<BadInput>& p) { return p.param.name; });
+
+// A statement that uses what a left-out statement defined is left out too, naming it and its
+// line, and so on down the chain; a name assigned again means the new value.
+TEST(AutolevImport, StatementsUsingALeftOutNameAreLeftOut) {
+    AutolevTranslation t = translate_autolev(
+        kHead + "X = SQR(L)\nY = 2*X\nZ = Y + L\nW = L\nX = 3*L\nV = X + W\n", "chain.al");
+    EXPECT_TRUE(t.ok()) << messages(t);
+    const std::string all = messages(t);
+    EXPECT_TRUE(contains(all, "6:5: left out: the Autolev function SQR() has no translation")) << all;
+    EXPECT_TRUE(contains(all, "7:7: left out: uses X, which line 6 left out")) << all;
+    EXPECT_TRUE(contains(all, "8:5: left out: uses Y, which line 7 left out")) << all;
+    EXPECT_EQ(t.left_out_lines, (std::vector<int>{6, 7, 8}));
+    EXPECT_TRUE(contains(t.script, "# left out (chain.al:7): uses X, which line 6 left out\n")) << t.script;
+    EXPECT_TRUE(contains(t.script, "W = L\nX = 3*L\nV = X + W\n")) << t.script;
+    std::map<std::string, double> v = run(t.script, "evaluate V at L = 2");
+    ASSERT_TRUE(v.count("=")) << t.script;
+    EXPECT_DOUBLE_EQ(v["="], 8.0);  // X = 3 L and W = L at L = 2
+}
+
+// A rotation left out leaves its frame unoriented: what uses the frame or its unit vectors is
+// left out with it.
+TEST(AutolevImport, AFrameLeftUnorientedTakesItsUsesWithIt) {
+    AutolevTranslation t = translate_autolev(
+        kHead + "SIMPROT(N, A, 3, SQR(Q))\nR> = L*A1>\nX = DOT(R>, N1>)\nY = L*Q\n", "frame.al");
+    EXPECT_TRUE(t.ok()) << messages(t);
+    const std::string all = messages(t);
+    EXPECT_TRUE(contains(all, "6:18: left out: the Autolev function SQR() has no translation")) << all;
+    EXPECT_TRUE(contains(all, "7:8: left out: uses A1>, which line 6 left out")) << all;
+    EXPECT_TRUE(contains(all, "8:9: left out: uses R>, which line 7 left out")) << all;
+    EXPECT_EQ(t.left_out_lines, (std::vector<int>{6, 7, 8}));
+    EXPECT_TRUE(contains(t.script, "Y = L*Q\n")) << t.script;
+    run(t.script);
+}
+
+// A model given by its differential equations whose every equation is left out forms no model,
+// and says so; CODE DYNAMICS() is left out with it; what is left runs.
+TEST(AutolevImport, EquationsOfMotionLeftOutLeaveNoModelAndSaySo) {
+    AutolevTranslation t = translate_autolev(
+        "NEWTONIAN N\nCONSTANTS K\nVARIABLES X''\nX'' = -K*SQR(X)\nCODE DYNAMICS() osc.c\nINPUT K = 2, X = 1\n",
+        "none.al");
+    EXPECT_TRUE(t.ok()) << messages(t);
+    const std::string all = messages(t);
+    EXPECT_TRUE(contains(all, "4:1: the file's equations of motion (line 4) are left out, so the script forms no model"))
+        << all;
+    EXPECT_TRUE(contains(all, "4:10: left out: the Autolev function SQR() has no translation")) << all;
+    EXPECT_TRUE(contains(all, "5:1: left out: CODE DYNAMICS() needs the equations of motion, which line 4 left out"))
+        << all;
+    EXPECT_EQ(t.left_out_lines, (std::vector<int>{4, 5}));
+    EXPECT_FALSE(contains(t.script, "kane ")) << t.script;
+    EXPECT_FALSE(contains(t.script, "codegen")) << t.script;
+    EXPECT_TRUE(contains(t.script, "# left out (none.al:5): CODE DYNAMICS() needs the equations")) << t.script;
+    run(t.script);
+}
 
 // One message per bad statement, and the good statements around them still translated.
 TEST(AutolevImport, EveryBadStatementIsReportedInFileOrder) {

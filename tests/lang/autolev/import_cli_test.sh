@@ -48,6 +48,17 @@ contains "warning" "$tmp/err" "warn.al:2:1: warning: PAUSE is not translated"
 contains "warning" "$tmp/out" "(1 message above)"
 contains "warning" "$tmp/warn.alb" "particle P"
 
+# a statement with no counterpart is left out with a warning, a comment at its place and the
+# statements that use what it defined; a summary on stderr; exit 0; the script runs
+printf 'NEWTONIAN N\nCONSTANTS L\nX = SQR(L)\nY = 2*X\nZ = 3*L\n' > "$tmp/out.al"
+expect "left out" 0 "$alembert" import "$tmp/out.al" --out "$tmp/out.alb"
+contains "left out" "$tmp/err" "out.al:3:5: warning: left out: the Autolev function SQR() has no translation"
+contains "left out" "$tmp/err" "out.al:4:7: warning: left out: uses X, which line 3 left out"
+contains "left out" "$tmp/err" "alembert: '$tmp/out.al' imported with 2 statements left out (lines 3, 4)"
+contains "left out" "$tmp/out.alb" "# left out ($tmp/out.al:3): the Autolev function SQR() has no translation"
+contains "left out" "$tmp/out.alb" "Z = 3*L"
+expect "left out runs" 0 "$alembert" run "$tmp/out.alb"
+
 # an error: file:line:col with the line and a caret, exit 1, the target untouched
 printf 'NEWTONIAN N\nCONSTANTS L\nR> = N1> + L\n' > "$tmp/bad.al"
 echo "keep me" > "$tmp/bad.alb"
