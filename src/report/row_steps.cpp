@@ -198,8 +198,10 @@ RowSteps calc_row_steps(const System& sys, const RoadmapRow& r, const std::strin
         add_measures(out.quantities, d.force);
         if (dynamics) {
             step("mass", "m^S, the mass of S", "m^{S} = " + to_latex(d.mass));
-            quantity("mass times acceleration", "each body's mass times its mass centre's acceleration in N",
-                     "m^{S}\\,{}^{N}\\vec{a}^{S_{cm}} = \\sum_{B \\in S} m^{B}\\,{}^{N}\\vec{a}^{B_{cm}}",
+            quantity("mass times acceleration",
+                     "each body's mass times its mass centre's acceleration in N",
+                     "m^{S}\\,{}^{N}\\vec{a}^{S_{cm}} = \\sum_{B \\in S} "
+                     "m^{B}\\,{}^{N}\\vec{a}^{B_{cm}}",
                      vector_tex(d.mass_acceleration, "wa", simplifier, printer, prefer));
             add_measures(out.quantities, d.mass_acceleration);
             step("projection", "the balance along \u00fb",
@@ -208,8 +210,8 @@ RowSteps calc_row_steps(const System& sys, const RoadmapRow& r, const std::strin
             step("projection", "the balance along \u00fb (statics)", E + " = \\hat{u} \\cdot \\vec{F}^{S}");
         }
     } else if (!dynamics || d.accumulated) {
-        quantity("moment", "the moment about O of the loads external to S", "\\vec{M}^{S/" + O + "}",
-                 vector_tex(d.moment, "wm", simplifier, printer, prefer));
+        quantity("moment", "the moment about O of the loads external to S",
+                 "\\vec{M}^{S/" + O + "}", vector_tex(d.moment, "wm", simplifier, printer, prefer));
         add_measures(out.quantities, d.moment);
         if (d.accumulated)
             step("projection",
@@ -221,9 +223,13 @@ RowSteps calc_row_steps(const System& sys, const RoadmapRow& r, const std::strin
             step("projection", "the balance about O along \u00fb (statics)",
                  E + " = \\hat{u} \\cdot \\vec{M}^{S/" + O + "}");
     } else {
-        quantity("angular momentum", "about O, each body's central inertia times its angular velocity plus the moment of its momentum",
-                 "{}^{N}\\vec{H}^{S/" + O + "} = \\sum_{B \\in S} (I^{B/B_{cm}} \\cdot {}^{N}\\vec{\\omega}^{B} + \\vec{r}^{B_{cm}/" + O +
-                     "} \\times m^{B}\\,{}^{N}\\vec{v}^{B_{cm}})",
+        quantity("angular momentum",
+                 "about O, each body's central inertia times its angular velocity plus the moment "
+                 "of its momentum",
+                 "{}^{N}\\vec{H}^{S/" + O +
+                     "} = \\sum_{B \\in S} (I^{B/B_{cm}} \\cdot {}^{N}\\vec{\\omega}^{B} + "
+                     "\\vec{r}^{B_{cm}/" +
+                     O + "} \\times m^{B}\\,{}^{N}\\vec{v}^{B_{cm}})",
                  vector_tex(d.angular_momentum, "wh", simplifier, printer, prefer));
         quantity("linear momentum", "the sum of the bodies' momenta",
                  "{}^{N}\\vec{L}^{S} = \\sum_{B \\in S} m^{B}\\,{}^{N}\\vec{v}^{B_{cm}}",
@@ -231,10 +237,13 @@ RowSteps calc_row_steps(const System& sys, const RoadmapRow& r, const std::strin
         quantity("rate of angular momentum", "the time derivative of H in N",
                  "\\frac{{}^{N}d}{dt}\\,{}^{N}\\vec{H}^{S/" + O + "}",
                  vector_tex(d.angular_momentum_rate, "wk", simplifier, printer, prefer));
-        quantity("moving point", d.transport.is_zero() ? "O is fixed in N: no term" : "O moves in N: this term corrects the rate of H",
-                 "{}^{N}\\vec{v}^{" + O + "} \\times {}^{N}\\vec{L}^{S}", vector_tex(d.transport, "wp", simplifier, printer, prefer));
-        quantity("moment", "the moment about O of the loads external to S", "\\vec{M}^{S/" + O + "}",
-                 vector_tex(d.moment, "wm", simplifier, printer, prefer));
+        quantity("moving point",
+                 d.transport.is_zero() ? "O is fixed in N: no term"
+                                       : "O moves in N: this term corrects the rate of H",
+                 "{}^{N}\\vec{v}^{" + O + "} \\times {}^{N}\\vec{L}^{S}",
+                 vector_tex(d.transport, "wp", simplifier, printer, prefer));
+        quantity("moment", "the moment about O of the loads external to S",
+                 "\\vec{M}^{S/" + O + "}", vector_tex(d.moment, "wm", simplifier, printer, prefer));
         for (const Vector* v : {&d.angular_momentum, &d.linear_momentum, &d.angular_momentum_rate,
                                 &d.transport, &d.moment})
             add_measures(out.quantities, *v);
@@ -254,10 +263,11 @@ std::vector<RowSteps> calc_rows_steps(const ReportContent& c, const std::vector<
     if (!c.system) return out;
     Simplifier simplifier;  // the rows share their kinematics: each node simplified once
     MovingBodies moving(*c.system);  // and which bodies each speed moves
-    TextPrinter printer;  // and the texts that measure their abbreviated lines
+    TextPrinter printer;             // and the texts that measure their abbreviated lines
     for (std::size_t i = 0; i < c.rows.size(); ++i) {
         try {
-            out.push_back(calc_row_steps(*c.system, c.rows[i], equations.at(i), simplifier, moving, printer));
+            out.push_back(
+                calc_row_steps(*c.system, c.rows[i], equations.at(i), simplifier, moving, printer));
         } catch (const Error& e) {
             RowSteps s;
             s.steps.push_back({"derivation", std::string("not available: ") + e.what(), ""});

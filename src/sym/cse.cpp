@@ -92,7 +92,8 @@ std::vector<ex> calc_reached_intermediates(const SymbolTable& table, const std::
 
 std::size_t count_ops_with_intermediates(const SymbolTable& table, const std::vector<ex>& exprs) {
     std::vector<ex> measured(exprs.begin(), exprs.end());
-    for (const ex& z : calc_reached_intermediates(table, exprs)) measured.push_back(table.definition(z));
+    for (const ex& z : calc_reached_intermediates(table, exprs))
+        measured.push_back(table.definition(z));
     return count_ops(measured);
 }
 

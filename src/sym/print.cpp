@@ -369,7 +369,10 @@ public:
     // `printer` measures the lines: one shared with other abbreviations (and with the
     // printing of the result) prints a node met again from its memory
     Abbreviator(std::size_t width, std::string stem, std::size_t first, Printer& printer)
-        : width_(std::max<std::size_t>(width, 20)), stem_(std::move(stem)), next_(first), printer_(printer) {}
+        : width_(std::max<std::size_t>(width, 20)),
+          stem_(std::move(stem)),
+          next_(first),
+          printer_(printer) {}
 
     // how many parents each node has, a node's children counted on its first visit only
     void count_uses(const ex& e) {
@@ -473,8 +476,8 @@ private:
 
 namespace {
 
-AbbreviatedForm abbreviate_with(const std::vector<ex>& exprs, std::size_t width, const std::string& stem,
-                                std::size_t first, Printer& printer) {
+AbbreviatedForm abbreviate_with(const std::vector<ex>& exprs, std::size_t width,
+                                const std::string& stem, std::size_t first, Printer& printer) {
     Abbreviator a(width, stem, first, printer);
     for (const ex& e : exprs) a.count_uses(e);
     AbbreviatedForm out;
@@ -488,14 +491,14 @@ AbbreviatedForm abbreviate_with(const std::vector<ex>& exprs, std::size_t width,
 
 }  // namespace
 
-AbbreviatedForm abbreviate_form(const std::vector<ex>& exprs, std::size_t width, const std::string& stem,
-                                std::size_t first) {
+AbbreviatedForm abbreviate_form(const std::vector<ex>& exprs, std::size_t width,
+                                const std::string& stem, std::size_t first) {
     Printer printer;
     return abbreviate_with(exprs, width, stem, first, printer);
 }
 
-AbbreviatedForm abbreviate_form(const std::vector<ex>& exprs, TextPrinter& printer, std::size_t width,
-                                const std::string& stem, std::size_t first) {
+AbbreviatedForm abbreviate_form(const std::vector<ex>& exprs, TextPrinter& printer,
+                                std::size_t width, const std::string& stem, std::size_t first) {
     return abbreviate_with(exprs, width, stem, first, printer.memo_->printer);
 }
 

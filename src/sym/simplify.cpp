@@ -134,7 +134,9 @@ std::size_t count_ops(const std::vector<ex>& exprs) {
     std::size_t n = 0;
     for (const ex& e : exprs) {
         const std::size_t k = index.ops(e);
-        n = n > std::numeric_limits<std::size_t>::max() - k ? std::numeric_limits<std::size_t>::max() : n + k;
+        n = n > std::numeric_limits<std::size_t>::max() - k
+                ? std::numeric_limits<std::size_t>::max()
+                : n + k;
     }
     return n;
 }

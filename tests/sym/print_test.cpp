@@ -241,12 +241,14 @@ TEST(Print, AbbreviationsMeasuredByOneTextPrinterAcrossCallsMeanTheirExpressions
                 // the named parts' values in order (each uses earlier ones), then the result's
                 GiNaC::exmap values = at;
                 for (std::size_t d = 0; d < f.defined_before[i]; ++d)
-                    values[f.definitions[d].first] = GiNaC::evalf(f.definitions[d].second.subs(values));
+                    values[f.definitions[d].first] =
+                        GiNaC::evalf(f.definitions[d].second.subs(values));
                 const ex got = GiNaC::evalf(f.results[i].subs(values));
                 ASSERT_TRUE(GiNaC::is_a<GiNaC::numeric>(got) && GiNaC::is_a<GiNaC::numeric>(want));
                 const double g = GiNaC::ex_to<GiNaC::numeric>(got).to_double();
                 const double w = GiNaC::ex_to<GiNaC::numeric>(want).to_double();
-                EXPECT_NEAR(g, w, 1e-9 * std::max(1.0, std::abs(w))) << "seed " << seed << ", " << to_string(batch[i]);
+                EXPECT_NEAR(g, w, 1e-9 * std::max(1.0, std::abs(w)))
+                    << "seed " << seed << ", " << to_string(batch[i]);
             }
         }
     }

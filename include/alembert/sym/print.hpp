@@ -76,8 +76,9 @@ struct AbbreviatedText {
 /// `exprs` abbreviated as above: a subexpression of two or more operations used more than
 /// once is named, and so are the longest operands of a line that would pass `width`, and runs
 /// of operands of a sum or product too long for one line. The names are `stem` followed by
-/// `first`, `first` + 1, ...; they stand only for the printed text. Linear in the number of
-/// distinct subexpressions times the width: nothing is printed whole to decide.
+/// `first`, `first` + 1, ...; they stand only for the printed text. Each distinct subexpression
+/// is printed once; the operands of each node are visited in the order of their texts, so the
+/// cost follows the length of the texts of the expressions' distinct nodes.
 AbbreviatedText abbreviate(const std::vector<ex>& exprs, std::size_t width = 100,
                            const std::string& stem = "z", std::size_t first = 1);
 
