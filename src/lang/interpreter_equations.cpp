@@ -14,6 +14,7 @@
 #include "alembert/sim/block_solve.hpp"
 #include "alembert/sym/cse.hpp"
 #include "alembert/sym/print.hpp"
+#include "alembert/sym/simplify.hpp"
 #include "interpreter_impl.hpp"
 #include "statement_parser.hpp"
 
@@ -77,28 +78,6 @@ std::string short_list(const std::vector<ex>& xs) {
     return out;
 }
 
-// the intermediates of `table` that `exprs` reach, directly or through other definitions, in
-// the table's (dependency) order
-std::vector<ex> reached_intermediates(const SymbolTable& table, const std::vector<ex>& exprs) {
-    std::map<std::size_t, ex> by_position;
-    std::map<ex, std::size_t, GiNaC::ex_is_less> position;
-    const std::vector<ex>& all = table.intermediates();
-    for (std::size_t i = 0; i < all.size(); ++i) position.emplace(all[i], i);
-    std::vector<ex> work(exprs.begin(), exprs.end());
-    while (!work.empty()) {
-        ex e = work.back();
-        work.pop_back();
-        for (const ex& s : symbols_of(e)) {
-            auto it = position.find(s);
-            if (it == position.end() || !by_position.emplace(it->second, s).second) continue;
-            work.push_back(table.definition(s));
-        }
-    }
-    std::vector<ex> out;
-    for (auto& [i, z] : by_position) out.push_back(z);
-    return out;
-}
-
 }  // namespace
 
 std::string Interpreter::Impl::print_large(const std::string& name, const std::vector<std::string>& labels,
@@ -106,12 +85,12 @@ std::string Interpreter::Impl::print_large(const std::string& name, const std::v
     if (!sys) return {};
     const SymbolTable& table = sys->symbols();
     // measured over the DAG (count_ops memoizes shared nodes), never by printing
-    const std::size_t ops = count_ops_with_intermediates(table, eqs);
-    if (ops <= print_limit) return {};
-    const std::vector<ex> used = reached_intermediates(table, eqs);
+    const std::vector<ex> used = calc_reached_intermediates(table, eqs);
     std::vector<ex> all;
     for (const ex& z : used) all.push_back(table.definition(z));
     all.insert(all.end(), eqs.begin(), eqs.end());
+    const std::size_t ops = count_ops(all);  // count_ops_with_intermediates
+    if (ops <= print_limit) return {};
     constexpr std::size_t kWidth = 100;
     AbbreviatedText a = abbreviate(all, kWidth, "z", table.intermediates().size() + 1);
     std::string text = "% " + name + ": " + std::to_string(eqs.size()) + " equations" +

@@ -14,6 +14,7 @@
 #include "alembert/eom/newton_euler.hpp"
 #include "alembert/eom/roadmap.hpp"
 #include "alembert/mech/system.hpp"
+#include "alembert/sym/print.hpp"
 #include "alembert/sym/simplify.hpp"
 
 namespace alembert {
@@ -315,9 +316,10 @@ struct RowSteps {
     std::vector<ex> quantities;
 };
 
-/// The steps of row `r`, ending with its typeset `equation`; `moving` is shared by the rows.
+/// The steps of row `r`, ending with its typeset `equation`; `moving` and `printer` (the
+/// texts that measure abbreviated lines) are shared by the rows.
 RowSteps calc_row_steps(const System& sys, const RoadmapRow& r, const std::string& equation,
-                        Simplifier& simplifier, MovingBodies& moving);
+                        Simplifier& simplifier, MovingBodies& moving, TextPrinter& printer);
 
 /// Every row's steps (a row whose derivation cannot be formed says why in one step).
 std::vector<RowSteps> calc_rows_steps(const ReportContent& c, const std::vector<std::string>& equations);

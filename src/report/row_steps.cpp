@@ -76,7 +76,7 @@ std::size_t ops_of(const std::vector<ex>& measures) {
 // by body, read as one term; abbreviated with named parts (stem_1 = ...) on the lines below
 // when the whole is large or holds a piece too long for a line
 std::string vector_tex(const Vector& v, const std::string& stem, Simplifier& simplifier,
-                       const Frame* prefer = nullptr) {
+                       TextPrinter& printer, const Frame* prefer = nullptr) {
     std::vector<ex> measures;
     std::vector<std::string> units;
     measures_of(v, measures, units);
@@ -114,7 +114,7 @@ std::string vector_tex(const Vector& v, const std::string& stem, Simplifier& sim
         if (longest_unbreakable(breakable_tex(whole)) <= kUnbreakableChars) return whole;
         parts.clear();
     }
-    const AbbreviatedForm f = abbreviate_form(measures, 100, stem);
+    const AbbreviatedForm f = abbreviate_form(measures, printer, 100, stem);
     for (std::size_t k = 0; k < measures.size(); ++k) parts.emplace_back(f.results.at(k), units[k]);
     std::string out = parts_tex(parts);
     for (std::size_t i = 0; i < f.definitions.size(); ++i)
@@ -142,7 +142,7 @@ void add_measures(std::vector<ex>& into, const Vector& v) {
 namespace report_detail {
 
 RowSteps calc_row_steps(const System& sys, const RoadmapRow& r, const std::string& equation,
-                        Simplifier& simplifier, MovingBodies& moving) {
+                        Simplifier& simplifier, MovingBodies& moving, TextPrinter& printer) {
     RowSteps out;
     auto step = [&](const std::string& label, const std::string& text, const std::string& tex) {
         out.steps.push_back({label, text, tex.empty() ? tex : breakable_tex(tex)});
@@ -182,7 +182,7 @@ RowSteps calc_row_steps(const System& sys, const RoadmapRow& r, const std::strin
                 : "a balance of forces along \u00fb",
          "");
     step("direction", "\u00fb, the direction the balance is projected on",
-         "\\hat{u} = " + vector_tex(r.direction, "wu", simplifier));
+         "\\hat{u} = " + vector_tex(r.direction, "wu", simplifier, printer));
     step("system S",
          d.moved_by.empty() ? "the bodies whose free-body diagram is drawn"
                             : "what moves when only " + d.moved_by + " changes",
@@ -194,13 +194,15 @@ RowSteps calc_row_steps(const System& sys, const RoadmapRow& r, const std::strin
     const std::string O = r.about ? point_tex(*r.about) : "";
     if (!rotate) {
         quantity("resultant force", "the loads external to S, gravity included", "\\vec{F}^{S}",
-                 vector_tex(d.force, "wf", simplifier, prefer));
+                 vector_tex(d.force, "wf", simplifier, printer, prefer));
         add_measures(out.quantities, d.force);
         if (dynamics) {
             step("mass", "m^S, the mass of S", "m^{S} = " + to_latex(d.mass));
-            quantity("mass times acceleration", "each body's mass times its mass centre's acceleration in N",
-                     "m^{S}\\,{}^{N}\\vec{a}^{S_{cm}} = \\sum_{B \\in S} m^{B}\\,{}^{N}\\vec{a}^{B_{cm}}",
-                     vector_tex(d.mass_acceleration, "wa", simplifier, prefer));
+            quantity("mass times acceleration",
+                     "each body's mass times its mass centre's acceleration in N",
+                     "m^{S}\\,{}^{N}\\vec{a}^{S_{cm}} = \\sum_{B \\in S} "
+                     "m^{B}\\,{}^{N}\\vec{a}^{B_{cm}}",
+                     vector_tex(d.mass_acceleration, "wa", simplifier, printer, prefer));
             add_measures(out.quantities, d.mass_acceleration);
             step("projection", "the balance along \u00fb",
                  E + " = \\hat{u} \\cdot (\\vec{F}^{S} - m^{S}\\,{}^{N}\\vec{a}^{S_{cm}})");
@@ -208,8 +210,8 @@ RowSteps calc_row_steps(const System& sys, const RoadmapRow& r, const std::strin
             step("projection", "the balance along \u00fb (statics)", E + " = \\hat{u} \\cdot \\vec{F}^{S}");
         }
     } else if (!dynamics || d.accumulated) {
-        quantity("moment", "the moment about O of the loads external to S", "\\vec{M}^{S/" + O + "}",
-                 vector_tex(d.moment, "wm", simplifier, prefer));
+        quantity("moment", "the moment about O of the loads external to S",
+                 "\\vec{M}^{S/" + O + "}", vector_tex(d.moment, "wm", simplifier, printer, prefer));
         add_measures(out.quantities, d.moment);
         if (d.accumulated)
             step("projection",
@@ -221,20 +223,27 @@ RowSteps calc_row_steps(const System& sys, const RoadmapRow& r, const std::strin
             step("projection", "the balance about O along \u00fb (statics)",
                  E + " = \\hat{u} \\cdot \\vec{M}^{S/" + O + "}");
     } else {
-        quantity("angular momentum", "about O, each body's central inertia times its angular velocity plus the moment of its momentum",
-                 "{}^{N}\\vec{H}^{S/" + O + "} = \\sum_{B \\in S} (I^{B/B_{cm}} \\cdot {}^{N}\\vec{\\omega}^{B} + \\vec{r}^{B_{cm}/" + O +
-                     "} \\times m^{B}\\,{}^{N}\\vec{v}^{B_{cm}})",
-                 vector_tex(d.angular_momentum, "wh", simplifier, prefer));
+        quantity("angular momentum",
+                 "about O, each body's central inertia times its angular velocity plus the moment "
+                 "of its momentum",
+                 "{}^{N}\\vec{H}^{S/" + O +
+                     "} = \\sum_{B \\in S} (I^{B/B_{cm}} \\cdot {}^{N}\\vec{\\omega}^{B} + "
+                     "\\vec{r}^{B_{cm}/" +
+                     O + "} \\times m^{B}\\,{}^{N}\\vec{v}^{B_{cm}})",
+                 vector_tex(d.angular_momentum, "wh", simplifier, printer, prefer));
         quantity("linear momentum", "the sum of the bodies' momenta",
                  "{}^{N}\\vec{L}^{S} = \\sum_{B \\in S} m^{B}\\,{}^{N}\\vec{v}^{B_{cm}}",
-                 vector_tex(d.linear_momentum, "wl", simplifier, prefer));
+                 vector_tex(d.linear_momentum, "wl", simplifier, printer, prefer));
         quantity("rate of angular momentum", "the time derivative of H in N",
                  "\\frac{{}^{N}d}{dt}\\,{}^{N}\\vec{H}^{S/" + O + "}",
-                 vector_tex(d.angular_momentum_rate, "wk", simplifier, prefer));
-        quantity("moving point", d.transport.is_zero() ? "O is fixed in N: no term" : "O moves in N: this term corrects the rate of H",
-                 "{}^{N}\\vec{v}^{" + O + "} \\times {}^{N}\\vec{L}^{S}", vector_tex(d.transport, "wp", simplifier, prefer));
-        quantity("moment", "the moment about O of the loads external to S", "\\vec{M}^{S/" + O + "}",
-                 vector_tex(d.moment, "wm", simplifier, prefer));
+                 vector_tex(d.angular_momentum_rate, "wk", simplifier, printer, prefer));
+        quantity("moving point",
+                 d.transport.is_zero() ? "O is fixed in N: no term"
+                                       : "O moves in N: this term corrects the rate of H",
+                 "{}^{N}\\vec{v}^{" + O + "} \\times {}^{N}\\vec{L}^{S}",
+                 vector_tex(d.transport, "wp", simplifier, printer, prefer));
+        quantity("moment", "the moment about O of the loads external to S",
+                 "\\vec{M}^{S/" + O + "}", vector_tex(d.moment, "wm", simplifier, printer, prefer));
         for (const Vector* v : {&d.angular_momentum, &d.linear_momentum, &d.angular_momentum_rate,
                                 &d.transport, &d.moment})
             add_measures(out.quantities, *v);
@@ -254,9 +263,11 @@ std::vector<RowSteps> calc_rows_steps(const ReportContent& c, const std::vector<
     if (!c.system) return out;
     Simplifier simplifier;  // the rows share their kinematics: each node simplified once
     MovingBodies moving(*c.system);  // and which bodies each speed moves
+    TextPrinter printer;             // and the texts that measure their abbreviated lines
     for (std::size_t i = 0; i < c.rows.size(); ++i) {
         try {
-            out.push_back(calc_row_steps(*c.system, c.rows[i], equations.at(i), simplifier, moving));
+            out.push_back(
+                calc_row_steps(*c.system, c.rows[i], equations.at(i), simplifier, moving, printer));
         } catch (const Error& e) {
             RowSteps s;
             s.steps.push_back({"derivation", std::string("not available: ") + e.what(), ""});

@@ -3,6 +3,7 @@
 #include "alembert/sym/cse.hpp"
 
 #include <map>
+#include <unordered_set>
 
 #include "alembert/sym/simplify.hpp"
 
@@ -59,19 +60,41 @@ std::vector<ex> introduce_intermediates(SymbolTable& table, std::vector<ex>& exp
     return r.created;
 }
 
-std::size_t count_ops_with_intermediates(const SymbolTable& table, const std::vector<ex>& exprs) {
-    std::size_t n = 0;
-    exset seen;
-    std::vector<ex> stack(exprs.begin(), exprs.end());
+std::vector<ex> calc_reached_intermediates(const SymbolTable& table, const std::vector<ex>& exprs) {
+    // one walk over the DAG of all the expressions and the definitions they reach: a node
+    // shared by several equations (most of a large model's) is entered once for all of them
+    std::map<ex, std::size_t, ex_is_less> position;
+    const std::vector<ex>& all = table.intermediates();
+    for (std::size_t i = 0; i < all.size(); ++i) position.emplace(all[i], i);
+    std::map<std::size_t, ex> reached;  // by dependency order
+    std::unordered_set<const basic*> entered;
+    // (op() of a sum may build a term anew: the nodes entered are kept alive while their
+    // addresses are remembered)
+    std::vector<ex> alive, stack(exprs.begin(), exprs.end());
     while (!stack.empty()) {
-        ex e = stack.back();
+        ex x = std::move(stack.back());
         stack.pop_back();
-        n += count_ops(e);
-        for (const ex& s : symbols_of(e))
-            if (table.owns(s) && table.kind(s) == SymbolKind::intermediate && seen.insert(s).second)
-                stack.push_back(table.definition(s));
+        if (is_a<symbol>(x)) {
+            auto it = position.find(x);
+            if (it != position.end() && reached.emplace(it->second, x).second)
+                stack.push_back(table.definition(x));
+            continue;
+        }
+        if (x.nops() == 0 || !entered.insert(&ex_to<basic>(x)).second) continue;
+        for (std::size_t i = 0; i < x.nops(); ++i) stack.push_back(x.op(i));
+        alive.push_back(std::move(x));
     }
-    return n;
+    std::vector<ex> out;
+    out.reserve(reached.size());
+    for (auto& [i, z] : reached) out.push_back(z);
+    return out;
+}
+
+std::size_t count_ops_with_intermediates(const SymbolTable& table, const std::vector<ex>& exprs) {
+    std::vector<ex> measured(exprs.begin(), exprs.end());
+    for (const ex& z : calc_reached_intermediates(table, exprs))
+        measured.push_back(table.definition(z));
+    return count_ops(measured);
 }
 
 }  // namespace alembert

@@ -366,8 +366,13 @@ namespace {
 // Names subexpressions bottom-up over the DAG so that every printed line stays short.
 class Abbreviator : public map_function {
 public:
-    Abbreviator(std::size_t width, std::string stem, std::size_t first)
-        : width_(std::max<std::size_t>(width, 20)), stem_(std::move(stem)), next_(first) {}
+    // `printer` measures the lines: one shared with other abbreviations (and with the
+    // printing of the result) prints a node met again from its memory
+    Abbreviator(std::size_t width, std::string stem, std::size_t first, Printer& printer)
+        : width_(std::max<std::size_t>(width, 20)),
+          stem_(std::move(stem)),
+          next_(first),
+          printer_(printer) {}
 
     // how many parents each node has, a node's children counted on its first visit only
     void count_uses(const ex& e) {
@@ -402,7 +407,7 @@ private:
     std::size_t next_;
     PrintMemo<std::size_t> uses_;
     PrintMemo<ex> done_;
-    Printer printer_;  // the operands' texts, printed once for all the lines they are measured in
+    Printer& printer_;  // the operands' texts, printed once for all the lines they are measured in
 
     std::size_t length(const ex& x) { return printer_.p(x).text.size(); }
 
@@ -469,9 +474,11 @@ private:
 
 }  // namespace
 
-AbbreviatedForm abbreviate_form(const std::vector<ex>& exprs, std::size_t width, const std::string& stem,
-                                std::size_t first) {
-    Abbreviator a(width, stem, first);
+namespace {
+
+AbbreviatedForm abbreviate_with(const std::vector<ex>& exprs, std::size_t width,
+                                const std::string& stem, std::size_t first, Printer& printer) {
+    Abbreviator a(width, stem, first, printer);
     for (const ex& e : exprs) a.count_uses(e);
     AbbreviatedForm out;
     for (const ex& e : exprs) {
@@ -482,11 +489,26 @@ AbbreviatedForm abbreviate_form(const std::vector<ex>& exprs, std::size_t width,
     return out;
 }
 
+}  // namespace
+
+AbbreviatedForm abbreviate_form(const std::vector<ex>& exprs, std::size_t width,
+                                const std::string& stem, std::size_t first) {
+    Printer printer;
+    return abbreviate_with(exprs, width, stem, first, printer);
+}
+
+AbbreviatedForm abbreviate_form(const std::vector<ex>& exprs, TextPrinter& printer,
+                                std::size_t width, const std::string& stem, std::size_t first) {
+    return abbreviate_with(exprs, width, stem, first, printer.memo_->printer);
+}
+
 AbbreviatedText abbreviate(const std::vector<ex>& exprs, std::size_t width, const std::string& stem,
                            std::size_t first) {
-    AbbreviatedForm f = abbreviate_form(exprs, width, stem, first);
-    AbbreviatedText out;
+    // one printer for measuring the lines and for writing them: the lines' nodes were printed
+    // while they were measured
     Printer printer;
+    AbbreviatedForm f = abbreviate_with(exprs, width, stem, first, printer);
+    AbbreviatedText out;
     for (const auto& [z, d] : f.definitions) out.definitions.push_back(printer.p(z).text + " = " + printer.p(d).text);
     for (const ex& r : f.results) out.results.push_back(printer.p(r).text);
     out.defined_before = std::move(f.defined_before);

@@ -129,6 +129,18 @@ using simplify_detail::NodeIndex;
 
 std::size_t count_ops(const ex& e) { return NodeIndex().ops(e); }
 
+std::size_t count_ops(const std::vector<ex>& exprs) {
+    NodeIndex index;  // one memory: a node shared by several expressions is measured once
+    std::size_t n = 0;
+    for (const ex& e : exprs) {
+        const std::size_t k = index.ops(e);
+        n = n > std::numeric_limits<std::size_t>::max() - k
+                ? std::numeric_limits<std::size_t>::max()
+                : n + k;
+    }
+    return n;
+}
+
 namespace {
 
 // the number of terms expand() would form for each node, an upper bound (no cancellation);

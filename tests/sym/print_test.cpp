@@ -214,3 +214,42 @@ TEST(Print, OneTextPrinterForManyExpressionsGivesToStringsTexts) {
         for (const ex& e : order) ASSERT_EQ(text(e), to_string(e)) << "again, seed " << seed;
     }
 }
+
+TEST(Print, AbbreviationsMeasuredByOneTextPrinterAcrossCallsMeanTheirExpressions) {
+    // a report keeps one printer for all its abbreviated vectors: whatever that printer printed
+    // before (the parts shared between calls are looked up), each result with its named parts
+    // written back is the expression
+    for (unsigned seed : {1u, 2u, 3u}) {
+        const std::vector<ex> pool = shared_random_expressions(seed, 64);
+        GiNaC::exmap at;  // a random point, the same for every batch
+        std::mt19937 rng(seed);
+        for (std::size_t i = 0; i < 5; ++i)
+            at[pool[i]] = std::uniform_real_distribution<double>(0.3, 1.7)(rng);
+        TextPrinter shared;
+        for (std::size_t start = 0; start + 8 <= pool.size(); start += 8) {
+            const std::vector<ex> batch(pool.end() - static_cast<std::ptrdiff_t>(start) - 8,
+                                        pool.end() - static_cast<std::ptrdiff_t>(start));
+            const AbbreviatedForm f = abbreviate_form(batch, shared, 30, "w");
+            ASSERT_EQ(f.results.size(), batch.size());
+            for (std::size_t i = 0; i < batch.size(); ++i) {
+                ex want;
+                try {
+                    want = GiNaC::evalf(batch[i].subs(at));
+                } catch (const std::exception&) {
+                    continue;  // a denominator of the random expression vanishes there
+                }
+                // the named parts' values in order (each uses earlier ones), then the result's
+                GiNaC::exmap values = at;
+                for (std::size_t d = 0; d < f.defined_before[i]; ++d)
+                    values[f.definitions[d].first] =
+                        GiNaC::evalf(f.definitions[d].second.subs(values));
+                const ex got = GiNaC::evalf(f.results[i].subs(values));
+                ASSERT_TRUE(GiNaC::is_a<GiNaC::numeric>(got) && GiNaC::is_a<GiNaC::numeric>(want));
+                const double g = GiNaC::ex_to<GiNaC::numeric>(got).to_double();
+                const double w = GiNaC::ex_to<GiNaC::numeric>(want).to_double();
+                EXPECT_NEAR(g, w, 1e-9 * std::max(1.0, std::abs(w)))
+                    << "seed " << seed << ", " << to_string(batch[i]);
+            }
+        }
+    }
+}

@@ -19,6 +19,11 @@ namespace alembert {
 std::vector<ex> introduce_intermediates(SymbolTable& table, std::vector<ex>& exprs,
                                         std::size_t min_ops = 2);
 
+/// The intermediates of `table` that `exprs` reach, directly or through the definitions of
+/// others, in the table's (dependency) order: each definition uses only intermediates listed
+/// before it. One walk over the shared nodes of all the expressions and definitions.
+std::vector<ex> calc_reached_intermediates(const SymbolTable& table, const std::vector<ex>& exprs);
+
 /// Sum of count_ops over the expressions plus the definitions of the intermediates they
 /// reach (each counted once): the cost of evaluating them in dependency order.
 std::size_t count_ops_with_intermediates(const SymbolTable& table, const std::vector<ex>& exprs);

@@ -23,6 +23,8 @@ std::string to_string(const ex& e);
 /// The texts of `exprs` printed with one memo, so subexpressions they share are printed once.
 std::vector<std::string> to_strings(const std::vector<ex>& exprs);
 
+struct AbbreviatedForm;
+
 /// to_string with one memo across calls, for a caller that prints many overlapping
 /// expressions (the operands of a sum at every level of a TeX walk, the lines of an
 /// abbreviation): a subexpression met again is looked up, not printed again. The texts are
@@ -44,6 +46,8 @@ public:
     ex canonical_factor(const ex& f, bool& flip);
 
 private:
+    friend AbbreviatedForm abbreviate_form(const std::vector<ex>&, TextPrinter&, std::size_t,
+                                           const std::string&, std::size_t);
     struct Memo;
     std::unique_ptr<Memo> memo_;
 };
@@ -72,8 +76,9 @@ struct AbbreviatedText {
 /// `exprs` abbreviated as above: a subexpression of two or more operations used more than
 /// once is named, and so are the longest operands of a line that would pass `width`, and runs
 /// of operands of a sum or product too long for one line. The names are `stem` followed by
-/// `first`, `first` + 1, ...; they stand only for the printed text. Linear in the number of
-/// distinct subexpressions times the width: nothing is printed whole to decide.
+/// `first`, `first` + 1, ...; they stand only for the printed text. Each distinct subexpression
+/// is printed once; the operands of each node are visited in the order of their texts, so the
+/// cost follows the length of the texts of the expressions' distinct nodes.
 AbbreviatedText abbreviate(const std::vector<ex>& exprs, std::size_t width = 100,
                            const std::string& stem = "z", std::size_t first = 1);
 
@@ -86,5 +91,12 @@ struct AbbreviatedForm {
 };
 AbbreviatedForm abbreviate_form(const std::vector<ex>& exprs, std::size_t width = 100,
                                 const std::string& stem = "z", std::size_t first = 1);
+
+/// The same, its lines measured by `printer`: abbreviations of expressions that share nodes
+/// (a page's vectors and equations, all holding the model's kinematics) print each shared node
+/// once with one printer kept across the calls. The result does not depend on the printer.
+AbbreviatedForm abbreviate_form(const std::vector<ex>& exprs, TextPrinter& printer,
+                                std::size_t width = 100, const std::string& stem = "z",
+                                std::size_t first = 1);
 
 }  // namespace alembert

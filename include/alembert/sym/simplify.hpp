@@ -20,6 +20,11 @@ class SymbolTable;
 /// operands, one per power and per function call (how operation counts are reported).
 std::size_t count_ops(const ex& e);
 
+/// The sum of count_ops over `exprs`, each distinct node measured once for all of them: the
+/// equations of a large model share most of their nodes, and measuring each equation on its
+/// own walks the shared part once per equation.
+std::size_t count_ops(const std::vector<ex>& exprs);
+
 /// The largest number of terms expand(e) forms, an upper bound that assumes no cancellation:
 /// a sum of sums adds their counts, a product multiplies them, and (t_1 + ... + t_k)^n has
 /// C(n + k - 1, n) terms (the multinomial count). Infinity when the count passes 1e300.
